@@ -1,0 +1,29 @@
+// Ball: the physical state a game reads. Position and velocity are the ball's state at the end of the
+// last step (or at its last event, for a ball whose events ran past MAX_EVENT_PASSES).
+import { createStore } from '../src/store'
+
+export const BallMode = {
+  Rolling: 0,
+  RimRoll: 1,
+  Captured: 2,
+  Resting: 3,
+} as const
+export type BallModeCode = (typeof BallMode)[keyof typeof BallMode]
+export const BALL_MODE_NAMES = ['rolling', 'rimRoll', 'captured', 'resting'] as const
+export type BallModeName = (typeof BALL_MODE_NAMES)[number]
+
+export const BallSchema = {
+  /** centre, px */
+  x: Float64Array,
+  y: Float64Array,
+  /** velocity, px/s */
+  vx: Float64Array,
+  vy: Float64Array,
+  /** r, px */
+  radius: Float64Array,
+  /** BallMode */
+  mode: Uint8Array,
+}
+
+export const createBallStore = (capacity: number) => createStore(BallSchema, capacity)
+export type BallStore = ReturnType<typeof createBallStore>

@@ -1,0 +1,57 @@
+// Path: the closed-form trajectory a ball follows since its last event, and its next event. Positions are
+// always evaluated from the path's origin, never accumulated tick by tick, so event times and (δ, v)
+// depend only on earlier events, not on where ticks fell (DECISIONS.md §1, first "must hold").
+import { createStore } from '../src/store'
+
+/** What a ball meets next. Decision events stop the ball for the systems; the others are bookkeeping. */
+export const PathEvent = {
+  None: 0,
+  /** centre crosses a hole's lip circle inward (decided by skip-over, capture, COG gate) */
+  Lip: 1,
+  /** centre reaches the contact circle ρ_c (decided by the COG gate: roll or bounce) */
+  Contact: 2,
+  /** speed reaches 0 (decided by capture: over a hole or not) */
+  Stop: 3,
+  /** rim roll ends: drop or pop (rim-roll system) */
+  RollEnd: 4,
+  /** centre leaves the locked hole's lip circle (integration unlocks it) */
+  Exit: 5,
+  /** closest approach to a hole the footprint overlaps without the centre entering (integration reports it) */
+  Near: 6,
+  /** marks set by the COG gate for the bounce and rim-roll systems */
+  Bounce: 7,
+  Roll: 8,
+} as const
+export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
+
+export const PathSchema = {
+  /** origin of the straight path, px */
+  x0: Float64Array,
+  y0: Float64Array,
+  /** unit direction */
+  ux: Float64Array,
+  uy: Float64Array,
+  /** speed at the origin, px/s */
+  v0: Float64Array,
+  /** time at the origin, s */
+  t0: Float64Array,
+  /** current speed (kept so (δ, v) at an event is the closed form's, not a hypot of components) */
+  speed: Float64Array,
+  /**
+   * Distance along the path, and hole, of the last event handled on it. Events are ordered by
+   * (distance, hole id); the next one must come after this key, so none is lost or handled twice.
+   */
+  s: Float64Array,
+  sHole: Uint32Array,
+  /** time, distance, kind and hole of the next event on the current path */
+  nextT: Float64Array,
+  nextS: Float64Array,
+  nextKind: Uint8Array,
+  nextHole: Uint32Array,
+  /** the event the ball is stopped at in this pass, for the systems (PathEvent.None when none) */
+  mark: Uint8Array,
+  markHole: Uint32Array,
+}
+
+export const createPathStore = (capacity: number) => createStore(PathSchema, capacity)
+export type PathStore = ReturnType<typeof createPathStore>

@@ -1,0 +1,49 @@
+// RimContact: a ball's business with the one hole whose lip circle its centre is inside (holes do not
+// overlap, so there is at most one). While `hole` is set, that hole makes no new decision for the ball:
+// this is the transit lock of Stage 5, used also after a bounce or a pop-off (DECISIONS.md §3).
+import { createStore } from '../src/store'
+
+export const RimMode = {
+  /** not inside any lip circle */
+  None: 0,
+  /** inside, decided, leaving (after a bounce or a pop-off, or added inside) */
+  Transit: 1,
+  /** inside, flying over (Stage 5) */
+  Skipping: 2,
+  /** inside, heading for the contact circle ρ_c = R − r/2 (passed the COG gate) */
+  Entering: 3,
+  /** rolling on the rim (Stage 3) */
+  Rolling: 4,
+} as const
+export type RimModeCode = (typeof RimMode)[keyof typeof RimMode]
+export const RIM_MODE_NAMES = ['none', 'transit', 'skipping', 'entering', 'rolling'] as const
+
+export const RimContactSchema = {
+  /** entity id of the hole, 0 when none */
+  hole: Uint32Array,
+  /** RimMode */
+  mode: Uint8Array,
+  /** 1 when delta/speed/lipTime describe a lip crossing (0 for a ball added inside a hole) */
+  hasLip: Uint8Array,
+  /** δ at the lip crossing, px */
+  delta: Float64Array,
+  /** v at the lip crossing, px/s */
+  speed: Float64Array,
+  /** simulation time of the lip crossing, s */
+  lipTime: Float64Array,
+  /** rim roll: angle of the ball centre about the hole centre, rad (atan2 convention, y down) */
+  angle: Float64Array,
+  /** rim roll: arc length rolled so far, px */
+  arc: Float64Array,
+  /** rim roll: angle at the start, rad */
+  angle0: Float64Array,
+  /** rim roll: tangential speed at the start, px/s */
+  speed0: Float64Array,
+  /** rim roll: +1 counter-clockwise in angle, −1 clockwise */
+  direction: Int8Array,
+  /** rim roll: start time, s */
+  time0: Float64Array,
+}
+
+export const createRimContactStore = (capacity: number) => createStore(RimContactSchema, capacity)
+export type RimContactStore = ReturnType<typeof createRimContactStore>

@@ -1,0 +1,291 @@
+// The public API: a world, its schedule and clock behind a small typed surface. Every call validates all
+// of its input before it changes anything, so a rejected call leaves the world as it was.
+import { addComponent, addEntity, entityExists, hasComponent, query, removeEntity } from 'bitecs'
+import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../components/Ball'
+import { RimMode } from '../components/RimContact'
+import type { BallPhysicsConfig, ConfigOverrides } from './config'
+import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
+import { captureBall, launchBall, planRolling, sampleRolling, startPath } from './motion'
+import { createSchedule, runSchedule, type ScheduleEntry } from './schedule'
+import { clearSlot } from './store'
+import { addHoleToTable, createBallWorld, ensureCapacity, type BallWorld, type BallWorldOptions } from './world'
+
+/** Largest |coordinate| accepted, px: keeps squares of distances far from overflow. */
+export const MAX_COORDINATE = 1e9
+/** Largest |velocity component| accepted, px/s. */
+export const MAX_SPEED = 1e7
+/** Largest radius accepted, px. */
+export const MAX_RADIUS = 1e4
+/** Largest |hole value| accepted. */
+export const MAX_VALUE = 1e12
+
+export interface HoleSpec {
+  x: number
+  y: number
+  /** px, default config.HOLE_RADIUS */
+  radius?: number
+  /** points, default 1 */
+  value?: number
+}
+
+export interface BallSpec {
+  x: number
+  y: number
+  vx: number
+  vy: number
+  /** px, default config.BALL_RADIUS */
+  radius?: number
+}
+
+export interface ThrowSpec {
+  x: number
+  y: number
+  /** 0..1, mapped linearly onto MIN_VY..MAX_VY */
+  power: number
+  /** radians, 0 = straight up the panel (−y), positive toward +x; in [−2π, 2π] */
+  angle: number
+  /** px, default config.BALL_RADIUS */
+  radius?: number
+}
+
+export interface BallState {
+  x: number
+  y: number
+  vx: number
+  vy: number
+  radius: number
+  mode: BallModeName
+}
+
+export interface HoleState {
+  x: number
+  y: number
+  radius: number
+  value: number
+}
+
+export interface BallPhysics {
+  readonly world: BallWorld
+  readonly config: Readonly<BallPhysicsConfig>
+  /** the pipeline, in order; editable (see schedule.ts) */
+  readonly schedule: ScheduleEntry[]
+  /** simulation time, s */
+  readonly time: number
+  addHole(spec: HoleSpec): number
+  addBall(spec: BallSpec): number
+  throwBall(spec: ThrowSpec): number
+  /** Advances by dt seconds (any finite dt > 0; more than MAX_STEP is cut to MAX_STEP). Returns the dt simulated. */
+  step(dt: number): number
+  /** Events since the last drain, in time order. */
+  drainEvents(): BallEvent[]
+  ballState(ball: number): BallState
+  holeState(hole: number): HoleState
+  removeBall(ball: number): void
+  /** ids of the live balls (a new array) */
+  balls(): number[]
+  /** ids of the holes (a new array) */
+  holes(): number[]
+}
+
+function finite(field: string, value: unknown, limit: number): number {
+  if (typeof value !== 'number') throw new TypeError(`${field} must be a number in [${-limit}, ${limit}], got ${typeof value}`)
+  if (!Number.isFinite(value) || Math.abs(value) > limit) {
+    throw new RangeError(`${field} must be a finite number in [${-limit}, ${limit}], got ${value}`)
+  }
+  return value
+}
+
+function positive(field: string, value: unknown, limit: number): number {
+  if (typeof value !== 'number') throw new TypeError(`${field} must be a number in (0, ${limit}], got ${typeof value}`)
+  if (!Number.isFinite(value) || value <= 0 || value > limit) {
+    throw new RangeError(`${field} must be in (0, ${limit}], got ${value}`)
+  }
+  return value
+}
+
+function spec<T>(name: string, value: T): T {
+  if (value === null || typeof value !== 'object') throw new TypeError(`${name} must be an object`)
+  return value
+}
+
+/** Creates a simulation with the design's constants, changed by `overrides` (validated). */
+export function createBallPhysics(overrides: ConfigOverrides = {}, options: BallWorldOptions = {}): BallPhysics {
+  const w = createBallWorld(overrides, options)
+  const cfg = w.config
+  const schedule = createSchedule()
+
+  const checkEntity = (field: string, eid: unknown, tag: object, kind: string): number => {
+    if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1) {
+      throw new TypeError(`${field} must be a ${kind} id (a positive integer), got ${String(eid)}`)
+    }
+    if (!entityExists(w, eid) || !hasComponent(w, eid, tag)) {
+      throw new RangeError(`${field} ${eid} is not a live ${kind} of this world (unknown or removed)`)
+    }
+    return eid
+  }
+
+  /** The hole whose lip circle contains (x, y), or 0. */
+  const holeAt = (x: number, y: number): number => {
+    const t = w.holes
+    for (let i = 0; i < t.count; i++) {
+      const dx = x - t.xyr[3 * i]!
+      const dy = y - t.xyr[3 * i + 1]!
+      const R = t.xyr[3 * i + 2]!
+      if (dx * dx + dy * dy < R * R) return t.ids[i]!
+    }
+    return 0
+  }
+
+  const newBall = (x: number, y: number, vx: number, vy: number, radius: number): number => {
+    const eid = addEntity(w)
+    ensureCapacity(w, eid)
+    addComponent(w, eid, w.IsBall)
+    addComponent(w, eid, w.Ball)
+    addComponent(w, eid, w.Path)
+    addComponent(w, eid, w.RimContact)
+    clearSlot(w.Ball, eid)
+    clearSlot(w.Path, eid)
+    clearSlot(w.RimContact, eid)
+    w.Ball.radius[eid] = radius
+    // rule for a ball added inside a lip circle: it is in transit through that hole (no decision is made
+    // for it); if it stops before leaving, it falls in
+    const inside = holeAt(x, y)
+    if (inside !== 0) {
+      w.RimContact.hole[eid] = inside
+      w.RimContact.mode[eid] = RimMode.Transit
+    }
+    launchBall(w, eid, x, y, vx, vy, w.time)
+    return eid
+  }
+
+  const sim: BallPhysics = {
+    world: w,
+    config: cfg,
+    schedule,
+    get time() {
+      return w.time
+    },
+
+    addHole(s) {
+      spec('addHole spec', s)
+      const x = finite('hole.x', s.x, MAX_COORDINATE)
+      const y = finite('hole.y', s.y, MAX_COORDINATE)
+      const radius = s.radius === undefined ? cfg.HOLE_RADIUS : positive('hole.radius', s.radius, MAX_RADIUS)
+      const value = s.value === undefined ? 1 : finite('hole.value', s.value, MAX_VALUE)
+      const t = w.holes
+      for (let i = 0; i < t.count; i++) {
+        const dx = x - t.xyr[3 * i]!
+        const dy = y - t.xyr[3 * i + 1]!
+        const min = radius + t.xyr[3 * i + 2]!
+        if (dx * dx + dy * dy < min * min) {
+          throw new RangeError(
+            `hole at (${x}, ${y}) with radius ${radius} overlaps hole ${t.ids[i]}: lip circles may not overlap ` +
+              `(centres at least ${min} px apart)`,
+          )
+        }
+      }
+      const eid = addEntity(w)
+      ensureCapacity(w, eid)
+      addComponent(w, eid, w.IsHole)
+      addComponent(w, eid, w.Hole)
+      w.Hole.x[eid] = x
+      w.Hole.y[eid] = y
+      w.Hole.radius[eid] = radius
+      w.Hole.value[eid] = value
+      addHoleToTable(w, eid)
+      // balls already out there: rolling ones continue from where they are, planned against the new hole;
+      // a ball inside the new lip circle follows the rule for a ball added inside a hole
+      const balls = query(w, [w.IsBall])
+      for (let i = 0; i < balls.length; i++) {
+        const b = balls[i]!
+        const mode = w.Ball.mode[b]
+        if (mode !== BallMode.Rolling && mode !== BallMode.Resting) continue
+        const dx = w.Ball.x[b]! - x
+        const dy = w.Ball.y[b]! - y
+        const inside = dx * dx + dy * dy < radius * radius
+        if (mode === BallMode.Resting) {
+          if (inside) {
+            w.RimContact.hole[b] = eid
+            w.RimContact.hasLip[b] = 0
+            addComponent(w, b, w.Moving)
+            captureBall(w, b, eid, w.time, CaptureVia.Rest)
+          }
+          continue
+        }
+        sampleRolling(w, b, w.time)
+        startPath(w, b, w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
+        if (inside) {
+          w.RimContact.hole[b] = eid
+          w.RimContact.mode[b] = RimMode.Transit
+          w.RimContact.hasLip[b] = 0
+        }
+        planRolling(w, b)
+      }
+      return eid
+    },
+
+    addBall(s) {
+      spec('addBall spec', s)
+      const x = finite('ball.x', s.x, MAX_COORDINATE)
+      const y = finite('ball.y', s.y, MAX_COORDINATE)
+      const vx = finite('ball.vx', s.vx, MAX_SPEED)
+      const vy = finite('ball.vy', s.vy, MAX_SPEED)
+      const radius = s.radius === undefined ? cfg.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
+      return newBall(x, y, vx, vy, radius)
+    },
+
+    throwBall(s) {
+      spec('throwBall spec', s)
+      const x = finite('throw.x', s.x, MAX_COORDINATE)
+      const y = finite('throw.y', s.y, MAX_COORDINATE)
+      if (typeof s.power !== 'number') throw new TypeError(`throw.power must be a number in [0, 1], got ${typeof s.power}`)
+      if (!(s.power >= 0 && s.power <= 1)) throw new RangeError(`throw.power must be in [0, 1], got ${s.power}`)
+      const angle = finite('throw.angle', s.angle, 2 * Math.PI)
+      const radius = s.radius === undefined ? cfg.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
+      const speed = cfg.MIN_VY + s.power * (cfg.MAX_VY - cfg.MIN_VY)
+      return newBall(x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius)
+    },
+
+    step(dt) {
+      if (typeof dt !== 'number') throw new TypeError(`dt must be a number of seconds > 0, got ${typeof dt}`)
+      if (!Number.isFinite(dt) || dt <= 0) throw new RangeError(`dt must be a finite number of seconds > 0, got ${dt}`)
+      // a long frame (a tab that slept) is not caught up: at most MAX_STEP of simulated time per call
+      const h = dt > cfg.MAX_STEP ? cfg.MAX_STEP : dt
+      runSchedule(w, schedule, h)
+      return h
+    },
+
+    drainEvents() {
+      return drainEventBuffer(w.events)
+    },
+
+    ballState(ball) {
+      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      const B = w.Ball
+      return { x: B.x[b]!, y: B.y[b]!, vx: B.vx[b]!, vy: B.vy[b]!, radius: B.radius[b]!, mode: BALL_MODE_NAMES[B.mode[b]!]! }
+    },
+
+    holeState(hole) {
+      const h = checkEntity('hole', hole, w.IsHole, 'hole')
+      const H = w.Hole
+      return { x: H.x[h]!, y: H.y[h]!, radius: H.radius[h]!, value: H.value[h]! }
+    },
+
+    removeBall(ball) {
+      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      removeEntity(w, b)
+      clearSlot(w.Ball, b)
+      clearSlot(w.Path, b)
+      clearSlot(w.RimContact, b)
+    },
+
+    balls() {
+      return Array.from(query(w, [w.IsBall]))
+    },
+
+    holes() {
+      return Array.from(w.holes.ids.subarray(0, w.holes.count))
+    },
+  }
+  return sim
+}

@@ -1,0 +1,65 @@
+// A fixed-step clock for games that render at the display's rate: it accumulates frame time, runs whole
+// physics steps, caps the catch-up after a long frame (a tab that slept) and gives the interpolation
+// factor for drawing between the last two physics states. The physics itself is exact for any dt; the
+// fixed step is for smooth, display-independent pacing.
+
+export interface FixedStepClock {
+  /** physics step, s */
+  readonly stepSeconds: number
+  /** most steps run for one frame; time beyond them is dropped (and counted in `droppedSeconds`) */
+  readonly maxStepsPerFrame: number
+  /** steps run by the last `advance` */
+  steps: number
+  /** how far the display time is past the last physics step, in steps, [0, 1) */
+  alpha: number
+  /** total frame time dropped by the catch-up cap, s */
+  droppedSeconds: number
+  /** Adds a frame's duration and runs the due steps through `step`. */
+  advance(frameSeconds: number, step: (dt: number) => void): void
+}
+
+export interface FixedStepClockOptions {
+  /** steps per second, (0, 10000]; default 120 */
+  hz?: number
+  /** integer in [1, 1000]; default 8 */
+  maxStepsPerFrame?: number
+}
+
+export function createFixedStepClock(options: FixedStepClockOptions = {}): FixedStepClock {
+  const hz = options.hz ?? 120
+  const maxSteps = options.maxStepsPerFrame ?? 8
+  if (typeof hz !== 'number' || !Number.isFinite(hz) || hz <= 0 || hz > 10000) {
+    throw new RangeError(`hz must be in (0, 10000], got ${hz}`)
+  }
+  if (!Number.isInteger(maxSteps) || maxSteps < 1 || maxSteps > 1000) {
+    throw new RangeError(`maxStepsPerFrame must be an integer in [1, 1000], got ${maxSteps}`)
+  }
+  const dt = 1 / hz
+  let acc = 0
+  const clock: FixedStepClock = {
+    stepSeconds: dt,
+    maxStepsPerFrame: maxSteps,
+    steps: 0,
+    alpha: 0,
+    droppedSeconds: 0,
+    advance(frameSeconds, step) {
+      if (typeof frameSeconds !== 'number' || !Number.isFinite(frameSeconds) || frameSeconds < 0) {
+        throw new RangeError(`frameSeconds must be a finite number ≥ 0, got ${frameSeconds}`)
+      }
+      acc += frameSeconds
+      let n = 0
+      while (acc >= dt && n < maxSteps) {
+        step(dt)
+        acc -= dt
+        n++
+      }
+      if (acc >= dt) {
+        clock.droppedSeconds += acc - (acc % dt)
+        acc %= dt
+      }
+      clock.steps = n
+      clock.alpha = acc / dt
+    },
+  }
+  return clock
+}

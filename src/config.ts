@@ -1,0 +1,164 @@
+// The design table's constants (ball-physics-iteration-2.md §4) under their own names, plus the few the
+// design leaves open (DECISIONS.md): ROLLING_DECEL, RIM_ROLL_MAX_TURNS and the engine's clock bounds.
+// GRAVITY and V_SKIP_MAX are one fact written twice (V_SKIP_MAX = R·√(2g/r)); resolveConfig keeps them
+// consistent, so they can never disagree.
+
+export interface BallPhysicsConfig {
+  /** R, hole radius, px. */
+  HOLE_RADIUS: number
+  /** r, ball radius, px. */
+  BALL_RADIUS: number
+  /** Speed at which the clean-capture window closes, px/s (Stage 1). */
+  V_MAX: number
+  /** Dead-centre skip speed, px/s (Stage 5): R·√(2g/r) at the default radii. */
+  V_SKIP_MAX: number
+  /** g, px/s², derived from V_SKIP_MAX unless overridden (then V_SKIP_MAX is derived from it). */
+  GRAVITY: number
+  /** e, normal coefficient of restitution at the rim (Stages 2 and 4). */
+  RIM_RESTITUTION: number
+  /** μ_t, share of tangential speed lost at a rim bounce (Stages 2 and 4). */
+  RIM_FRICTION: number
+  /** |v_t|/|v_n| above which a rim contact rolls instead of bouncing (Stage 3). */
+  RIM_ROLL_RATIO: number
+  /** μ_roll, exponential decay rate of the rim-roll speed, 1/s (Stage 3). */
+  RIM_ROLL_FRICTION: number
+  /** Rim-roll speed below which the ball drops in, px/s (Stage 3). */
+  RIM_ROLL_DROP_SPEED: number
+  /** Arc, in turns of the lip circle, after which a rolling ball pops off (Stage 3; missing from the design table). */
+  RIM_ROLL_MAX_TURNS: number
+  /** Throw speed at power 0, px/s. */
+  MIN_VY: number
+  /** Throw speed at power 1, px/s. */
+  MAX_VY: number
+  /** Constant rolling deceleration on the panel, px/s² (0: no rolling loss). */
+  ROLLING_DECEL: number
+  /** Largest dt that one step simulates, s; a longer step (a tab that slept) is cut to this. */
+  MAX_STEP: number
+  /** Bound on event passes in one step; a ball with more events than this finishes them next step. */
+  MAX_EVENT_PASSES: number
+}
+
+const HOLE_RADIUS = 18
+const BALL_RADIUS = 11
+const V_SKIP_MAX = 640
+
+/** g implied by V_SKIP_MAX = R·√(2g/r): g = V_SKIP_MAX²·r / (2R²). */
+export function gravityFromSkip(vSkipMax: number, holeRadius: number, ballRadius: number): number {
+  return (vSkipMax * vSkipMax * ballRadius) / (2 * holeRadius * holeRadius)
+}
+
+/** V_SKIP_MAX implied by g: the dead-centre speed whose chord time equals the time to fall by r. */
+export function skipFromGravity(gravity: number, holeRadius: number, ballRadius: number): number {
+  return holeRadius * Math.sqrt((2 * gravity) / ballRadius)
+}
+
+export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
+  HOLE_RADIUS,
+  BALL_RADIUS,
+  V_MAX: 600,
+  V_SKIP_MAX,
+  GRAVITY: gravityFromSkip(V_SKIP_MAX, HOLE_RADIUS, BALL_RADIUS),
+  RIM_RESTITUTION: 0.3,
+  RIM_FRICTION: 0.3,
+  RIM_ROLL_RATIO: 1.4,
+  RIM_ROLL_FRICTION: 5.0,
+  RIM_ROLL_DROP_SPEED: 110,
+  RIM_ROLL_MAX_TURNS: 0.565,
+  MIN_VY: 175,
+  MAX_VY: 700,
+  ROLLING_DECEL: 300,
+  MAX_STEP: 0.25,
+  MAX_EVENT_PASSES: 256,
+})
+
+export type ConfigOverrides = Partial<BallPhysicsConfig>
+
+interface Range {
+  min: number
+  max: number
+  minOpen?: boolean
+  integer?: boolean
+}
+
+/** Allowed range of every key. Open lower bounds are for values that divide or must be positive. */
+export const CONFIG_RANGES: Readonly<Record<keyof BallPhysicsConfig, Readonly<Range>>> = Object.freeze({
+  HOLE_RADIUS: { min: 0, max: 1e4, minOpen: true },
+  BALL_RADIUS: { min: 0, max: 1e4, minOpen: true },
+  V_MAX: { min: 0, max: 1e6, minOpen: true },
+  V_SKIP_MAX: { min: 0, max: 1e6, minOpen: true },
+  GRAVITY: { min: 0, max: 1e9, minOpen: true },
+  RIM_RESTITUTION: { min: 0, max: 1 },
+  RIM_FRICTION: { min: 0, max: 1 },
+  RIM_ROLL_RATIO: { min: 0, max: 1e6 },
+  RIM_ROLL_FRICTION: { min: 0, max: 1e6 },
+  RIM_ROLL_DROP_SPEED: { min: 0, max: 1e6, minOpen: true },
+  RIM_ROLL_MAX_TURNS: { min: 0, max: 100, minOpen: true },
+  MIN_VY: { min: 0, max: 1e6 },
+  MAX_VY: { min: 0, max: 1e6 },
+  ROLLING_DECEL: { min: 0, max: 1e6 },
+  MAX_STEP: { min: 0, max: 10, minOpen: true },
+  MAX_EVENT_PASSES: { min: 1, max: 1e6, integer: true },
+})
+
+export function describeRange(r: Range): string {
+  return `${r.minOpen ? '(' : '['}${r.min}, ${r.max}]${r.integer ? ' (an integer)' : ''}`
+}
+
+function checkKey(key: keyof BallPhysicsConfig, value: unknown): number {
+  const range = CONFIG_RANGES[key]
+  if (typeof value !== 'number') {
+    throw new TypeError(`config.${key} must be a number in ${describeRange(range)}, got ${typeof value}`)
+  }
+  const ok =
+    Number.isFinite(value) &&
+    (range.minOpen ? value > range.min : value >= range.min) &&
+    value <= range.max &&
+    (!range.integer || Number.isInteger(value))
+  if (!ok) throw new RangeError(`config.${key} must be in ${describeRange(range)}, got ${value}`)
+  return value
+}
+
+/** Relative tolerance for GRAVITY and V_SKIP_MAX given together: they must describe the same g. */
+const CONSISTENCY_TOLERANCE = 1e-9
+
+/**
+ * Validates overrides and returns a complete, frozen config. Unknown keys, non-finite or out-of-range
+ * values throw an error naming the key and its allowed range. GRAVITY and V_SKIP_MAX: give either and
+ * the other is derived; give both and they must agree; give neither and V_SKIP_MAX (the design's number)
+ * is kept while GRAVITY follows the radii.
+ */
+export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhysicsConfig> {
+  if (overrides === null || typeof overrides !== 'object') {
+    throw new TypeError('config overrides must be an object of DEFAULT_CONFIG keys')
+  }
+  const out = { ...DEFAULT_CONFIG } as BallPhysicsConfig
+  for (const key of Object.keys(overrides)) {
+    if (!(key in CONFIG_RANGES)) {
+      throw new RangeError(`config.${key} is not a known key; known keys: ${Object.keys(CONFIG_RANGES).join(', ')}`)
+    }
+    const value = (overrides as Record<string, unknown>)[key]
+    if (value === undefined) continue
+    out[key as keyof BallPhysicsConfig] = checkKey(key as keyof BallPhysicsConfig, value)
+  }
+  if (out.MAX_VY < out.MIN_VY) {
+    throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)
+  }
+  const hasG = overrides.GRAVITY !== undefined
+  const hasSkip = overrides.V_SKIP_MAX !== undefined
+  if (hasG && hasSkip) {
+    const implied = skipFromGravity(out.GRAVITY, out.HOLE_RADIUS, out.BALL_RADIUS)
+    if (Math.abs(implied - out.V_SKIP_MAX) > CONSISTENCY_TOLERANCE * out.V_SKIP_MAX) {
+      throw new RangeError(
+        `config.GRAVITY = ${out.GRAVITY} implies V_SKIP_MAX = ${implied}, but config.V_SKIP_MAX = ${out.V_SKIP_MAX}; ` +
+          'give one of them (the other is derived) or values with V_SKIP_MAX = HOLE_RADIUS·√(2·GRAVITY/BALL_RADIUS)',
+      )
+    }
+  } else if (hasG) {
+    out.V_SKIP_MAX = skipFromGravity(out.GRAVITY, out.HOLE_RADIUS, out.BALL_RADIUS)
+    checkKey('V_SKIP_MAX', out.V_SKIP_MAX)
+  } else {
+    out.GRAVITY = gravityFromSkip(out.V_SKIP_MAX, out.HOLE_RADIUS, out.BALL_RADIUS)
+    checkKey('GRAVITY', out.GRAVITY)
+  }
+  return Object.freeze(out)
+}

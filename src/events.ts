@@ -1,0 +1,133 @@
+// Hole and ball events. Systems write them into a growable struct-of-arrays buffer (no object per event
+// on the hot path); drainEvents turns them into objects, in time order, once per frame.
+
+export const EventType = {
+  Skip: 0,
+  Capture: 1,
+  Bounce: 2,
+  RimRoll: 3,
+  LipOut: 4,
+  NearMiss: 5,
+  Rest: 6,
+} as const
+export type EventTypeCode = (typeof EventType)[keyof typeof EventType]
+export const EVENT_TYPE_NAMES = ['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest'] as const
+export type BallEventType = (typeof EVENT_TYPE_NAMES)[number]
+
+export const CaptureVia = { None: 0, Clean: 1, RimRoll: 2, Rest: 3 } as const
+export type CaptureViaCode = (typeof CaptureVia)[keyof typeof CaptureVia]
+const VIA_NAMES = [undefined, 'clean', 'rimRoll', 'rest'] as const
+export type CaptureViaName = 'clean' | 'rimRoll' | 'rest'
+
+export interface BallEvent {
+  type: BallEventType
+  ball: number
+  /** the hole, for hole events */
+  hole?: number
+  /** simulation time of the event, s (exact: from the closed-form path, not the tick) */
+  time: number
+  /** δ at the lip crossing, px (for a nearMiss without a crossing: the closest approach) */
+  delta?: number
+  /** v at the lip crossing, px/s (for a nearMiss without a crossing: the speed at closest approach) */
+  speed?: number
+  /** how a capture happened */
+  via?: CaptureViaName
+}
+
+export interface EventBuffer {
+  count: number
+  type: Uint8Array
+  ball: Uint32Array
+  hole: Uint32Array
+  time: Float64Array
+  delta: Float64Array
+  speed: Float64Array
+  /** 1 when delta and speed are set */
+  hasDV: Uint8Array
+  via: Uint8Array
+}
+
+export function createEventBuffer(capacity = 1024): EventBuffer {
+  return {
+    count: 0,
+    type: new Uint8Array(capacity),
+    ball: new Uint32Array(capacity),
+    hole: new Uint32Array(capacity),
+    time: new Float64Array(capacity),
+    delta: new Float64Array(capacity),
+    speed: new Float64Array(capacity),
+    hasDV: new Uint8Array(capacity),
+    via: new Uint8Array(capacity),
+  }
+}
+
+function grow(buf: EventBuffer): void {
+  const cap = buf.type.length * 2
+  const next = createEventBuffer(cap)
+  next.type.set(buf.type)
+  next.ball.set(buf.ball)
+  next.hole.set(buf.hole)
+  next.time.set(buf.time)
+  next.delta.set(buf.delta)
+  next.speed.set(buf.speed)
+  next.hasDV.set(buf.hasDV)
+  next.via.set(buf.via)
+  buf.type = next.type
+  buf.ball = next.ball
+  buf.hole = next.hole
+  buf.time = next.time
+  buf.delta = next.delta
+  buf.speed = next.speed
+  buf.hasDV = next.hasDV
+  buf.via = next.via
+}
+
+/** Appends one event. `delta`/`speed` are recorded only when `hasDV` is true; `hole` 0 means none. */
+export function pushEvent(
+  buf: EventBuffer,
+  type: EventTypeCode,
+  ball: number,
+  hole: number,
+  time: number,
+  hasDV: boolean,
+  delta: number,
+  speed: number,
+  via: CaptureViaCode = CaptureVia.None,
+): void {
+  if (buf.count === buf.type.length) grow(buf)
+  const i = buf.count++
+  buf.type[i] = type
+  buf.ball[i] = ball
+  buf.hole[i] = hole
+  buf.time[i] = time
+  buf.hasDV[i] = hasDV ? 1 : 0
+  buf.delta[i] = hasDV ? delta : 0
+  buf.speed[i] = hasDV ? speed : 0
+  buf.via[i] = via
+}
+
+/**
+ * Returns the buffered events as objects sorted by time (ties: by ball id, then by the order they were
+ * recorded, so the order is deterministic) and empties the buffer.
+ */
+export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
+  const n = buf.count
+  const order = new Array<number>(n)
+  for (let i = 0; i < n; i++) order[i] = i
+  order.sort((a, b) => buf.time[a]! - buf.time[b]! || buf.ball[a]! - buf.ball[b]! || a - b)
+  const out = new Array<BallEvent>(n)
+  for (let k = 0; k < n; k++) {
+    const i = order[k]!
+    const e: BallEvent = { type: EVENT_TYPE_NAMES[buf.type[i]!]!, ball: buf.ball[i]!, time: buf.time[i]! }
+    if (buf.hole[i] !== 0) e.hole = buf.hole[i]!
+    if (buf.hasDV[i] === 1) {
+      e.delta = buf.delta[i]!
+      e.speed = buf.speed[i]!
+    }
+    const via = VIA_NAMES[buf.via[i]!]
+    if (via !== undefined) e.via = via
+    out[k] = e
+  }
+  buf.count = 0
+  return out
+}

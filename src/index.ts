@@ -1,0 +1,47 @@
+// Public entry point of the ball-physics module.
+export { createBallPhysics, MAX_COORDINATE, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
+export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec } from './api'
+export { CONFIG_RANGES, DEFAULT_CONFIG, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
+export type { BallPhysicsConfig, ConfigOverrides } from './config'
+export { createBallWorld, ensureCapacity } from './world'
+export type { BallWorld, BallWorldData, BallWorldOptions } from './world'
+export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule'
+export type { ScheduleEntry, System } from './schedule'
+export { createFixedStepClock } from './clock'
+export type { FixedStepClock, FixedStepClockOptions } from './clock'
+export { EVENT_TYPE_NAMES } from './events'
+export type { BallEvent, BallEventType, CaptureViaName } from './events'
+export { DEFAULT_PANEL, addPanel } from './panel'
+export type { PanelHole, PanelLayout } from './panel'
+export {
+  captureWindow,
+  capturesClean,
+  cogRadius,
+  midRimDropSpeed,
+  popArc,
+  rollArc,
+  rollDropTime,
+  rollPopTime,
+  rollRatioDelta,
+  rollSpeed,
+  speedAtDistance,
+  stopDistance,
+  stopTime,
+  timeToDistance,
+  vSkip,
+} from './geometry'
+export { LIP_EPSILON } from './motion'
+export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball'
+export type { BallModeName, BallStore } from '../components/Ball'
+export { HoleSchema } from '../components/Hole'
+export type { HoleStore } from '../components/Hole'
+export { RIM_MODE_NAMES, RimContactSchema, RimMode } from '../components/RimContact'
+export type { RimContactStore } from '../components/RimContact'
+export { PathEvent, PathSchema } from '../components/Path'
+export type { PathStore } from '../components/Path'
+export { integrationSystem } from '../systems/integration'
+export { skipOverSystem } from '../systems/skipOver'
+export { captureSystem } from '../systems/capture'
+export { cogGateSystem } from '../systems/cogGate'
+export { bounceSystem } from '../systems/bounce'
+export { rimRollSystem } from '../systems/rimRoll'

@@ -1,0 +1,286 @@
+// Closed-form motion shared by the systems: starting a straight path, finding its next event exactly,
+// evaluating a ball on its path or on a rim at any time, and the transitions that end a ball's motion.
+//
+// A straight path is (origin, unit direction, speed v0, start time t0) with constant deceleration a; the
+// distance rolled is s(τ) = v0·τ − a·τ²/2. Events are found as distances along the path (where geometry
+// is exact) and turned into times once. Nothing here depends on where ticks fall.
+import { addComponent, removeComponent } from 'bitecs'
+import { BallMode } from '../components/Ball'
+import { PathEvent } from '../components/Path'
+import { RimMode } from '../components/RimContact'
+import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from './events'
+import {
+  cogRadius,
+  popArc,
+  rollArc,
+  rollDropTime,
+  rollPopTime,
+  rollSpeed,
+  speedAtDistance,
+  stopDistance,
+  stopTime,
+  timeToDistance,
+} from './geometry'
+import type { BallWorld } from './world'
+
+/** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
+export const NEVER = 1e300
+
+/**
+ * A lip crossing this far (px) behind the ball still counts as happening now. It covers rounding of a
+ * path origin placed on a circle; it is far below any distance the game can show.
+ */
+export const LIP_EPSILON = 1e-7
+
+/** Starts a straight path at (x, y) with velocity (vx, vy) at time t, and sets the ball's state there. */
+export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  const P = w.Path
+  const B = w.Ball
+  const speed = Math.hypot(vx, vy)
+  P.x0[eid] = x
+  P.y0[eid] = y
+  P.t0[eid] = t
+  P.v0[eid] = speed
+  P.ux[eid] = speed > 0 ? vx / speed : 0
+  P.uy[eid] = speed > 0 ? vy / speed : 0
+  P.speed[eid] = speed
+  P.s[eid] = 0
+  P.sHole[eid] = 0
+  B.x[eid] = x
+  B.y[eid] = y
+  B.vx[eid] = vx
+  B.vy[eid] = vy
+}
+
+/**
+ * Finds the next event of a ball on a straight path after the last handled one (Path.s, Path.sHole):
+ * its stop, a lip crossing, a near miss, or, for the hole it is inside, the contact circle or the exit.
+ * Candidates are ordered by (distance, hole id); a stop wins a tie (a ball that stops exactly on a lip
+ * rests there: its centre is not inside).
+ */
+export function planRolling(w: BallWorld, eid: number): void {
+  const P = w.Path
+  const RC = w.RimContact
+  const x0 = P.x0[eid]!
+  const y0 = P.y0[eid]!
+  const ux = P.ux[eid]!
+  const uy = P.uy[eid]!
+  const v0 = P.v0[eid]!
+  const s = P.s[eid]!
+  const sHole = P.sHole[eid]!
+  const decel = w.config.ROLLING_DECEL
+  const foot = w.Ball.radius[eid]!
+
+  let best = stopDistance(v0, decel)
+  let bestHole = 0
+  let kind: number = best === Infinity ? PathEvent.None : PathEvent.Stop
+
+  if (v0 > 0) {
+    const locked = RC.hole[eid]!
+    if (locked !== 0) {
+      const hx = w.Hole.x[locked]! - x0
+      const hy = w.Hole.y[locked]! - y0
+      const R = w.Hole.radius[locked]!
+      const p = hx * ux + hy * uy
+      const c = hx * uy - hy * ux
+      const c2 = c * c
+      let d = Infinity
+      let k: number = PathEvent.Exit
+      const rc = cogRadius(R, foot)
+      if (RC.mode[eid] === RimMode.Entering && c2 < rc * rc) {
+        d = p - Math.sqrt(rc * rc - c2)
+        k = PathEvent.Contact
+      } else {
+        d = c2 < R * R ? p + Math.sqrt(R * R - c2) : s
+      }
+      if (d < s) d = s
+      if (d < best) {
+        best = d
+        bestHole = locked
+        kind = k
+      }
+    }
+
+    const table = w.holes
+    const xyr = table.xyr
+    const ids = table.ids
+    for (let i = 0, n = table.count; i < n; i++) {
+      const hid = ids[i]!
+      const hx = xyr[3 * i]! - x0
+      const hy = xyr[3 * i + 1]! - y0
+      const R = xyr[3 * i + 2]!
+      const p = hx * ux + hy * uy
+      // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
+      if (p - R > best || hid === locked) continue
+      const c = hx * uy - hy * ux
+      const c2 = c * c
+      if (c2 < R * R) {
+        // lip crossing, if the centre is still approaching the hole centre
+        if (!(p > s)) continue
+        let d = p - Math.sqrt(R * R - c2)
+        if (d < s) d = s // a rounding error behind (or found inside): decided now, never lost
+        if (d < best || (d === best && hid < bestHole && kind !== PathEvent.Stop)) {
+          best = d
+          bestHole = hid
+          kind = PathEvent.Lip
+        }
+      } else {
+        const f = R + foot
+        if (c2 >= f * f) continue
+        // near miss at the closest approach, if not already handled
+        if (!(p > s || (p === s && hid > sHole))) continue
+        if (p < best || (p === best && hid < bestHole && kind !== PathEvent.Stop)) {
+          best = p
+          bestHole = hid
+          kind = PathEvent.Near
+        }
+      }
+    }
+  }
+
+  P.nextKind[eid] = kind
+  P.nextHole[eid] = bestHole
+  if (kind === PathEvent.None) {
+    P.nextS[eid] = 0
+    P.nextT[eid] = NEVER
+  } else {
+    P.nextS[eid] = best
+    const tau = kind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(best, v0, decel)
+    P.nextT[eid] = P.t0[eid]! + tau
+  }
+}
+
+/** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
+export function planRimRoll(w: BallWorld, eid: number): void {
+  const RC = w.RimContact
+  const cfg = w.config
+  const hole = RC.hole[eid]!
+  const vt0 = RC.speed0[eid]!
+  const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
+  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!))
+  const P = w.Path
+  P.nextKind[eid] = PathEvent.RollEnd
+  P.nextHole[eid] = hole
+  P.nextT[eid] = RC.time0[eid]! + Math.min(tDrop, tPop)
+}
+
+/** True when a rim roll that started with speed vt0 pops off before it drops. */
+export function rollPopsOff(w: BallWorld, eid: number): boolean {
+  const RC = w.RimContact
+  const cfg = w.config
+  const vt0 = RC.speed0[eid]!
+  const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
+  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[RC.hole[eid]!]!))
+  return tPop < tDrop
+}
+
+/** Ball state at time t on its straight path (clamped at its stop). */
+export function sampleRolling(w: BallWorld, eid: number, t: number): void {
+  const P = w.Path
+  const B = w.Ball
+  const v0 = P.v0[eid]!
+  const decel = w.config.ROLLING_DECEL
+  let tau = t - P.t0[eid]!
+  if (tau < 0) tau = 0
+  if (decel > 0 && tau * decel > v0) tau = v0 / decel
+  const d = v0 * tau - 0.5 * decel * tau * tau
+  const v = v0 - decel * tau
+  const ux = P.ux[eid]!
+  const uy = P.uy[eid]!
+  B.x[eid] = P.x0[eid]! + ux * d
+  B.y[eid] = P.y0[eid]! + uy * d
+  B.vx[eid] = ux * v
+  B.vy[eid] = uy * v
+  P.speed[eid] = v
+}
+
+/** Ball state at distance d along its straight path: exact geometry for an event found at that distance. */
+export function sampleAtDistance(w: BallWorld, eid: number, d: number): void {
+  const P = w.Path
+  const B = w.Ball
+  const v = speedAtDistance(d, P.v0[eid]!, w.config.ROLLING_DECEL)
+  const ux = P.ux[eid]!
+  const uy = P.uy[eid]!
+  B.x[eid] = P.x0[eid]! + ux * d
+  B.y[eid] = P.y0[eid]! + uy * d
+  B.vx[eid] = ux * v
+  B.vy[eid] = uy * v
+  P.speed[eid] = v
+}
+
+/** Ball state at time t on the rim: v_t = v_t0·e^(−μτ), exact for every dt. */
+export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
+  const RC = w.RimContact
+  const B = w.Ball
+  const hole = RC.hole[eid]!
+  const R = w.Hole.radius[hole]!
+  const vt0 = RC.speed0[eid]!
+  const mu = w.config.RIM_ROLL_FRICTION
+  let tau = t - RC.time0[eid]!
+  if (tau < 0) tau = 0
+  const arc = rollArc(tau, vt0, mu)
+  const v = rollSpeed(tau, vt0, mu)
+  const dir = RC.direction[eid]!
+  const phi = RC.angle0[eid]! + (dir * arc) / R
+  const c = Math.cos(phi)
+  const s = Math.sin(phi)
+  B.x[eid] = w.Hole.x[hole]! + R * c
+  B.y[eid] = w.Hole.y[hole]! + R * s
+  B.vx[eid] = -dir * s * v
+  B.vy[eid] = dir * c * v
+  RC.angle[eid] = phi
+  RC.arc[eid] = arc
+  w.Path.speed[eid] = v
+}
+
+/** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
+export function emitHoleEvent(
+  w: BallWorld,
+  type: (typeof EventType)[keyof typeof EventType],
+  eid: number,
+  hole: number,
+  t: number,
+  via: CaptureViaCode = CaptureVia.None,
+): void {
+  const RC = w.RimContact
+  const hasLip = RC.hole[eid] === hole && RC.hasLip[eid] === 1
+  pushEvent(w.events, type, eid, hole, t, hasLip, RC.delta[eid]!, RC.speed[eid]!, via)
+}
+
+/** The ball falls into `hole` at time t: it sits at the hole centre, at rest, and stops being simulated. */
+export function captureBall(w: BallWorld, eid: number, hole: number, t: number, via: CaptureViaCode): void {
+  emitHoleEvent(w, EventType.Capture, eid, hole, t, via)
+  const B = w.Ball
+  B.mode[eid] = BallMode.Captured
+  B.x[eid] = w.Hole.x[hole]!
+  B.y[eid] = w.Hole.y[hole]!
+  B.vx[eid] = 0
+  B.vy[eid] = 0
+  w.Path.speed[eid] = 0
+  w.Path.nextT[eid] = NEVER
+  w.Path.nextKind[eid] = PathEvent.None
+  w.RimContact.hole[eid] = hole
+  w.RimContact.mode[eid] = RimMode.None
+  removeComponent(w, eid, w.Moving)
+}
+
+/** The ball stops on the panel, outside every hole, at time t. */
+export function restBall(w: BallWorld, eid: number, t: number): void {
+  pushEvent(w.events, EventType.Rest, eid, 0, t, false, 0, 0)
+  const B = w.Ball
+  B.mode[eid] = BallMode.Resting
+  B.vx[eid] = 0
+  B.vy[eid] = 0
+  w.Path.speed[eid] = 0
+  w.Path.nextT[eid] = NEVER
+  w.Path.nextKind[eid] = PathEvent.None
+  removeComponent(w, eid, w.Moving)
+}
+
+/** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
+export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  w.Ball.mode[eid] = BallMode.Rolling
+  startPath(w, eid, x, y, vx, vy, t)
+  planRolling(w, eid)
+  addComponent(w, eid, w.Moving)
+}

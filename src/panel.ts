@@ -1,0 +1,38 @@
+// The built-in ball-toss panel: 5 rows of 5 holes, the launch point below them. With ROLLING_DECEL =
+// 300 px/s² a throw reaches the first row (80 px up) from power ≈ 0.04 and the top row (320 px up) from
+// power ≈ 0.48: the top row's sweet spot is the middle of the meter, and the upper third arrives at the
+// lower rows fast enough to skip them for most aims (design §4).
+import type { BallPhysics } from './api'
+
+export interface PanelHole {
+  x: number
+  y: number
+  value: number
+}
+
+export interface PanelLayout {
+  /** px */
+  width: number
+  height: number
+  /** where throws start, px */
+  launch: { x: number; y: number }
+  holes: readonly PanelHole[]
+}
+
+const ROW_Y = [370, 310, 250, 190, 130] as const
+const ROW_VALUE = [10, 20, 30, 50, 100] as const
+const COL_X = [50, 130, 210, 290, 370] as const
+
+export const DEFAULT_PANEL: Readonly<PanelLayout> = Object.freeze({
+  width: 420,
+  height: 480,
+  launch: Object.freeze({ x: 210, y: 450 }),
+  holes: Object.freeze(
+    ROW_Y.flatMap((y, row) => COL_X.map((x) => Object.freeze({ x, y, value: ROW_VALUE[row]! }))),
+  ),
+})
+
+/** Adds a layout's holes to a simulation; returns their entity ids in layout order. */
+export function addPanel(sim: BallPhysics, layout: PanelLayout = DEFAULT_PANEL): number[] {
+  return layout.holes.map((h) => sim.addHole({ x: h.x, y: h.y, value: h.value }))
+}

@@ -1,0 +1,48 @@
+// The step pipeline as data: an ordered list of named systems. One step runs the list once over every
+// moving ball (pass 0), then again for the balls that stopped at an event, until no ball has an event left
+// before the step's end or MAX_EVENT_PASSES is reached (a ball still behind then finishes next step, on the
+// same exact path). A game may read the list, reorder with care, or add its own systems; each added system
+// runs in every pass and can tell passes apart by `world.pass`.
+import { bounceSystem } from '../systems/bounce'
+import { captureSystem } from '../systems/capture'
+import { cogGateSystem } from '../systems/cogGate'
+import { integrationSystem } from '../systems/integration'
+import { rimRollSystem } from '../systems/rimRoll'
+import { skipOverSystem } from '../systems/skipOver'
+import type { BallWorld } from './world'
+
+export type System = (world: BallWorld) => void
+
+export interface ScheduleEntry {
+  readonly name: string
+  readonly run: System
+}
+
+/** integration, skip-over (Stage 5), capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3). */
+export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
+  Object.freeze({ name: 'integration', run: integrationSystem }),
+  Object.freeze({ name: 'skipOver', run: skipOverSystem }),
+  Object.freeze({ name: 'capture', run: captureSystem }),
+  Object.freeze({ name: 'cogGate', run: cogGateSystem }),
+  Object.freeze({ name: 'bounce', run: bounceSystem }),
+  Object.freeze({ name: 'rimRoll', run: rimRollSystem }),
+])
+
+/** A fresh, editable copy of the default schedule. */
+export function createSchedule(): ScheduleEntry[] {
+  return DEFAULT_SCHEDULE.slice()
+}
+
+/**
+ * Advances the world by exactly dt seconds with the given schedule. dt is not capped here (the public
+ * API's step does that); it must be finite and > 0.
+ */
+export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
+  world.tickEnd = world.time + dt
+  const maxPasses = world.config.MAX_EVENT_PASSES
+  for (world.pass = 0; world.pass < maxPasses; world.pass++) {
+    for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
+    if (world.marked.count === 0) break
+  }
+  world.time = world.tickEnd
+}

@@ -1,0 +1,133 @@
+// The simulation world: a bitECS world whose context carries this world's component stores, the resolved
+// config, the clock and the event buffer. Stores are per world, so any number of worlds (one per test,
+// one per game table) can live side by side without sharing entity ids or arrays.
+import { createWorld, type World } from 'bitecs'
+import { createBallStore, type BallStore } from '../components/Ball'
+import { createHoleStore, type HoleStore } from '../components/Hole'
+import { createPathStore, type PathStore } from '../components/Path'
+import { createRimContactStore, type RimContactStore } from '../components/RimContact'
+import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './config'
+import { createEventBuffer, type EventBuffer } from './events'
+import { growStore } from './store'
+
+/** A growable list of entity ids. */
+export interface IdList {
+  count: number
+  ids: Uint32Array
+}
+
+export function createIdList(capacity = 256): IdList {
+  return { count: 0, ids: new Uint32Array(capacity) }
+}
+
+export function pushId(list: IdList, eid: number): void {
+  if (list.count === list.ids.length) {
+    const next = new Uint32Array(list.ids.length * 2)
+    next.set(list.ids)
+    list.ids = next
+  }
+  list.ids[list.count++] = eid
+}
+
+/** Holes packed for the planner's scan: x, y, R per hole, and the entity ids in the same order. */
+export interface HoleTable {
+  count: number
+  xyr: Float64Array
+  ids: Uint32Array
+}
+
+export interface BallWorldData {
+  config: Readonly<BallPhysicsConfig>
+  Ball: BallStore
+  Hole: HoleStore
+  RimContact: RimContactStore
+  Path: PathStore
+  /** tag: the ball moves (rolling or on a rim) and is iterated by the integration system */
+  Moving: Record<string, never>
+  /** tag: the entity is a ball (balls and holes share the entity index) */
+  IsBall: Record<string, never>
+  /** tag: the entity is a hole */
+  IsHole: Record<string, never>
+  /** entity capacity of the stores; they grow when an id reaches it */
+  capacity: number
+  /** simulation time at the end of the last step, s */
+  time: number
+  /** end of the step being run, s */
+  tickEnd: number
+  /** event pass within the step being run (0 = the pass over every moving ball) */
+  pass: number
+  holes: HoleTable
+  /** balls stopped at an event in this pass, for the decision systems */
+  marked: IdList
+  /** the previous pass's marked balls, which the integration system continues */
+  todo: IdList
+  events: EventBuffer
+}
+
+export type BallWorld = World<BallWorldData>
+
+export interface BallWorldOptions {
+  /** entities preallocated in every store (the stores grow past it) */
+  capacity?: number
+}
+
+/**
+ * Creates an empty world. Games that run their own schedule start here; `createBallPhysics` wraps it
+ * with the public API.
+ */
+export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWorldOptions = {}): BallWorld {
+  const config = resolveConfig(overrides)
+  const capacity = options.capacity ?? 1024
+  if (!Number.isInteger(capacity) || capacity < 1 || capacity > 1 << 26) {
+    throw new RangeError(`options.capacity must be an integer in [1, ${1 << 26}], got ${capacity}`)
+  }
+  const data: BallWorldData = {
+    config,
+    Ball: createBallStore(capacity),
+    Hole: createHoleStore(capacity),
+    RimContact: createRimContactStore(capacity),
+    Path: createPathStore(capacity),
+    Moving: {},
+    IsBall: {},
+    IsHole: {},
+    capacity,
+    time: 0,
+    tickEnd: 0,
+    pass: 0,
+    holes: { count: 0, xyr: new Float64Array(3 * 16), ids: new Uint32Array(16) },
+    marked: createIdList(),
+    todo: createIdList(),
+    events: createEventBuffer(),
+  }
+  return createWorld(data)
+}
+
+/** Grows every store so that `eid` fits. */
+export function ensureCapacity(world: BallWorld, eid: number): void {
+  if (eid < world.capacity) return
+  let cap = world.capacity
+  while (cap <= eid) cap *= 2
+  growStore(world.Ball, cap)
+  growStore(world.Hole, cap)
+  growStore(world.RimContact, cap)
+  growStore(world.Path, cap)
+  world.capacity = cap
+}
+
+/** Appends a hole to the planner's table. */
+export function addHoleToTable(world: BallWorld, eid: number): void {
+  const t = world.holes
+  if (t.count === t.ids.length) {
+    const xyr = new Float64Array(t.xyr.length * 2)
+    xyr.set(t.xyr)
+    const ids = new Uint32Array(t.ids.length * 2)
+    ids.set(t.ids)
+    t.xyr = xyr
+    t.ids = ids
+  }
+  const i = t.count++
+  t.xyr[3 * i] = world.Hole.x[eid]!
+  t.xyr[3 * i + 1] = world.Hole.y[eid]!
+  t.xyr[3 * i + 2] = world.Hole.radius[eid]!
+  t.ids[i] = eid
+}

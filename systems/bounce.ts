@@ -1,0 +1,51 @@
+// Stages 2 and 4, rim bounce. The bounce region: contacts that failed capture and the rim-roll gate.
+//   n̂ = (ball − hole)/|ball − hole|,  v_n = v·n̂,  v_t = v − v_n·n̂,  v' = (1 − μ_t)·v_t − e·v_n·n̂
+// With e = 0.30 a head-on hit loses 1 − e² = 91 % of its normal kinetic energy (Stage 4). The ball leaves
+// on a new straight path; the hole stays locked until its centre is back outside the lip circle.
+// Reads Path.mark, Ball, Hole; writes Ball, Path, RimContact.mode; emits 'bounce' and 'nearMiss'.
+import { PathEvent } from '../components/Path'
+import { RimMode } from '../components/RimContact'
+import { EventType } from '../src/events'
+import { emitHoleEvent, planRolling, startPath } from '../src/motion'
+import type { BallWorld } from '../src/world'
+
+export function bounceSystem(w: BallWorld): void {
+  const P = w.Path
+  const RC = w.RimContact
+  const H = w.Hole
+  const B = w.Ball
+  const e = w.config.RIM_RESTITUTION
+  const keep = 1 - w.config.RIM_FRICTION
+  const list = w.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    if (P.mark[eid] !== PathEvent.Bounce) continue
+    P.mark[eid] = PathEvent.None
+    const hole = P.markHole[eid]!
+    const t = P.nextT[eid]!
+    const x = B.x[eid]!
+    const y = B.y[eid]!
+    const vx = B.vx[eid]!
+    const vy = B.vy[eid]!
+    let nx = x - H.x[hole]!
+    let ny = y - H.y[hole]!
+    const len = Math.hypot(nx, ny)
+    if (len > 0) {
+      nx /= len
+      ny /= len
+    } else {
+      // centre exactly on the hole centre: no radial direction; take the contact as head-on
+      const sp = Math.hypot(vx, vy)
+      nx = sp > 0 ? -vx / sp : 1
+      ny = sp > 0 ? -vy / sp : 0
+    }
+    const vn = vx * nx + vy * ny
+    const tx = vx - vn * nx
+    const ty = vy - vn * ny
+    RC.mode[eid] = RimMode.Transit
+    startPath(w, eid, x, y, keep * tx - e * vn * nx, keep * ty - e * vn * ny, t)
+    planRolling(w, eid)
+    emitHoleEvent(w, EventType.Bounce, eid, hole, t)
+    emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
+  }
+}

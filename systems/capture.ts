@@ -1,0 +1,35 @@
+// Stage 1, capture (Penner's effective hole). Region 4 of the (δ, v) map, and the low-speed part of 2.
+//   δ ≤ δ_eff(v) = R·√(1 − (v/V_MAX)²)
+// At the exact lip crossing (not skipped), a ball inside the speed-shrinking window drops in clean.
+// Also decides every stop: a ball whose speed runs out with its centre inside a lip circle falls in
+// (via 'rest'); one that stops elsewhere rests on the panel, whatever its footprint covers (the v1
+// "covering capture" failure is fixed by testing the centre, not the footprint).
+// Reads Path.mark, RimContact (δ, v), Hole; writes Ball, RimContact, Path.mark; emits 'capture', 'rest'.
+import { PathEvent } from '../components/Path'
+import { CaptureVia } from '../src/events'
+import { capturesClean } from '../src/geometry'
+import { captureBall, restBall } from '../src/motion'
+import type { BallWorld } from '../src/world'
+
+export function captureSystem(w: BallWorld): void {
+  const P = w.Path
+  const RC = w.RimContact
+  const vMax = w.config.V_MAX
+  const list = w.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    const mark = P.mark[eid]
+    if (mark === PathEvent.Lip) {
+      const hole = P.markHole[eid]!
+      if (capturesClean(RC.delta[eid]!, RC.speed[eid]!, w.Hole.radius[hole]!, vMax)) {
+        P.mark[eid] = PathEvent.None
+        captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Clean)
+      }
+    } else if (mark === PathEvent.Stop) {
+      P.mark[eid] = PathEvent.None
+      const hole = RC.hole[eid]!
+      if (hole !== 0) captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Rest)
+      else restBall(w, eid, P.nextT[eid]!)
+    }
+  }
+}

@@ -1,0 +1,116 @@
+// Integration: moves every ball along its closed-form path to the end of the step, or to its next event
+// if that comes first (DECISIONS.md §5).
+//
+// Covers no region by itself: it finds, exactly, the instants at which the other systems decide: the lip
+// crossing (δ, v), the contact circle, the stop, the end of a rim roll. A ball stopped at such an event is
+// marked for the decision systems; the schedule then runs another pass for the marked balls.
+// Bookkeeping events are handled here and the ball goes on: leaving a hole's lip circle (the hole unlocks)
+// and the closest approach of a near miss (reported).
+//   rolling: s(τ) = v0·τ − a·τ²/2, v(τ) = v0 − a·τ        rim roll: see sampleRimRoll
+// Reads Path, RimContact, Hole; writes Ball (x, y, vx, vy), Path (speed, s, mark), RimContact (angle, arc).
+import { query } from 'bitecs'
+import { BallMode } from '../components/Ball'
+import { PathEvent } from '../components/Path'
+import { RimMode } from '../components/RimContact'
+import { EventType, pushEvent } from '../src/events'
+import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion'
+import { pushId, type BallWorld } from '../src/world'
+
+export function integrationSystem(w: BallWorld): void {
+  const tEnd = w.tickEnd
+  const P = w.Path
+  const nextT = P.nextT
+  const mode = w.Ball.mode
+  if (w.pass === 0) {
+    w.marked.count = 0
+    const balls = query(w, [w.Moving])
+    const B = w.Ball
+    const { x, y, vx, vy } = B
+    const { x0, y0, ux, uy, v0, t0, speed } = P
+    const decel = w.config.ROLLING_DECEL
+    for (let i = 0, n = balls.length; i < n; i++) {
+      const eid = balls[i]!
+      if (nextT[eid]! > tEnd) {
+        if (mode[eid] === BallMode.Rolling) {
+          // the common case, inlined: no event this step, evaluate the path at the step's end
+          const v = v0[eid]!
+          let tau = tEnd - t0[eid]!
+          if (decel > 0 && tau * decel > v) tau = v / decel
+          const d = v * tau - 0.5 * decel * tau * tau
+          const vNow = v - decel * tau
+          const dx = ux[eid]!
+          const dy = uy[eid]!
+          x[eid] = x0[eid]! + dx * d
+          y[eid] = y0[eid]! + dy * d
+          vx[eid] = dx * vNow
+          vy[eid] = dy * vNow
+          speed[eid] = vNow
+        } else {
+          sampleRimRoll(w, eid, tEnd)
+        }
+        continue
+      }
+      advanceThroughEvents(w, eid, tEnd)
+    }
+  } else {
+    // continue the balls the decision systems handled in the last pass
+    const todo = w.marked
+    w.marked = w.todo
+    w.todo = todo
+    w.marked.count = 0
+    for (let i = 0, n = todo.count; i < n; i++) {
+      const eid = todo.ids[i]!
+      const m = mode[eid]
+      if (m === BallMode.Rolling || m === BallMode.RimRoll) advanceThroughEvents(w, eid, tEnd)
+    }
+  }
+}
+
+/** Upper bound on bookkeeping events handled for one ball in one pass (each consumes a hole ahead). */
+const MAX_INLINE_EVENTS = 1 << 16
+
+function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
+  const P = w.Path
+  const RC = w.RimContact
+  for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {
+    const t = P.nextT[eid]!
+    if (t > tEnd) {
+      if (w.Ball.mode[eid] === BallMode.RimRoll) sampleRimRoll(w, eid, tEnd)
+      else sampleRolling(w, eid, tEnd)
+      return
+    }
+    const kind = P.nextKind[eid]!
+    const hole = P.nextHole[eid]!
+    if (kind === PathEvent.RollEnd) sampleRimRoll(w, eid, t)
+    else {
+      sampleAtDistance(w, eid, P.nextS[eid]!)
+      P.s[eid] = P.nextS[eid]!
+      P.sHole[eid] = hole
+    }
+    if (kind === PathEvent.Exit) {
+      RC.hole[eid] = 0
+      RC.mode[eid] = RimMode.None
+      RC.hasLip[eid] = 0
+      planRolling(w, eid)
+      continue
+    }
+    if (kind === PathEvent.Near) {
+      const c = (w.Hole.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (w.Hole.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+      pushEvent(w.events, EventType.NearMiss, eid, hole, t, true, Math.abs(c), P.speed[eid]!)
+      planRolling(w, eid)
+      continue
+    }
+    if (P.mark[eid] !== PathEvent.None) {
+      throw new Error(
+        `ball ${eid}: its event (kind ${P.mark[eid]}) was not handled by any system in the schedule; ` +
+          'keep skipOver, capture, cogGate, bounce and rimRoll in it',
+      )
+    }
+    P.mark[eid] = kind
+    P.markHole[eid] = hole
+    pushId(w.marked, eid)
+    return
+  }
+  // unreachable with finite holes; leave the ball where it is and go on next pass
+  pushId(w.marked, eid)
+}

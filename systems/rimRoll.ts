@@ -1,0 +1,71 @@
+// Stage 3, rim-around / lip-out. Region 3 of the (δ, v) map, and the mid-speed part of region 2.
+//   on the lip circle (radius R): v_t(τ) = v_t0·e^(−μ_roll·τ),  arc s(τ) = v_t0·(1 − e^(−μ_roll·τ))/μ_roll
+//   drop when v_t < RIM_ROLL_DROP_SPEED; pop off when s > RIM_ROLL_MAX_TURNS·2πR, whichever comes first
+// A contact the COG gate marked Roll starts rolling: the normal component is spent, the tangential speed
+// kept, and the centre rides the lip circle from the contact's angle (the design's "ball balanced on the
+// lip"). The decay is the exact exponential, so the end times are closed forms and every dt is stable.
+// A drop is a capture (via 'rimRoll'); a pop-off leaves along the tangent with the hole locked until the
+// centre is outside the lip circle.
+// Reads Path.mark, Ball, Hole, RimContact; writes Ball, RimContact, Path; emits 'rimRoll', 'capture', 'lipOut', 'nearMiss'.
+import { BallMode } from '../components/Ball'
+import { PathEvent } from '../components/Path'
+import { RimMode } from '../components/RimContact'
+import { CaptureVia, EventType } from '../src/events'
+import {
+  captureBall,
+  emitHoleEvent,
+  planRimRoll,
+  planRolling,
+  rollPopsOff,
+  sampleRimRoll,
+  startPath,
+} from '../src/motion'
+import type { BallWorld } from '../src/world'
+
+export function rimRollSystem(w: BallWorld): void {
+  const P = w.Path
+  const RC = w.RimContact
+  const H = w.Hole
+  const B = w.Ball
+  const list = w.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    const mark = P.mark[eid]
+    if (mark === PathEvent.Roll) {
+      P.mark[eid] = PathEvent.None
+      const hole = P.markHole[eid]!
+      const t = P.nextT[eid]!
+      const nx = B.x[eid]! - H.x[hole]!
+      const ny = B.y[eid]! - H.y[hole]!
+      const vx = B.vx[eid]!
+      const vy = B.vy[eid]!
+      const len = Math.hypot(nx, ny)
+      // tangential speed along the counter-clockwise tangent (−n_y, n_x)
+      const vt = len > 0 ? (-vx * ny + vy * nx) / len : 0
+      RC.mode[eid] = RimMode.Rolling
+      RC.angle0[eid] = Math.atan2(ny, nx)
+      RC.speed0[eid] = Math.abs(vt)
+      RC.direction[eid] = vt >= 0 ? 1 : -1
+      RC.time0[eid] = t
+      B.mode[eid] = BallMode.RimRoll
+      sampleRimRoll(w, eid, t)
+      planRimRoll(w, eid)
+      emitHoleEvent(w, EventType.RimRoll, eid, hole, t)
+    } else if (mark === PathEvent.RollEnd) {
+      P.mark[eid] = PathEvent.None
+      const hole = P.markHole[eid]!
+      const t = P.nextT[eid]!
+      if (rollPopsOff(w, eid)) {
+        // leave along the tangent; the state at t was set by the integration system
+        RC.mode[eid] = RimMode.Transit
+        B.mode[eid] = BallMode.Rolling
+        startPath(w, eid, B.x[eid]!, B.y[eid]!, B.vx[eid]!, B.vy[eid]!, t)
+        planRolling(w, eid)
+        emitHoleEvent(w, EventType.LipOut, eid, hole, t)
+        emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
+      } else {
+        captureBall(w, eid, hole, t, CaptureVia.RimRoll)
+      }
+    }
+  }
+}
