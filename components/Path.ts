@@ -43,6 +43,8 @@ export const PathSchema = {
    */
   s: Float64Array,
   sHole: Uint32Array,
+  /** hole this path leaves after a bounce or a pop-off: its near miss is already reported */
+  fromHole: Uint32Array,
   /** time, distance, kind and hole of the next event on the current path */
   nextT: Float64Array,
   nextS: Float64Array,

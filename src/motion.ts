@@ -46,6 +46,7 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   P.speed[eid] = speed
   P.s[eid] = 0
   P.sHole[eid] = 0
+  P.fromHole[eid] = 0
   B.x[eid] = x
   B.y[eid] = y
   B.vx[eid] = vx
@@ -128,7 +129,7 @@ export function planRolling(w: BallWorld, eid: number): void {
         const f = R + foot
         if (c2 >= f * f) continue
         // near miss at the closest approach, if not already handled
-        if (!(p > s || (p === s && hid > sHole))) continue
+        if (!(p > s || (p === s && hid > sHole)) || hid === P.fromHole[eid]) continue
         if (p < best || (p === best && hid < bestHole && kind !== PathEvent.Stop)) {
           best = p
           bestHole = hid

@@ -44,6 +44,7 @@ export function bounceSystem(w: BallWorld): void {
     const ty = vy - vn * ny
     RC.mode[eid] = RimMode.Transit
     startPath(w, eid, x, y, keep * tx - e * vn * nx, keep * ty - e * vn * ny, t)
+    P.fromHole[eid] = hole
     planRolling(w, eid)
     emitHoleEvent(w, EventType.Bounce, eid, hole, t)
     emitHoleEvent(w, EventType.NearMiss, eid, hole, t)

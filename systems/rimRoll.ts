@@ -60,6 +60,7 @@ export function rimRollSystem(w: BallWorld): void {
         RC.mode[eid] = RimMode.Transit
         B.mode[eid] = BallMode.Rolling
         startPath(w, eid, B.x[eid]!, B.y[eid]!, B.vx[eid]!, B.vy[eid]!, t)
+        P.fromHole[eid] = hole
         planRolling(w, eid)
         emitHoleEvent(w, EventType.LipOut, eid, hole, t)
         emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
