@@ -17,10 +17,13 @@ describe('COG gate system (Stage 6)', () => {
 
   for (const delta of [12.5, 13, 15, 17]) {
     it(`a tangential brush (δ = ${delta} ≥ R − r/2) bounces at the lip crossing and never rolls or scores`, () => {
-      const { sim, ball } = shoot(delta, rimBand(delta))
+      const v = rimBand(delta)
+      const { sim, ball } = shoot(delta, v, {}, 60)
       const ev = settle(sim)
       expect(sequence(ev)).toEqual(['bounce', 'nearMiss', 'rest'])
-      expect(ev[0]!.time).toBe(sim.drainEvents.length >= 0 ? ev[0]!.time : 0)
+      // bounced at the lip crossing itself, 60 px from the start
+      const a = sim.config.ROLLING_DECEL
+      expect(Math.abs(ev[0]!.time - timeToDistance(60, Math.sqrt(v * v + 2 * a * 60), a))).toBeLessThan(EXACT)
       const st = sim.ballState(ball)
       expect(Math.hypot(st.x, st.y)).toBeGreaterThanOrEqual(18)
     })
@@ -51,9 +54,18 @@ describe('COG gate system (Stage 6)', () => {
     expect(below[0]).toBe('bounce')
   })
 
-  it('with the gate radius shrunk below the roll threshold (a larger ball), nothing rolls', () => {
-    // r = 16: ρ_c = 10, roll needs δ > 8.14 but the gate needs δ < 10 — still a band; r = 17.9 leaves none in the rim band
-    const sim = createBallPhysics()
-    expect(cogRadius(18, 17.9)).toBeCloseTo(9.05, 10)
+  it("uses each ball's own radius: δ = 10.5 rolls for r = 11 but is a brush for r = 17 (ρ_c = 9.5)", () => {
+    // a bigger ball needs longer to fall (v_skip ∝ 1/√r): with V_MAX = 400 both radii have a rim band here
+    const v = 450 * Math.sqrt(1 - (10.5 * 10.5) / 324)
+    const run = (radius: number) => {
+      const sim = createBallPhysics({ V_MAX: 400 })
+      sim.addHole({ x: 0, y: 0 })
+      const a = sim.config.ROLLING_DECEL
+      const lipX = -Math.sqrt(18 * 18 - 10.5 * 10.5)
+      sim.addBall({ x: lipX - 60, y: 10.5, vx: Math.sqrt(v * v + 2 * a * 60), vy: 0, radius })
+      return sequence(settle(sim))
+    }
+    expect(run(11)[0]).toBe('rimRoll')
+    expect(run(17)).toEqual(['bounce', 'nearMiss', 'rest'])
   })
 })
