@@ -1,0 +1,138 @@
+// Bad input: clear errors naming the field and its range, and the world left as it was.
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
+import { settle } from './helpers'
+
+function snapshot(sim: BallPhysics): string {
+  const parts: string[] = [String(sim.time), String(sim.balls()), String(sim.holes()), String(sim.world.events.count)]
+  for (const store of [sim.world.Ball, sim.world.Hole, sim.world.RimContact, sim.world.Path]) {
+    for (const arr of Object.values(store) as Float64Array[]) parts.push(Array.from(arr.subarray(0, 64)).join(','))
+  }
+  return parts.join('|')
+}
+
+function scene(): BallPhysics {
+  const sim = createBallPhysics()
+  addPanel(sim)
+  sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.5, angle: 0.1 })
+  sim.step(1 / 60)
+  sim.drainEvents()
+  return sim
+}
+
+const bad: [string, (s: BallPhysics) => unknown, RegExp, ErrorConstructor][] = [
+  ['addBall x NaN', (s) => s.addBall({ x: NaN, y: 0, vx: 0, vy: 0 }), /ball\.x/, RangeError],
+  ['addBall vy Infinity', (s) => s.addBall({ x: 0, y: 0, vx: 0, vy: Infinity }), /ball\.vy/, RangeError],
+  ['addBall radius 0', (s) => s.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: 0 }), /ball\.radius must be in \(0, /, RangeError],
+  ['addBall radius < 0', (s) => s.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: -3 }), /ball\.radius/, RangeError],
+  ['addBall x string', (s) => s.addBall({ x: '1' as never, y: 0, vx: 0, vy: 0 }), /ball\.x must be a number/, TypeError],
+  ['addBall null', (s) => s.addBall(null as never), /addBall spec/, TypeError],
+  ['addHole y Infinity', (s) => s.addHole({ x: 0, y: -Infinity }), /hole\.y/, RangeError],
+  ['addHole radius 0', (s) => s.addHole({ x: 0, y: 0, radius: 0 }), /hole\.radius/, RangeError],
+  ['addHole value NaN', (s) => s.addHole({ x: 1000, y: 1000, value: NaN }), /hole\.value/, RangeError],
+  ['addHole overlapping', (s) => s.addHole({ x: 60, y: 370 }), /overlaps hole/, RangeError],
+  ['throw power 1.5', (s) => s.throwBall({ x: 0, y: 0, power: 1.5, angle: 0 }), /throw\.power must be in \[0, 1\]/, RangeError],
+  ['throw power -0.1', (s) => s.throwBall({ x: 0, y: 0, power: -0.1, angle: 0 }), /throw\.power/, RangeError],
+  ['throw power NaN', (s) => s.throwBall({ x: 0, y: 0, power: NaN, angle: 0 }), /throw\.power/, RangeError],
+  ['throw angle NaN', (s) => s.throwBall({ x: 0, y: 0, power: 0.5, angle: NaN }), /throw\.angle/, RangeError],
+  ['step 0', (s) => s.step(0), /dt must be a finite number of seconds > 0/, RangeError],
+  ['step -1', (s) => s.step(-1), /dt/, RangeError],
+  ['step NaN', (s) => s.step(NaN), /dt/, RangeError],
+  ['step Infinity', (s) => s.step(Infinity), /dt/, RangeError],
+  ['step string', (s) => s.step('0.1' as never), /dt must be a number/, TypeError],
+  ['ballState unknown', (s) => s.ballState(9999), /ball 9999 is not a live ball/, RangeError],
+  ['ballState of a hole', (s) => s.ballState(s.holes()[0]!), /is not a live ball/, RangeError],
+  ['ballState 1.5', (s) => s.ballState(1.5), /ball must be a ball id/, TypeError],
+  ['removeBall unknown', (s) => s.removeBall(12345), /not a live ball/, RangeError],
+  ['holeState of a ball', (s) => s.holeState(s.balls()[0]!), /is not a live hole/, RangeError],
+]
+
+describe('bad input', () => {
+  for (const [name, call, message, type] of bad) {
+    it(`${name}: throws ${type.name} naming the field, and leaves the world unchanged`, () => {
+      const sim = scene()
+      const before = snapshot(sim)
+      expect(() => call(sim)).toThrow(type)
+      expect(() => call(sim)).toThrow(message)
+      expect(snapshot(sim)).toBe(before)
+    })
+  }
+
+  it('a removed ball id gives a clear error, and its slot is reused cleanly', () => {
+    const sim = createBallPhysics()
+    const b = sim.addBall({ x: 0, y: 0, vx: 10, vy: 0 })
+    sim.removeBall(b)
+    expect(() => sim.ballState(b)).toThrow(/not a live ball of this world \(unknown or removed\)/)
+    expect(() => sim.removeBall(b)).toThrow(RangeError)
+    const c = sim.addBall({ x: 5, y: 5, vx: 0, vy: 0 })
+    expect(sim.ballState(c)).toMatchObject({ x: 5, y: 5, vx: 0, vy: 0, mode: 'rolling' })
+    expect(sim.balls()).toEqual([c])
+  })
+
+  it('no NaN or Infinity reaches a component array under random valid use', () => {
+    const sim = createBallPhysics()
+    addPanel(sim)
+    let seed = 1
+    const rand = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+    for (let i = 0; i < 2000; i++) {
+      const op = rand()
+      if (op < 0.4) sim.throwBall({ x: rand() * 420, y: 300 + rand() * 200, power: rand(), angle: (rand() - 0.5) * 6 })
+      else if (op < 0.5) sim.addBall({ x: rand() * 420, y: rand() * 480, vx: (rand() - 0.5) * 2e5, vy: (rand() - 0.5) * 10 })
+      else if (op < 0.6 && sim.balls().length > 0) sim.removeBall(sim.balls()[0]!)
+      else sim.step(rand() * 0.3 + 1e-6)
+    }
+    settle(sim, 0.1, 60)
+    for (const store of [sim.world.Ball, sim.world.Path, sim.world.RimContact, sim.world.Hole]) {
+      for (const [k, arr] of Object.entries(store) as [string, Float64Array][]) {
+        for (let i = 0; i < arr.length; i++) if (!Number.isFinite(arr[i]!)) throw new Error(`${k}[${i}] = ${arr[i]}`)
+      }
+    }
+  })
+
+  it('stores grow past their preallocated capacity and keep every ball intact', () => {
+    const sim = createBallPhysics({}, { capacity: 4 })
+    const ids = Array.from({ length: 100 }, (_, i) => sim.addBall({ x: i * 30, y: 0, vx: 0, vy: -100 }))
+    sim.step(0.1)
+    for (const [i, b] of ids.entries()) expect(sim.ballState(b).x).toBe(i * 30)
+    expect(sim.world.capacity).toBeGreaterThanOrEqual(101)
+  })
+})
+
+describe('config', () => {
+  it('rejects non-finite, out-of-range and unknown keys with the key and its range', () => {
+    expect(() => createBallPhysics({ V_MAX: NaN })).toThrow(/config\.V_MAX must be in \(0, 1000000\]/)
+    expect(() => createBallPhysics({ RIM_RESTITUTION: 1.2 })).toThrow(/config\.RIM_RESTITUTION must be in \[0, 1\], got 1.2/)
+    expect(() => createBallPhysics({ ROLLING_DECEL: -1 })).toThrow(/config\.ROLLING_DECEL/)
+    expect(() => createBallPhysics({ MAX_EVENT_PASSES: 2.5 })).toThrow(/an integer/)
+    expect(() => createBallPhysics({ HOLE_RADUS: 3 } as never)).toThrow(/config\.HOLE_RADUS is not a known key/)
+    expect(() => createBallPhysics({ MIN_VY: 500, MAX_VY: 400 })).toThrow(/config\.MAX_VY/)
+    expect(() => createBallPhysics({ V_MAX: '600' as never })).toThrow(TypeError)
+  })
+
+  it('keeps GRAVITY and V_SKIP_MAX consistent: either derives the other, both must agree', () => {
+    const d = createBallPhysics().config
+    expect(d.GRAVITY).toBeCloseTo((640 * 640 * 11) / (2 * 18 * 18), 9)
+    const g = createBallPhysics({ GRAVITY: 9000 }).config
+    expect(g.V_SKIP_MAX).toBeCloseTo(18 * Math.sqrt((2 * 9000) / 11), 9)
+    const v = createBallPhysics({ V_SKIP_MAX: 500 }).config
+    expect(v.GRAVITY).toBeCloseTo((500 * 500 * 11) / (2 * 18 * 18), 9)
+    expect(() => createBallPhysics({ GRAVITY: 9000, V_SKIP_MAX: 640 })).toThrow(/GRAVITY = 9000 implies V_SKIP_MAX/)
+    expect(createBallPhysics({ GRAVITY: d.GRAVITY, V_SKIP_MAX: 640 }).config.V_SKIP_MAX).toBe(640)
+  })
+
+  it('the defaults are the design table', () => {
+    expect(createBallPhysics().config).toMatchObject({
+      HOLE_RADIUS: 18,
+      BALL_RADIUS: 11,
+      V_MAX: 600,
+      V_SKIP_MAX: 640,
+      RIM_RESTITUTION: 0.3,
+      RIM_FRICTION: 0.3,
+      RIM_ROLL_RATIO: 1.4,
+      RIM_ROLL_FRICTION: 5,
+      RIM_ROLL_DROP_SPEED: 110,
+      MIN_VY: 175,
+      MAX_VY: 700,
+    })
+  })
+})
