@@ -35,7 +35,7 @@ export const PathSchema = {
   v0: Float64Array,
   /** time at the origin, s */
   t0: Float64Array,
-  /** current speed (kept so (δ, v) at an event is the closed form's, not a hypot of components) */
+  /** speed at the ball's last event, from the closed form (so (δ, v) at an event is exact, not a hypot of components) */
   speed: Float64Array,
   /**
    * Distance along the path, and hole, of the last event handled on it. Events are ordered by

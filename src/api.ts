@@ -8,7 +8,7 @@ import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
 import { captureBall, launchBall, planRolling, sampleRolling, startPath } from './motion'
 import { createSchedule, runSchedule, type ScheduleEntry } from './schedule'
 import { clearSlot } from './store'
-import { addHoleToTable, createBallWorld, ensureCapacity, type BallWorld, type BallWorldOptions } from './world'
+import { addHoleToTable, createBallWorld, ensureCapacity, removeMoving, type BallWorld, type BallWorldOptions } from './world'
 
 /** Largest |coordinate| accepted, px: keeps squares of distances far from overflow. */
 export const MAX_COORDINATE = 1e9
@@ -207,7 +207,6 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
           if (inside) {
             w.RimContact.hole[b] = eid
             w.RimContact.hasLip[b] = 0
-            addComponent(w, b, w.Moving)
             captureBall(w, b, eid, w.time, CaptureVia.Rest)
           }
           continue
@@ -273,6 +272,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
 
     removeBall(ball) {
       const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      removeMoving(w, b)
       removeEntity(w, b)
       clearSlot(w.Ball, b)
       clearSlot(w.Path, b)

@@ -4,7 +4,6 @@
 // A straight path is (origin, unit direction, speed v0, start time t0) with constant deceleration a; the
 // distance rolled is s(τ) = v0·τ − a·τ²/2. Events are found as distances along the path (where geometry
 // is exact) and turned into times once. Nothing here depends on where ticks fall.
-import { addComponent, removeComponent } from 'bitecs'
 import { BallMode } from '../components/Ball'
 import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
@@ -21,7 +20,7 @@ import {
   stopTime,
   timeToDistance,
 } from './geometry'
-import type { BallWorld } from './world'
+import { addMoving, removeMoving, type BallWorld } from './world'
 
 /** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
 export const NEVER = 1e300
@@ -262,7 +261,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
   w.Path.nextKind[eid] = PathEvent.None
   w.RimContact.hole[eid] = hole
   w.RimContact.mode[eid] = RimMode.None
-  removeComponent(w, eid, w.Moving)
+  removeMoving(w, eid)
 }
 
 /** The ball stops on the panel, outside every hole, at time t. */
@@ -275,7 +274,7 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
   w.Path.speed[eid] = 0
   w.Path.nextT[eid] = NEVER
   w.Path.nextKind[eid] = PathEvent.None
-  removeComponent(w, eid, w.Moving)
+  removeMoving(w, eid)
 }
 
 /** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
@@ -283,5 +282,5 @@ export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: 
   w.Ball.mode[eid] = BallMode.Rolling
   startPath(w, eid, x, y, vx, vy, t)
   planRolling(w, eid)
-  addComponent(w, eid, w.Moving)
+  addMoving(w, eid)
 }

@@ -8,7 +8,6 @@
 // and the closest approach of a near miss (reported).
 //   rolling: s(τ) = v0·τ − a·τ²/2, v(τ) = v0 − a·τ        rim roll: see sampleRimRoll
 // Reads Path, RimContact, Hole; writes Ball (x, y, vx, vy), Path (speed, s, mark), RimContact (angle, arc).
-import { query } from 'bitecs'
 import { BallMode } from '../components/Ball'
 import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
@@ -23,12 +22,13 @@ export function integrationSystem(w: BallWorld): void {
   const mode = w.Ball.mode
   if (w.pass === 0) {
     w.marked.count = 0
-    const balls = query(w, [w.Moving])
+    // from the end: a ball that stops or falls in is swapped out of the set behind the cursor
+    const balls = w.moving.dense
     const B = w.Ball
     const { x, y, vx, vy } = B
-    const { x0, y0, ux, uy, v0, t0, speed } = P
+    const { x0, y0, ux, uy, v0, t0 } = P
     const decel = w.config.ROLLING_DECEL
-    for (let i = 0, n = balls.length; i < n; i++) {
+    for (let i = w.moving.count - 1; i >= 0; i--) {
       const eid = balls[i]!
       if (nextT[eid]! > tEnd) {
         if (mode[eid] === BallMode.Rolling) {
@@ -44,7 +44,6 @@ export function integrationSystem(w: BallWorld): void {
           y[eid] = y0[eid]! + dy * d
           vx[eid] = dx * vNow
           vy[eid] = dy * vNow
-          speed[eid] = vNow
         } else {
           sampleRimRoll(w, eid, tEnd)
         }

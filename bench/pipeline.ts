@@ -1,0 +1,133 @@
+// Pipeline cost per ball-step against a plain typed-array loop that only moves the same balls.
+// Prints figures and writes bench/results/pipeline.json; asserts nothing (machines here are shared and
+// noisy: compare the ratio measured side by side in this run, not absolute times across runs).
+//
+//   npm run bench            (N = 100,000)       npm run bench -- 20000   (another N)
+import { mkdirSync, writeFileSync } from 'node:fs'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
+
+const N = Number(process.argv[2] ?? 100_000)
+const DT = 1 / 120
+const WARMUP = 30
+const STEPS = 120
+const REPEATS = 5
+
+function rand(seed: number) {
+  let a = seed >>> 0
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0
+    let t = Math.imul(a ^ (a >>> 15), a | 1)
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
+  }
+}
+
+interface Ball0 {
+  x: Float64Array
+  y: Float64Array
+  vx: Float64Array
+  vy: Float64Array
+}
+
+/** Open field: 25 holes on a 5 × 5 grid 400 px apart, balls scattered among them (events are sparse). */
+function openField(n: number): Ball0 {
+  const r = rand(1)
+  const b = { x: new Float64Array(n), y: new Float64Array(n), vx: new Float64Array(n), vy: new Float64Array(n) }
+  for (let i = 0; i < n; i++) {
+    const speed = 300 + 400 * r()
+    const ang = r() * 2 * Math.PI
+    b.x[i] = r() * 2000
+    b.y[i] = r() * 2000
+    b.vx[i] = speed * Math.cos(ang)
+    b.vy[i] = speed * Math.sin(ang)
+  }
+  return b
+}
+
+function openFieldSim(init: Ball0, n: number): BallPhysics {
+  const sim = createBallPhysics({}, { capacity: n + 64 })
+  for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) sim.addHole({ x: 200 + 400 * i, y: 200 + 400 * j })
+  for (let i = 0; i < n; i++) sim.addBall({ x: init.x[i]!, y: init.y[i]!, vx: init.vx[i]!, vy: init.vy[i]! })
+  return sim
+}
+
+/** The default panel: every ball thrown from the launch line at once (events are dense). */
+function panelSim(n: number): BallPhysics {
+  const r = rand(2)
+  const sim = createBallPhysics({}, { capacity: n + 64 })
+  addPanel(sim)
+  for (let i = 0; i < n; i++) {
+    sim.throwBall({ x: DEFAULT_PANEL.launch.x + (r() - 0.5) * 300, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.7 * r(), angle: (r() - 0.5) * 1.2 })
+  }
+  return sim
+}
+
+/** The limit: move the same balls with the same rolling deceleration, nothing else. */
+function plainLoop(b: Ball0, n: number, steps: number, decel: number): number {
+  const { x, y, vx, vy } = b
+  const t0 = process.hrtime.bigint()
+  for (let s = 0; s < steps; s++) {
+    for (let i = 0; i < n; i++) {
+      const u = vx[i]!
+      const v = vy[i]!
+      const sp = Math.sqrt(u * u + v * v)
+      const k = sp > decel * DT ? (sp - decel * DT) / sp : 0
+      x[i] = x[i]! + u * DT
+      y[i] = y[i]! + v * DT
+      vx[i] = u * k
+      vy[i] = v * k
+    }
+  }
+  return Number(process.hrtime.bigint() - t0)
+}
+
+function timeSim(sim: BallPhysics, steps: number): number {
+  const t0 = process.hrtime.bigint()
+  for (let s = 0; s < steps; s++) {
+    sim.step(DT)
+    sim.world.events.count = 0 // a game drains each frame; dropping the buffer here keeps event objects out of the timing
+  }
+  return Number(process.hrtime.bigint() - t0)
+}
+
+const median = (a: number[]) => [...a].sort((p, q) => p - q)[Math.floor(a.length / 2)]!
+
+const decel = createBallPhysics().config.ROLLING_DECEL
+const plain: number[] = []
+const open: number[] = []
+const panel: number[] = []
+let moving = 0
+for (let rep = 0; rep < REPEATS; rep++) {
+  const a = openField(N)
+  plainLoop(a, N, WARMUP, decel)
+  plain.push(plainLoop(a, N, STEPS, decel) / (N * STEPS))
+
+  const sim = openFieldSim(openField(N), N)
+  timeSim(sim, WARMUP)
+  open.push(timeSim(sim, STEPS) / (N * STEPS))
+  moving = sim.balls().filter((b) => sim.world.Ball.mode[b]! < 2).length
+
+  const p = panelSim(N)
+  timeSim(p, WARMUP)
+  panel.push(timeSim(p, STEPS) / (N * STEPS))
+}
+
+const result = {
+  date: new Date().toISOString(),
+  node: process.version,
+  balls: N,
+  holes: 25,
+  dt: DT,
+  steps: STEPS,
+  repeats: REPEATS,
+  nsPerBallStep: { plainLoop: median(plain), openField: median(open), panel: median(panel) },
+  ratioToPlain: { openField: median(open) / median(plain), panel: median(panel) / median(plain) },
+  openFieldBallsStillMovingAfterRun: moving,
+}
+console.log(`pipeline benchmark, ${N} balls, 25 holes, dt = 1/120 s, ${STEPS} steps, median of ${REPEATS}`)
+console.log(`  plain typed-array loop (moves only)   ${result.nsPerBallStep.plainLoop.toFixed(2)} ns/ball-step`)
+console.log(`  full pipeline, open field (sparse)    ${result.nsPerBallStep.openField.toFixed(2)} ns/ball-step   ${result.ratioToPlain.openField.toFixed(2)}× plain`)
+console.log(`  full pipeline, default panel (dense)  ${result.nsPerBallStep.panel.toFixed(2)} ns/ball-step   ${result.ratioToPlain.panel.toFixed(2)}× plain`)
+mkdirSync('bench/results', { recursive: true })
+writeFileSync('bench/results/pipeline.json', JSON.stringify(result, null, 2) + '\n')
+console.log('wrote bench/results/pipeline.json')
