@@ -20,6 +20,7 @@ import {
   stopTime,
   timeToDistance,
 } from './geometry'
+import { buildHoleGrid, walkHoleGrid } from './broadphase'
 import { addMoving, removeMoving, type BallWorld } from './world'
 
 /** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
@@ -52,6 +53,58 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   B.vy[eid] = vy
 }
 
+// The planner's working state, kept in module scope so that planning allocates nothing (it never runs
+// re-entrantly).
+let qX0 = 0
+let qY0 = 0
+let qUx = 0
+let qUy = 0
+let qS = 0
+let qSHole = 0
+let qFrom = 0
+let qLocked = 0
+let qFoot = 0
+let qXyr: Float64Array = new Float64Array(0)
+let qIds: Uint32Array = new Uint32Array(0)
+let best = 0
+let bestHole = 0
+let bestKind = 0
+
+/** Tests hole `i` of the table against the path; keeps the earliest event. Returns the best distance. */
+function considerHole(i: number): number {
+  const hid = qIds[i]!
+  const hx = qXyr[3 * i]! - qX0
+  const hy = qXyr[3 * i + 1]! - qY0
+  const R = qXyr[3 * i + 2]!
+  const p = hx * qUx + hy * qUy
+  // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
+  if (p - R > best || hid === qLocked) return best
+  const c = hx * qUy - hy * qUx
+  const c2 = c * c
+  if (c2 < R * R) {
+    // lip crossing, if the centre is still approaching the hole centre
+    if (!(p > qS)) return best
+    let d = p - Math.sqrt(R * R - c2)
+    if (d < qS) d = qS // a rounding error behind (or found inside): decided now, never lost
+    if (d < best || (d === best && hid < bestHole && bestKind !== PathEvent.Stop)) {
+      best = d
+      bestHole = hid
+      bestKind = PathEvent.Lip
+    }
+  } else {
+    const f = R + qFoot
+    if (c2 >= f * f) return best
+    // near miss at the closest approach, if not already handled and not the hole the path leaves
+    if (!(p > qS || (p === qS && hid > qSHole)) || hid === qFrom) return best
+    if (p < best || (p === best && hid < bestHole && bestKind !== PathEvent.Stop)) {
+      best = p
+      bestHole = hid
+      bestKind = PathEvent.Near
+    }
+  }
+  return best
+}
+
 /**
  * Finds the next event of a ball on a straight path after the last handled one (Path.s, Path.sHole):
  * its stop, a lip crossing, a near miss, or, for the hole it is inside, the contact circle or the exit.
@@ -61,91 +114,68 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
 export function planRolling(w: BallWorld, eid: number): void {
   const P = w.Path
   const RC = w.RimContact
-  const x0 = P.x0[eid]!
-  const y0 = P.y0[eid]!
-  const ux = P.ux[eid]!
-  const uy = P.uy[eid]!
   const v0 = P.v0[eid]!
-  const s = P.s[eid]!
-  const sHole = P.sHole[eid]!
   const decel = w.config.ROLLING_DECEL
-  const foot = w.Ball.radius[eid]!
+  qX0 = P.x0[eid]!
+  qY0 = P.y0[eid]!
+  qUx = P.ux[eid]!
+  qUy = P.uy[eid]!
+  qS = P.s[eid]!
+  qSHole = P.sHole[eid]!
+  qFrom = P.fromHole[eid]!
+  qFoot = w.Ball.radius[eid]!
+  qLocked = RC.hole[eid]!
 
-  let best = stopDistance(v0, decel)
-  let bestHole = 0
-  let kind: number = best === Infinity ? PathEvent.None : PathEvent.Stop
+  best = stopDistance(v0, decel)
+  bestHole = 0
+  bestKind = best === Infinity ? PathEvent.None : PathEvent.Stop
 
   if (v0 > 0) {
-    const locked = RC.hole[eid]!
+    const locked = qLocked
     if (locked !== 0) {
-      const hx = w.Hole.x[locked]! - x0
-      const hy = w.Hole.y[locked]! - y0
+      const hx = w.Hole.x[locked]! - qX0
+      const hy = w.Hole.y[locked]! - qY0
       const R = w.Hole.radius[locked]!
-      const p = hx * ux + hy * uy
-      const c = hx * uy - hy * ux
+      const p = hx * qUx + hy * qUy
+      const c = hx * qUy - hy * qUx
       const c2 = c * c
-      let d = Infinity
+      let d: number
       let k: number = PathEvent.Exit
-      const rc = cogRadius(R, foot)
+      const rc = cogRadius(R, qFoot)
       if (RC.mode[eid] === RimMode.Entering && c2 < rc * rc) {
         d = p - Math.sqrt(rc * rc - c2)
         k = PathEvent.Contact
       } else {
-        d = c2 < R * R ? p + Math.sqrt(R * R - c2) : s
+        d = c2 < R * R ? p + Math.sqrt(R * R - c2) : qS
       }
-      if (d < s) d = s
+      if (d < qS) d = qS
       if (d < best) {
         best = d
         bestHole = locked
-        kind = k
+        bestKind = k
       }
     }
 
     const table = w.holes
-    const xyr = table.xyr
-    const ids = table.ids
-    for (let i = 0, n = table.count; i < n; i++) {
-      const hid = ids[i]!
-      const hx = xyr[3 * i]! - x0
-      const hy = xyr[3 * i + 1]! - y0
-      const R = xyr[3 * i + 2]!
-      const p = hx * ux + hy * uy
-      // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
-      if (p - R > best || hid === locked) continue
-      const c = hx * uy - hy * ux
-      const c2 = c * c
-      if (c2 < R * R) {
-        // lip crossing, if the centre is still approaching the hole centre
-        if (!(p > s)) continue
-        let d = p - Math.sqrt(R * R - c2)
-        if (d < s) d = s // a rounding error behind (or found inside): decided now, never lost
-        if (d < best || (d === best && hid < bestHole && kind !== PathEvent.Stop)) {
-          best = d
-          bestHole = hid
-          kind = PathEvent.Lip
-        }
-      } else {
-        const f = R + foot
-        if (c2 >= f * f) continue
-        // near miss at the closest approach, if not already handled
-        if (!(p > s || (p === s && hid > sHole)) || hid === P.fromHole[eid]) continue
-        if (p < best || (p === best && hid < bestHole && kind !== PathEvent.Stop)) {
-          best = p
-          bestHole = hid
-          kind = PathEvent.Near
-        }
-      }
+    qXyr = table.xyr
+    qIds = table.ids
+    const grid = w.holeGrid
+    if (table.count < w.gridFrom) {
+      for (let i = 0, n = table.count; i < n; i++) considerHole(i)
+    } else {
+      if (grid.dirty || qFoot > grid.ballRadius) buildHoleGrid(grid, table, Math.max(qFoot, grid.ballRadius, w.config.BALL_RADIUS))
+      walkHoleGrid(grid, qX0, qY0, qUx, qUy, qS, best, considerHole)
     }
   }
 
-  P.nextKind[eid] = kind
+  P.nextKind[eid] = bestKind
   P.nextHole[eid] = bestHole
-  if (kind === PathEvent.None) {
+  if (bestKind === PathEvent.None) {
     P.nextS[eid] = 0
     P.nextT[eid] = NEVER
   } else {
     P.nextS[eid] = best
-    const tau = kind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(best, v0, decel)
+    const tau = bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(best, v0, decel)
     P.nextT[eid] = P.t0[eid]! + tau
   }
 }

@@ -8,6 +8,7 @@ import { createPathStore, type PathStore } from '../components/Path'
 import { createRimContactStore, type RimContactStore } from '../components/RimContact'
 import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './config'
 import { createEventBuffer, type EventBuffer } from './events'
+import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './broadphase'
 import { growStore } from './store'
 
 /** A growable list of entity ids. */
@@ -97,6 +98,10 @@ export interface BallWorldData {
   /** event pass within the step being run (0 = the pass over every moving ball) */
   pass: number
   holes: HoleTable
+  /** broadphase over `holes`, rebuilt when they change */
+  holeGrid: HoleGrid
+  /** hole count from which the planner walks the grid (0: always; Infinity: never) */
+  gridFrom: number
   /** balls stopped at an event in this pass, for the decision systems */
   marked: IdList
   /** the previous pass's marked balls, which the integration system continues */
@@ -109,6 +114,11 @@ export type BallWorld = World<BallWorldData>
 export interface BallWorldOptions {
   /** entities preallocated in every store (the stores grow past it) */
   capacity?: number
+  /**
+   * How a ball's path is tested against the holes: 'scan' tests every hole, 'grid' walks a uniform grid,
+   * 'auto' (default) scans below GRID_MIN_HOLES holes and walks the grid above. Outcomes are the same.
+   */
+  broadphase?: 'auto' | 'grid' | 'scan'
 }
 
 /**
@@ -118,6 +128,10 @@ export interface BallWorldOptions {
 export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWorldOptions = {}): BallWorld {
   const config = resolveConfig(overrides)
   const capacity = options.capacity ?? 1024
+  const broadphase = options.broadphase ?? 'auto'
+  if (broadphase !== 'auto' && broadphase !== 'grid' && broadphase !== 'scan') {
+    throw new RangeError(`options.broadphase must be 'auto', 'grid' or 'scan', got ${String(broadphase)}`)
+  }
   if (!Number.isInteger(capacity) || capacity < 1 || capacity > 1 << 26) {
     throw new RangeError(`options.capacity must be an integer in [1, ${1 << 26}], got ${capacity}`)
   }
@@ -135,6 +149,8 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     tickEnd: 0,
     pass: 0,
     holes: { count: 0, xyr: new Float64Array(3 * 16), ids: new Uint32Array(16) },
+    holeGrid: createHoleGrid(),
+    gridFrom: broadphase === 'grid' ? 0 : broadphase === 'scan' ? Infinity : GRID_MIN_HOLES,
     marked: createIdList(),
     todo: createIdList(),
     events: createEventBuffer(),
@@ -173,4 +189,5 @@ export function addHoleToTable(world: BallWorld, eid: number): void {
   t.xyr[3 * i + 1] = world.Hole.y[eid]!
   t.xyr[3 * i + 2] = world.Hole.radius[eid]!
   t.ids[i] = eid
+  world.holeGrid.dirty = true
 }

@@ -1,0 +1,204 @@
+// Hole broadphase: a uniform grid over the hole centres, walked along a ball's straight path, so that
+// planning a path costs the cells it crosses instead of every hole on the panel.
+//
+// Cells are at least as wide as the farthest a hole can matter to a path (R + r: a near miss), so every
+// hole whose events a path can meet lies in the 3 × 3 block around a cell the path's centre line crosses.
+// The walk goes cell by cell in order of distance; a hole not yet seen when the walk enters a cell at
+// distance t has its closest approach beyond t, so none of its events comes before t − R_max, and the walk
+// stops once t − R_max passes the best event found.
+import type { HoleTable } from './world'
+
+/** Below this many holes the planner scans them all (no grid to keep); from it on, it walks the grid. */
+export const GRID_MIN_HOLES = 32
+
+export interface HoleGrid {
+  /** the table changed since the grid was built */
+  dirty: boolean
+  /** holes in the table when built */
+  built: number
+  cell: number
+  minX: number
+  minY: number
+  nx: number
+  ny: number
+  /** CSR: holes of cell c are items[start[c] .. start[c + 1]) (indices into the hole table) */
+  start: Int32Array
+  items: Int32Array
+  /** largest hole radius, px */
+  maxRadius: number
+  /** ball radius the cell size was chosen for; larger balls fall back to the full scan */
+  ballRadius: number
+  /** per table index: the query that last saw the hole (dedupe across overlapping 3 × 3 blocks) */
+  seen: Uint32Array
+  query: number
+}
+
+export function createHoleGrid(): HoleGrid {
+  return {
+    dirty: true,
+    built: 0,
+    cell: 1,
+    minX: 0,
+    minY: 0,
+    nx: 0,
+    ny: 0,
+    start: new Int32Array(1),
+    items: new Int32Array(0),
+    maxRadius: 0,
+    ballRadius: 0,
+    seen: new Uint32Array(0),
+    query: 0,
+  }
+}
+
+/** Largest number of cells the grid may have; a sparser grid is made coarser to stay under it. */
+const MAX_CELLS = 1 << 22
+
+/** Builds the grid for the holes in `table`, sized for balls up to `ballRadius`. */
+export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: number): void {
+  const n = table.count
+  const xyr = table.xyr
+  let minX = Infinity
+  let minY = Infinity
+  let maxX = -Infinity
+  let maxY = -Infinity
+  let maxR = 0
+  for (let i = 0; i < n; i++) {
+    const x = xyr[3 * i]!
+    const y = xyr[3 * i + 1]!
+    if (x < minX) minX = x
+    if (x > maxX) maxX = x
+    if (y < minY) minY = y
+    if (y > maxY) maxY = y
+    if (xyr[3 * i + 2]! > maxR) maxR = xyr[3 * i + 2]!
+  }
+  let cell = maxR + ballRadius
+  // one cell of padding on every side, so a path point within R + r of a hole is inside the grid
+  let nx = Math.floor((maxX - minX) / cell) + 3
+  let ny = Math.floor((maxY - minY) / cell) + 3
+  while (nx * ny > MAX_CELLS) {
+    cell *= 2
+    nx = Math.floor((maxX - minX) / cell) + 3
+    ny = Math.floor((maxY - minY) / cell) + 3
+  }
+  grid.cell = cell
+  grid.minX = minX - cell
+  grid.minY = minY - cell
+  grid.nx = nx
+  grid.ny = ny
+  grid.maxRadius = maxR
+  grid.ballRadius = ballRadius
+  const start = new Int32Array(nx * ny + 1)
+  const cellOf = new Int32Array(n)
+  for (let i = 0; i < n; i++) {
+    const cx = Math.floor((xyr[3 * i]! - grid.minX) / cell)
+    const cy = Math.floor((xyr[3 * i + 1]! - grid.minY) / cell)
+    const c = cy * nx + cx
+    cellOf[i] = c
+    start[c + 1]!++
+  }
+  for (let c = 0; c < nx * ny; c++) start[c + 1]! += start[c]!
+  const fill = start.slice(0, nx * ny)
+  const items = new Int32Array(n)
+  for (let i = 0; i < n; i++) items[fill[cellOf[i]!]!++] = i
+  grid.start = start
+  grid.items = items
+  // stamps from before the rebuild must not read as seen: start them afresh
+  if (grid.seen.length < n) grid.seen = new Uint32Array(Math.max(n, 2 * grid.seen.length))
+  else grid.seen.fill(0)
+  grid.query = 0
+  grid.built = n
+  grid.dirty = false
+}
+
+/** Visits a table index; returns the best event distance found so far (the walk's stopping bound). */
+export type HoleVisitor = (index: number) => number
+
+/**
+ * Calls `visit` once for every hole that may have an event on the ray from (x, y) along the unit
+ * direction (ux, uy) beyond distance `from`, nearest cells first. `best` is the best event distance known
+ * before the walk (the stop, say); `visit` returns the best found so far. The walk stops when no unseen
+ * hole can beat it.
+ */
+export function walkHoleGrid(
+  grid: HoleGrid,
+  x: number,
+  y: number,
+  ux: number,
+  uy: number,
+  from: number,
+  best: number,
+  visit: HoleVisitor,
+): void {
+  if (++grid.query === 0xffffffff) {
+    grid.seen.fill(0)
+    grid.query = 1
+  }
+  const q = grid.query
+  const cell = grid.cell
+  const nx = grid.nx
+  const ny = grid.ny
+  // clip the ray to the grid's box
+  const x0 = grid.minX
+  const y0 = grid.minY
+  const x1 = x0 + nx * cell
+  const y1 = y0 + ny * cell
+  let tMin = from
+  let tMax = Infinity
+  if (ux !== 0) {
+    const ta = (x0 - x) / ux
+    const tb = (x1 - x) / ux
+    tMin = Math.max(tMin, Math.min(ta, tb))
+    tMax = Math.min(tMax, Math.max(ta, tb))
+  } else if (x < x0 || x >= x1) return
+  if (uy !== 0) {
+    const ta = (y0 - y) / uy
+    const tb = (y1 - y) / uy
+    tMin = Math.max(tMin, Math.min(ta, tb))
+    tMax = Math.min(tMax, Math.max(ta, tb))
+  } else if (y < y0 || y >= y1) return
+  if (tMin > tMax || tMin - grid.maxRadius > best) return
+  const px = x + ux * tMin
+  const py = y + uy * tMin
+  let cx = Math.min(nx - 1, Math.max(0, Math.floor((px - x0) / cell)))
+  let cy = Math.min(ny - 1, Math.max(0, Math.floor((py - y0) / cell)))
+  const stepX = ux > 0 ? 1 : -1
+  const stepY = uy > 0 ? 1 : -1
+  let tNextX = ux !== 0 ? tMin + (x0 + (cx + (ux > 0 ? 1 : 0)) * cell - px) / ux : Infinity
+  let tNextY = uy !== 0 ? tMin + (y0 + (cy + (uy > 0 ? 1 : 0)) * cell - py) / uy : Infinity
+  const dX = ux !== 0 ? cell / Math.abs(ux) : Infinity
+  const dY = uy !== 0 ? cell / Math.abs(uy) : Infinity
+  const start = grid.start
+  const items = grid.items
+  const seen = grid.seen
+  const reach = grid.maxRadius
+  let tEnter = tMin
+  for (;;) {
+    // the 3 × 3 block around the cell
+    for (let by = cy - 1; by <= cy + 1; by++) {
+      if (by < 0 || by >= ny) continue
+      for (let bx = cx - 1; bx <= cx + 1; bx++) {
+        if (bx < 0 || bx >= nx) continue
+        const c = by * nx + bx
+        for (let k = start[c]!, e = start[c + 1]!; k < e; k++) {
+          const i = items[k]!
+          if (seen[i] === q) continue
+          seen[i] = q
+          best = visit(i)
+        }
+      }
+    }
+    if (tNextX < tNextY) {
+      tEnter = tNextX
+      cx += stepX
+      tNextX += dX
+      if (cx < 0 || cx >= nx) return
+    } else {
+      tEnter = tNextY
+      cy += stepY
+      tNextY += dY
+      if (cy < 0 || cy >= ny) return
+    }
+    if (tEnter > tMax || tEnter - reach > best) return
+  }
+}
