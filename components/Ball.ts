@@ -7,9 +7,11 @@ export const BallMode = {
   RimRoll: 1,
   Captured: 2,
   Resting: 3,
+  /** left the panel through an open edge of the walls */
+  Out: 4,
 } as const
 export type BallModeCode = (typeof BallMode)[keyof typeof BallMode]
-export const BALL_MODE_NAMES = ['rolling', 'rimRoll', 'captured', 'resting'] as const
+export const BALL_MODE_NAMES = ['rolling', 'rimRoll', 'captured', 'resting', 'out'] as const
 export type BallModeName = (typeof BALL_MODE_NAMES)[number]
 
 export const BallSchema = {

@@ -21,6 +21,10 @@ export const PathEvent = {
   /** marks set by the COG gate for the bounce and rim-roll systems */
   Bounce: 7,
   Roll: 8,
+  /** centre reaches a closed wall, one radius in (walls system) */
+  Wall: 9,
+  /** centre crosses an open edge of the walls (walls system) */
+  Gutter: 10,
 } as const
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
 
@@ -50,6 +54,7 @@ export const PathSchema = {
   nextS: Float64Array,
   nextKind: Uint8Array,
   nextHole: Uint32Array,
+  /** for Wall and Gutter events, nextHole and markHole hold the WallEdge bit instead of a hole id */
   /** the event the ball is stopped at in this pass, for the systems (PathEvent.None when none) */
   mark: Uint8Array,
   markHole: Uint32Array,

@@ -3,6 +3,7 @@
 import { addComponent, addEntity, entityExists, hasComponent, query, removeEntity } from 'bitecs'
 import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../components/Ball'
 import { RimMode } from '../components/RimContact'
+import { WallEdge } from '../components/Walls'
 import type { BallPhysicsConfig, ConfigOverrides } from './config'
 import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
 import { captureBall, launchBall, planRolling, sampleRolling, startPath } from './motion'
@@ -48,6 +49,18 @@ export interface ThrowSpec {
   radius?: number
 }
 
+export interface WallsSpec {
+  /** inner faces of the rectangle, px (y down: top = minY); maxX > minX, maxY > minY */
+  minX: number
+  minY: number
+  maxX: number
+  maxY: number
+  /** normal restitution at the walls, [0, 1]; default 0.5 */
+  restitution?: number
+  /** open edges: a ball whose centre crosses one leaves the panel ('gutter' event, mode 'out') */
+  open?: { left?: boolean; top?: boolean; right?: boolean; bottom?: boolean }
+}
+
 export interface BallState {
   x: number
   y: number
@@ -81,6 +94,10 @@ export interface BallPhysics {
   ballState(ball: number): BallState
   holeState(hole: number): HoleState
   removeBall(ball: number): void
+  /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
+  setWalls(spec: WallsSpec): void
+  /** Removes the walls. */
+  clearWalls(): void
   /** ids of the live balls (a new array) */
   balls(): number[]
   /** ids of the holes (a new array) */
@@ -158,6 +175,18 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     return eid
   }
 
+  /** Rolling balls continue from where they are now, planned against what changed (holes, walls). */
+  const replanRolling = (): void => {
+    const balls = query(w, [w.IsBall])
+    for (let i = 0; i < balls.length; i++) {
+      const b = balls[i]!
+      if (w.Ball.mode[b] !== BallMode.Rolling) continue
+      sampleRolling(w, b, w.time)
+      startPath(w, b, w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
+      planRolling(w, b)
+    }
+  }
+
   const sim: BallPhysics = {
     world: w,
     config: cfg,
@@ -193,33 +222,23 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       w.Hole.radius[eid] = radius
       w.Hole.value[eid] = value
       addHoleToTable(w, eid)
-      // balls already out there: rolling ones continue from where they are, planned against the new hole;
-      // a ball inside the new lip circle follows the rule for a ball added inside a hole
+      // balls already out there: a ball inside the new lip circle follows the rule for a ball added inside
+      // a hole; then rolling ones continue from where they are, planned against the new hole
       const balls = query(w, [w.IsBall])
       for (let i = 0; i < balls.length; i++) {
         const b = balls[i]!
         const mode = w.Ball.mode[b]
-        if (mode !== BallMode.Rolling && mode !== BallMode.Resting) continue
+        if (mode === BallMode.Rolling) sampleRolling(w, b, w.time)
+        else if (mode !== BallMode.Resting) continue
         const dx = w.Ball.x[b]! - x
         const dy = w.Ball.y[b]! - y
-        const inside = dx * dx + dy * dy < radius * radius
-        if (mode === BallMode.Resting) {
-          if (inside) {
-            w.RimContact.hole[b] = eid
-            w.RimContact.hasLip[b] = 0
-            captureBall(w, b, eid, w.time, CaptureVia.Rest)
-          }
-          continue
-        }
-        sampleRolling(w, b, w.time)
-        startPath(w, b, w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
-        if (inside) {
-          w.RimContact.hole[b] = eid
-          w.RimContact.mode[b] = RimMode.Transit
-          w.RimContact.hasLip[b] = 0
-        }
-        planRolling(w, b)
+        if (dx * dx + dy * dy >= radius * radius) continue
+        w.RimContact.hole[b] = eid
+        w.RimContact.hasLip[b] = 0
+        if (mode === BallMode.Resting) captureBall(w, b, eid, w.time, CaptureVia.Rest)
+        else w.RimContact.mode[b] = RimMode.Transit
       }
+      replanRolling()
       return eid
     },
 
@@ -252,6 +271,43 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       const h = dt > cfg.MAX_STEP ? cfg.MAX_STEP : dt
       runSchedule(w, schedule, h)
       return h
+    },
+
+    setWalls(s) {
+      spec('setWalls spec', s)
+      const minX = finite('walls.minX', s.minX, MAX_COORDINATE)
+      const minY = finite('walls.minY', s.minY, MAX_COORDINATE)
+      const maxX = finite('walls.maxX', s.maxX, MAX_COORDINATE)
+      const maxY = finite('walls.maxY', s.maxY, MAX_COORDINATE)
+      if (!(maxX > minX)) throw new RangeError(`walls.maxX must be > walls.minX = ${minX}, got ${maxX}`)
+      if (!(maxY > minY)) throw new RangeError(`walls.maxY must be > walls.minY = ${minY}, got ${maxY}`)
+      const e = s.restitution === undefined ? 0.5 : s.restitution
+      if (typeof e !== 'number' || !(e >= 0 && e <= 1)) throw new RangeError(`walls.restitution must be in [0, 1], got ${e}`)
+      const o = s.open ?? {}
+      if (o === null || typeof o !== 'object') throw new TypeError('walls.open must be an object of booleans')
+      const open = (o.left ? WallEdge.Left : 0) | (o.top ? WallEdge.Top : 0) | (o.right ? WallEdge.Right : 0) | (o.bottom ? WallEdge.Bottom : 0)
+      if (w.walls === 0) {
+        const eid = addEntity(w)
+        ensureCapacity(w, eid)
+        addComponent(w, eid, w.Walls)
+        w.walls = eid
+      }
+      const W = w.Walls
+      W.minX[w.walls] = minX
+      W.minY[w.walls] = minY
+      W.maxX[w.walls] = maxX
+      W.maxY[w.walls] = maxY
+      W.restitution[w.walls] = e
+      W.open[w.walls] = open
+      replanRolling()
+    },
+
+    clearWalls() {
+      if (w.walls === 0) return
+      removeEntity(w, w.walls)
+      clearSlot(w.Walls, w.walls)
+      w.walls = 0
+      replanRolling()
     },
 
     drainEvents() {

@@ -9,9 +9,11 @@ export const EventType = {
   LipOut: 4,
   NearMiss: 5,
   Rest: 6,
+  Wall: 7,
+  Gutter: 8,
 } as const
 export type EventTypeCode = (typeof EventType)[keyof typeof EventType]
-export const EVENT_TYPE_NAMES = ['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest'] as const
+export const EVENT_TYPE_NAMES = ['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest', 'wall', 'gutter'] as const
 export type BallEventType = (typeof EVENT_TYPE_NAMES)[number]
 
 export const CaptureVia = { None: 0, Clean: 1, RimRoll: 2, Rest: 3 } as const

@@ -7,6 +7,7 @@
 import { BallMode } from '../components/Ball'
 import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
+import { WallEdge } from '../components/Walls'
 import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from './events'
 import {
   cogRadius,
@@ -86,7 +87,7 @@ function considerHole(i: number): number {
     if (!(p > qS)) return best
     let d = p - Math.sqrt(R * R - c2)
     if (d < qS) d = qS // a rounding error behind (or found inside): decided now, never lost
-    if (d < best || (d === best && hid < bestHole && bestKind !== PathEvent.Stop)) {
+    if (d < best || (d === best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
       best = d
       bestHole = hid
       bestKind = PathEvent.Lip
@@ -96,13 +97,45 @@ function considerHole(i: number): number {
     if (c2 >= f * f) return best
     // near miss at the closest approach, if not already handled and not the hole the path leaves
     if (!(p > qS || (p === qS && hid > qSHole)) || hid === qFrom) return best
-    if (p < best || (p === best && hid < bestHole && bestKind !== PathEvent.Stop)) {
+    if (p < best || (p === best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
       best = p
       bestHole = hid
       bestKind = PathEvent.Near
     }
   }
   return best
+}
+
+/**
+ * Wall and gutter candidates: the centre reaches a closed wall one radius in, or crosses an open edge.
+ * A path that starts beyond a closed wall and heads out of the panel hits it at once.
+ */
+function considerWalls(w: BallWorld, e: number): void {
+  const W = w.Walls
+  const open = W.open[e]!
+  const r = qFoot
+  // x faces: (coordinate, direction that reaches it, edge bit); then y faces
+  for (let axis = 0; axis < 2; axis++) {
+    const u = axis === 0 ? qUx : qUy
+    if (u === 0) continue
+    const o = axis === 0 ? qX0 : qY0
+    const toMax = u > 0
+    const edge = axis === 0 ? (toMax ? WallEdge.Right : WallEdge.Left) : toMax ? WallEdge.Bottom : WallEdge.Top
+    const face = axis === 0 ? (toMax ? W.maxX[e]! : W.minX[e]!) : toMax ? W.maxY[e]! : W.minY[e]!
+    const isOpen = (open & edge) !== 0
+    const target = isOpen ? face : toMax ? face - r : face + r
+    let d = (target - o) / u
+    if (d < qS) {
+      if (isOpen) continue // already past an open edge: it has left
+      d = qS
+    }
+    // walls come before holes at the same distance (they are met first by the footprint)
+    if (d < best || (d === best && bestKind !== PathEvent.Stop)) {
+      best = d
+      bestHole = edge // for wall events the "hole" slot carries the WallEdge bit
+      bestKind = isOpen ? PathEvent.Gutter : PathEvent.Wall
+    }
+  }
 }
 
 /**
@@ -155,6 +188,8 @@ export function planRolling(w: BallWorld, eid: number): void {
         bestKind = k
       }
     }
+
+    if (w.walls !== 0) considerWalls(w, w.walls)
 
     const table = w.holes
     qXyr = table.xyr

@@ -9,6 +9,7 @@ import { cogGateSystem } from '../systems/cogGate'
 import { integrationSystem } from '../systems/integration'
 import { rimRollSystem } from '../systems/rimRoll'
 import { skipOverSystem } from '../systems/skipOver'
+import { wallsSystem } from '../systems/walls'
 import type { BallWorld } from './world'
 
 export type System = (world: BallWorld) => void
@@ -18,7 +19,10 @@ export interface ScheduleEntry {
   readonly run: System
 }
 
-/** integration, skip-over (Stage 5), capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3). */
+/**
+ * integration, skip-over (Stage 5), capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4),
+ * rim-roll (Stage 3), then the panel's walls (a no-op in a world without walls).
+ */
 export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'integration', run: integrationSystem }),
   Object.freeze({ name: 'skipOver', run: skipOverSystem }),
@@ -26,6 +30,7 @@ export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'cogGate', run: cogGateSystem }),
   Object.freeze({ name: 'bounce', run: bounceSystem }),
   Object.freeze({ name: 'rimRoll', run: rimRollSystem }),
+  Object.freeze({ name: 'walls', run: wallsSystem }),
 ])
 
 /** A fresh, editable copy of the default schedule. */

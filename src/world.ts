@@ -6,6 +6,7 @@ import { createBallStore, type BallStore } from '../components/Ball'
 import { createHoleStore, type HoleStore } from '../components/Hole'
 import { createPathStore, type PathStore } from '../components/Path'
 import { createRimContactStore, type RimContactStore } from '../components/RimContact'
+import { createWallsStore, type WallsStore } from '../components/Walls'
 import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './config'
 import { createEventBuffer, type EventBuffer } from './events'
 import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './broadphase'
@@ -83,6 +84,9 @@ export interface BallWorldData {
   Hole: HoleStore
   RimContact: RimContactStore
   Path: PathStore
+  Walls: WallsStore
+  /** the entity carrying this world's Walls, 0 when the panel has none */
+  walls: number
   /** the balls the integration system iterates */
   moving: MovingSet
   /** tag: the entity is a ball (balls and holes share the entity index) */
@@ -141,6 +145,8 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     Hole: createHoleStore(capacity),
     RimContact: createRimContactStore(capacity),
     Path: createPathStore(capacity),
+    Walls: createWallsStore(capacity),
+    walls: 0,
     moving: { count: 0, dense: new Uint32Array(256), sparse: new Uint32Array(capacity) },
     IsBall: {},
     IsHole: {},
@@ -167,6 +173,7 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   growStore(world.Hole, cap)
   growStore(world.RimContact, cap)
   growStore(world.Path, cap)
+  growStore(world.Walls, cap)
   const sparse = new Uint32Array(cap)
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse

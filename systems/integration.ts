@@ -102,7 +102,7 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
     if (P.mark[eid] !== PathEvent.None) {
       throw new Error(
         `ball ${eid}: its event (kind ${P.mark[eid]}) was not handled by any system in the schedule; ` +
-          'keep skipOver, capture, cogGate, bounce and rimRoll in it',
+          'keep skipOver, capture, cogGate, bounce, rimRoll and walls in it',
       )
     }
     P.mark[eid] = kind

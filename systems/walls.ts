@@ -1,0 +1,43 @@
+// Panel walls (not a design stage: the panel's frame). Runs only for worlds that have walls.
+//   closed wall: v_n' = −e_wall·v_n, tangential speed kept      open edge: the ball leaves (the gutter)
+// The hit is a path event like the others (the centre one radius from the wall), found exactly.
+// Reads Path.mark, Ball, Walls; writes Ball, Path; emits 'wall' and 'gutter'.
+import { BallMode } from '../components/Ball'
+import { PathEvent } from '../components/Path'
+import { WallEdge } from '../components/Walls'
+import { EventType, pushEvent } from '../src/events'
+import { NEVER, planRolling, startPath } from '../src/motion'
+import { removeMoving, type BallWorld } from '../src/world'
+
+export function wallsSystem(w: BallWorld): void {
+  if (w.walls === 0) return
+  const P = w.Path
+  const B = w.Ball
+  const e = w.Walls.restitution[w.walls]!
+  const list = w.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    const mark = P.mark[eid]
+    if (mark === PathEvent.Wall) {
+      P.mark[eid] = PathEvent.None
+      const edge = P.markHole[eid]!
+      const t = P.nextT[eid]!
+      const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
+      const vx = horizontal ? -e * B.vx[eid]! : B.vx[eid]!
+      const vy = horizontal ? B.vy[eid]! : -e * B.vy[eid]!
+      pushEvent(w.events, EventType.Wall, eid, 0, t, false, 0, 0)
+      startPath(w, eid, B.x[eid]!, B.y[eid]!, vx, vy, t)
+      planRolling(w, eid)
+    } else if (mark === PathEvent.Gutter) {
+      P.mark[eid] = PathEvent.None
+      pushEvent(w.events, EventType.Gutter, eid, 0, P.nextT[eid]!, false, 0, 0)
+      B.mode[eid] = BallMode.Out
+      B.vx[eid] = 0
+      B.vy[eid] = 0
+      P.speed[eid] = 0
+      P.nextT[eid] = NEVER
+      P.nextKind[eid] = PathEvent.None
+      removeMoving(w, eid)
+    }
+  }
+}

@@ -1,0 +1,94 @@
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_SCHEDULE, createBallPhysics, type BallEvent, type BallPhysics } from '../../src/index'
+import { EXACT, rng } from '../helpers'
+
+function run(sim: BallPhysics, dt: number, seconds: number): BallEvent[] {
+  const out: BallEvent[] = []
+  while (sim.time < seconds - 1e-12) {
+    sim.step(Math.min(dt, seconds - sim.time))
+    out.push(...sim.drainEvents())
+  }
+  return out
+}
+
+describe('walls system', () => {
+  it('bounces a ball off a closed wall at the exact instant its centre is one radius from it', () => {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 0.5 })
+    const b = sim.addBall({ x: 100, y: 200, vx: 300, vy: 40 })
+    const ev = run(sim, 1 / 60, 1.5)
+    expect(ev[0]!.type).toBe('wall')
+    expect(Math.abs(ev[0]!.time - (400 - 11 - 100) / 300)).toBeLessThan(EXACT)
+    const st = sim.ballState(b)
+    expect(st.vx).toBeCloseTo(-150, 9) // normal speed × e
+    expect(st.vy).toBeCloseTo(40, 9) // tangential kept
+  })
+
+  it('lets a ball out through an open edge: a gutter event at the crossing, then it is out of play', () => {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, open: { bottom: true } })
+    const b = sim.addBall({ x: 200, y: 300, vx: 0, vy: 200 })
+    const ev = run(sim, 1 / 60, 2)
+    expect(ev.map((e) => e.type)).toEqual(['gutter'])
+    expect(Math.abs(ev[0]!.time - 0.5)).toBeLessThan(EXACT)
+    expect(sim.ballState(b)).toMatchObject({ mode: 'out', y: 400 })
+    expect(sim.world.moving.count).toBe(0)
+  })
+
+  it('keeps 1,000 fast balls inside a closed box, with the same events at 30 Hz and 240 Hz', () => {
+    const mk = () => {
+      const sim = createBallPhysics({ ROLLING_DECEL: 20 })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 600, maxY: 500, restitution: 0.9 })
+      sim.addHole({ x: 300, y: 250 })
+      const rand = rng(8)
+      for (let i = 0; i < 1000; i++) {
+        const a = rand() * 2 * Math.PI
+        const v = 100 + 3000 * rand()
+        sim.addBall({ x: 20 + 560 * rand(), y: 20 + 460 * rand(), vx: v * Math.cos(a), vy: v * Math.sin(a) })
+      }
+      return sim
+    }
+    const a = mk()
+    const b = mk()
+    const ea = run(a, 1 / 30, 3)
+    const eb = run(b, 1 / 240, 3)
+    expect(ea.filter((e) => e.type === 'wall').length).toBeGreaterThan(3000)
+    expect(ea.map((e) => `${e.ball}${e.type}${e.time}`)).toEqual(eb.map((e) => `${e.ball}${e.type}${e.time}`))
+    for (const id of a.balls()) {
+      const s = a.ballState(id)
+      if (s.mode === 'captured') continue
+      expect(s.x).toBeGreaterThanOrEqual(11 - 1e-9)
+      expect(s.x).toBeLessThanOrEqual(589 + 1e-9)
+      expect(s.y).toBeGreaterThanOrEqual(11 - 1e-9)
+      expect(s.y).toBeLessThanOrEqual(489 + 1e-9)
+    }
+  })
+
+  it('a world without walls gives exactly the events of a schedule without the walls system', () => {
+    const mk = () => {
+      const sim = createBallPhysics()
+      for (let i = 0; i < 5; i++) sim.addHole({ x: 60 * i, y: 0 })
+      const rand = rng(3)
+      for (let i = 0; i < 200; i++) sim.addBall({ x: -100 + 400 * rand(), y: 100, vx: 200 * (rand() - 0.5), vy: -300 - 300 * rand() })
+      return sim
+    }
+    const a = mk()
+    const b = mk()
+    b.schedule.splice(b.schedule.findIndex((s) => s.name === 'walls'), 1)
+    expect(b.schedule.length).toBe(DEFAULT_SCHEDULE.length - 1)
+    expect(run(a, 1 / 60, 3)).toEqual(run(b, 1 / 60, 3))
+  })
+
+  it('rejects a degenerate rectangle or restitution, naming the field; clearWalls lets balls roll on', () => {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0 })
+    expect(() => sim.setWalls({ minX: 10, minY: 0, maxX: 10, maxY: 5 })).toThrow(/walls\.maxX must be > walls\.minX/)
+    expect(() => sim.setWalls({ minX: 0, minY: 0, maxX: 10, maxY: 5, restitution: 2 })).toThrow(/walls\.restitution must be in \[0, 1\]/)
+    expect(() => sim.setWalls({ minX: NaN, minY: 0, maxX: 10, maxY: 5 })).toThrow(/walls\.minX/)
+    sim.setWalls({ minX: 0, minY: 0, maxX: 100, maxY: 100 })
+    const b = sim.addBall({ x: 50, y: 50, vx: 100, vy: 0 })
+    sim.step(0.1)
+    sim.clearWalls()
+    run(sim, 0.1, 2)
+    expect(sim.ballState(b).x).toBeCloseTo(50 + 200, 9)
+  })
+})
