@@ -6,7 +6,7 @@ import { RimMode } from '../components/RimContact'
 import { WallEdge } from '../components/Walls'
 import type { BallPhysicsConfig, ConfigOverrides } from './config'
 import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
-import { captureBall, launchBall, planRolling, sampleRolling, startPath } from './motion'
+import { captureBall, launchBall, planRolling, sampleRimRoll, sampleRolling, startPath } from './motion'
 import { createSchedule, runSchedule, type ScheduleEntry } from './schedule'
 import { clearSlot } from './store'
 import { addHoleToTable, createBallWorld, ensureCapacity, removeMoving, type BallWorld, type BallWorldOptions } from './world'
@@ -94,6 +94,11 @@ export interface BallPhysics {
   ballState(ball: number): BallState
   holeState(hole: number): HoleState
   removeBall(ball: number): void
+  /**
+   * Sets a ball's velocity now: wakes a resting ball, re-aims a rolling one, and knocks a ball off a rim
+   * (it leaves on a straight path, the hole locked until it is out). Captured and out balls cannot move.
+   */
+  setBallVelocity(ball: number, vx: number, vy: number): void
   /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
   setWalls(spec: WallsSpec): void
   /** Removes the walls. */
@@ -271,6 +276,23 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       const h = dt > cfg.MAX_STEP ? cfg.MAX_STEP : dt
       runSchedule(w, schedule, h)
       return h
+    },
+
+    setBallVelocity(ball, vx, vy) {
+      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      const nvx = finite('vx', vx, MAX_SPEED)
+      const nvy = finite('vy', vy, MAX_SPEED)
+      const mode = w.Ball.mode[b]!
+      if (mode === BallMode.Captured || mode === BallMode.Out) {
+        throw new RangeError(`ball ${b} is ${BALL_MODE_NAMES[mode]}: only rolling, rimRoll or resting balls can be moved`)
+      }
+      if (mode === BallMode.RimRoll) {
+        sampleRimRoll(w, b, w.time)
+        w.RimContact.mode[b] = RimMode.Transit
+      } else if (mode === BallMode.Rolling) {
+        sampleRolling(w, b, w.time)
+      }
+      launchBall(w, b, w.Ball.x[b]!, w.Ball.y[b]!, nvx, nvy, w.time)
     },
 
     setWalls(s) {

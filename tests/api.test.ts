@@ -136,3 +136,50 @@ describe('config', () => {
     })
   })
 })
+
+describe('waking and moving balls through the API', () => {
+  it('a resting ball costs nothing until setBallVelocity wakes it; then it rolls on its new path', () => {
+    const sim = createBallPhysics()
+    const b = sim.addBall({ x: 0, y: 0, vx: 100, vy: 0 })
+    settle(sim)
+    expect(sim.ballState(b).mode).toBe('resting')
+    expect(sim.world.moving.count).toBe(0)
+    sim.setBallVelocity(b, 0, -300)
+    expect(sim.world.moving.count).toBe(1)
+    sim.step(0.1)
+    expect(sim.ballState(b).y).toBeCloseTo(-(300 * 0.1 - 0.5 * 300 * 0.01), 9)
+  })
+
+  it('a ball knocked off a rim leaves on a straight path with the hole locked, and never re-enters it at once', () => {
+    const sim = createBallPhysics()
+    const h = sim.addHole({ x: 0, y: 0 })
+    const lipX = -Math.sqrt(18 * 18 - 11 * 11)
+    const b = sim.addBall({ x: lipX - 60, y: 11, vx: Math.sqrt(490 ** 2 + 2 * 300 * 60), vy: 0 })
+    for (let i = 0; i < 200 && sim.ballState(b).mode !== 'rimRoll'; i++) sim.step(1 / 500)
+    expect(sim.ballState(b).mode).toBe('rimRoll')
+    const { x, y } = sim.ballState(b)
+    sim.setBallVelocity(b, (x / 18) * 400, (y / 18) * 400) // straight out, radially
+    const ev = settle(sim)
+    expect(ev.filter((e) => e.hole === h && e.type !== 'rimRoll').map((e) => e.type)).toEqual([])
+    expect(Math.hypot(sim.ballState(b).x, sim.ballState(b).y)).toBeGreaterThan(18)
+  })
+
+  it('refuses to move a captured ball, naming its mode', () => {
+    const sim = createBallPhysics()
+    sim.addHole({ x: 0, y: 0 })
+    const b = sim.addBall({ x: 1, y: 0, vx: 0, vy: 0 })
+    sim.step(0.01)
+    expect(() => sim.setBallVelocity(b, 1, 1)).toThrow(/is captured: only rolling, rimRoll or resting balls can be moved/)
+    expect(() => sim.setBallVelocity(b, NaN, 1)).toThrow(/vx/)
+  })
+
+  it('1,000,000 resting balls are not iterated: a step with 1,000 moving ones touches only those', () => {
+    const sim = createBallPhysics({}, { capacity: 1 << 20 })
+    for (let i = 0; i < 1_000_000; i++) sim.addBall({ x: (i % 1000) * 30, y: Math.floor(i / 1000) * 30, vx: 0, vy: 0 })
+    sim.step(0.01) // all come to rest at once
+    sim.drainEvents()
+    expect(sim.world.moving.count).toBe(0)
+    for (let i = 0; i < 1000; i++) sim.setBallVelocity(i + 1, 100, 0)
+    expect(sim.world.moving.count).toBe(1000)
+  })
+})
