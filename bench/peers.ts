@@ -1,0 +1,196 @@
+// The same scene in general 2D engines a game might pick instead: N balls rolling with deceleration over
+// 25 holes that are sensors, capture decided in the engines' contact callbacks (speed below V_MAX when the
+// ball touches the sensor), ball-ball contacts filtered out; then with ball-ball contacts on at 1,000 balls.
+// Each engine steps at 1/120 s under tinybench; printed as ns per ball-step and as the ratio to this
+// module measured in the same run. Writes bench/results/peers.json.
+//
+//   npm run bench:peers            (N = 1,000 and 10,000)
+import RAPIER from '@dimforge/rapier2d-compat'
+import Matter from 'matter-js'
+import * as planck from 'planck'
+import { mkdirSync, writeFileSync } from 'node:fs'
+import { Bench } from 'tinybench'
+import { createBallPhysics } from '../src/index'
+
+const DT = 1 / 120
+const HOLE_R = 18
+const BALL_R = 11
+const V_MAX = 600
+const SIZE = 2000
+/** rolling deceleration of the scene, px/s²: low, so that balls keep rolling through the measurement */
+const DECEL = 20
+/** the engines' linear damping that matches DECEL at the scene's typical speed (250 px/s) */
+const DAMPING = DECEL / 250
+/** planck and rapier work in metres: 100 px to the metre keeps speeds in their comfortable range */
+const PX = 100
+
+interface Scene {
+  balls: { x: number; y: number; vx: number; vy: number }[]
+  holes: { x: number; y: number }[]
+}
+
+function scene(n: number): Scene {
+  let s = 12345
+  const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+  const holes = []
+  for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) holes.push({ x: 200 + 400 * i, y: 200 + 400 * j })
+  const balls = []
+  for (let i = 0; i < n; i++) {
+    const a = r() * 2 * Math.PI
+    const v = 150 + 200 * r()
+    balls.push({ x: r() * SIZE, y: r() * SIZE, vx: v * Math.cos(a), vy: v * Math.sin(a) })
+  }
+  return { balls, holes }
+}
+
+type Stepper = () => void
+
+function ours(sc: Scene): Stepper {
+  const sim = createBallPhysics({ ROLLING_DECEL: DECEL }, { capacity: sc.balls.length + 64 })
+  for (const h of sc.holes) sim.addHole(h)
+  for (const b of sc.balls) sim.addBall(b)
+  return () => {
+    sim.step(DT)
+    sim.world.events.count = 0
+  }
+}
+
+function matter(sc: Scene, contacts: boolean): Stepper {
+  const engine = Matter.Engine.create({ gravity: { x: 0, y: 0, scale: 0 } })
+  const group = contacts ? 0 : -1
+  const bodies = sc.balls.map((b) => {
+    const body = Matter.Bodies.circle(b.x, b.y, BALL_R, { frictionAir: DAMPING * DT * 60, friction: 0, restitution: 0.9, collisionFilter: { group } })
+    Matter.Body.setVelocity(body, { x: b.vx / 60, y: b.vy / 60 }) // matter's velocity unit: px per 1/60 s
+    return body
+  })
+  const holes = sc.holes.map((h) => Matter.Bodies.circle(h.x, h.y, HOLE_R, { isStatic: true, isSensor: true }))
+  Matter.Composite.add(engine.world, [...bodies, ...holes])
+  const captured: Matter.Body[] = []
+  Matter.Events.on(engine, 'collisionStart', (e) => {
+    for (const p of e.pairs) {
+      const ball = p.bodyA.isSensor ? p.bodyB : p.bodyB.isSensor ? p.bodyA : undefined
+      if (ball && ball.speed * 60 < V_MAX) captured.push(ball)
+    }
+  })
+  return () => {
+    Matter.Engine.update(engine, DT * 1000)
+    while (captured.length > 0) Matter.Composite.remove(engine.world, captured.pop()!)
+  }
+}
+
+function planckWorld(sc: Scene, contacts: boolean): Stepper {
+  const world = new planck.World({ gravity: planck.Vec2(0, 0) })
+  const captured: planck.Body[] = []
+  for (const h of sc.holes) {
+    world.createBody({ position: planck.Vec2(h.x / PX, h.y / PX) }).createFixture({ shape: new planck.Circle(HOLE_R / PX), isSensor: true, userData: 'hole' })
+  }
+  for (const b of sc.balls) {
+    const body = world.createBody({ type: 'dynamic', position: planck.Vec2(b.x / PX, b.y / PX), linearDamping: DAMPING, bullet: false })
+    body.createFixture({ shape: new planck.Circle(BALL_R / PX), density: 1, restitution: 0.9, filterGroupIndex: contacts ? 0 : -1 })
+    body.setLinearVelocity(planck.Vec2(b.vx / PX, b.vy / PX))
+  }
+  world.on('begin-contact', (c) => {
+    const a = c.getFixtureA()
+    const b = c.getFixtureB()
+    const ball = a.getUserData() === 'hole' ? b.getBody() : b.getUserData() === 'hole' ? a.getBody() : undefined
+    if (ball && planck.Vec2.lengthOf(ball.getLinearVelocity()) * PX < V_MAX) captured.push(ball)
+  })
+  return () => {
+    world.step(DT)
+    while (captured.length > 0) world.destroyBody(captured.pop()!)
+  }
+}
+
+function rapier(sc: Scene, contacts: boolean): Stepper {
+  const world = new RAPIER.World({ x: 0, y: 0 })
+  world.timestep = DT
+  const queue = new RAPIER.EventQueue(true)
+  // groups: balls are in 0x0001 and, with contacts off, filter only holes (0x0002)
+  const ballGroups = (0x0001 << 16) | (contacts ? 0x0003 : 0x0002)
+  const holeGroups = (0x0002 << 16) | 0x0001
+  const holeHandles = new Set<number>()
+  for (const h of sc.holes) {
+    const body = world.createRigidBody(RAPIER.RigidBodyDesc.fixed().setTranslation(h.x / PX, h.y / PX))
+    const col = world.createCollider(
+      RAPIER.ColliderDesc.ball(HOLE_R / PX).setSensor(true).setCollisionGroups(holeGroups).setActiveEvents(RAPIER.ActiveEvents.COLLISION_EVENTS),
+      body,
+    )
+    holeHandles.add(col.handle)
+  }
+  for (const b of sc.balls) {
+    const body = world.createRigidBody(
+      RAPIER.RigidBodyDesc.dynamic().setTranslation(b.x / PX, b.y / PX).setLinvel(b.vx / PX, b.vy / PX).setLinearDamping(DAMPING),
+    )
+    world.createCollider(RAPIER.ColliderDesc.ball(BALL_R / PX).setRestitution(0.9).setCollisionGroups(ballGroups), body)
+  }
+  const captured: number[] = []
+  return () => {
+    world.step(queue)
+    queue.drainCollisionEvents((h1, h2, started) => {
+      if (!started) return
+      const ballCollider = holeHandles.has(h1) ? h2 : holeHandles.has(h2) ? h1 : -1
+      if (ballCollider < 0) return
+      const body = world.getCollider(ballCollider)?.parent()
+      if (body) {
+        const v = body.linvel()
+        if (Math.hypot(v.x, v.y) * PX < V_MAX) captured.push(body.handle)
+      }
+    })
+    while (captured.length > 0) {
+      const body = world.getRigidBody(captured.pop()!)
+      if (body) world.removeRigidBody(body)
+    }
+  }
+}
+
+/** Steps measured per engine: 1 s of simulated time, so the scene is the same for every engine throughout. */
+const MEASURED_STEPS = 120
+
+async function measure(name: string, n: number, make: () => Stepper): Promise<number> {
+  // warm the engine's code up on a throwaway scene, then measure a fresh one for a fixed number of steps
+  const warm = make()
+  for (let i = 0; i < 30; i++) warm()
+  const bench = new Bench({ time: 0, iterations: MEASURED_STEPS, warmup: false })
+  let step: Stepper = make()
+  bench.add(name, () => step(), {
+    beforeAll: () => {
+      step = make()
+    },
+  })
+  await bench.run()
+  const r = bench.tasks[0]!.result as { state: string; latency?: { p50: number }; error?: unknown }
+  if (!r.latency) throw new Error(`${name}: ${String(r.error ?? r.state)}`)
+  return (r.latency.p50 * 1e6) / n // ms per step → ns per ball-step
+}
+
+await RAPIER.init()
+const rows: Record<string, number | string>[] = []
+for (const n of [1000, 10000]) {
+  const sc = scene(n)
+  const o = await measure('ours', n, () => ours(sc))
+  const m = await measure('matter-js', n, () => matter(sc, false))
+  const p = await measure('planck', n, () => planckWorld(sc, false))
+  const r = await measure('rapier2d-compat', n, () => rapier(sc, false))
+  rows.push({ balls: n, contacts: 'off', ours: o, matter: m, planck: p, rapier: r, 'matter/ours': m / o, 'planck/ours': p / o, 'rapier/ours': r / o })
+}
+{
+  const sc = scene(1000)
+  const m = await measure('matter-js', 1000, () => matter(sc, true))
+  const p = await measure('planck', 1000, () => planckWorld(sc, true))
+  const r = await measure('rapier2d-compat', 1000, () => rapier(sc, true))
+  rows.push({ balls: 1000, contacts: 'on', ours: 'n/a', matter: m, planck: p, rapier: r, 'matter/ours': '-', 'planck/ours': '-', 'rapier/ours': '-' })
+}
+const f = (v: number | string | undefined) => (typeof v === 'number' ? (v >= 100 ? v.toFixed(0) : v.toFixed(1)) : String(v))
+console.log('ns per ball-step (median step time / balls), dt = 1/120 s, 25 sensor holes, one run')
+console.log('(contacts on: this module has no ball-ball collisions yet, so only the peers are measured)')
+console.log('balls   contacts  ours      matter-js  planck    rapier2d   matter/ours  planck/ours  rapier/ours')
+for (const r of rows) {
+  console.log(
+    [r.balls, r.contacts, r.ours, r.matter, r.planck, r.rapier, r['matter/ours'], r['planck/ours'], r['rapier/ours']]
+      .map((v, i) => f(v as number).padEnd(i === 0 ? 8 : 10))
+      .join(' '),
+  )
+}
+mkdirSync('bench/results', { recursive: true })
+writeFileSync('bench/results/peers.json', JSON.stringify({ date: new Date().toISOString(), node: process.version, dt: DT, rows }, null, 2) + '\n')
+console.log('wrote bench/results/peers.json')
