@@ -1,0 +1,160 @@
+// Scaling: ns per ball-step and heap bytes per ball for N = 1k, 10k, 100k, 1M balls over 25 and over
+// 10,000 holes (same hole density: holes 400 px apart, balls spread over the holes' field), beside a plain
+// typed-array loop that only moves the same balls, measured in the same run with tinybench.
+// Writes docs/results/scale.json and docs/figures/scale.svg. Prints figures; asserts nothing.
+//
+//   npm run bench:scale                 npm run bench:scale -- --max 100000   (skip the 1M rows)
+import { execFileSync } from 'node:child_process'
+import { mkdirSync, writeFileSync } from 'node:fs'
+import { fileURLToPath } from 'node:url'
+import { Bench } from 'tinybench'
+import * as vega from 'vega'
+import { compile } from 'vega-lite'
+import { createBallPhysics, type BallPhysics } from '../src/index'
+
+const DT = 1 / 120
+const STEPS = 60
+const DECEL = 20
+const maxArg = process.argv.indexOf('--max')
+const MAX_N = maxArg >= 0 ? Number(process.argv[maxArg + 1]) : 1_000_000
+const SIZES = [1_000, 10_000, 100_000, 1_000_000].filter((n) => n <= MAX_N)
+const HOLES = [25, 10_000]
+
+function rand(seed: number) {
+  let s = seed
+  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+}
+
+function build(n: number, holes: number): BallPhysics {
+  const side = Math.round(Math.sqrt(holes))
+  const sim = createBallPhysics({ ROLLING_DECEL: DECEL }, { capacity: n + holes + 64 })
+  for (let i = 0; i < side; i++) for (let j = 0; j < side; j++) sim.addHole({ x: 200 + 400 * i, y: 200 + 400 * j })
+  const r = rand(7)
+  const field = side * 400
+  for (let i = 0; i < n; i++) {
+    const a = r() * 2 * Math.PI
+    const v = 150 + 200 * r()
+    sim.addBall({ x: r() * field, y: r() * field, vx: v * Math.cos(a), vy: v * Math.sin(a) })
+  }
+  return sim
+}
+
+/** The limit: the same balls moved by a bare loop over four Float64Array columns, with the deceleration. */
+function plain(n: number) {
+  const r = rand(7)
+  const x = new Float64Array(n)
+  const y = new Float64Array(n)
+  const vx = new Float64Array(n)
+  const vy = new Float64Array(n)
+  for (let i = 0; i < n; i++) {
+    const a = r() * 2 * Math.PI
+    const v = 150 + 200 * r()
+    x[i] = r() * 2000
+    y[i] = r() * 2000
+    vx[i] = v * Math.cos(a)
+    vy[i] = v * Math.sin(a)
+  }
+  return () => {
+    for (let i = 0; i < n; i++) {
+      const u = vx[i]!
+      const w = vy[i]!
+      const sp = Math.sqrt(u * u + w * w)
+      const k = sp > DECEL * DT ? (sp - DECEL * DT) / sp : 0
+      x[i] = x[i]! + u * DT
+      y[i] = y[i]! + w * DT
+      vx[i] = u * k
+      vy[i] = w * k
+    }
+  }
+}
+
+async function nsPerBallStep(n: number, make: () => () => void): Promise<number> {
+  const warm = make()
+  for (let i = 0; i < 10; i++) warm()
+  let step = make()
+  const bench = new Bench({ time: 0, iterations: STEPS, warmup: false })
+  bench.add('step', () => step(), { beforeAll: () => void (step = make()) })
+  await bench.run()
+  const r = bench.tasks[0]!.result as { latency?: { p50: number }; state: string }
+  if (!r.latency) throw new Error(`benchmark failed: ${r.state}`)
+  return (r.latency.p50 * 1e6) / n
+}
+
+/** Heap (JS objects and typed arrays) per ball of a world with n balls, measured in a fresh Node process. */
+function heapPerBall(n: number, holes: number): number {
+  const out = execFileSync(process.execPath, ['--expose-gc', fileURLToPath(import.meta.url), '--heap', String(n), String(holes)], {
+    encoding: 'utf8',
+  })
+  return Number(out.trim().split('\n').at(-1))
+}
+
+if (process.argv.includes('--heap')) {
+  const i = process.argv.indexOf('--heap')
+  const n = Number(process.argv[i + 1])
+  const holes = Number(process.argv[i + 2])
+  const gc = (globalThis as { gc?: () => void }).gc!
+  gc()
+  gc()
+  const m0 = process.memoryUsage()
+  const sim = build(n, holes)
+  sim.step(DT)
+  gc()
+  gc()
+  const m1 = process.memoryUsage()
+  if (sim.balls().length !== n) throw new Error('scene lost balls')
+  console.log((m1.heapUsed - m0.heapUsed + (m1.arrayBuffers - m0.arrayBuffers)) / n)
+  process.exit(0)
+}
+
+// warm the code up once, on a mid-size scene, before any row is measured
+{
+  const sim = build(10_000, 25)
+  for (let i = 0; i < 200; i++) {
+    sim.step(DT)
+    sim.world.events.count = 0
+  }
+}
+
+const rows: { balls: number; holes: number; ours: number; plain: number; ratio: number; heapBytesPerBall: number }[] = []
+for (const holes of HOLES) {
+  for (const n of SIZES) {
+    const ours = await nsPerBallStep(n, () => {
+      const sim = build(n, holes)
+      return () => {
+        sim.step(DT)
+        sim.world.events.count = 0
+      }
+    })
+    const base = await nsPerBallStep(n, () => plain(n))
+    const heap = heapPerBall(n, holes)
+    rows.push({ balls: n, holes, ours, plain: base, ratio: ours / base, heapBytesPerBall: heap })
+    console.log(
+      `${String(n).padStart(9)} balls ${String(holes).padStart(6)} holes   ours ${ours.toFixed(2).padStart(6)} ns   plain ${base.toFixed(2).padStart(5)} ns   ${(ours / base).toFixed(2)}×   heap ${heap.toFixed(0)} B/ball`,
+    )
+  }
+}
+
+mkdirSync('docs/results', { recursive: true })
+mkdirSync('docs/figures', { recursive: true })
+writeFileSync('docs/results/scale.json', JSON.stringify({ date: new Date().toISOString(), node: process.version, dt: DT, steps: STEPS, rows }, null, 2) + '\n')
+
+const data = rows.flatMap((r) => [
+  { balls: r.balls, series: `this module, ${r.holes} holes`, ns: r.ours },
+  ...(r.holes === HOLES[0] ? [{ balls: r.balls, series: 'plain loop (moves only)', ns: r.plain }] : []),
+])
+const spec = compile({
+  $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
+  title: { text: 'Cost per ball-step against the number of balls', subtitle: `dt = 1/120 s, median of ${STEPS} steps, one run on a 2-core machine` },
+  width: 520,
+  height: 300,
+  data: { values: data },
+  mark: { type: 'line', point: true },
+  encoding: {
+    x: { field: 'balls', type: 'quantitative', scale: { type: 'log' }, title: 'balls' },
+    y: { field: 'ns', type: 'quantitative', title: 'ns per ball-step' },
+    color: { field: 'series', type: 'nominal', title: null, legend: { orient: 'top-left' } },
+  },
+}).spec
+const svg = await new vega.View(vega.parse(spec), { renderer: 'none' }).toSVG()
+writeFileSync('docs/figures/scale.svg', svg)
+console.log('wrote docs/results/scale.json and docs/figures/scale.svg')
