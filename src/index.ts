@@ -1,6 +1,6 @@
 // Public entry point of the ball-physics module.
 export { createBallPhysics, MAX_COORDINATE, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
-export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec } from './api'
+export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api'
 export { CONFIG_RANGES, DEFAULT_CONFIG, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
 export type { BallPhysicsConfig, ConfigOverrides } from './config'
 export { createBallWorld, ensureCapacity } from './world'

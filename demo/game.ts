@@ -1,0 +1,412 @@
+// The game and its clock, without any drawing: one simulation of the built-in panel, the player's ten
+// balls and score, the multi-ball bursts and the stress mode, a 120 Hz fixed-step loop with render
+// interpolation, and the per-frame event feed. Everything that changes the physics goes through the
+// public API (createBallPhysics, addPanel, throwBall, step, drainEvents, removeBall); the world's typed
+// arrays are only read.
+import {
+  BALL_MODE_NAMES,
+  BallMode,
+  DEFAULT_PANEL,
+  EVENT_TYPE_NAMES,
+  addPanel,
+  createBallPhysics,
+  createFixedStepClock,
+  type BallEvent,
+  type BallPhysics,
+  type BallPhysicsConfig,
+  type ConfigOverrides,
+  type FixedStepClock,
+  type PanelLayout,
+} from '../src/index'
+import type { ThrowRequest } from './input'
+import { isHoleEvent } from './theme'
+
+/** Mode code of a ball that left the panel through an open wall edge (-1 if the core has no such mode). */
+const MODE_OUT = (BALL_MODE_NAMES as readonly string[]).indexOf('out')
+
+/** Physics rate, Hz, and the most steps run for one displayed frame (the catch-up cap). */
+export const PHYSICS_HZ = 120
+export const MAX_STEPS_PER_FRAME = 8
+/** A frame longer than this (a tab that slept) counts as this long, s. */
+export const MAX_FRAME_SECONDS = 0.25
+export const BALLS_PER_GAME = 10
+export const STRESS_BALLS = 10_000
+
+export const Kind = { None: 0, Player: 1, Burst: 2, Stress: 3 } as const
+export type KindCode = (typeof Kind)[keyof typeof Kind]
+
+/** How long a resting ball stays before it fades out and is removed (it went back to the tray), s. */
+export const REST_HOLD = 0.9
+export const REST_FADE = 0.6
+const STRESS_REST_HOLD = 0.25
+const STRESS_CAPTURE_HOLD = 0.6
+
+/** An event as the demo shows it: the core's event plus where and whose. */
+export interface DemoEvent extends BallEvent {
+  /** index of the hole in the panel layout, -1 for none */
+  holeIndex: number
+  /** points of the hole (0 for none) */
+  value: number
+  /** the ball was one of the player's throws */
+  player: boolean
+}
+
+export interface FrameResult {
+  events: DemoEvent[]
+  steps: number
+  /** wall time spent in sim.step this frame, ms */
+  physicsMs: number
+}
+
+export type Validation = { ok: true; config: Readonly<BallPhysicsConfig> } | { ok: false; error: string }
+
+/** The walls spec (WallsSpec is not re-exported by src/index.ts). */
+type WallsSpec = Parameters<BallPhysics['setWalls']>[0]
+
+/** Rails on the left, top and right of the panel; the bottom edge is open (the gutter below the launch). */
+export function wallsFor(panel: Readonly<PanelLayout>): WallsSpec {
+  return { minX: 0, minY: 0, maxX: panel.width, maxY: panel.height, restitution: 0.5, open: { bottom: true } }
+}
+
+/** Small deterministic PRNG (mulberry32) for the multi-ball throws. */
+function rng(seed: number): () => number {
+  let a = seed >>> 0
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0
+    let t = a
+    t = Math.imul(t ^ (t >>> 15), t | 1)
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
+  }
+}
+
+function grow<T extends Float64Array | Uint8Array | Int32Array>(a: T, n: number, fill = 0): T {
+  if (a.length >= n) return a
+  let cap = Math.max(1024, a.length)
+  while (cap < n) cap *= 2
+  const next = new (a.constructor as new (n: number) => T)(cap)
+  if (fill !== 0) next.fill(fill)
+  next.set(a)
+  return next
+}
+
+export class Game {
+  readonly panel: Readonly<PanelLayout> = DEFAULT_PANEL
+  sim: BallPhysics
+  /** hole ids in layout order */
+  holes: number[] = []
+  /** bumped whenever the simulation is recreated (views rebuild what depends on the config) */
+  generation = 0
+  /** overrides of the running simulation, and the validated ones waiting for the next throw */
+  overrides: ConfigOverrides = {}
+  pending: ConfigOverrides | null = null
+  readonly clock: FixedStepClock = createFixedStepClock({ hz: PHYSICS_HZ, maxStepsPerFrame: MAX_STEPS_PER_FRAME })
+  /** demo time, s (wall time of the frames, after the frame cap) */
+  time = 0
+
+  // per entity id; positions at the start of the last step, for interpolation
+  prevX = new Float64Array(1024)
+  prevY = new Float64Array(1024)
+  kind = new Uint8Array(1024)
+  /** demo time at which the ball stopped (rested or was captured); 0 while it moves */
+  doneAt = new Float64Array(1024)
+  private liveIndex = new Int32Array(1024).fill(-1)
+  /** ids of the live balls the demo created */
+  readonly live: number[] = []
+  private holeIndexById = new Map<number, number>()
+
+  score = 0
+  ballsLeft = BALLS_PER_GAME
+  /** captures of the player's balls per hole (layout order), this game */
+  gameCaptures: number[] = []
+  /** events seen since the page loaded (never reset), and by type */
+  eventsSeen = 0
+  readonly eventCounts: Record<string, number> = Object.fromEntries(EVENT_TYPE_NAMES.map((t) => [t, 0]))
+  /** the last events (newest last), for the log and the test hook */
+  readonly recent: DemoEvent[] = []
+  throwsMade = 0
+  lastThrow: (ThrowRequest & { speed: number }) | null = null
+  stressTarget = 0
+  private stressLive = 0
+  private playerMoving = 0
+  private random = rng(0x5eed)
+
+  constructor(overrides: ConfigOverrides = {}) {
+    this.overrides = { ...overrides }
+    this.sim = this.rebuild()
+  }
+
+  get config(): Readonly<BallPhysicsConfig> {
+    return this.sim.config
+  }
+
+  get gameOver(): boolean {
+    return this.ballsLeft === 0 && this.playerMoving === 0
+  }
+
+  /** Balls of the player still rolling or on a rim. */
+  get playerInPlay(): number {
+    return this.playerMoving
+  }
+
+  /** Checks overrides the way a new simulation would use them (config and the panel's holes). */
+  static validate(overrides: ConfigOverrides): Validation {
+    try {
+      const probe = createBallPhysics(overrides)
+      addPanel(probe, DEFAULT_PANEL)
+      probe.setWalls(wallsFor(DEFAULT_PANEL))
+      return { ok: true, config: probe.config }
+    } catch (e) {
+      const err = e instanceof Error ? e : new Error(String(e))
+      return { ok: false, error: `${err.name}: ${err.message}` }
+    }
+  }
+
+  /** Sets the overrides used from the next throw or reset on. Throws the core's error if invalid. */
+  setPending(overrides: ConfigOverrides): void {
+    const v = Game.validate(overrides)
+    if (!v.ok) throw new RangeError(v.error)
+    const same = JSON.stringify(v.config) === JSON.stringify(this.sim.config)
+    this.pending = same ? null : { ...overrides }
+  }
+
+  private rebuild(): BallPhysics {
+    const sim = createBallPhysics(this.overrides)
+    this.holes = addPanel(sim, this.panel)
+    sim.setWalls(wallsFor(this.panel))
+    this.holeIndexById = new Map(this.holes.map((id, i) => [id, i]))
+    this.sim = sim
+    this.kind.fill(0)
+    this.doneAt.fill(0)
+    this.liveIndex.fill(-1)
+    this.live.length = 0
+    this.stressLive = 0
+    this.playerMoving = 0
+    this.generation++
+    return sim
+  }
+
+  /** Recreates the simulation with the pending overrides, if any (balls on the panel are cleared). */
+  applyPending(): boolean {
+    if (this.pending === null) return false
+    this.overrides = this.pending
+    this.pending = null
+    this.rebuild()
+    return true
+  }
+
+  /** A new game: pending overrides applied, panel cleared, score 0, ten balls. */
+  reset(): void {
+    if (!this.applyPending()) this.rebuild()
+    this.score = 0
+    this.ballsLeft = BALLS_PER_GAME
+    this.gameCaptures = this.holes.map(() => 0)
+    this.stressTarget = 0
+    this.recent.length = 0
+    this.lastThrow = null
+  }
+
+  holeIndex(hole: number | undefined): number {
+    return hole === undefined ? -1 : (this.holeIndexById.get(hole) ?? -1)
+  }
+
+  /** Throw speed for a meter power, px/s (the mapping throwBall uses). */
+  speedFor(power: number): number {
+    const c = this.sim.config
+    return c.MIN_VY + power * (c.MAX_VY - c.MIN_VY)
+  }
+
+  /** One of the player's throws from the launch point. Returns false when no balls are left. */
+  throwPlayer(request: ThrowRequest): boolean {
+    if (this.ballsLeft <= 0) return false
+    this.applyPending()
+    if (this.gameCaptures.length !== this.holes.length) this.gameCaptures = this.holes.map(() => 0)
+    const { x, y } = this.panel.launch
+    this.spawn(Kind.Player, x, y, request.power, request.angle)
+    this.ballsLeft--
+    this.throwsMade++
+    this.lastThrow = { ...request, speed: this.speedFor(request.power) }
+    return true
+  }
+
+  /** n balls thrown at once from along the bottom edge toward random points of the hole field. */
+  burst(n: number): void {
+    this.applyPending()
+    for (let i = 0; i < n; i++) this.spawnRandom(Kind.Burst)
+  }
+
+  /** Keeps `n` balls in play (0 = off): finished ones are removed and thrown again. */
+  setStress(n: number): void {
+    this.applyPending()
+    this.stressTarget = n
+    if (n === 0) this.removeWhere((k) => k === Kind.Stress)
+  }
+
+  /** Removes every ball that is not the player's, and stops the stress mode. */
+  clearExtra(): void {
+    this.stressTarget = 0
+    this.removeWhere((k) => k !== Kind.Player)
+  }
+
+  private removeWhere(test: (kind: number) => boolean): void {
+    for (let i = this.live.length - 1; i >= 0; i--) {
+      const id = this.live[i]!
+      if (test(this.kind[id]!)) this.remove(id)
+    }
+  }
+
+  private spawnRandom(kind: KindCode): number {
+    const r = this.random
+    const W = this.panel.width
+    const x = 40 + r() * (W - 80)
+    const y = this.panel.launch.y + (r() - 0.5) * 20
+    const tx = 20 + r() * (W - 40)
+    const ty = 100 + r() * 300
+    const angle = Math.max(-1.4, Math.min(1.4, Math.atan2(tx - x, -(ty - y))))
+    return this.spawn(kind, x, y, r(), angle)
+  }
+
+  private spawn(kind: KindCode, x: number, y: number, power: number, angle: number): number {
+    const id = this.sim.throwBall({ x, y, power, angle })
+    const need = id + 1
+    if (this.kind.length < need) {
+      this.kind = grow(this.kind, need)
+      this.doneAt = grow(this.doneAt, need)
+      this.liveIndex = grow(this.liveIndex, need, -1)
+    }
+    this.ensurePrev()
+    const B = this.sim.world.Ball
+    this.prevX[id] = B.x[id]!
+    this.prevY[id] = B.y[id]!
+    this.kind[id] = kind
+    this.doneAt[id] = 0
+    this.liveIndex[id] = this.live.length
+    this.live.push(id)
+    if (kind === Kind.Stress) this.stressLive++
+    if (kind === Kind.Player) this.playerMoving++
+    return id
+  }
+
+  private remove(id: number): void {
+    const k = this.kind[id]!
+    if (k === Kind.Stress) this.stressLive--
+    if (k === Kind.Player && this.doneAt[id] === 0) this.playerMoving--
+    this.sim.removeBall(id)
+    const i = this.liveIndex[id]!
+    const last = this.live.pop()!
+    if (last !== id) {
+      this.live[i] = last
+      this.liveIndex[last] = i
+    }
+    this.liveIndex[id] = -1
+    this.kind[id] = 0
+    this.doneAt[id] = 0
+  }
+
+  private ensurePrev(): void {
+    const n = this.sim.world.Ball.x.length
+    if (this.prevX.length < n) {
+      this.prevX = grow(this.prevX, n)
+      this.prevY = grow(this.prevY, n)
+    }
+  }
+
+  /**
+   * One displayed frame: runs the due 120 Hz steps (at most MAX_STEPS_PER_FRAME; a longer frame is cut),
+   * drains the events, scores the player's captures and retires finished balls. Afterwards draw each ball
+   * at prev + (current − prev)·clock.alpha.
+   */
+  frame(frameSeconds: number): FrameResult {
+    const dt = Number.isFinite(frameSeconds) && frameSeconds > 0 ? Math.min(frameSeconds, MAX_FRAME_SECONDS) : 0
+    this.time += dt
+    let physicsMs = 0
+    const sim = this.sim
+    this.clock.advance(dt, (h) => {
+      // positions at the start of this step: the interpolation's "previous" state
+      this.ensurePrev()
+      const B = sim.world.Ball
+      this.prevX.set(B.x)
+      this.prevY.set(B.y)
+      const t0 = performance.now()
+      sim.step(h)
+      physicsMs += performance.now() - t0
+    })
+    const events = this.takeEvents()
+    this.retire()
+    if (this.stressTarget > this.stressLive) {
+      const n = this.stressTarget - this.stressLive
+      for (let i = 0; i < n; i++) this.spawnRandom(Kind.Stress)
+    }
+    return { events, steps: this.clock.steps, physicsMs }
+  }
+
+  private takeEvents(): DemoEvent[] {
+    const raw = this.sim.drainEvents()
+    const out = new Array<DemoEvent>(raw.length)
+    for (let i = 0; i < raw.length; i++) {
+      const e = raw[i]!
+      // wall events carry no hole (whatever is in their hole slot): only hole events are mapped
+      const holeIndex = isHoleEvent(e.type) ? this.holeIndex(e.hole) : -1
+      const value = holeIndex >= 0 ? this.panel.holes[holeIndex]!.value : 0
+      const player = this.kind[e.ball] === Kind.Player
+      const d: DemoEvent = { ...e, holeIndex, value, player }
+      out[i] = d
+      this.eventsSeen++
+      this.eventCounts[e.type] = (this.eventCounts[e.type] ?? 0) + 1
+      if (e.type === 'capture' && player && holeIndex >= 0) {
+        this.score += this.sim.holeState(e.hole!).value
+        this.gameCaptures[holeIndex] = (this.gameCaptures[holeIndex] ?? 0) + 1
+      }
+    }
+    // keep the newest few for the log (in stress mode thousands arrive per frame)
+    const keep = 12
+    for (let i = Math.max(0, out.length - keep); i < out.length; i++) this.recent.push(out[i]!)
+    if (this.recent.length > keep) this.recent.splice(0, this.recent.length - keep)
+    return out
+  }
+
+  /** Balls that rest fade out and go; balls that leave the panel go; stress balls are recycled. */
+  private retire(): void {
+    const B = this.sim.world.Ball
+    const X = B.x
+    const Y = B.y
+    const M = B.mode
+    const W = this.panel.width
+    const H = this.panel.height
+    const now = this.time
+    for (let i = this.live.length - 1; i >= 0; i--) {
+      const id = this.live[i]!
+      const r = B.radius[id]!
+      const x = X[id]!
+      const y = Y[id]!
+      const mode = M[id]!
+      if (mode === MODE_OUT || x < -r || x > W + r || y < -r || y > H + r) {
+        this.remove(id)
+        continue
+      }
+      const stopped = mode === BallMode.Resting || mode === BallMode.Captured
+      if (!stopped) continue
+      if (this.doneAt[id] === 0) {
+        this.doneAt[id] = Math.max(now, 1e-9)
+        if (this.kind[id] === Kind.Player) this.playerMoving--
+        continue
+      }
+      const age = now - this.doneAt[id]!
+      const k = this.kind[id]
+      if (k === Kind.Stress) {
+        if (age > (mode === BallMode.Captured ? STRESS_CAPTURE_HOLD : STRESS_REST_HOLD)) this.remove(id)
+      } else if (mode === BallMode.Resting && age > REST_HOLD + REST_FADE) {
+        this.remove(id)
+      }
+    }
+  }
+
+  /** Opacity of a live ball (resting balls fade before they are removed). */
+  opacity(id: number): number {
+    const t = this.doneAt[id]!
+    if (t === 0 || this.sim.world.Ball.mode[id] !== BallMode.Resting) return 1
+    const hold = this.kind[id] === Kind.Stress ? STRESS_REST_HOLD : REST_HOLD
+    const age = this.time - t - hold
+    return age <= 0 ? 1 : Math.max(0, 1 - age / REST_FADE)
+  }
+}

@@ -1,0 +1,402 @@
+// The Positron Stakes ball-toss demo: a playable panel on the headless physics core, with an inspector
+// (mode colours, velocity vectors, event flashes, a live regime map), multi-ball and stress modes and a
+// tuning panel. Physics runs at a fixed 120 Hz; drawing interpolates between the last two steps.
+import { Application, Container } from 'pixi.js'
+import { Game, STRESS_BALLS, type DemoEvent } from './game'
+import { ThrowInput } from './input'
+import { PanelView, type InspectorOptions } from './panelView'
+import { RegimeView } from './regimeView'
+import { BALL_MODE_NAMES, EVENT_TYPE_NAMES } from '../src/index'
+import { eventColor, hex, modeColor } from './theme'
+import { createTuning } from './tuning'
+
+/** Logical size of the drawing; it is scaled to fit the stage element. */
+const STAGE_W = 900
+const STAGE_H = 545
+const PANEL_AT = { x: 22, y: 22 }
+const REGIME_AT = { x: 500, y: 12 }
+
+function el<T extends HTMLElement = HTMLElement>(id: string): T {
+  const e = document.getElementById(id)
+  if (!e) throw new Error(`demo: missing element #${id}`)
+  return e as T
+}
+
+/** True when WebGL is rendered in software (no GPU). */
+function softwareGL(): boolean {
+  try {
+    const gl = document.createElement('canvas').getContext('webgl')
+    if (!gl) return true
+    const info = gl.getExtension('WEBGL_debug_renderer_info')
+    const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER))
+    gl.getExtension('WEBGL_lose_context')?.loseContext()
+    return /swiftshader|llvmpipe|softpipe|software/i.test(name)
+  } catch {
+    return true
+  }
+}
+
+/** fps and physics time, averaged over windows of at least half a second. */
+class Meter {
+  fps = 0
+  physicsMs = 0
+  /** JS time per frame: physics plus preparing the drawing (not the GPU's rasterising), ms */
+  frameMs = 0
+  stepsPerFrame = 0
+  private frames = 0
+  private ms = 0
+  private js = 0
+  private steps = 0
+  private since = performance.now()
+
+  frame(now: number, physicsMs: number, steps: number, jsMs: number): boolean {
+    this.frames++
+    this.ms += physicsMs
+    this.js += jsMs
+    this.steps += steps
+    const span = now - this.since
+    if (span < 500) return false
+    this.fps = (this.frames * 1000) / span
+    this.physicsMs = this.ms / this.frames
+    this.frameMs = this.js / this.frames
+    this.stepsPerFrame = this.steps / this.frames
+    this.frames = 0
+    this.ms = 0
+    this.js = 0
+    this.steps = 0
+    this.since = now
+    return true
+  }
+}
+
+async function main(): Promise<void> {
+  const stageEl = el('stage')
+  const params = new URLSearchParams(location.search)
+  const stressN = Math.max(1000, Math.min(100_000, Number(params.get('stress')) || STRESS_BALLS))
+  el('stress').textContent = `Stress ${stressN >= 1000 ? `${Math.round(stressN / 1000)}k` : stressN}`
+
+  // software GL (SwiftShader, llvmpipe: headless browsers, no GPU) is fill-rate bound: skip MSAA there
+  const software = softwareGL()
+  const aa = params.get('aa')
+  const app = new Application()
+  await app.init({
+    background: 0x0a0f1a,
+    resizeTo: stageEl,
+    antialias: aa === null ? !software : aa !== '0',
+    autoDensity: true,
+    resolution: Math.min(2, window.devicePixelRatio || 1),
+    preference: 'webgl',
+  })
+  stageEl.appendChild(app.canvas)
+
+  const game = new Game()
+  game.reset()
+  const panel = new PanelView(game)
+  const regime = new RegimeView()
+  const world = new Container()
+  panel.root.position.set(PANEL_AT.x, PANEL_AT.y)
+  regime.root.position.set(REGIME_AT.x, REGIME_AT.y)
+  world.addChild(panel.root, regime.root)
+  app.stage.addChild(world)
+
+  const layout = (): void => {
+    const w = app.screen.width
+    const h = app.screen.height
+    const s = Math.min(w / STAGE_W, h / STAGE_H)
+    world.scale.set(s)
+    world.position.set(Math.round((w - STAGE_W * s) / 2), Math.round(Math.min(12 * s, (h - STAGE_H * s) / 2)))
+  }
+  app.renderer.on('resize', layout)
+  layout()
+
+  const opts: InspectorOptions = { modeColors: true, vectors: false, labels: true }
+  const showModes = el<HTMLInputElement>('show-modes')
+  const showVectors = el<HTMLInputElement>('show-vectors')
+  const showLabels = el<HTMLInputElement>('show-labels')
+  const syncOpts = (): void => {
+    opts.modeColors = showModes.checked
+    opts.vectors = showVectors.checked
+    opts.labels = showLabels.checked
+  }
+  for (const c of [showModes, showVectors, showLabels]) {
+    c.addEventListener('change', () => {
+      syncOpts()
+      c.blur() // Space charges a throw, not the checkbox
+    })
+  }
+  syncOpts()
+
+  el('mode-legend').innerHTML = (BALL_MODE_NAMES as readonly string[]).filter((m) => m !== 'out')
+    .map((m) => `<span><i style="background:${hex(modeColor(m))}"></i>${m}</span>`)
+    .join('')
+
+  // ---- input: pointer, keyboard and the test hook all drive the same ThrowInput ----
+  const now = (): number => performance.now() / 1000
+  const input = new ThrowInput((request) => {
+    game.throwPlayer(request)
+  })
+  const canvas = app.canvas
+  const launch = game.panel.launch
+  let dragging = false
+  const local = (e: PointerEvent): { x: number; y: number } => {
+    const r = canvas.getBoundingClientRect()
+    return panel.root.toLocal({ x: e.clientX - r.left, y: e.clientY - r.top })
+  }
+  const inPanel = (p: { x: number; y: number }): boolean =>
+    p.x >= 0 && p.y >= 0 && p.x <= game.panel.width && p.y <= game.panel.height
+  const inMeter = (p: { x: number; y: number }): boolean => {
+    const m = panel.meter
+    return p.x >= m.x - 8 && p.x <= m.x + m.w + 8 && p.y >= m.y - 8 && p.y <= m.y + m.h + 24
+  }
+  canvas.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return
+    const p = local(e)
+    if (!inPanel(p) && !inMeter(p)) return
+    e.preventDefault()
+    canvas.setPointerCapture(e.pointerId)
+    dragging = true
+    if (inPanel(p) && p.y < launch.y - 4) input.aimAt(p.x, p.y, launch.x, launch.y)
+    input.beginCharge(now())
+  })
+  canvas.addEventListener('pointermove', (e) => {
+    const p = local(e)
+    if ((dragging || inPanel(p)) && p.y < launch.y - 4) input.aimAt(p.x, p.y, launch.x, launch.y)
+  })
+  const endDrag = (e: PointerEvent): void => {
+    if (!dragging) return
+    dragging = false
+    if (canvas.hasPointerCapture(e.pointerId)) canvas.releasePointerCapture(e.pointerId)
+    if (e.type === 'pointercancel') input.cancel()
+    else input.release(now())
+  }
+  canvas.addEventListener('pointerup', endDrag)
+  canvas.addEventListener('pointercancel', endDrag)
+
+  const stressBtn = el('stress')
+  const setStress = (on: boolean): void => {
+    game.setStress(on ? stressN : 0)
+    stressBtn.setAttribute('aria-pressed', String(on))
+  }
+  const newGame = (): void => {
+    input.cancel()
+    game.reset()
+    stressBtn.setAttribute('aria-pressed', 'false')
+  }
+  const typing = (t: EventTarget | null): boolean =>
+    t instanceof HTMLElement && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT')
+  const onKey = (down: boolean) => (e: KeyboardEvent) => {
+    if (typing(e.target) || e.ctrlKey || e.metaKey || e.altKey) return
+    if (input.key(e.code, down, e.repeat, now())) {
+      e.preventDefault()
+      return
+    }
+    if (!down || e.repeat) return
+    switch (e.code) {
+      case 'KeyR':
+        newGame()
+        break
+      case 'Digit1':
+        game.burst(10)
+        break
+      case 'Digit2':
+        game.burst(100)
+        break
+      case 'Digit3':
+        game.burst(1000)
+        break
+      case 'KeyS':
+        setStress(game.stressTarget === 0)
+        break
+      case 'KeyV':
+        showVectors.checked = !showVectors.checked
+        syncOpts()
+        break
+      default:
+        return
+    }
+    e.preventDefault()
+  }
+  window.addEventListener('keydown', onKey(true))
+  window.addEventListener('keyup', onKey(false))
+  window.addEventListener('blur', () => input.blur())
+
+  const button = (id: string, fn: () => void): void => {
+    const b = el<HTMLButtonElement>(id)
+    b.addEventListener('click', () => {
+      fn()
+      b.blur() // so that Space charges a throw instead of pressing the button again
+    })
+  }
+  button('reset', newGame)
+  for (const n of [10, 100, 1000]) button(`multi-${n}`, () => game.burst(n))
+  button('stress', () => setStress(game.stressTarget === 0))
+  button('clear-balls', () => {
+    game.clearExtra()
+    stressBtn.setAttribute('aria-pressed', 'false')
+  })
+
+  const tuning = createTuning(el('gui'), el('tuning-status'), game)
+
+  // ---- HUD ----
+  const hud = {
+    score: el('score'),
+    ballsLeft: el('balls-left'),
+    ballCount: el('ball-count'),
+    fps: el('fps'),
+    physicsMs: el('physics-ms'),
+    frameMs: el('frame-ms'),
+    events: el('events-seen'),
+    log: el('event-log'),
+    counts: el('event-counts'),
+  }
+  const setText = (e: HTMLElement, s: string): void => {
+    if (e.textContent !== s) e.textContent = s
+  }
+  const describe = (e: DemoEvent): string => {
+    const where = e.holeIndex >= 0 ? ` ${e.value}` : ''
+    const dv = e.delta !== undefined && e.speed !== undefined ? ` δ${e.delta.toFixed(1)} v${Math.round(e.speed)}` : ''
+    return `${e.type}${where}${dv}${e.via ? ` (${e.via})` : ''}`
+  }
+  let lastLog = ''
+  const slowHud = (meter: Meter): void => {
+    setText(hud.fps, meter.fps.toFixed(0))
+    setText(hud.physicsMs, meter.physicsMs.toFixed(2))
+    setText(hud.frameMs, meter.frameMs.toFixed(2))
+    setText(hud.events, game.eventsSeen.toLocaleString('en-US'))
+    const log = game.recent
+      .slice(-8)
+      .reverse()
+      .map(
+        (e) =>
+          `<li class="${e.player ? 'player' : ''}"><i style="color:${hex(eventColor(e.type))}">●</i> ${describe(e)}</li>`,
+      )
+      .join('')
+    if (log !== lastLog) {
+      hud.log.innerHTML = log
+      lastLog = log
+    }
+    hud.counts.innerHTML = EVENT_TYPE_NAMES.concat()
+      .map(
+        (t) =>
+          `<tr><td><i style="background:${hex(eventColor(t))}"></i>${t}</td><td class="n">${(game.eventCounts[t] ?? 0).toLocaleString('en-US')}</td></tr>`,
+      )
+      .join('')
+    tuning.update()
+  }
+
+  // ---- the loop ----
+  const meter = new Meter()
+  let last = performance.now()
+  let shownGeneration = -1
+  let frames = 0
+  app.ticker.add(() => {
+    const t = performance.now()
+    const dt = (t - last) / 1000
+    last = t
+    input.update(t / 1000, Math.min(dt, 0.1))
+    const result = game.frame(dt)
+    if (shownGeneration !== game.generation) {
+      shownGeneration = game.generation
+      regime.setConfig(game.config)
+    }
+    panel.onEvents(result.events)
+    regime.onEvents(result.events)
+    panel.draw(game.clock.alpha, input, opts)
+    regime.draw()
+    frames++
+    setText(hud.score, String(game.score))
+    setText(hud.ballsLeft, String(game.ballsLeft))
+    setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
+    if (meter.frame(t, result.physicsMs, result.steps, performance.now() - t)) slowHud(meter)
+  })
+
+  // ---- read-only debug hook for the browser test (and the console) ----
+  const hook = {
+    get ready() {
+      return frames > 0
+    },
+    get frames() {
+      return frames
+    },
+    get score() {
+      return game.score
+    },
+    get ballsLeft() {
+      return game.ballsLeft
+    },
+    get eventsSeen() {
+      return game.eventsSeen
+    },
+    get eventCounts() {
+      return { ...game.eventCounts }
+    },
+    get recent() {
+      return game.recent.map((e) => ({ ...e }))
+    },
+    get liveBalls() {
+      return game.live.length
+    },
+    get playerInPlay() {
+      return game.playerInPlay
+    },
+    get gameOver() {
+      return game.gameOver
+    },
+    get throwsMade() {
+      return game.throwsMade
+    },
+    get fps() {
+      return meter.fps
+    },
+    get physicsMs() {
+      return meter.physicsMs
+    },
+    get frameMs() {
+      return meter.frameMs
+    },
+    get stepsPerFrame() {
+      return meter.stepsPerFrame
+    },
+    get config() {
+      return { ...game.config }
+    },
+    get pending() {
+      return game.pending === null ? null : { ...game.pending }
+    },
+    get input() {
+      return { angle: input.angle, power: input.power, charging: input.charging }
+    },
+    get renderer() {
+      return { type: app.renderer.name, software, antialias: aa === null ? !software : aa !== '0' }
+    },
+    get plotted() {
+      return regime.plotted
+    },
+    /** page coordinates (CSS px) of a point of the panel, for driving the pointer */
+    toPage(x: number, y: number): { x: number; y: number } {
+      const r = canvas.getBoundingClientRect()
+      const g = panel.root.toGlobal({ x, y })
+      return { x: r.left + g.x, y: r.top + g.y }
+    },
+    /** the same calls the pointer and keyboard make */
+    aim(angle: number): void {
+      input.setAim(angle)
+    },
+    charge(power: number): void {
+      input.beginCharge(now())
+      input.holdPower(power)
+    },
+    release(): void {
+      input.release(now())
+    },
+  }
+  Object.defineProperty(window, '__demo', { value: Object.freeze(hook), enumerable: false })
+}
+
+main().catch((e: unknown) => {
+  console.error(e)
+  const msg = document.createElement('pre')
+  msg.style.cssText = 'color:#ff5c7a;padding:16px;white-space:pre-wrap'
+  msg.textContent = `The demo failed to start: ${e instanceof Error ? e.message : String(e)}`
+  document.body.prepend(msg)
+})

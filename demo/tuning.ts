@@ -1,0 +1,97 @@
+// The tuning panel (lil-gui): one field per key of DEFAULT_CONFIG. A change is checked by building a
+// simulation with it (createBallPhysics + addPanel), so the message shown is the core's own RangeError;
+// a valid set waits in game.pending and takes effect at the next throw, burst or new game.
+import GUI, { type Controller } from 'lil-gui'
+import { DEFAULT_CONFIG, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
+import { Game } from './game'
+
+type Key = keyof BallPhysicsConfig
+
+const DECIMALS: Partial<Record<Key, number>> = {
+  GRAVITY: 1,
+  V_SKIP_MAX: 1,
+  RIM_RESTITUTION: 3,
+  RIM_FRICTION: 3,
+  RIM_ROLL_RATIO: 3,
+  RIM_ROLL_FRICTION: 3,
+  RIM_ROLL_MAX_TURNS: 3,
+  MAX_STEP: 3,
+  MAX_EVENT_PASSES: 0,
+}
+
+export interface Tuning {
+  gui: GUI
+  /** refreshes the status line (pending / applied) */
+  update(): void
+}
+
+export function createTuning(container: HTMLElement, status: HTMLElement, game: Game): Tuning {
+  const gui = new GUI({ container, title: 'Physics constants', width: 288 })
+  const values = { ...DEFAULT_CONFIG } as BallPhysicsConfig
+  let overrides: ConfigOverrides = {}
+  let error = ''
+  const controllers = new Map<Key, Controller>()
+
+  const show = (): void => {
+    status.classList.toggle('error', error !== '')
+    status.classList.toggle('pending', error === '' && game.pending !== null)
+    if (error) status.textContent = error
+    else if (game.pending !== null) status.textContent = 'Valid. Applies to the next throw (the panel is cleared then).'
+    else if (Object.keys(game.overrides).length === 0) status.textContent = 'Design values.'
+    else status.textContent = `Running with: ${Object.keys(game.overrides).join(', ')}.`
+  }
+
+  const sync = (config: Readonly<BallPhysicsConfig>): void => {
+    for (const [k, c] of controllers) {
+      values[k] = config[k]
+      c.updateDisplay()
+      c.domElement.classList.remove('invalid')
+    }
+  }
+
+  const change = (key: Key, value: unknown): void => {
+    const next: ConfigOverrides = { ...overrides, [key]: value }
+    // GRAVITY and V_SKIP_MAX are one fact: the one edited last wins, the other is derived
+    if (key === 'GRAVITY') delete next.V_SKIP_MAX
+    if (key === 'V_SKIP_MAX') delete next.GRAVITY
+    const result = Game.validate(next)
+    if (!result.ok) {
+      error = result.error
+      controllers.get(key)?.domElement.classList.add('invalid')
+      show()
+      return
+    }
+    error = ''
+    overrides = next
+    game.setPending(next)
+    sync(result.config)
+    show()
+  }
+
+  for (const key of Object.keys(DEFAULT_CONFIG) as Key[]) {
+    const c = gui.add(values, key).name(key)
+    const d = DECIMALS[key]
+    if (d !== undefined) c.decimals(d)
+    c.domElement.dataset.key = key
+    c.onFinishChange((v: unknown) => change(key, v))
+    controllers.set(key, c)
+  }
+  const actions = {
+    designValues: (): void => {
+      overrides = {}
+      error = ''
+      game.setPending({})
+      sync(DEFAULT_CONFIG)
+      show()
+    },
+    applyNow: (): void => {
+      if (error) return
+      game.reset()
+      show()
+    },
+  }
+  gui.add(actions, 'designValues').name('Reset to design values').domElement.dataset.key = 'designValues'
+  gui.add(actions, 'applyNow').name('Apply now (new game)').domElement.dataset.key = 'applyNow'
+  show()
+  return { gui, update: show }
+}

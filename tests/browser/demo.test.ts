@@ -1,0 +1,283 @@
+// The pixi.js demo in a real browser: build it, serve it with scripts/demo-serve.mjs on a free port, open
+// it in headless Chromium (playwright-core) and play: a pointer throw and a keyboard throw produce events,
+// a throw computed headlessly to capture scores exactly that hole's value, multi-ball 1,000 and the
+// 10,000-ball stress mode report finite fps and physics times, an invalid tuning value shows the core's
+// RangeError, and nothing logs a console error. Screenshots go to test-artifacts/.
+import { spawn, type ChildProcess } from 'node:child_process'
+import { existsSync, mkdirSync, mkdtempSync, rmSync } from 'node:fs'
+import { tmpdir } from 'node:os'
+import { join, resolve } from 'node:path'
+import { chromium, type Browser, type Page } from 'playwright-core'
+import { afterAll, beforeAll, describe, expect, it } from 'vitest'
+import { wallsFor } from '../../demo/game'
+import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../../src/index'
+
+const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium'
+const ARGS = [
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--disable-quic',
+]
+const root = resolve(import.meta.dirname, '../..')
+const artifacts = join(root, 'test-artifacts')
+
+/** The demo's hook (window.__demo), as far as the test reads it. */
+interface DemoHook {
+  ready: boolean
+  frames: number
+  score: number
+  ballsLeft: number
+  eventsSeen: number
+  liveBalls: number
+  playerInPlay: number
+  throwsMade: number
+  plotted: number
+  fps: number
+  physicsMs: number
+  input: { angle: number; power: number; charging: boolean }
+  recent: { type: string; player: boolean; value: number; delta?: number; speed?: number }[]
+  renderer: { type: string; software: boolean; antialias: boolean }
+  toPage(x: number, y: number): { x: number; y: number }
+  aim(angle: number): void
+  charge(power: number): void
+  release(): void
+}
+declare global {
+  interface Window {
+    __demo: DemoHook
+  }
+}
+
+/** Searches throws from the launch point, with the public API only, for one that captures in the top row. */
+function findCapturingThrow(): { power: number; angle: number; value: number } {
+  const outcome = (power: number, angle: number): number => {
+    const sim = createBallPhysics()
+    addPanel(sim, DEFAULT_PANEL)
+    sim.setWalls(wallsFor(DEFAULT_PANEL))
+    const ball = sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power, angle })
+    for (let i = 0; i < 120 * 8; i++) {
+      sim.step(1 / 120)
+      for (const e of sim.drainEvents()) {
+        if (e.type === 'capture' && e.ball === ball) return sim.holeState(e.hole!).value
+      }
+      const mode = sim.ballState(ball).mode
+      if (mode === 'resting' || (mode as string) === 'out') return 0
+    }
+    return 0
+  }
+  for (let p = 40; p <= 70; p++) {
+    for (let a = -30; a <= 30; a++) {
+      const power = p / 100
+      const angle = a / 100
+      const value = outcome(power, angle)
+      // a robust one: its neighbours on both axes capture in the same hole value
+      if (
+        value === 100 &&
+        outcome(power + 0.005, angle) === value &&
+        outcome(power - 0.005, angle) === value &&
+        outcome(power, angle + 0.005) === value &&
+        outcome(power, angle - 0.005) === value
+      ) {
+        return { power, angle, value }
+      }
+    }
+  }
+  throw new Error('no capturing throw found on the default panel')
+}
+
+function startServer(outdir: string): Promise<{ child: ChildProcess; url: string }> {
+  return new Promise((resolvePromise, reject) => {
+    const child = spawn(process.execPath, ['scripts/demo-serve.mjs', '--no-watch', '--outdir', outdir], {
+      cwd: root,
+      env: { ...process.env, PORT: '0' },
+      stdio: ['ignore', 'pipe', 'pipe'],
+    })
+    let out = ''
+    let err = ''
+    const timer = setTimeout(() => reject(new Error(`demo server did not start in 60 s:\n${out}\n${err}`)), 60_000)
+    child.stdout!.on('data', (d: Buffer) => {
+      out += d.toString()
+      const m = /Demo: (http:\/\/\S+)/.exec(out)
+      if (m) {
+        clearTimeout(timer)
+        resolvePromise({ child, url: m[1]! })
+      }
+    })
+    child.stderr!.on('data', (d: Buffer) => (err += d.toString()))
+    child.on('exit', (code) => {
+      clearTimeout(timer)
+      reject(new Error(`demo server exited with ${code}:\n${out}\n${err}`))
+    })
+  })
+}
+
+const num = async (page: Page, sel: string): Promise<number> =>
+  Number(((await page.textContent(sel)) ?? '').replace(/,/g, ''))
+
+describe('demo in headless Chromium', { timeout: 120_000 }, () => {
+  let browser: Browser | undefined
+  let server: { child: ChildProcess; url: string } | undefined
+  let page: Page
+  let outdir = ''
+  const problems: string[] = []
+  const measured: Record<string, unknown> = {}
+
+  beforeAll(async () => {
+    if (!existsSync(CHROMIUM)) {
+      throw new Error(
+        `Chromium is not installed at ${CHROMIUM}: the demo's browser test needs it. ` +
+          'Install it (Debian/Ubuntu: apt-get install -y chromium) or set CHROMIUM_PATH.',
+      )
+    }
+    mkdirSync(artifacts, { recursive: true })
+    outdir = mkdtempSync(join(tmpdir(), 'demo-test-'))
+    server = await startServer(outdir)
+    browser = await chromium.launch({ executablePath: CHROMIUM, args: ARGS })
+    page = await browser.newPage({ viewport: { width: 1400, height: 860 } })
+    page.on('console', (m) => {
+      if (m.type() === 'error') problems.push(`console.error: ${m.text()}`)
+    })
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`))
+    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`))
+    page.on('response', (r) => {
+      if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`)
+    })
+    await page.goto(server.url)
+    await page.waitForFunction(() => window.__demo?.ready && window.__demo.frames > 5, null, { timeout: 30_000 })
+  }, 120_000)
+
+  afterAll(async () => {
+    if (Object.keys(measured).length) console.log('demo measurements:', JSON.stringify(measured))
+    await browser?.close()
+    server?.child.kill('SIGTERM')
+    if (outdir) rmSync(outdir, { recursive: true, force: true })
+  })
+
+  it('loads without console errors and shows a fresh game', async () => {
+    expect(await page.locator('#stage canvas').count()).toBe(1)
+    expect(await num(page, '#score')).toBe(0)
+    expect(await num(page, '#balls-left')).toBe(10)
+    measured.renderer = await page.evaluate(() => window.__demo.renderer)
+    await page.screenshot({ path: join(artifacts, 'demo-loaded.png') })
+    expect(problems).toEqual([])
+  })
+
+  it('a pointer throw (press, hold, release) produces hole events', async () => {
+    const before = await page.evaluate(() => ({ events: window.__demo.eventsSeen, left: window.__demo.ballsLeft }))
+    const at = await page.evaluate(() => window.__demo.toPage(210, 300))
+    await page.mouse.move(at.x, at.y)
+    await page.mouse.down()
+    await page.waitForTimeout(300)
+    expect(await page.evaluate(() => window.__demo.input.charging)).toBe(true)
+    await page.mouse.up()
+    await page.waitForFunction((left) => window.__demo.ballsLeft === left - 1, before.left, { timeout: 5000 })
+    await page.waitForFunction(
+      (n) => window.__demo.eventsSeen > n && window.__demo.recent.some((e) => e.player && e.value > 0),
+      before.events,
+      { timeout: 30_000 },
+    )
+    expect(Math.abs(await page.evaluate(() => window.__demo.input.angle))).toBeLessThan(0.05)
+  })
+
+  it('a keyboard throw (arrows aim, space charges) is thrown', async () => {
+    const left = await page.evaluate(() => window.__demo.ballsLeft)
+    await page.locator('body').focus()
+    const a0 = await page.evaluate(() => window.__demo.input.angle)
+    await page.keyboard.down('ArrowRight')
+    await page.waitForTimeout(250)
+    await page.keyboard.up('ArrowRight')
+    const a1 = await page.evaluate(() => window.__demo.input.angle)
+    expect(a1).toBeGreaterThan(a0)
+    await page.keyboard.down('Space')
+    await page.waitForTimeout(250)
+    expect(await page.evaluate(() => window.__demo.input.charging)).toBe(true)
+    await page.keyboard.up('Space')
+    await page.waitForFunction((l) => window.__demo.ballsLeft === l - 1, left, { timeout: 5000 })
+  })
+
+  it('a throw computed headlessly to capture scores that hole, in the page', async () => {
+    const shot = findCapturingThrow()
+    await page.click('#reset')
+    await page.waitForFunction(() => window.__demo.score === 0 && window.__demo.ballsLeft === 10)
+    const plotted = await page.evaluate(() => window.__demo.plotted)
+    await page.evaluate(({ power, angle }) => {
+      window.__demo.aim(angle)
+      window.__demo.charge(power)
+      window.__demo.release()
+    }, shot)
+    await page.waitForFunction((v) => window.__demo.score === v, shot.value, { timeout: 30_000 })
+    expect(await num(page, '#score')).toBe(shot.value)
+    expect(await num(page, '#balls-left')).toBe(9)
+    expect(await page.evaluate(() => window.__demo.recent.some((e) => e.player && e.type === 'capture'))).toBe(true)
+    expect(await page.evaluate(() => window.__demo.plotted)).toBeGreaterThan(plotted)
+    measured.captureThrow = shot
+    // a few more throws for the picture
+    for (const [angle, power] of [
+      [-0.32, 0.42],
+      [0.27, 0.56],
+    ] as const) {
+      await page.evaluate(([a, p]) => {
+        window.__demo.aim(a)
+        window.__demo.charge(p)
+        window.__demo.release()
+      }, [angle, power])
+      await page.waitForTimeout(600)
+    }
+    await page.evaluate(() => {
+      window.__demo.aim(-0.12)
+      window.__demo.charge(0.47)
+    })
+    await page.waitForTimeout(800)
+    await page.screenshot({ path: join(artifacts, 'demo-captured.png') })
+    await page.evaluate(() => window.__demo.release())
+  })
+
+  it('multi-ball 1,000 shows finite fps and physics ms', async () => {
+    await page.click('#multi-1000')
+    await page.waitForFunction(() => window.__demo.liveBalls >= 900, null, { timeout: 10_000 })
+    await page.waitForTimeout(1300)
+    const fps = await num(page, '#fps')
+    const ms = await num(page, '#physics-ms')
+    const balls = await num(page, '#ball-count')
+    await page.screenshot({ path: join(artifacts, 'demo-multiball-1000.png') })
+    measured.multi1000 = { fps, physicsMs: ms, balls }
+    expect(Number.isFinite(fps) && fps > 0).toBe(true)
+    expect(Number.isFinite(ms) && ms > 0).toBe(true)
+    expect(balls).toBeGreaterThan(0)
+    await page.click('#clear-balls')
+  })
+
+  it('stress mode keeps 10,000 balls in play with finite fps and physics ms', async () => {
+    await page.click('#stress')
+    await page.waitForFunction(() => window.__demo.liveBalls >= 10_000, null, { timeout: 20_000 })
+    await page.waitForTimeout(3000)
+    const fps = await num(page, '#fps')
+    const ms = await num(page, '#physics-ms')
+    const balls = await num(page, '#ball-count')
+    await page.screenshot({ path: join(artifacts, 'demo-stress-10k.png') })
+    measured.stress10k = { fps, physicsMs: ms, balls }
+    expect(Number.isFinite(fps) && fps > 0).toBe(true)
+    expect(Number.isFinite(ms) && ms > 0).toBe(true)
+    expect(balls).toBeGreaterThanOrEqual(10_000)
+    await page.click('#stress')
+    await page.waitForFunction(() => window.__demo.liveBalls < 10_000, null, { timeout: 10_000 })
+  })
+
+  it('an invalid tuning value shows the RangeError and the demo keeps running', async () => {
+    const input = page.locator('[data-key="BALL_RADIUS"] input')
+    await input.fill('-1')
+    await input.press('Enter')
+    await input.blur()
+    await expect.poll(() => page.textContent('#tuning-status')).toMatch(/RangeError: .*BALL_RADIUS/)
+    const frames = await page.evaluate(() => window.__demo.frames)
+    await page.waitForFunction((f) => window.__demo.frames > f + 3, frames)
+    await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+    await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
+    expect(problems).toEqual([])
+  })
+})
