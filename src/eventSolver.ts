@@ -293,8 +293,19 @@ export function solveBall(
   throw new Error(`solveBall: more than ${maxEvents} events`)
 }
 
-/** Stage 2: v' = (1 − μ_t)·v_t − e·v_n·n̂, n̂ along (nx, ny); head-on when the normal is undefined. */
-function bounce(nx: number, ny: number, vx: number, vy: number, config: Readonly<BallPhysicsConfig>): [number, number] {
+/**
+ * Stage 2, the rim bounce law: v' = (1 − μ_t)·v_t − e·v_n·n̂ with n̂ along (nx, ny), written into `out`.
+ * A zero normal (centre on the hole centre) is taken as head-on.
+ */
+export function rimBounce(
+  nx: number,
+  ny: number,
+  vx: number,
+  vy: number,
+  restitution: number,
+  friction: number,
+  out: [number, number],
+): [number, number] {
   let len = Math.hypot(nx, ny)
   if (!(len > 0)) {
     const sp = Math.hypot(vx, vy)
@@ -305,9 +316,14 @@ function bounce(nx: number, ny: number, vx: number, vy: number, config: Readonly
   nx /= len
   ny /= len
   const vn = vx * nx + vy * ny
-  const keep = 1 - config.RIM_FRICTION
-  const e = config.RIM_RESTITUTION
-  return [keep * (vx - vn * nx) - e * vn * nx, keep * (vy - vn * ny) - e * vn * ny]
+  const keep = 1 - friction
+  out[0] = keep * (vx - vn * nx) - restitution * vn * nx
+  out[1] = keep * (vy - vn * ny) - restitution * vn * ny
+  return out
+}
+
+function bounce(nx: number, ny: number, vx: number, vy: number, config: Readonly<BallPhysicsConfig>): [number, number] {
+  return rimBounce(nx, ny, vx, vy, config.RIM_RESTITUTION, config.RIM_FRICTION, [0, 0])
 }
 
 /** Initial velocity of a throw, as the API maps it: power 0..1 onto MIN_VY..MAX_VY, angle 0 = up (−y). */
