@@ -43,7 +43,7 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
 
   const sync = (config: Readonly<BallPhysicsConfig>): void => {
     for (const [k, c] of controllers) {
-      values[k] = config[k]
+      ;(values as Record<Key, unknown>)[k] = config[k]
       c.updateDisplay()
       c.domElement.classList.remove('invalid')
     }

@@ -134,7 +134,7 @@ function spec<T>(name: string, value: T): T {
 export function createBallPhysics(overrides: ConfigOverrides = {}, options: BallWorldOptions = {}): BallPhysics {
   const w = createBallWorld(overrides, options)
   const cfg = w.config
-  const schedule = createSchedule()
+  const schedule = createSchedule(cfg)
 
   const checkEntity = (field: string, eid: unknown, tag: object, kind: string): number => {
     if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1) {

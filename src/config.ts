@@ -3,6 +3,10 @@
 // GRAVITY and V_SKIP_MAX are one fact written twice (V_SKIP_MAX = R·√(2g/r)); resolveConfig keeps them
 // consistent, so they can never disagree.
 
+/** How a world steps: the exact event-driven core, a tick-sampled port of the six stages, or v1's rule. */
+export const METHODS = ['exact', 'naive', 'v1'] as const
+export type SimulationMethod = (typeof METHODS)[number]
+
 export interface BallPhysicsConfig {
   /** R, hole radius, px. */
   HOLE_RADIUS: number
@@ -36,7 +40,14 @@ export interface BallPhysicsConfig {
   MAX_STEP: number
   /** Bound on event passes in one step; a ball with more events than this finishes them next step. */
   MAX_EVENT_PASSES: number
+  /** Stepping method (the schedule the API builds): 'exact' (default), 'naive' or 'v1' (docs/accuracy.md). */
+  METHOD: SimulationMethod
+  /** Sub-steps per step for the tick-sampled methods ('naive', 'v1'); 'exact' ignores it. */
+  SUBSTEPS: number
 }
+
+/** The config keys that hold numbers (all but METHOD). */
+export type NumericConfigKey = Exclude<keyof BallPhysicsConfig, 'METHOD'>
 
 const HOLE_RADIUS = 18
 const BALL_RADIUS = 11
@@ -69,6 +80,8 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   ROLLING_DECEL: 300,
   MAX_STEP: 0.25,
   MAX_EVENT_PASSES: 256,
+  METHOD: 'exact',
+  SUBSTEPS: 1,
 })
 
 export type ConfigOverrides = Partial<BallPhysicsConfig>
@@ -81,7 +94,7 @@ interface Range {
 }
 
 /** Allowed range of every key. Open lower bounds are for values that divide or must be positive. */
-export const CONFIG_RANGES: Readonly<Record<keyof BallPhysicsConfig, Readonly<Range>>> = Object.freeze({
+export const CONFIG_RANGES: Readonly<Record<NumericConfigKey, Readonly<Range>>> = Object.freeze({
   HOLE_RADIUS: { min: 0, max: 1e4, minOpen: true },
   BALL_RADIUS: { min: 0, max: 1e4, minOpen: true },
   V_MAX: { min: 0, max: 1e6, minOpen: true },
@@ -98,13 +111,14 @@ export const CONFIG_RANGES: Readonly<Record<keyof BallPhysicsConfig, Readonly<Ra
   ROLLING_DECEL: { min: 0, max: 1e6 },
   MAX_STEP: { min: 0, max: 10, minOpen: true },
   MAX_EVENT_PASSES: { min: 1, max: 1e6, integer: true },
+  SUBSTEPS: { min: 1, max: 64, integer: true },
 })
 
 export function describeRange(r: Range): string {
   return `${r.minOpen ? '(' : '['}${r.min}, ${r.max}]${r.integer ? ' (an integer)' : ''}`
 }
 
-function checkKey(key: keyof BallPhysicsConfig, value: unknown): number {
+function checkKey(key: NumericConfigKey, value: unknown): number {
   const range = CONFIG_RANGES[key]
   if (typeof value !== 'number') {
     throw new TypeError(`config.${key} must be a number in ${describeRange(range)}, got ${typeof value}`)
@@ -116,6 +130,14 @@ function checkKey(key: keyof BallPhysicsConfig, value: unknown): number {
     (!range.integer || Number.isInteger(value))
   if (!ok) throw new RangeError(`config.${key} must be in ${describeRange(range)}, got ${value}`)
   return value
+}
+
+function checkMethod(value: unknown): SimulationMethod {
+  if (!(METHODS as readonly unknown[]).includes(value)) {
+    const got = typeof value === 'string' ? `'${value}'` : String(value)
+    throw new RangeError(`config.METHOD must be one of ${METHODS.map((m) => `'${m}'`).join(', ')}, got ${got}`)
+  }
+  return value as SimulationMethod
 }
 
 /** Relative tolerance for GRAVITY and V_SKIP_MAX given together: they must describe the same g. */
@@ -133,12 +155,13 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
   }
   const out = { ...DEFAULT_CONFIG } as BallPhysicsConfig
   for (const key of Object.keys(overrides)) {
-    if (!(key in CONFIG_RANGES)) {
-      throw new RangeError(`config.${key} is not a known key; known keys: ${Object.keys(CONFIG_RANGES).join(', ')}`)
+    if (!(key in CONFIG_RANGES) && key !== 'METHOD') {
+      throw new RangeError(`config.${key} is not a known key; known keys: ${Object.keys(DEFAULT_CONFIG).join(', ')}`)
     }
     const value = (overrides as Record<string, unknown>)[key]
     if (value === undefined) continue
-    out[key as keyof BallPhysicsConfig] = checkKey(key as keyof BallPhysicsConfig, value)
+    if (key === 'METHOD') out.METHOD = checkMethod(value)
+    else out[key as NumericConfigKey] = checkKey(key as NumericConfigKey, value)
   }
   if (out.MAX_VY < out.MIN_VY) {
     throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)

@@ -10,6 +10,8 @@ import { integrationSystem } from '../systems/integration'
 import { rimRollSystem } from '../systems/rimRoll'
 import { skipOverSystem } from '../systems/skipOver'
 import { wallsSystem } from '../systems/walls'
+import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/naive/schedule'
+import type { BallPhysicsConfig } from './config'
 import type { BallWorld } from './world'
 
 export type System = (world: BallWorld) => void
@@ -33,9 +35,13 @@ export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'walls', run: wallsSystem }),
 ])
 
-/** A fresh, editable copy of the default schedule. */
-export function createSchedule(): ScheduleEntry[] {
-  return DEFAULT_SCHEDULE.slice()
+/**
+ * A fresh, editable schedule for the config's METHOD: the default schedule for 'exact' (or no config);
+ * for the tick-sampled 'naive' and 'v1' (docs/accuracy.md), their sub-step group repeated SUBSTEPS times.
+ */
+export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEntry[] {
+  if (config === undefined || config.METHOD === 'exact') return DEFAULT_SCHEDULE.slice()
+  return repeatSubsteps(config.METHOD === 'naive' ? NAIVE_SUBSTEP : V1_SUBSTEP, config.SUBSTEPS)
 }
 
 /**

@@ -1,0 +1,44 @@
+// Stages 2 and 4, rim bounce, at the tick: the normal is taken at the overshot position,
+//   n̂ = (ball − hole)/|ball − hole|,  v' = (1 − μ_t)·v_t − e·(v·n̂)·n̂
+// with no guard for a centre on the hole centre (|ball − hole| = 0), as a direct port writes it.
+// The hole stays locked until the centre is outside its lip circle.
+// Reads the naive marks, Ball, Hole; writes Ball, RimContact.mode, the naive store; emits 'bounce', 'nearMiss'.
+import { PathEvent } from '../../components/Path'
+import { RimMode } from '../../components/RimContact'
+import { EventType } from '../../src/events'
+import { emitHoleEvent } from '../../src/motion'
+import type { BallWorld } from '../../src/world'
+import { naiveState } from './state'
+
+export function naiveBounceSystem(w: BallWorld): void {
+  const st = naiveState(w)
+  const P = w.Path
+  const RC = w.RimContact
+  const H = w.Hole
+  const B = w.Ball
+  const e = w.config.RIM_RESTITUTION
+  const keep = 1 - w.config.RIM_FRICTION
+  const list = st.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    if (P.mark[eid] !== PathEvent.Bounce) continue
+    P.mark[eid] = PathEvent.None
+    const hole = P.markHole[eid]!
+    let nx = B.x[eid]! - H.x[hole]!
+    let ny = B.y[eid]! - H.y[hole]!
+    const len = Math.hypot(nx, ny)
+    nx /= len
+    ny /= len
+    const vx = B.vx[eid]!
+    const vy = B.vy[eid]!
+    const vn = vx * nx + vy * ny
+    const tx = vx - vn * nx
+    const ty = vy - vn * ny
+    B.vx[eid] = keep * tx - e * vn * nx
+    B.vy[eid] = keep * ty - e * vn * ny
+    RC.mode[eid] = RimMode.Transit
+    st.store.fromHole[eid] = hole
+    emitHoleEvent(w, EventType.Bounce, eid, hole, st.t)
+    emitHoleEvent(w, EventType.NearMiss, eid, hole, st.t)
+  }
+}

@@ -1,0 +1,33 @@
+// Stage 1, capture, decided at the tick: δ ≤ δ_eff(v) with v the speed at the overshot position; and a
+// ball whose speed ran out in this sub-step falls in if its centre is inside a lip circle, else rests.
+// Reads the naive marks, RimContact (δ, v); writes Ball, RimContact, Path.mark; emits 'capture', 'rest'.
+import { PathEvent } from '../../components/Path'
+import { CaptureVia } from '../../src/events'
+import { capturesClean } from '../../src/geometry'
+import { captureBall, restBall } from '../../src/motion'
+import type { BallWorld } from '../../src/world'
+import { naiveState } from './state'
+
+export function naiveCaptureSystem(w: BallWorld): void {
+  const st = naiveState(w)
+  const P = w.Path
+  const RC = w.RimContact
+  const vMax = w.config.V_MAX
+  const list = st.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    const mark = P.mark[eid]
+    if (mark === PathEvent.Lip) {
+      const hole = P.markHole[eid]!
+      if (capturesClean(RC.delta[eid]!, RC.speed[eid]!, w.Hole.radius[hole]!, vMax)) {
+        P.mark[eid] = PathEvent.None
+        captureBall(w, eid, hole, st.t, CaptureVia.Clean)
+      }
+    } else if (mark === PathEvent.Stop) {
+      P.mark[eid] = PathEvent.None
+      const hole = RC.hole[eid]!
+      if (hole !== 0) captureBall(w, eid, hole, st.t, CaptureVia.Rest)
+      else restBall(w, eid, st.t)
+    }
+  }
+}

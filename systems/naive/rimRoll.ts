@@ -1,0 +1,67 @@
+// Stage 3, rim-around / lip-out, at the tick. A contact marked Roll snaps the centre onto the lip circle at
+// the overshot position's angle and keeps the tangential speed there; naiveMove then decays it by
+// v·(1 − μ_roll·h) per sub-step. When naiveDetect finds v < RIM_ROLL_DROP_SPEED the ball drops in; when
+// it finds the arc past RIM_ROLL_MAX_TURNS·2πR it pops off along the tangent, hole locked until it is out.
+// Reads the naive marks, Ball, Hole, RimContact; writes Ball, RimContact, the naive store;
+// emits 'rimRoll', 'capture', 'lipOut', 'nearMiss'.
+import { BallMode } from '../../components/Ball'
+import { PathEvent } from '../../components/Path'
+import { RimMode } from '../../components/RimContact'
+import { CaptureVia, EventType } from '../../src/events'
+import { captureBall, emitHoleEvent } from '../../src/motion'
+import type { BallWorld } from '../../src/world'
+import { naiveState } from './state'
+
+export function naiveRimRollSystem(w: BallWorld): void {
+  const st = naiveState(w)
+  const S = st.store
+  const P = w.Path
+  const RC = w.RimContact
+  const H = w.Hole
+  const B = w.Ball
+  const list = st.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    const mark = P.mark[eid]
+    if (mark === PathEvent.Roll) {
+      P.mark[eid] = PathEvent.None
+      const hole = P.markHole[eid]!
+      const nx = B.x[eid]! - H.x[hole]!
+      const ny = B.y[eid]! - H.y[hole]!
+      const len = Math.hypot(nx, ny)
+      const vt = (-B.vx[eid]! * ny + B.vy[eid]! * nx) / len
+      const dir = vt >= 0 ? 1 : -1
+      const phi = Math.atan2(ny, nx)
+      const R = H.radius[hole]!
+      RC.mode[eid] = RimMode.Rolling
+      RC.angle[eid] = phi
+      RC.angle0[eid] = phi
+      RC.arc[eid] = 0
+      RC.speed0[eid] = Math.abs(vt)
+      RC.direction[eid] = dir
+      RC.time0[eid] = st.t
+      S.rollSpeed[eid] = Math.abs(vt)
+      B.mode[eid] = BallMode.RimRoll
+      const c = Math.cos(phi)
+      const s = Math.sin(phi)
+      B.x[eid] = H.x[hole]! + R * c
+      B.y[eid] = H.y[hole]! + R * s
+      B.vx[eid] = -dir * s * Math.abs(vt)
+      B.vy[eid] = dir * c * Math.abs(vt)
+      emitHoleEvent(w, EventType.RimRoll, eid, hole, st.t)
+    } else if (mark === PathEvent.RollEnd) {
+      P.mark[eid] = PathEvent.None
+      const hole = P.markHole[eid]!
+      if (S.rollSpeed[eid]! < w.config.RIM_ROLL_DROP_SPEED) {
+        captureBall(w, eid, hole, st.t, CaptureVia.RimRoll)
+      } else {
+        // leave along the tangent (the velocity naiveMove set), hole locked until the centre is out
+        RC.mode[eid] = RimMode.Transit
+        B.mode[eid] = BallMode.Rolling
+        S.fromHole[eid] = hole
+        emitHoleEvent(w, EventType.LipOut, eid, hole, st.t)
+        emitHoleEvent(w, EventType.NearMiss, eid, hole, st.t)
+      }
+    }
+  }
+}

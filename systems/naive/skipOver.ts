@@ -1,0 +1,27 @@
+// Stage 5, skip-over, decided at the tick: v > v_skip(δ) with v the speed at the overshot position.
+// Reads the naive marks, RimContact (δ, v); writes RimContact.mode, Path.mark; emits 'skip'.
+import { PathEvent } from '../../components/Path'
+import { RimMode } from '../../components/RimContact'
+import { EventType } from '../../src/events'
+import { vSkip } from '../../src/geometry'
+import { emitHoleEvent } from '../../src/motion'
+import type { BallWorld } from '../../src/world'
+import { naiveState } from './state'
+
+export function naiveSkipOverSystem(w: BallWorld): void {
+  const st = naiveState(w)
+  const P = w.Path
+  const RC = w.RimContact
+  const g = w.config.GRAVITY
+  const list = st.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    if (P.mark[eid] !== PathEvent.Lip) continue
+    const hole = P.markHole[eid]!
+    if (RC.speed[eid]! > vSkip(RC.delta[eid]!, w.Hole.radius[hole]!, w.Ball.radius[eid]!, g)) {
+      RC.mode[eid] = RimMode.Skipping
+      P.mark[eid] = PathEvent.None
+      emitHoleEvent(w, EventType.Skip, eid, hole, st.t)
+    }
+  }
+}

@@ -1,0 +1,50 @@
+// v1, the rule the design replaced (ball-physics-iteration-2.md §1): at each tick, a ball whose centre is
+// inside a lip circle with speed below V1_SPEED_LIMIT = V_MAX (the speed at which the Stage 1 window closes,
+// the design's own "low enough") is captured. Nothing else: no skip, no rim contact, no bounce or roll, no
+// near miss. A ball whose speed ran out rests (or falls in, by the same rule, if its centre is inside).
+// Reads Ball, Hole, the naive store; writes Ball, RimContact (δ, v of the capture); emits 'capture', 'rest'.
+import { BallMode } from '../../components/Ball'
+import { CaptureVia } from '../../src/events'
+import { captureBall, restBall } from '../../src/motion'
+import type { BallWorld } from '../../src/world'
+import { naiveState } from './state'
+
+export function v1CaptureSystem(w: BallWorld): void {
+  const st = naiveState(w)
+  const S = st.store
+  const B = w.Ball
+  const RC = w.RimContact
+  const limit = w.config.V_MAX
+  const table = w.holes
+  const xyr = table.xyr
+  const balls = w.moving.dense
+  for (let i = w.moving.count - 1; i >= 0; i--) {
+    const eid = balls[i]!
+    if (B.mode[eid] !== BallMode.Rolling) continue
+    const x = B.x[eid]!
+    const y = B.y[eid]!
+    const vx = B.vx[eid]!
+    const vy = B.vy[eid]!
+    const speed = Math.hypot(vx, vy)
+    let captured = false
+    if (speed < limit) {
+      for (let j = 0, n = table.count; j < n; j++) {
+        const dx = x - xyr[3 * j]!
+        const dy = y - xyr[3 * j + 1]!
+        const R = xyr[3 * j + 2]!
+        const d2 = dx * dx + dy * dy
+        if (d2 >= R * R) continue
+        const hole = table.ids[j]!
+        RC.hole[eid] = hole
+        RC.hasLip[eid] = 1
+        RC.delta[eid] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
+        RC.speed[eid] = speed
+        RC.lipTime[eid] = st.t
+        captureBall(w, eid, hole, st.t, speed > 0 ? CaptureVia.Clean : CaptureVia.Rest)
+        captured = true
+        break
+      }
+    }
+    if (!captured && S.stopped[eid] === 1) restBall(w, eid, st.t)
+  }
+}
