@@ -1,8 +1,8 @@
 // Public entry point of the ball-physics module.
 export { createBallPhysics, MAX_COORDINATE, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
 export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec } from './api'
-export { CONFIG_RANGES, DEFAULT_CONFIG, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
-export type { BallPhysicsConfig, ConfigOverrides } from './config'
+export { CAPTURE_WINDOW_SHAPES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
+export type { BallPhysicsConfig, CaptureWindowShape, ConfigOverrides } from './config'
 export { createBallWorld, ensureCapacity } from './world'
 export type { BallWorld, BallWorldData, BallWorldOptions } from './world'
 export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule'
@@ -14,6 +14,7 @@ export type { BallEvent, BallEventType, CaptureViaName } from './events'
 export { DEFAULT_PANEL, addPanel } from './panel'
 export type { PanelHole, PanelLayout } from './panel'
 export {
+  captureSpeed,
   captureWindow,
   capturesClean,
   cogRadius,
