@@ -25,6 +25,8 @@ export const BallSchema = {
   radius: Float64Array,
   /** BallMode */
   mode: Uint8Array,
+  /** 1: a hero ball, whose lip crossings the physical reference decides (systems/heroReference.ts) */
+  hero: Uint8Array,
 }
 
 export const createBallStore = (capacity: number) => createStore(BallSchema, capacity)

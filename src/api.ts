@@ -36,6 +36,8 @@ export interface BallSpec {
   vy: number
   /** px, default config.BALL_RADIUS */
   radius?: number
+  /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
+  hero?: boolean
 }
 
 export interface ThrowSpec {
@@ -47,6 +49,8 @@ export interface ThrowSpec {
   angle: number
   /** px, default config.BALL_RADIUS */
   radius?: number
+  /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
+  hero?: boolean
 }
 
 export interface WallsSpec {
@@ -99,6 +103,13 @@ export interface BallPhysics {
    * (it leaves on a straight path, the hole locked until it is out). Captured and out balls cannot move.
    */
   setBallVelocity(ball: number, vx: number, vy: number): void
+  /**
+   * Makes a ball a hero (or not): from its next lip crossing on, the physical reference decides it instead
+   * of the six stages (systems/heroReference.ts). Costs one reference run per hero lip crossing.
+   */
+  setHeroBall(ball: number, hero?: boolean): void
+  /** True for a hero ball. */
+  isHeroBall(ball: number): boolean
   /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
   setWalls(spec: WallsSpec): void
   /** Removes the walls. */
@@ -122,6 +133,12 @@ function positive(field: string, value: unknown, limit: number): number {
   if (!Number.isFinite(value) || value <= 0 || value > limit) {
     throw new RangeError(`${field} must be in (0, ${limit}], got ${value}`)
   }
+  return value
+}
+
+function flag(field: string, value: unknown): boolean {
+  if (value === undefined) return false
+  if (typeof value !== 'boolean') throw new TypeError(`${field} must be a boolean, got ${typeof value}`)
   return value
 }
 
@@ -158,7 +175,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     return 0
   }
 
-  const newBall = (x: number, y: number, vx: number, vy: number, radius: number): number => {
+  const newBall = (x: number, y: number, vx: number, vy: number, radius: number, hero: boolean): number => {
     const eid = addEntity(w)
     ensureCapacity(w, eid)
     addComponent(w, eid, w.IsBall)
@@ -169,6 +186,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     clearSlot(w.Path, eid)
     clearSlot(w.RimContact, eid)
     w.Ball.radius[eid] = radius
+    w.Ball.hero[eid] = hero ? 1 : 0
     // rule for a ball added inside a lip circle: it is in transit through that hole (no decision is made
     // for it); if it stops before leaving, it falls in
     const inside = holeAt(x, y)
@@ -254,7 +272,8 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       const vx = finite('ball.vx', s.vx, MAX_SPEED)
       const vy = finite('ball.vy', s.vy, MAX_SPEED)
       const radius = s.radius === undefined ? cfg.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
-      return newBall(x, y, vx, vy, radius)
+      const hero = flag('ball.hero', s.hero)
+      return newBall(x, y, vx, vy, radius, hero)
     },
 
     throwBall(s) {
@@ -265,8 +284,9 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       if (!(s.power >= 0 && s.power <= 1)) throw new RangeError(`throw.power must be in [0, 1], got ${s.power}`)
       const angle = finite('throw.angle', s.angle, 2 * Math.PI)
       const radius = s.radius === undefined ? cfg.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
+      const hero = flag('throw.hero', s.hero)
       const speed = cfg.MIN_VY + s.power * (cfg.MAX_VY - cfg.MIN_VY)
-      return newBall(x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius)
+      return newBall(x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius, hero)
     },
 
     step(dt) {
@@ -293,6 +313,16 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
         sampleRolling(w, b, w.time)
       }
       launchBall(w, b, w.Ball.x[b]!, w.Ball.y[b]!, nvx, nvy, w.time)
+    },
+
+    setHeroBall(ball, hero = true) {
+      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      w.Ball.hero[b] = flag('hero', hero) ? 1 : 0
+    },
+
+    isHeroBall(ball) {
+      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      return w.Ball.hero[b] === 1
     },
 
     setWalls(s) {

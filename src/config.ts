@@ -36,6 +36,13 @@ export interface BallPhysicsConfig {
   MAX_VY: number
   /** Constant rolling deceleration on the panel, px/s² (0: no rolling loss). */
   ROLLING_DECEL: number
+  /**
+   * Shape of the Stage 1 capture window: 'ellipse' (the design: δ_eff = R·√(1 − (v/V_MAX)²)) or
+   * 'quadratic' (Penner's fit v_c(δ) = V_MAX·(1 − δ²/R²), so δ_eff = R·√(1 − v/V_MAX)); see docs/physical.md.
+   */
+  CAPTURE_WINDOW: CaptureWindowShape
+  /** j in I = j·m·r² (2/5 solid, 2/3 thin shell): used only by a hero ball's physical reference. */
+  BALL_INERTIA: number
   /** Largest dt that one step simulates, s; a longer step (a tab that slept) is cut to this. */
   MAX_STEP: number
   /** Bound on event passes in one step; a ball with more events than this finishes them next step. */
@@ -46,8 +53,9 @@ export interface BallPhysicsConfig {
   SUBSTEPS: number
 }
 
-/** The config keys that hold numbers (all but METHOD). */
-export type NumericConfigKey = Exclude<keyof BallPhysicsConfig, 'METHOD'>
+/** Capture window shapes (config.CAPTURE_WINDOW). */
+export const CAPTURE_WINDOW_SHAPES = ['ellipse', 'quadratic'] as const
+export type CaptureWindowShape = (typeof CAPTURE_WINDOW_SHAPES)[number]
 
 const HOLE_RADIUS = 18
 const BALL_RADIUS = 11
@@ -78,6 +86,8 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   MIN_VY: 175,
   MAX_VY: 700,
   ROLLING_DECEL: 300,
+  CAPTURE_WINDOW: 'ellipse',
+  BALL_INERTIA: 2 / 5,
   MAX_STEP: 0.25,
   MAX_EVENT_PASSES: 256,
   METHOD: 'exact',
@@ -93,8 +103,18 @@ interface Range {
   integer?: boolean
 }
 
-/** Allowed range of every key. Open lower bounds are for values that divide or must be positive. */
-export const CONFIG_RANGES: Readonly<Record<NumericConfigKey, Readonly<Range>>> = Object.freeze({
+/** Keys whose value is one of a list of names. */
+export type ChoiceKey = 'CAPTURE_WINDOW' | 'METHOD'
+type NumericKey = Exclude<keyof BallPhysicsConfig, ChoiceKey>
+
+/** Allowed values of every key that names a choice. */
+export const CONFIG_CHOICES: Readonly<Record<ChoiceKey, readonly string[]>> = Object.freeze({
+  CAPTURE_WINDOW: CAPTURE_WINDOW_SHAPES,
+  METHOD: METHODS,
+})
+
+/** Allowed range of every numeric key. Open lower bounds are for values that divide or must be positive. */
+export const CONFIG_RANGES: Readonly<Record<NumericKey, Readonly<Range>>> = Object.freeze({
   HOLE_RADIUS: { min: 0, max: 1e4, minOpen: true },
   BALL_RADIUS: { min: 0, max: 1e4, minOpen: true },
   V_MAX: { min: 0, max: 1e6, minOpen: true },
@@ -109,6 +129,7 @@ export const CONFIG_RANGES: Readonly<Record<NumericConfigKey, Readonly<Range>>> 
   MIN_VY: { min: 0, max: 1e6 },
   MAX_VY: { min: 0, max: 1e6 },
   ROLLING_DECEL: { min: 0, max: 1e6 },
+  BALL_INERTIA: { min: 0, max: 2 / 3, minOpen: true },
   MAX_STEP: { min: 0, max: 10, minOpen: true },
   MAX_EVENT_PASSES: { min: 1, max: 1e6, integer: true },
   SUBSTEPS: { min: 1, max: 64, integer: true },
@@ -118,7 +139,16 @@ export function describeRange(r: Range): string {
   return `${r.minOpen ? '(' : '['}${r.min}, ${r.max}]${r.integer ? ' (an integer)' : ''}`
 }
 
-function checkKey(key: NumericConfigKey, value: unknown): number {
+function checkChoice(key: ChoiceKey, value: unknown): string {
+  const allowed = CONFIG_CHOICES[key]
+  if (typeof value !== 'string' || !allowed.includes(value)) {
+    const got = typeof value === 'string' ? `'${value}'` : String(value)
+    throw new RangeError(`config.${key} must be one of ${allowed.map((a) => `'${a}'`).join(', ')}, got ${got}`)
+  }
+  return value
+}
+
+function checkKey(key: NumericKey, value: unknown): number {
   const range = CONFIG_RANGES[key]
   if (typeof value !== 'number') {
     throw new TypeError(`config.${key} must be a number in ${describeRange(range)}, got ${typeof value}`)
@@ -130,14 +160,6 @@ function checkKey(key: NumericConfigKey, value: unknown): number {
     (!range.integer || Number.isInteger(value))
   if (!ok) throw new RangeError(`config.${key} must be in ${describeRange(range)}, got ${value}`)
   return value
-}
-
-function checkMethod(value: unknown): SimulationMethod {
-  if (!(METHODS as readonly unknown[]).includes(value)) {
-    const got = typeof value === 'string' ? `'${value}'` : String(value)
-    throw new RangeError(`config.METHOD must be one of ${METHODS.map((m) => `'${m}'`).join(', ')}, got ${got}`)
-  }
-  return value as SimulationMethod
 }
 
 /** Relative tolerance for GRAVITY and V_SKIP_MAX given together: they must describe the same g. */
@@ -155,13 +177,17 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
   }
   const out = { ...DEFAULT_CONFIG } as BallPhysicsConfig
   for (const key of Object.keys(overrides)) {
-    if (!(key in CONFIG_RANGES) && key !== 'METHOD') {
-      throw new RangeError(`config.${key} is not a known key; known keys: ${Object.keys(DEFAULT_CONFIG).join(', ')}`)
+    if (!(key in CONFIG_RANGES) && !(key in CONFIG_CHOICES)) {
+      const known = [...Object.keys(CONFIG_RANGES), ...Object.keys(CONFIG_CHOICES)]
+      throw new RangeError(`config.${key} is not a known key; known keys: ${known.join(', ')}`)
     }
     const value = (overrides as Record<string, unknown>)[key]
     if (value === undefined) continue
-    if (key === 'METHOD') out.METHOD = checkMethod(value)
-    else out[key as NumericConfigKey] = checkKey(key as NumericConfigKey, value)
+    if (key in CONFIG_CHOICES) {
+      ;(out as unknown as Record<string, unknown>)[key] = checkChoice(key as ChoiceKey, value)
+      continue
+    }
+    out[key as NumericKey] = checkKey(key as NumericKey, value)
   }
   if (out.MAX_VY < out.MIN_VY) {
     throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)

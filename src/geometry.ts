@@ -3,6 +3,7 @@
 //
 // Notation (ball-physics-iteration-2.md): R hole radius, r ball radius, δ offset of the ball's straight
 // path from the hole centre, v speed when the centre crosses the lip circle (radius R), g gravity.
+import type { CaptureWindowShape } from './config'
 
 /**
  * Stage 5 skip speed: v_skip(δ) = R·√(2g/r)·√(1 − δ²/R²). A ball faster than this at the lip flies over
@@ -14,17 +15,36 @@ export function vSkip(delta: number, holeRadius: number, ballRadius: number, gra
 }
 
 /**
- * Stage 1 capture window (Penner's effective hole): δ_eff(v) = R·√(1 − (v/V_MAX)²), the largest offset
- * captured clean at speed v. 0 for v ≥ V_MAX (only a dead-centre ball at exactly V_MAX).
+ * Stage 1 capture window (Penner's effective hole), the largest offset captured clean at speed v:
+ *   'ellipse' (the design):      δ_eff(v) = R·√(1 − (v/V_MAX)²)
+ *   'quadratic' (Penner's fit):  δ_eff(v) = R·√(1 − v/V_MAX), the inverse of v_c(δ) = V_MAX·(1 − δ²/R²)
+ * 0 for v ≥ V_MAX (only a dead-centre ball at exactly V_MAX).
  */
-export function captureWindow(speed: number, holeRadius: number, vMax: number): number {
-  const k = 1 - (speed / vMax) * (speed / vMax)
+export function captureWindow(speed: number, holeRadius: number, vMax: number, shape: CaptureWindowShape = 'ellipse'): number {
+  const q = speed / vMax
+  const k = shape === 'quadratic' ? 1 - q : 1 - q * q
   return k > 0 ? holeRadius * Math.sqrt(k) : 0
 }
 
+/**
+ * The same window read the other way, for overlays and charts: v_c(δ), the largest speed captured clean
+ * at offset δ; 'ellipse' V_MAX·√(1 − δ²/R²), 'quadratic' V_MAX·(1 − δ²/R²). 0 for δ ≥ R.
+ */
+export function captureSpeed(delta: number, holeRadius: number, vMax: number, shape: CaptureWindowShape = 'ellipse'): number {
+  const k = 1 - (delta * delta) / (holeRadius * holeRadius)
+  if (!(k > 0)) return 0
+  return shape === 'quadratic' ? vMax * k : vMax * Math.sqrt(k)
+}
+
 /** Stage 1 test: δ ≤ δ_eff(v), and never above V_MAX. */
-export function capturesClean(delta: number, speed: number, holeRadius: number, vMax: number): boolean {
-  return speed <= vMax && delta <= captureWindow(speed, holeRadius, vMax)
+export function capturesClean(
+  delta: number,
+  speed: number,
+  holeRadius: number,
+  vMax: number,
+  shape: CaptureWindowShape = 'ellipse',
+): boolean {
+  return speed <= vMax && delta <= captureWindow(speed, holeRadius, vMax, shape)
 }
 
 /**

@@ -1,9 +1,8 @@
 // Public entry point of the ball-physics module.
 export { createBallPhysics, MAX_COORDINATE, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
 export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api'
-export { CONFIG_RANGES, DEFAULT_CONFIG, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
-export { METHODS } from './config'
-export type { BallPhysicsConfig, ConfigOverrides, SimulationMethod } from './config'
+export { CAPTURE_WINDOW_SHAPES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
+export type { BallPhysicsConfig, CaptureWindowShape, ConfigOverrides, SimulationMethod } from './config'
 export { createBallWorld, ensureCapacity } from './world'
 export type { BallWorld, BallWorldData, BallWorldOptions } from './world'
 export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule'
@@ -13,8 +12,10 @@ export type { FixedStepClock, FixedStepClockOptions } from './clock'
 export { EVENT_TYPE_NAMES } from './events'
 export type { BallEvent, BallEventType, CaptureViaName } from './events'
 export { DEFAULT_PANEL, addPanel } from './panel'
+export { PHYSICAL_CONFIG } from './physical/preset'
 export type { PanelHole, PanelLayout } from './panel'
 export {
+  captureSpeed,
   captureWindow,
   capturesClean,
   cogRadius,
@@ -46,6 +47,7 @@ export { captureSystem } from '../systems/capture'
 export { cogGateSystem } from '../systems/cogGate'
 export { bounceSystem } from '../systems/bounce'
 export { rimRollSystem } from '../systems/rimRoll'
+export { heroReferenceSystem, HERO_ROLL_TURN } from '../systems/heroReference'
 export { wallsSystem } from '../systems/walls'
 export { WallEdge, WallsSchema } from '../components/Walls'
 export type { WallsStore } from '../components/Walls'

@@ -6,6 +6,7 @@
 import { bounceSystem } from '../systems/bounce'
 import { captureSystem } from '../systems/capture'
 import { cogGateSystem } from '../systems/cogGate'
+import { heroReferenceSystem } from '../systems/heroReference'
 import { integrationSystem } from '../systems/integration'
 import { rimRollSystem } from '../systems/rimRoll'
 import { skipOverSystem } from '../systems/skipOver'
@@ -22,11 +23,13 @@ export interface ScheduleEntry {
 }
 
 /**
- * integration, skip-over (Stage 5), capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4),
- * rim-roll (Stage 3), then the panel's walls (a no-op in a world without walls).
+ * integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
+ * capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3), then the panel's walls
+ * (a no-op in a world without walls).
  */
 export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'integration', run: integrationSystem }),
+  Object.freeze({ name: 'heroReference', run: heroReferenceSystem }),
   Object.freeze({ name: 'skipOver', run: skipOverSystem }),
   Object.freeze({ name: 'capture', run: captureSystem }),
   Object.freeze({ name: 'cogGate', run: cogGateSystem }),

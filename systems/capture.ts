@@ -1,5 +1,5 @@
 // Stage 1, capture (Penner's effective hole). Region 4 of the (δ, v) map, and the low-speed part of 2.
-//   δ ≤ δ_eff(v) = R·√(1 − (v/V_MAX)²)
+//   δ ≤ δ_eff(v) = R·√(1 − (v/V_MAX)²)   (CAPTURE_WINDOW 'quadratic': R·√(1 − v/V_MAX), docs/physical.md)
 // At the exact lip crossing (not skipped), a ball inside the speed-shrinking window drops in clean.
 // Also decides every stop: a ball whose speed runs out with its centre inside a lip circle falls in
 // (via 'rest'); one that stops elsewhere rests on the panel, whatever its footprint covers (the v1
@@ -15,13 +15,14 @@ export function captureSystem(w: BallWorld): void {
   const P = w.Path
   const RC = w.RimContact
   const vMax = w.config.V_MAX
+  const shape = w.config.CAPTURE_WINDOW
   const list = w.marked
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
     const mark = P.mark[eid]
     if (mark === PathEvent.Lip) {
       const hole = P.markHole[eid]!
-      if (capturesClean(RC.delta[eid]!, RC.speed[eid]!, w.Hole.radius[hole]!, vMax)) {
+      if (capturesClean(RC.delta[eid]!, RC.speed[eid]!, w.Hole.radius[hole]!, vMax, shape)) {
         P.mark[eid] = PathEvent.None
         captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Clean)
       }

@@ -1,0 +1,44 @@
+// The v1 rule, as a system, for measuring it on the same engine as the design (docs/physical.md §4):
+//   capture iff the centre crosses the lip and v < V_MAX; otherwise the hole is not there.
+// Put it ahead of skipOver and it handles every lip crossing, so the six stages never see one. It exists
+// to chart the v1 model's fidelity and cost; no game should use it.
+// Reads Path, Hole; writes RimContact, Path.mark; emits 'capture'.
+import { PathEvent } from '../../components/Path'
+import { RimMode } from '../../components/RimContact'
+import { CaptureVia } from '../events'
+import { captureBall, planRolling } from '../motion'
+import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../schedule'
+import type { BallWorld } from '../world'
+
+export function v1RuleSystem(w: BallWorld): void {
+  const P = w.Path
+  const RC = w.RimContact
+  const H = w.Hole
+  const vMax = w.config.V_MAX
+  const list = w.marked
+  for (let i = 0; i < list.count; i++) {
+    const eid = list.ids[i]!
+    if (P.mark[eid] !== PathEvent.Lip) continue
+    const hole = P.markHole[eid]!
+    const t = P.nextT[eid]!
+    RC.hole[eid] = hole
+    RC.hasLip[eid] = 1
+    RC.delta[eid] = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
+    RC.speed[eid] = P.speed[eid]!
+    RC.lipTime[eid] = t
+    P.mark[eid] = PathEvent.None
+    if (P.speed[eid]! < vMax) {
+      captureBall(w, eid, hole, t, CaptureVia.Clean)
+    } else {
+      RC.mode[eid] = RimMode.Transit
+      planRolling(w, eid)
+    }
+  }
+}
+
+/** The default schedule with the v1 rule ahead of the six stages. */
+export function v1Schedule(): ScheduleEntry[] {
+  const s = DEFAULT_SCHEDULE.slice()
+  s.splice(1, 0, { name: 'v1Rule', run: v1RuleSystem })
+  return s
+}
