@@ -142,3 +142,17 @@ export function rollPopTime(vt0: number, friction: number, arc: number): number 
 export function popArc(maxTurns: number, holeRadius: number): number {
   return maxTurns * 2 * Math.PI * holeRadius
 }
+
+// ---- rim bounce (Stages 2 and 4) ----
+
+/**
+ * The rim bounce law for a unit normal n̂ (from the hole centre to the ball): v_n = v·n̂, v_t = v − v_n·n̂,
+ * v' = keep·v_t − e·v_n·n̂ with keep = 1 − μ_t. Writes v' into out[0], out[1] (no allocation).
+ */
+export function rimBounce(vx: number, vy: number, nx: number, ny: number, e: number, keep: number, out: Float64Array): void {
+  const vn = vx * nx + vy * ny
+  const tx = vx - vn * nx
+  const ty = vy - vn * ny
+  out[0] = keep * tx - e * vn * nx
+  out[1] = keep * ty - e * vn * ny
+}

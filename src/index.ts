@@ -21,6 +21,7 @@ export {
   cogRadius,
   midRimDropSpeed,
   popArc,
+  rimBounce,
   rollArc,
   rollDropTime,
   rollPopTime,

@@ -7,7 +7,11 @@ import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
 import { EventType } from '../src/events'
 import { emitHoleEvent, planRolling, startPath } from '../src/motion'
+import { rimBounce } from '../src/geometry'
 import type { BallWorld } from '../src/world'
+
+/** the bounced velocity, reused for every ball */
+const out = new Float64Array(2)
 
 export function bounceSystem(w: BallWorld): void {
   const P = w.Path
@@ -39,11 +43,9 @@ export function bounceSystem(w: BallWorld): void {
       nx = sp > 0 ? -vx / sp : 1
       ny = sp > 0 ? -vy / sp : 0
     }
-    const vn = vx * nx + vy * ny
-    const tx = vx - vn * nx
-    const ty = vy - vn * ny
+    rimBounce(vx, vy, nx, ny, e, keep, out)
     RC.mode[eid] = RimMode.Transit
-    startPath(w, eid, x, y, keep * tx - e * vn * nx, keep * ty - e * vn * ny, t)
+    startPath(w, eid, x, y, out[0]!, out[1]!, t)
     P.fromHole[eid] = hole
     planRolling(w, eid)
     emitHoleEvent(w, EventType.Bounce, eid, hole, t)

@@ -7,8 +7,12 @@ import { PathEvent } from '../../components/Path'
 import { RimMode } from '../../components/RimContact'
 import { EventType } from '../../src/events'
 import { emitHoleEvent } from '../../src/motion'
+import { rimBounce } from '../../src/geometry'
 import type { BallWorld } from '../../src/world'
 import { naiveState } from './state'
+
+/** the bounced velocity, reused for every ball */
+const out = new Float64Array(2)
 
 export function naiveBounceSystem(w: BallWorld): void {
   const st = naiveState(w)
@@ -31,11 +35,9 @@ export function naiveBounceSystem(w: BallWorld): void {
     ny /= len
     const vx = B.vx[eid]!
     const vy = B.vy[eid]!
-    const vn = vx * nx + vy * ny
-    const tx = vx - vn * nx
-    const ty = vy - vn * ny
-    B.vx[eid] = keep * tx - e * vn * nx
-    B.vy[eid] = keep * ty - e * vn * ny
+    rimBounce(vx, vy, nx, ny, e, keep, out)
+    B.vx[eid] = out[0]!
+    B.vy[eid] = out[1]!
     RC.mode[eid] = RimMode.Transit
     st.store.fromHole[eid] = hole
     emitHoleEvent(w, EventType.Bounce, eid, hole, st.t)
