@@ -25,6 +25,8 @@ export const PathEvent = {
   Wall: 9,
   /** centre crosses an open edge of the walls (walls system) */
   Gutter: 10,
+  /** touches another ball (collisions system; markHole holds the other ball) */
+  Collide: 11,
 } as const
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
 

@@ -7,6 +7,7 @@ import { WallEdge } from '../components/Walls'
 import type { BallPhysicsConfig, ConfigOverrides } from './config'
 import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
 import { captureBall, launchBall, planRolling, sampleRimRoll, sampleRolling, startPath } from './motion'
+import { bumpVersion, restingRemove } from './collide'
 import { createSchedule, runSchedule, type ScheduleEntry } from './schedule'
 import { clearSlot } from './store'
 import { addHoleToTable, createBallWorld, ensureCapacity, removeMoving, type BallWorld, type BallWorldOptions } from './world'
@@ -19,6 +20,8 @@ export const MAX_SPEED = 1e7
 export const MAX_RADIUS = 1e4
 /** Largest |hole value| accepted. */
 export const MAX_VALUE = 1e12
+/** Largest ball mass accepted, in units of a default ball. */
+export const MAX_MASS = 1e9
 
 export interface HoleSpec {
   x: number
@@ -38,6 +41,11 @@ export interface BallSpec {
   radius?: number
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
   hero?: boolean
+  /**
+   * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
+   * (same density). Used only when config.BALL_COLLISIONS is 'on'.
+   */
+  mass?: number
 }
 
 export interface ThrowSpec {
@@ -51,6 +59,11 @@ export interface ThrowSpec {
   radius?: number
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
   hero?: boolean
+  /**
+   * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
+   * (same density). Used only when config.BALL_COLLISIONS is 'on'.
+   */
+  mass?: number
 }
 
 export interface WallsSpec {
@@ -175,7 +188,15 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     return 0
   }
 
-  const newBall = (x: number, y: number, vx: number, vy: number, radius: number, hero: boolean): number => {
+  const massOf = (field: string, value: unknown, radius: number): number => {
+    if (value === undefined) {
+      const k = radius / cfg.BALL_RADIUS
+      return k * k * k
+    }
+    return positive(field, value, MAX_MASS)
+  }
+
+  const newBall = (x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number): number => {
     const eid = addEntity(w)
     ensureCapacity(w, eid)
     addComponent(w, eid, w.IsBall)
@@ -187,6 +208,11 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     clearSlot(w.RimContact, eid)
     w.Ball.radius[eid] = radius
     w.Ball.hero[eid] = hero ? 1 : 0
+    if (w.collide !== null) {
+      w.collide.mass[eid] = mass
+      if (radius > w.collide.maxRadius) w.collide.maxRadius = radius
+      bumpVersion(w, eid)
+    }
     // rule for a ball added inside a lip circle: it is in transit through that hole (no decision is made
     // for it); if it stops before leaving, it falls in
     const inside = holeAt(x, y)
@@ -273,7 +299,8 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       const vy = finite('ball.vy', s.vy, MAX_SPEED)
       const radius = s.radius === undefined ? cfg.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
       const hero = flag('ball.hero', s.hero)
-      return newBall(x, y, vx, vy, radius, hero)
+      const mass = massOf('ball.mass', s.mass, radius)
+      return newBall(x, y, vx, vy, radius, hero, mass)
     },
 
     throwBall(s) {
@@ -285,8 +312,9 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       const angle = finite('throw.angle', s.angle, 2 * Math.PI)
       const radius = s.radius === undefined ? cfg.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
       const hero = flag('throw.hero', s.hero)
+      const mass = massOf('throw.mass', s.mass, radius)
       const speed = cfg.MIN_VY + s.power * (cfg.MAX_VY - cfg.MIN_VY)
-      return newBall(x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius, hero)
+      return newBall(x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius, hero, mass)
     },
 
     step(dt) {
@@ -381,6 +409,10 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     removeBall(ball) {
       const b = checkEntity('ball', ball, w.IsBall, 'ball')
       removeMoving(w, b)
+      if (w.collide !== null) {
+        restingRemove(w, b)
+        bumpVersion(w, b)
+      }
       removeEntity(w, b)
       clearSlot(w.Ball, b)
       clearSlot(w.Path, b)

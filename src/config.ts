@@ -7,6 +7,10 @@
 export const METHODS = ['exact', 'naive', 'v1'] as const
 export type SimulationMethod = (typeof METHODS)[number]
 
+/** Ball-ball contacts: off (the default: balls pass through each other) or on (src/collide.ts). */
+export const COLLISION_MODES = ['off', 'on'] as const
+export type CollisionMode = (typeof COLLISION_MODES)[number]
+
 export interface BallPhysicsConfig {
   /** R, hole radius, px. */
   HOLE_RADIUS: number
@@ -51,6 +55,16 @@ export interface BallPhysicsConfig {
   METHOD: SimulationMethod
   /** Sub-steps per step for the tick-sampled methods ('naive', 'v1'); 'exact' ignores it. */
   SUBSTEPS: number
+  /** Ball-ball contacts: 'off' (default; model no more than a scene needs) or 'on' (needs METHOD 'exact'). */
+  BALL_COLLISIONS: CollisionMode
+  /** e between two balls, normal coefficient of restitution, [0, 1]. */
+  BALL_RESTITUTION: number
+  /**
+   * Approach speed below which a ball-ball contact is perfectly inelastic (the two leave together), and,
+   * with contacts on, normal speed below which a wall hit stops instead of bouncing, px/s. Ends the
+   * ever-faster runs of ever-smaller contacts of balls pressed together (inelastic collapse).
+   */
+  BALL_SETTLE_SPEED: number
 }
 
 /** Capture window shapes (config.CAPTURE_WINDOW). */
@@ -92,6 +106,9 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   MAX_EVENT_PASSES: 256,
   METHOD: 'exact',
   SUBSTEPS: 1,
+  BALL_COLLISIONS: 'off',
+  BALL_RESTITUTION: 0.9,
+  BALL_SETTLE_SPEED: 1,
 })
 
 export type ConfigOverrides = Partial<BallPhysicsConfig>
@@ -104,13 +121,14 @@ interface Range {
 }
 
 /** Keys whose value is one of a list of names. */
-export type ChoiceKey = 'CAPTURE_WINDOW' | 'METHOD'
+export type ChoiceKey = 'CAPTURE_WINDOW' | 'METHOD' | 'BALL_COLLISIONS'
 type NumericKey = Exclude<keyof BallPhysicsConfig, ChoiceKey>
 
 /** Allowed values of every key that names a choice. */
 export const CONFIG_CHOICES: Readonly<Record<ChoiceKey, readonly string[]>> = Object.freeze({
   CAPTURE_WINDOW: CAPTURE_WINDOW_SHAPES,
   METHOD: METHODS,
+  BALL_COLLISIONS: COLLISION_MODES,
 })
 
 /** Allowed range of every numeric key. Open lower bounds are for values that divide or must be positive. */
@@ -133,6 +151,8 @@ export const CONFIG_RANGES: Readonly<Record<NumericKey, Readonly<Range>>> = Obje
   MAX_STEP: { min: 0, max: 10, minOpen: true },
   MAX_EVENT_PASSES: { min: 1, max: 1e6, integer: true },
   SUBSTEPS: { min: 1, max: 64, integer: true },
+  BALL_RESTITUTION: { min: 0, max: 1 },
+  BALL_SETTLE_SPEED: { min: 0, max: 1e6 },
 })
 
 export function describeRange(r: Range): string {
@@ -188,6 +208,9 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
       continue
     }
     out[key as NumericKey] = checkKey(key as NumericKey, value)
+  }
+  if (out.BALL_COLLISIONS === 'on' && out.METHOD !== 'exact') {
+    throw new RangeError(`config.BALL_COLLISIONS 'on' needs config.METHOD 'exact', got '${out.METHOD}'`)
   }
   if (out.MAX_VY < out.MIN_VY) {
     throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)

@@ -11,9 +11,11 @@ export const EventType = {
   Rest: 6,
   Wall: 7,
   Gutter: 8,
+  /** two balls touch (ball-ball contacts on): `ball` and `other` */
+  Collision: 9,
 } as const
 export type EventTypeCode = (typeof EventType)[keyof typeof EventType]
-export const EVENT_TYPE_NAMES = ['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest', 'wall', 'gutter'] as const
+export const EVENT_TYPE_NAMES = ['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest', 'wall', 'gutter', 'collision'] as const
 export type BallEventType = (typeof EVENT_TYPE_NAMES)[number]
 
 export const CaptureVia = { None: 0, Clean: 1, RimRoll: 2, Rest: 3 } as const
@@ -34,6 +36,10 @@ export interface BallEvent {
   speed?: number
   /** how a capture happened */
   via?: CaptureViaName
+  /** the other ball of a collision */
+  other?: number
+  /** normal impulse of a collision, mass·px/s (masses in units of a default ball) */
+  impulse?: number
 }
 
 export interface EventBuffer {
@@ -121,6 +127,14 @@ export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
   for (let k = 0; k < n; k++) {
     const i = order[k]!
     const e: BallEvent = { type: EVENT_TYPE_NAMES[buf.type[i]!]!, ball: buf.ball[i]!, time: buf.time[i]! }
+    if (buf.type[i] === EventType.Collision) {
+      // the hole slot carries the other ball; speed is the approach speed, delta the impulse
+      e.other = buf.hole[i]!
+      e.speed = buf.speed[i]!
+      e.impulse = buf.delta[i]!
+      out[k] = e
+      continue
+    }
     if (buf.hole[i] !== 0) e.hole = buf.hole[i]!
     if (buf.hasDV[i] === 1) {
       e.delta = buf.delta[i]!

@@ -23,6 +23,7 @@ import {
 } from './geometry'
 import { buildHoleGrid, walkHoleGrid } from './broadphase'
 import { addMoving, removeMoving, type BallWorld } from './world'
+import { restingInsert, restingRemove } from './collide'
 
 /** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
 export const NEVER = 1e300
@@ -48,6 +49,7 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   P.s[eid] = 0
   P.sHole[eid] = 0
   P.fromHole[eid] = 0
+  if (w.collide !== null) w.collide.partner[eid] = 0
   B.x[eid] = x
   B.y[eid] = y
   B.vx[eid] = vx
@@ -327,6 +329,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
   w.RimContact.hole[eid] = hole
   w.RimContact.mode[eid] = RimMode.None
   removeMoving(w, eid)
+  if (w.collide !== null) restingRemove(w, eid)
 }
 
 /** The ball stops on the panel, outside every hole, at time t. */
@@ -340,10 +343,13 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
   w.Path.nextT[eid] = NEVER
   w.Path.nextKind[eid] = PathEvent.None
   removeMoving(w, eid)
+  // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid
+  if (w.collide !== null) restingInsert(w, eid)
 }
 
 /** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
 export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  if (w.collide !== null) restingRemove(w, eid)
   w.Ball.mode[eid] = BallMode.Rolling
   startPath(w, eid, x, y, vx, vy, t)
   planRolling(w, eid)

@@ -5,6 +5,7 @@
 // runs in every pass and can tell passes apart by `world.pass`.
 import { bounceSystem } from '../systems/bounce'
 import { captureSystem } from '../systems/capture'
+import { collisionsSystem } from '../systems/collisions'
 import { cogGateSystem } from '../systems/cogGate'
 import { heroReferenceSystem } from '../systems/heroReference'
 import { integrationSystem } from '../systems/integration'
@@ -25,7 +26,7 @@ export interface ScheduleEntry {
 /**
  * integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
  * capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3), then the panel's walls
- * (a no-op in a world without walls).
+ * (a no-op in a world without walls), then ball-ball contacts (a no-op unless BALL_COLLISIONS is 'on').
  */
 export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'integration', run: integrationSystem }),
@@ -36,6 +37,7 @@ export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'bounce', run: bounceSystem }),
   Object.freeze({ name: 'rimRoll', run: rimRollSystem }),
   Object.freeze({ name: 'walls', run: wallsSystem }),
+  Object.freeze({ name: 'collisions', run: collisionsSystem }),
 ])
 
 /**
@@ -53,7 +55,8 @@ export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEn
  */
 export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   world.tickEnd = world.time + dt
-  const maxPasses = world.config.MAX_EVENT_PASSES
+  // with ball-ball contacts a pass handles one event, so the bound is per moving ball
+  const maxPasses = world.collide === null ? world.config.MAX_EVENT_PASSES : world.config.MAX_EVENT_PASSES * (world.moving.count + 1)
   for (world.pass = 0; world.pass < maxPasses; world.pass++) {
     for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
     if (world.marked.count === 0) break

@@ -11,6 +11,7 @@ import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './c
 import { createEventBuffer, type EventBuffer } from './events'
 import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './broadphase'
 import { growStore } from './store'
+import { createCollisionState, growCollisionState, type CollisionState } from './collide'
 
 /** A growable list of entity ids. */
 export interface IdList {
@@ -111,6 +112,8 @@ export interface BallWorldData {
   /** the previous pass's marked balls, which the integration system continues */
   todo: IdList
   events: EventBuffer
+  /** ball-ball contact state when config.BALL_COLLISIONS is 'on', else null */
+  collide: CollisionState | null
 }
 
 export type BallWorld = World<BallWorldData>
@@ -160,6 +163,7 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     marked: createIdList(),
     todo: createIdList(),
     events: createEventBuffer(),
+    collide: config.BALL_COLLISIONS === 'on' ? createCollisionState(capacity, config.BALL_RADIUS) : null,
   }
   return createWorld(data)
 }
@@ -177,6 +181,7 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   const sparse = new Uint32Array(cap)
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse
+  if (world.collide !== null) growCollisionState(world.collide, cap)
   world.capacity = cap
 }
 

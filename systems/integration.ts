@@ -13,9 +13,23 @@ import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
 import { EventType, pushEvent } from '../src/events'
 import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion'
+import {
+  HeapKind,
+  beginCollisionStep,
+  bumpVersion,
+  heapPop,
+  heapTopLive,
+  predictBall,
+  resumeSearch,
+  sampleForContact,
+} from '../src/collide'
 import { pushId, type BallWorld } from '../src/world'
 
 export function integrationSystem(w: BallWorld): void {
+  if (w.collide !== null) {
+    orderedIntegration(w)
+    return
+  }
   const tEnd = w.tickEnd
   const P = w.Path
   const nextT = P.nextT
@@ -63,6 +77,77 @@ export function integrationSystem(w: BallWorld): void {
       if (m === BallMode.Rolling || m === BallMode.RimRoll) advanceThroughEvents(w, eid, tEnd)
     }
   }
+}
+
+/**
+ * With ball-ball contacts on: one event per pass, in global time order (src/collide.ts). Pass 0 predicts
+ * every moving ball's contacts; later passes predict again for the balls the systems just moved. Then the
+ * earliest live event is taken: a ball's own event is advanced to exactly as without contacts (bookkeeping
+ * handled inline, decisions marked); a contact samples both balls and marks them for the collisions system.
+ * When no event is left before the step's end, every moving ball is sampled there.
+ */
+function orderedIntegration(w: BallWorld): void {
+  const C = w.collide!
+  const tEnd = w.tickEnd
+  const P = w.Path
+  if (w.pass === 0) {
+    w.marked.count = 0
+    beginCollisionStep(w)
+    const balls = w.moving.dense
+    for (let i = 0, n = w.moving.count; i < n; i++) predictBall(w, balls[i]!)
+  } else {
+    const todo = w.marked
+    w.marked = w.todo
+    w.todo = todo
+    w.marked.count = 0
+    for (let i = 0, n = todo.count; i < n; i++) {
+      const eid = todo.ids[i]!
+      bumpVersion(w, eid)
+      predictBall(w, eid)
+    }
+  }
+  while (C.heapCount > 0) {
+    const t = C.hT[0]!
+    if (t > tEnd) break
+    const live = heapTopLive(C)
+    const kind = C.hKind[0]!
+    const a = C.hA[0]!
+    const b = C.hB[0]!
+    heapPop(C)
+    if (!live) continue
+    if (t > C.now) C.now = t
+    if (kind === HeapKind.Own) {
+      advanceThroughEvents(w, a, t)
+      if (P.mark[a] !== PathEvent.None) return
+      // bookkeeping only (a lip exit, a near miss): the next event changed, so predict again
+      bumpVersion(w, a)
+      predictBall(w, a)
+    } else if (kind === HeapKind.Resume) {
+      resumeSearch(w, a, b, t)
+    } else {
+      markContact(w, a, b, C.now)
+      markContact(w, b, a, C.now)
+      return
+    }
+  }
+  // nothing left before the step's end
+  const balls = w.moving.dense
+  const mode = w.Ball.mode
+  for (let i = 0, n = w.moving.count; i < n; i++) {
+    const eid = balls[i]!
+    if (mode[eid] === BallMode.RimRoll) sampleRimRoll(w, eid, tEnd)
+    else sampleRolling(w, eid, tEnd)
+  }
+  C.now = tEnd
+}
+
+function markContact(w: BallWorld, eid: number, other: number, t: number): void {
+  const P = w.Path
+  sampleForContact(w, eid, t)
+  P.mark[eid] = PathEvent.Collide
+  P.markHole[eid] = other
+  P.nextT[eid] = t
+  pushId(w.marked, eid)
 }
 
 /** Upper bound on bookkeeping events handled for one ball in one pass (each consumes a hole ahead). */

@@ -14,6 +14,7 @@ export function wallsSystem(w: BallWorld): void {
   const P = w.Path
   const B = w.Ball
   const e = w.Walls.restitution[w.walls]!
+  const settle = w.collide === null ? 0 : w.config.BALL_SETTLE_SPEED
   const list = w.marked
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
@@ -23,8 +24,11 @@ export function wallsSystem(w: BallWorld): void {
       const edge = P.markHole[eid]!
       const t = P.nextT[eid]!
       const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
-      const vx = horizontal ? -e * B.vx[eid]! : B.vx[eid]!
-      const vy = horizontal ? B.vy[eid]! : -e * B.vy[eid]!
+      // with contacts on, a ball pressed to the wall by others slides along it instead of bouncing forever
+      const vn = horizontal ? B.vx[eid]! : B.vy[eid]!
+      const k = Math.abs(vn) < settle ? 0 : -e
+      const vx = horizontal ? k * vn : B.vx[eid]!
+      const vy = horizontal ? B.vy[eid]! : k * vn
       pushEvent(w.events, EventType.Wall, eid, 0, t, false, 0, 0)
       startPath(w, eid, B.x[eid]!, B.y[eid]!, vx, vy, t)
       planRolling(w, eid)

@@ -1,0 +1,130 @@
+// Ball-ball contacts (not a design stage; opt-in with config.BALL_COLLISIONS = 'on'). The integration
+// system finds the contact exactly and marks both balls; this system applies the contact law and restarts
+// the balls on straight paths from the contact.
+//   contact: normal impulse with restitution BALL_RESTITUTION and the balls' masses, tangential velocity
+//     kept (resolveContact in src/collide.ts); elastic when either ball touched another within
+//     CONTACT_DURATION (a push runs along a row of touching balls as in Newton's cradle)
+//   settling contact (approach slower than BALL_SETTLE_SPEED, or the same two balls touching again with
+//     nothing between): the touching cluster around them leaves with its centre-of-mass velocity, less any
+//     motion into a closed wall a member touches; then nothing in it can touch again (inelastic collapse ends)
+//   struck while rolling on a rim: it leaves the rim and is in transit through that hole (no new decision
+//     there; it falls in if it stops inside the lip circle), as after a pop-off
+//   struck while skipping over or entering a hole: likewise in transit (the lip decision no longer applies)
+//   struck at rest: it wakes and rolls
+// Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
+import { BallMode } from '../components/Ball'
+import { PathEvent } from '../components/Path'
+import { WallEdge } from '../components/Walls'
+import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/collide'
+import { EventType, pushEvent } from '../src/events'
+import { launchBall } from '../src/motion'
+import { pushId, type BallWorld } from '../src/world'
+
+export function collisionsSystem(w: BallWorld): void {
+  const C = w.collide
+  if (C === null) return
+  const P = w.Path
+  const B = w.Ball
+  const list = w.marked
+  const n0 = list.count
+  for (let i = 0; i < n0; i++) {
+    const a = list.ids[i]!
+    if (P.mark[a] !== PathEvent.Collide) continue
+    const b = P.markHole[a]!
+    if (P.mark[b] !== PathEvent.Collide || P.markHole[b] !== a) {
+      throw new Error(`ball ${a}: contact with ball ${b} was marked on one ball only`)
+    }
+    P.mark[a] = PathEvent.None
+    P.mark[b] = PathEvent.None
+    const t = P.nextT[a]!
+    let nx = B.x[b]! - B.x[a]!
+    let ny = B.y[b]! - B.y[a]!
+    const d = Math.sqrt(nx * nx + ny * ny)
+    if (d > 0) {
+      nx /= d
+      ny /= d
+    } else {
+      // coincident centres: push apart along the relative velocity
+      const rx = B.vx[a]! - B.vx[b]!
+      const ry = B.vy[a]! - B.vy[b]!
+      const s = Math.sqrt(rx * rx + ry * ry)
+      nx = s > 0 ? rx / s : 1
+      ny = s > 0 ? ry / s : 0
+    }
+    const approach = -((B.vx[b]! - B.vx[a]!) * nx + (B.vy[b]! - B.vy[a]!) * ny)
+    // a glancing contact at relative speed v approaches slower than s in a share of about s²/(2v²) of
+    // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
+    const settle = approach < w.config.BALL_SETTLE_SPEED || isRepeatContact(w, a, b)
+    C.contacts++
+    if (settle) {
+      settleCluster(w, a, b, t)
+      pushEvent(w.events, EventType.Collision, a < b ? a : b, a < b ? b : a, t, true, contactOut.impulse, approach)
+      continue
+    }
+    const rapid = t - C.lastContact[a]! < CONTACT_DURATION || t - C.lastContact[b]! < CONTACT_DURATION
+    const e = rapid ? 1 : w.config.BALL_RESTITUTION
+    resolveContact(C.mass[a]!, C.mass[b]!, B.vx[a]!, B.vy[a]!, B.vx[b]!, B.vy[b]!, nx, ny, e, false)
+    const o = contactOut
+    C.lastContact[a] = t
+    C.lastContact[b] = t
+    pushEvent(w.events, EventType.Collision, a < b ? a : b, a < b ? b : a, t, true, o.impulse, o.approach)
+    restart(w, a, o.vax, o.vay, t)
+    restart(w, b, o.vbx, o.vby, t)
+    // set after the restart (a new path clears it): any later change of either path clears it again
+    C.partner[a] = b
+    C.partner[b] = a
+  }
+}
+
+/** The cluster touching a and b leaves with its centre-of-mass velocity (less motion into walls). */
+function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
+  const C = w.collide!
+  const B = w.Ball
+  collectCluster(w, a, b, t)
+  const n = C.clusterCount
+  let m = 0
+  let px = 0
+  let py = 0
+  for (let k = 0; k < n; k++) {
+    const eid = C.cluster[k]!
+    const mass = C.mass[eid]!
+    m += mass
+    px += mass * B.vx[eid]!
+    py += mass * B.vy[eid]!
+  }
+  let vx = px / m
+  let vy = py / m
+  // the impulse reported is the one on a
+  contactOut.impulse = C.mass[a]! * Math.hypot(vx - B.vx[a]!, vy - B.vy[a]!)
+  if (w.walls !== 0) {
+    const W = w.Walls
+    const e = w.walls
+    const open = W.open[e]!
+    for (let k = 0; k < n; k++) {
+      const eid = C.cluster[k]!
+      const x = B.x[eid]!
+      const y = B.y[eid]!
+      const r = B.radius[eid]!
+      if (vx < 0 && (open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= WALL_TOUCH) vx = 0
+      if (vx > 0 && (open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= WALL_TOUCH) vx = 0
+      if (vy < 0 && (open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= WALL_TOUCH) vy = 0
+      if (vy > 0 && (open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= WALL_TOUCH) vy = 0
+    }
+  }
+  for (let k = 0; k < n; k++) {
+    const eid = C.cluster[k]!
+    C.lastContact[eid] = t
+    restart(w, eid, vx, vy, t)
+    // the others are predicted again next pass with a and b
+    if (k >= 2) pushId(w.marked, eid)
+  }
+}
+
+/** Distance, px, within which a ball counts as touching a wall. */
+const WALL_TOUCH = 1e-6
+
+function restart(w: BallWorld, eid: number, vx: number, vy: number, t: number): void {
+  const B = w.Ball
+  if (B.mode[eid] !== BallMode.Resting) strikeLeavesRim(w, eid)
+  launchBall(w, eid, B.x[eid]!, B.y[eid]!, vx, vy, t)
+}
