@@ -18,7 +18,7 @@ import { createWallsStore, type WallsStore } from '../components/Walls'
 import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './config'
 import { createEventBuffer, type EventBuffer } from './events'
 import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './broadphase'
-import { clearSlot, fitStore, growStore } from './store'
+import { clearSlot, growStore } from './store'
 
 /** A growable list of entity ids. */
 export interface IdList {
@@ -158,7 +158,7 @@ export function acquireRim(world: BallWorld, eid: number): number {
   if (held !== 0) return held
   const pool = world.rimFree
   const slot = pool.count > 0 ? pool.ids[--pool.count]! : world.rimNext++
-  fitStore(world.RimContact, slot)
+  if (slot >= world.RimContact.hole.length) growStore(world.RimContact, 2 * world.RimContact.hole.length)
   world.Ball.rim[eid] = slot
   return slot
 }
@@ -167,7 +167,20 @@ export function acquireRim(world: BallWorld, eid: number): number {
 export function releaseRim(world: BallWorld, eid: number): void {
   const slot = world.Ball.rim[eid]!
   if (slot === 0) return
-  clearSlot(world.RimContact, slot)
+  // every field, written out: this runs at each lock's end (clearSlot's generic loop costs more)
+  const RC = world.RimContact
+  RC.hole[slot] = 0
+  RC.mode[slot] = 0
+  RC.hasLip[slot] = 0
+  RC.delta[slot] = 0
+  RC.speed[slot] = 0
+  RC.lipTime[slot] = 0
+  RC.angle[slot] = 0
+  RC.arc[slot] = 0
+  RC.angle0[slot] = 0
+  RC.speed0[slot] = 0
+  RC.direction[slot] = 0
+  RC.time0[slot] = 0
   pushId(world.rimFree, slot)
   world.Ball.rim[eid] = 0
 }

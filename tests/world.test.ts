@@ -81,7 +81,8 @@ describe('RimContact is pooled', () => {
     expect(held).toBeGreaterThan(0)
     expect(rimSlot(w, ball)).toBe(0) // out of the lip circle: given back
     expect(sim.drainEvents().map((e) => e.type)).toContain('skip')
-    expect(w.RimContact.hole.every((v) => v === 0)).toBe(true) // the freed row was zeroed
+    // the freed row was zeroed, every field of it
+    for (const [k, arr] of Object.entries(w.RimContact) as [string, Float64Array][]) expect(arr.every((v) => v === 0), k).toBe(true)
   })
 
   it('10,000 balls thrown at the panel: the pool grows with the concurrent contacts only, and every row comes back', () => {
@@ -113,8 +114,14 @@ describe('RimContact is pooled', () => {
     expect(sim.ballState(ball).mode).toBe('rimRoll')
     expect(rimSlot(sim.world, ball)).not.toBe(0)
     sim.drainEvents()
+    const slot = rimSlot(sim.world, ball)
+    for (const k of ['hole', 'mode', 'hasLip', 'delta', 'speed', 'lipTime', 'angle', 'arc', 'angle0', 'speed0', 'direction', 'time0'] as const) {
+      expect(sim.world.RimContact[k][slot], k).not.toBe(0)
+    }
     sim.removeBall(ball)
     expect(sim.world.rimFree.count).toBe(sim.world.rimNext - 1)
+    // zeroed, every field of the schema (releaseRim lists them one by one)
+    for (const [k, arr] of Object.entries(sim.world.RimContact) as [string, Float64Array][]) expect(arr[slot], k).toBe(0)
     expect(settle(sim)).toEqual([])
   })
 })
