@@ -1,5 +1,8 @@
 // Ball: the physical state a game reads. Position and velocity are the ball's state at the end of the
 // last step (or at its last event, for a ball whose events ran past MAX_EVENT_PASSES).
+// Indexed by ball id. A ball is a lightweight entity: its id comes from the world's entity index (shared
+// with holes and walls), but it carries no bitECS components; `live` says which ids are balls
+// (src/world.ts).
 import { createStore } from '../src/store'
 
 export const BallMode = {
@@ -27,6 +30,10 @@ export const BallSchema = {
   mode: Uint8Array,
   /** 1: a hero ball, whose lip crossings the physical reference decides (systems/heroReference.ts) */
   hero: Uint8Array,
+  /** 1 while the id is a live ball (0: a free id, a hole or the walls) */
+  live: Uint8Array,
+  /** the ball's RimContact slot, 0 when it has none (components/RimContact.ts) */
+  rim: Uint32Array,
 }
 
 export const createBallStore = (capacity: number) => createStore(BallSchema, capacity)

@@ -1,6 +1,14 @@
 // RimContact: a ball's business with the one hole whose lip circle its centre is inside (holes do not
 // overlap, so there is at most one). While `hole` is set, that hole makes no new decision for the ball:
 // this is the transit lock of Stage 5, used also after a bounce or a pop-off (DECISIONS.md §3).
+//
+// Pooled: the store is indexed by slot, not by ball id. A ball takes a slot (Ball.rim) when it gets a
+// hole lock and gives it back when the lock ends (it leaves the lip circle, falls in, leaves the panel or
+// is removed); the freed row is zeroed. Slot 0 is never handed out and stays zero, so a ball without a
+// slot reads hole 0, mode None. At any moment only the balls inside a lip circle hold a slot, a small
+// share of a large scene, so the store grows with the peak number of concurrent contacts instead of
+// costing its 71 bytes for every ball. Read a ball's row as RimContact.x[rimSlot(world, ball)]; write
+// only through acquireRim (src/world.ts). A row says nothing once its lock has ended.
 import { createStore } from '../src/store'
 
 export const RimMode = {

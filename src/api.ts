@@ -1,16 +1,27 @@
 // The public API: a world, its schedule and clock behind a small typed surface. Every call validates all
 // of its input before it changes anything, so a rejected call leaves the world as it was.
-import { addComponent, addEntity, entityExists, hasComponent, query, removeEntity } from 'bitecs'
+import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs'
 import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../components/Ball'
 import { RimMode } from '../components/RimContact'
 import { WallEdge } from '../components/Walls'
 import type { BallPhysicsConfig, ConfigOverrides } from './config'
 import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
 import { captureBall, launchBall, planRolling, sampleRimRoll, sampleRolling, startPath } from './motion'
-import { bumpVersion, restingRemove } from './collide'
+import { bumpVersion } from './collide'
 import { createSchedule, runSchedule, type ScheduleEntry } from './schedule'
-import { clearSlot } from './store'
-import { addHoleToTable, createBallWorld, ensureCapacity, removeMoving, type BallWorld, type BallWorldOptions } from './world'
+import { clearSlot, fitStore } from './store'
+import {
+  acquireRim,
+  addBallEntity,
+  addHoleToTable,
+  createBallWorld,
+  forEachBall,
+  isBall,
+  removeBallEntity,
+  rimSlot,
+  type BallWorld,
+  type BallWorldOptions,
+} from './world'
 
 /** Largest |coordinate| accepted, px: keeps squares of distances far from overflow. */
 export const MAX_COORDINATE = 1e9
@@ -127,7 +138,7 @@ export interface BallPhysics {
   setWalls(spec: WallsSpec): void
   /** Removes the walls. */
   clearWalls(): void
-  /** ids of the live balls (a new array) */
+  /** ids of the live balls, ascending (a new array) */
   balls(): number[]
   /** ids of the holes (a new array) */
   holes(): number[]
@@ -166,14 +177,23 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
   const cfg = w.config
   const schedule = createSchedule(cfg)
 
-  const checkEntity = (field: string, eid: unknown, tag: object, kind: string): number => {
+  const checkId = (field: string, eid: unknown, kind: string): number => {
     if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1) {
       throw new TypeError(`${field} must be a ${kind} id (a positive integer), got ${String(eid)}`)
     }
-    if (!entityExists(w, eid) || !hasComponent(w, eid, tag)) {
-      throw new RangeError(`${field} ${eid} is not a live ${kind} of this world (unknown or removed)`)
-    }
     return eid
+  }
+  const notLive = (field: string, eid: number, kind: string) =>
+    new RangeError(`${field} ${eid} is not a live ${kind} of this world (unknown or removed)`)
+  const checkBall = (field: string, eid: unknown): number => {
+    const b = checkId(field, eid, 'ball')
+    if (!isBall(w, b)) throw notLive(field, b, 'ball')
+    return b
+  }
+  const checkHole = (field: string, eid: unknown): number => {
+    const h = checkId(field, eid, 'hole')
+    if (!entityExists(w, h) || !hasComponent(w, h, w.IsHole)) throw notLive(field, h, 'hole')
+    return h
   }
 
   /** The hole whose lip circle contains (x, y), or 0. */
@@ -197,15 +217,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
   }
 
   const newBall = (x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number): number => {
-    const eid = addEntity(w)
-    ensureCapacity(w, eid)
-    addComponent(w, eid, w.IsBall)
-    addComponent(w, eid, w.Ball)
-    addComponent(w, eid, w.Path)
-    addComponent(w, eid, w.RimContact)
-    clearSlot(w.Ball, eid)
-    clearSlot(w.Path, eid)
-    clearSlot(w.RimContact, eid)
+    const eid = addBallEntity(w)
     w.Ball.radius[eid] = radius
     w.Ball.hero[eid] = hero ? 1 : 0
     if (w.collide !== null) {
@@ -217,8 +229,9 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     // for it); if it stops before leaving, it falls in
     const inside = holeAt(x, y)
     if (inside !== 0) {
-      w.RimContact.hole[eid] = inside
-      w.RimContact.mode[eid] = RimMode.Transit
+      const slot = acquireRim(w, eid)
+      w.RimContact.hole[slot] = inside
+      w.RimContact.mode[slot] = RimMode.Transit
     }
     launchBall(w, eid, x, y, vx, vy, w.time)
     return eid
@@ -226,14 +239,12 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
 
   /** Rolling balls continue from where they are now, planned against what changed (holes, walls). */
   const replanRolling = (): void => {
-    const balls = query(w, [w.IsBall])
-    for (let i = 0; i < balls.length; i++) {
-      const b = balls[i]!
-      if (w.Ball.mode[b] !== BallMode.Rolling) continue
+    forEachBall(w, (b) => {
+      if (w.Ball.mode[b] !== BallMode.Rolling) return
       sampleRolling(w, b, w.time)
       startPath(w, b, w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
       planRolling(w, b)
-    }
+    })
   }
 
   const sim: BallPhysics = {
@@ -263,7 +274,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
         }
       }
       const eid = addEntity(w)
-      ensureCapacity(w, eid)
+      fitStore(w.Hole, eid)
       addComponent(w, eid, w.IsHole)
       addComponent(w, eid, w.Hole)
       w.Hole.x[eid] = x
@@ -273,20 +284,19 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       addHoleToTable(w, eid)
       // balls already out there: a ball inside the new lip circle follows the rule for a ball added inside
       // a hole; then rolling ones continue from where they are, planned against the new hole
-      const balls = query(w, [w.IsBall])
-      for (let i = 0; i < balls.length; i++) {
-        const b = balls[i]!
+      forEachBall(w, (b) => {
         const mode = w.Ball.mode[b]
         if (mode === BallMode.Rolling) sampleRolling(w, b, w.time)
-        else if (mode !== BallMode.Resting) continue
+        else if (mode !== BallMode.Resting) return
         const dx = w.Ball.x[b]! - x
         const dy = w.Ball.y[b]! - y
-        if (dx * dx + dy * dy >= radius * radius) continue
-        w.RimContact.hole[b] = eid
-        w.RimContact.hasLip[b] = 0
+        if (dx * dx + dy * dy >= radius * radius) return
+        const slot = acquireRim(w, b)
+        w.RimContact.hole[slot] = eid
+        w.RimContact.hasLip[slot] = 0
         if (mode === BallMode.Resting) captureBall(w, b, eid, w.time, CaptureVia.Rest)
-        else w.RimContact.mode[b] = RimMode.Transit
-      }
+        else w.RimContact.mode[slot] = RimMode.Transit
+      })
       replanRolling()
       return eid
     },
@@ -327,7 +337,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     },
 
     setBallVelocity(ball, vx, vy) {
-      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      const b = checkBall('ball', ball)
       const nvx = finite('vx', vx, MAX_SPEED)
       const nvy = finite('vy', vy, MAX_SPEED)
       const mode = w.Ball.mode[b]!
@@ -336,7 +346,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       }
       if (mode === BallMode.RimRoll) {
         sampleRimRoll(w, b, w.time)
-        w.RimContact.mode[b] = RimMode.Transit
+        w.RimContact.mode[rimSlot(w, b)] = RimMode.Transit
       } else if (mode === BallMode.Rolling) {
         sampleRolling(w, b, w.time)
       }
@@ -344,12 +354,12 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     },
 
     setHeroBall(ball, hero = true) {
-      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      const b = checkBall('ball', ball)
       w.Ball.hero[b] = flag('hero', hero) ? 1 : 0
     },
 
     isHeroBall(ball) {
-      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      const b = checkBall('ball', ball)
       return w.Ball.hero[b] === 1
     },
 
@@ -368,7 +378,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       const open = (o.left ? WallEdge.Left : 0) | (o.top ? WallEdge.Top : 0) | (o.right ? WallEdge.Right : 0) | (o.bottom ? WallEdge.Bottom : 0)
       if (w.walls === 0) {
         const eid = addEntity(w)
-        ensureCapacity(w, eid)
+        fitStore(w.Walls, eid)
         addComponent(w, eid, w.Walls)
         w.walls = eid
       }
@@ -395,32 +405,26 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     },
 
     ballState(ball) {
-      const b = checkEntity('ball', ball, w.IsBall, 'ball')
+      const b = checkBall('ball', ball)
       const B = w.Ball
       return { x: B.x[b]!, y: B.y[b]!, vx: B.vx[b]!, vy: B.vy[b]!, radius: B.radius[b]!, mode: BALL_MODE_NAMES[B.mode[b]!]! }
     },
 
     holeState(hole) {
-      const h = checkEntity('hole', hole, w.IsHole, 'hole')
+      const h = checkHole('hole', hole)
       const H = w.Hole
       return { x: H.x[h]!, y: H.y[h]!, radius: H.radius[h]!, value: H.value[h]! }
     },
 
     removeBall(ball) {
-      const b = checkEntity('ball', ball, w.IsBall, 'ball')
-      removeMoving(w, b)
-      if (w.collide !== null) {
-        restingRemove(w, b)
-        bumpVersion(w, b)
-      }
-      removeEntity(w, b)
-      clearSlot(w.Ball, b)
-      clearSlot(w.Path, b)
-      clearSlot(w.RimContact, b)
+      const b = checkBall('ball', ball)
+      removeBallEntity(w, b)
     },
 
     balls() {
-      return Array.from(query(w, [w.IsBall]))
+      const out: number[] = []
+      forEachBall(w, (b) => void out.push(b))
+      return out
     },
 
     holes() {

@@ -181,16 +181,17 @@ function evalBall(w: BallWorld, eid: number, t: number): void {
   const mode = B.mode[eid]
   if (mode === BallMode.RimRoll) {
     const RC = w.RimContact
-    const hole = RC.hole[eid]!
+    const slot = w.Ball.rim[eid]!
+    const hole = RC.hole[slot]!
     const R = w.Hole.radius[hole]!
-    const vt0 = RC.speed0[eid]!
+    const vt0 = RC.speed0[slot]!
     const mu = w.config.RIM_ROLL_FRICTION
-    let tau = t - RC.time0[eid]!
+    let tau = t - RC.time0[slot]!
     if (tau < 0) tau = 0
     const arc = rollArc(tau, vt0, mu)
     const v = rollSpeed(tau, vt0, mu)
-    const dir = RC.direction[eid]!
-    const phi = RC.angle0[eid]! + (dir * arc) / R
+    const dir = RC.direction[slot]!
+    const phi = RC.angle0[slot]! + (dir * arc) / R
     const c = Math.cos(phi)
     const s = Math.sin(phi)
     ex = w.Hole.x[hole]! + R * c
@@ -252,7 +253,7 @@ function evalBall(w: BallWorld, eid: number, t: number): void {
 /** When the ball's current motion began (the search for its contacts starts there, whatever the ticks). */
 function motionStart(w: BallWorld, eid: number): number {
   const mode = w.Ball.mode[eid]
-  if (mode === BallMode.RimRoll) return w.RimContact.time0[eid]!
+  if (mode === BallMode.RimRoll) return w.RimContact.time0[w.Ball.rim[eid]!]!
   const P = w.Path
   if (mode === BallMode.Resting) {
     // a ball at rest has been so since its path stopped (or since it was put down)
@@ -561,7 +562,7 @@ function sweptCapsule(w: BallWorld, eid: number, from: number, to: number): void
   const r = w.Ball.radius[eid]!
   if (w.Ball.mode[eid] === BallMode.RimRoll) {
     // anywhere on the rim circle of its hole
-    const hole = w.RimContact.hole[eid]!
+    const hole = w.RimContact.hole[w.Ball.rim[eid]!]!
     capX1 = capX2 = w.Hole.x[hole]!
     capY1 = capY2 = w.Hole.y[hole]!
     capR = w.Hole.radius[hole]! + r
@@ -828,6 +829,6 @@ export function isRepeatContact(w: BallWorld, a: number, b: number): boolean {
 
 /** The rim mode a struck ball keeps: inside a lip circle it is in transit (its decision there is void). */
 export function strikeLeavesRim(w: BallWorld, eid: number): void {
-  const RC = w.RimContact
-  if (RC.hole[eid] !== 0) RC.mode[eid] = RimMode.Transit
+  const c = w.Ball.rim[eid]!
+  if (c !== 0) w.RimContact.mode[c] = RimMode.Transit
 }

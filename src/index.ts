@@ -3,8 +3,18 @@ export { createBallPhysics, MAX_COORDINATE, MAX_RADIUS, MAX_SPEED, MAX_VALUE } f
 export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api'
 export { CAPTURE_WINDOW_SHAPES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
 export type { BallPhysicsConfig, CaptureWindowShape, ConfigOverrides, SimulationMethod } from './config'
-export { createBallWorld, ensureCapacity } from './world'
-export type { BallWorld, BallWorldData, BallWorldOptions } from './world'
+export {
+  acquireRim,
+  addBallEntity,
+  createBallWorld,
+  ensureCapacity,
+  forEachBall,
+  isBall,
+  releaseRim,
+  removeBallEntity,
+  rimSlot,
+} from './world'
+export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex } from './world'
 export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule'
 export type { ScheduleEntry, System } from './schedule'
 export { createFixedStepClock } from './clock'

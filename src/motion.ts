@@ -22,7 +22,7 @@ import {
   timeToDistance,
 } from './geometry'
 import { buildHoleGrid, walkHoleGrid } from './broadphase'
-import { addMoving, removeMoving, type BallWorld } from './world'
+import { addMoving, releaseRim, removeMoving, type BallWorld } from './world'
 import { restingInsert, restingRemove } from './collide'
 
 /** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
@@ -159,7 +159,8 @@ export function planRolling(w: BallWorld, eid: number): void {
   qSHole = P.sHole[eid]!
   qFrom = P.fromHole[eid]!
   qFoot = w.Ball.radius[eid]!
-  qLocked = RC.hole[eid]!
+  const slot = w.Ball.rim[eid]!
+  qLocked = RC.hole[slot]!
 
   best = stopDistance(v0, decel)
   bestHole = 0
@@ -177,7 +178,7 @@ export function planRolling(w: BallWorld, eid: number): void {
       let d: number
       let k: number = PathEvent.Exit
       const rc = cogRadius(R, qFoot)
-      if (RC.mode[eid] === RimMode.Entering && c2 < rc * rc) {
+      if (RC.mode[slot] === RimMode.Entering && c2 < rc * rc) {
         d = p - Math.sqrt(rc * rc - c2)
         k = PathEvent.Contact
       } else {
@@ -221,23 +222,25 @@ export function planRolling(w: BallWorld, eid: number): void {
 export function planRimRoll(w: BallWorld, eid: number): void {
   const RC = w.RimContact
   const cfg = w.config
-  const hole = RC.hole[eid]!
-  const vt0 = RC.speed0[eid]!
+  const slot = w.Ball.rim[eid]!
+  const hole = RC.hole[slot]!
+  const vt0 = RC.speed0[slot]!
   const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
   const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!))
   const P = w.Path
   P.nextKind[eid] = PathEvent.RollEnd
   P.nextHole[eid] = hole
-  P.nextT[eid] = RC.time0[eid]! + Math.min(tDrop, tPop)
+  P.nextT[eid] = RC.time0[slot]! + Math.min(tDrop, tPop)
 }
 
 /** True when a rim roll that started with speed vt0 pops off before it drops. */
 export function rollPopsOff(w: BallWorld, eid: number): boolean {
   const RC = w.RimContact
   const cfg = w.config
-  const vt0 = RC.speed0[eid]!
+  const slot = w.Ball.rim[eid]!
+  const vt0 = RC.speed0[slot]!
   const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
-  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[RC.hole[eid]!]!))
+  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[RC.hole[slot]!]!))
   return tPop < tDrop
 }
 
@@ -279,24 +282,25 @@ export function sampleAtDistance(w: BallWorld, eid: number, d: number): void {
 export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
   const RC = w.RimContact
   const B = w.Ball
-  const hole = RC.hole[eid]!
+  const slot = B.rim[eid]!
+  const hole = RC.hole[slot]!
   const R = w.Hole.radius[hole]!
-  const vt0 = RC.speed0[eid]!
+  const vt0 = RC.speed0[slot]!
   const mu = w.config.RIM_ROLL_FRICTION
-  let tau = t - RC.time0[eid]!
+  let tau = t - RC.time0[slot]!
   if (tau < 0) tau = 0
   const arc = rollArc(tau, vt0, mu)
   const v = rollSpeed(tau, vt0, mu)
-  const dir = RC.direction[eid]!
-  const phi = RC.angle0[eid]! + (dir * arc) / R
+  const dir = RC.direction[slot]!
+  const phi = RC.angle0[slot]! + (dir * arc) / R
   const c = Math.cos(phi)
   const s = Math.sin(phi)
   B.x[eid] = w.Hole.x[hole]! + R * c
   B.y[eid] = w.Hole.y[hole]! + R * s
   B.vx[eid] = -dir * s * v
   B.vy[eid] = dir * c * v
-  RC.angle[eid] = phi
-  RC.arc[eid] = arc
+  RC.angle[slot] = phi
+  RC.arc[slot] = arc
   w.Path.speed[eid] = v
 }
 
@@ -310,11 +314,15 @@ export function emitHoleEvent(
   via: CaptureViaCode = CaptureVia.None,
 ): void {
   const RC = w.RimContact
-  const hasLip = RC.hole[eid] === hole && RC.hasLip[eid] === 1
-  pushEvent(w.events, type, eid, hole, t, hasLip, RC.delta[eid]!, RC.speed[eid]!, via)
+  const slot = w.Ball.rim[eid]!
+  const hasLip = RC.hole[slot] === hole && RC.hasLip[slot] === 1
+  pushEvent(w.events, type, eid, hole, t, hasLip, RC.delta[slot]!, RC.speed[slot]!, via)
 }
 
-/** The ball falls into `hole` at time t: it sits at the hole centre, at rest, and stops being simulated. */
+/**
+ * The ball falls into `hole` at time t: it sits at the hole centre, at rest, and stops being simulated.
+ * Its hole lock ends with the capture event, so its RimContact slot is given back.
+ */
 export function captureBall(w: BallWorld, eid: number, hole: number, t: number, via: CaptureViaCode): void {
   emitHoleEvent(w, EventType.Capture, eid, hole, t, via)
   const B = w.Ball
@@ -326,8 +334,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
   w.Path.speed[eid] = 0
   w.Path.nextT[eid] = NEVER
   w.Path.nextKind[eid] = PathEvent.None
-  w.RimContact.hole[eid] = hole
-  w.RimContact.mode[eid] = RimMode.None
+  releaseRim(w, eid)
   removeMoving(w, eid)
   if (w.collide !== null) restingRemove(w, eid)
 }

@@ -1,7 +1,15 @@
 // The simulation world: a bitECS world whose context carries this world's component stores, the resolved
 // config, the clock and the event buffer. Stores are per world, so any number of worlds (one per test,
 // one per game table) can live side by side without sharing entity ids or arrays.
-import { createWorld, type World } from 'bitecs'
+//
+// Holes and the walls are full bitECS entities, with their tags and components. Balls are lightweight
+// entities: their ids come from the same entity index (so ids are shared and `entityExists` holds for a
+// live ball), but they get no bitECS component bookkeeping, which costs a Set and a Map entry per entity
+// plus query and mask entries per component: about 230 bytes of JS heap per ball. Their data lives in the
+// stores below, indexed by ball id; Ball.live marks which ids are balls. Each store has its own length
+// (src/store.ts): the per-ball ones grow with ball ids, Hole and Walls with their own entities' ids, and
+// RimContact is pooled by slot (components/RimContact.ts).
+import { createEntityIndex, createWorld, type World } from 'bitecs'
 import { createBallStore, type BallStore } from '../components/Ball'
 import { createHoleStore, type HoleStore } from '../components/Hole'
 import { createPathStore, type PathStore } from '../components/Path'
@@ -10,8 +18,8 @@ import { createWallsStore, type WallsStore } from '../components/Walls'
 import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './config'
 import { createEventBuffer, type EventBuffer } from './events'
 import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './broadphase'
-import { growStore } from './store'
-import { createCollisionState, growCollisionState, type CollisionState } from './collide'
+import { clearSlot, growStore } from './store'
+import { bumpVersion, createCollisionState, growCollisionState, restingRemove, type CollisionState } from './collide'
 
 /** A growable list of entity ids. */
 export interface IdList {
@@ -72,6 +80,116 @@ export function removeMoving(world: BallWorld, eid: number): void {
   m.sparse[last] = i
 }
 
+/** bitECS's entity index, shared by balls, holes and walls. */
+export type EntityIndex = ReturnType<typeof createEntityIndex>
+
+/**
+ * Takes an entity id from the index, recycling the most recently freed one first, as bitECS's own
+ * addEntity does. (bitECS 0.4 keeps its addEntityId/removeEntityId internal, so these two mirror them on
+ * the index object it returns; tests/world.test.ts checks that they interoperate with bitECS's addEntity,
+ * removeEntity and entityExists.)
+ */
+function takeEntityId(index: EntityIndex): number {
+  if (index.aliveCount < index.dense.length) {
+    const id = index.dense[index.aliveCount]!
+    index.sparse[id] = index.aliveCount++
+    return id
+  }
+  const id = ++index.maxId
+  index.dense.push(id)
+  index.sparse[id] = index.aliveCount++
+  return id
+}
+
+/** Returns a live id to the index (swapped behind the live ones, first in line for reuse). */
+function freeEntityId(index: EntityIndex, id: number): void {
+  const i = index.sparse[id]
+  if (i === undefined || i >= index.aliveCount) return
+  const last = index.aliveCount - 1
+  const lastId = index.dense[last]!
+  index.sparse[lastId] = i
+  index.dense[i] = lastId
+  index.sparse[id] = last
+  index.dense[last] = id
+  index.aliveCount--
+}
+
+/** Makes a ball entity: an id from the entity index, the per-ball stores grown to it and its rows zeroed. */
+export function addBallEntity(world: BallWorld): number {
+  const eid = takeEntityId(world.entityIndex)
+  ensureCapacity(world, eid)
+  clearSlot(world.Ball, eid)
+  clearSlot(world.Path, eid)
+  world.Ball.live[eid] = 1
+  return eid
+}
+
+/** Removes a ball entity: it stops moving, gives back its RimContact slot, its rows are zeroed, its id freed. */
+export function removeBallEntity(world: BallWorld, eid: number): void {
+  if (!isBall(world, eid)) return
+  removeMoving(world, eid)
+  releaseRim(world, eid)
+  if (world.collide !== null) {
+    restingRemove(world, eid)
+    bumpVersion(world, eid)
+  }
+  clearSlot(world.Ball, eid)
+  clearSlot(world.Path, eid)
+  freeEntityId(world.entityIndex, eid)
+}
+
+/** True when `eid` is a live ball of this world. */
+export function isBall(world: BallWorld, eid: number): boolean {
+  return eid > 0 && eid < world.capacity && world.Ball.live[eid] === 1
+}
+
+/** Calls `fn` for every live ball, in ascending id order. */
+export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
+  const live = world.Ball.live
+  for (let eid = 1, n = Math.min(live.length, world.entityIndex.maxId + 1); eid < n; eid++) if (live[eid] === 1) fn(eid)
+}
+
+/** The ball's RimContact slot: 0, the all-zero row (hole 0, mode None), when it holds no hole lock. */
+export function rimSlot(world: BallWorld, eid: number): number {
+  return world.Ball.rim[eid]!
+}
+
+/**
+ * The ball's RimContact slot, taking one for it if it has none (a taken row is all zero). Call it where a
+ * ball gets a hole lock, before writing its row; the store may grow, so fetch arrays after the call.
+ */
+export function acquireRim(world: BallWorld, eid: number): number {
+  const held = world.Ball.rim[eid]!
+  if (held !== 0) return held
+  const pool = world.rimFree
+  const slot = pool.count > 0 ? pool.ids[--pool.count]! : world.rimNext++
+  if (slot >= world.RimContact.hole.length) growStore(world.RimContact, 2 * world.RimContact.hole.length)
+  world.Ball.rim[eid] = slot
+  return slot
+}
+
+/** Gives back the ball's RimContact slot (zeroed) when its hole lock ends; a no-op when it has none. */
+export function releaseRim(world: BallWorld, eid: number): void {
+  const slot = world.Ball.rim[eid]!
+  if (slot === 0) return
+  // every field, written out: this runs at each lock's end (clearSlot's generic loop costs more)
+  const RC = world.RimContact
+  RC.hole[slot] = 0
+  RC.mode[slot] = 0
+  RC.hasLip[slot] = 0
+  RC.delta[slot] = 0
+  RC.speed[slot] = 0
+  RC.lipTime[slot] = 0
+  RC.angle[slot] = 0
+  RC.arc[slot] = 0
+  RC.angle0[slot] = 0
+  RC.speed0[slot] = 0
+  RC.direction[slot] = 0
+  RC.time0[slot] = 0
+  pushId(world.rimFree, slot)
+  world.Ball.rim[eid] = 0
+}
+
 /** Holes packed for the planner's scan: x, y, R per hole, and the entity ids in the same order. */
 export interface HoleTable {
   count: number
@@ -83,6 +201,7 @@ export interface BallWorldData {
   config: Readonly<BallPhysicsConfig>
   Ball: BallStore
   Hole: HoleStore
+  /** pooled: indexed by a ball's slot (Ball.rim), not by its id */
   RimContact: RimContactStore
   Path: PathStore
   Walls: WallsStore
@@ -90,11 +209,20 @@ export interface BallWorldData {
   walls: number
   /** the balls the integration system iterates */
   moving: MovingSet
-  /** tag: the entity is a ball (balls and holes share the entity index) */
+  /** the world's entity index (passed to createWorld): ids of balls, holes and walls */
+  entityIndex: EntityIndex
+  /** RimContact slots given back, for reuse */
+  rimFree: IdList
+  /** next RimContact slot never handed out (slot 0 is the empty row) */
+  rimNext: number
+  /**
+   * @deprecated Balls carry no bitECS components (see the top of src/world.ts): this tag is on no entity.
+   * Use isBall(world, eid) and forEachBall(world, fn), or BallPhysics.balls().
+   */
   IsBall: Record<string, never>
   /** tag: the entity is a hole */
   IsHole: Record<string, never>
-  /** entity capacity of the stores; they grow when an id reaches it */
+  /** capacity of the per-ball stores (Ball, Path, the moving set's index): they grow when a ball id reaches it */
   capacity: number
   /** simulation time at the end of the last step, s */
   time: number
@@ -119,7 +247,10 @@ export interface BallWorldData {
 export type BallWorld = World<BallWorldData>
 
 export interface BallWorldOptions {
-  /** entities preallocated in every store (the stores grow past it) */
+  /**
+   * ids preallocated in the per-ball stores (they grow past it). Hole, Walls and RimContact start small
+   * and grow with their own use.
+   */
   capacity?: number
   /**
    * How a ball's path is tested against the holes: 'scan' tests every hole, 'grid' walks a uniform grid,
@@ -142,15 +273,20 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
   if (!Number.isInteger(capacity) || capacity < 1 || capacity > 1 << 26) {
     throw new RangeError(`options.capacity must be an integer in [1, ${1 << 26}], got ${capacity}`)
   }
+  const entityIndex = createEntityIndex()
+  if (entityIndex.versioning) throw new Error('createBallWorld: the entity index must not version its ids')
   const data: BallWorldData = {
     config,
     Ball: createBallStore(capacity),
-    Hole: createHoleStore(capacity),
-    RimContact: createRimContactStore(capacity),
+    Hole: createHoleStore(SMALL_STORE),
+    RimContact: createRimContactStore(SMALL_STORE),
     Path: createPathStore(capacity),
-    Walls: createWallsStore(capacity),
+    Walls: createWallsStore(SMALL_STORE),
     walls: 0,
     moving: { count: 0, dense: new Uint32Array(256), sparse: new Uint32Array(capacity) },
+    entityIndex,
+    rimFree: createIdList(SMALL_STORE),
+    rimNext: 1,
     IsBall: {},
     IsHole: {},
     capacity,
@@ -165,19 +301,19 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     events: createEventBuffer(),
     collide: config.BALL_COLLISIONS === 'on' ? createCollisionState(capacity, config.BALL_RADIUS) : null,
   }
-  return createWorld(data)
+  return createWorld<BallWorldData>(data, entityIndex)
 }
 
-/** Grows every store so that `eid` fits. */
+/** Initial length of the stores that do not grow with balls (Hole, Walls, RimContact). */
+const SMALL_STORE = 64
+
+/** Grows the per-ball stores (Ball, Path, the moving set's index) so that ball id `eid` fits. */
 export function ensureCapacity(world: BallWorld, eid: number): void {
   if (eid < world.capacity) return
   let cap = world.capacity
   while (cap <= eid) cap *= 2
   growStore(world.Ball, cap)
-  growStore(world.Hole, cap)
-  growStore(world.RimContact, cap)
   growStore(world.Path, cap)
-  growStore(world.Walls, cap)
   const sparse = new Uint32Array(cap)
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse

@@ -44,7 +44,7 @@ export function bounceSystem(w: BallWorld): void {
       ny = sp > 0 ? -vy / sp : 0
     }
     rimBounce(vx, vy, nx, ny, e, keep, out)
-    RC.mode[eid] = RimMode.Transit
+    RC.mode[B.rim[eid]!] = RimMode.Transit
     startPath(w, eid, x, y, out[0]!, out[1]!, t)
     P.fromHole[eid] = hole
     planRolling(w, eid)

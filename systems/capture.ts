@@ -20,15 +20,16 @@ export function captureSystem(w: BallWorld): void {
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
     const mark = P.mark[eid]
+    const rim = w.Ball.rim[eid]!
     if (mark === PathEvent.Lip) {
       const hole = P.markHole[eid]!
-      if (capturesClean(RC.delta[eid]!, RC.speed[eid]!, w.Hole.radius[hole]!, vMax, shape)) {
+      if (capturesClean(RC.delta[rim]!, RC.speed[rim]!, w.Hole.radius[hole]!, vMax, shape)) {
         P.mark[eid] = PathEvent.None
         captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Clean)
       }
     } else if (mark === PathEvent.Stop) {
       P.mark[eid] = PathEvent.None
-      const hole = RC.hole[eid]!
+      const hole = RC.hole[rim]!
       if (hole !== 0) captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Rest)
       else restBall(w, eid, P.nextT[eid]!)
     }

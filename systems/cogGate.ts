@@ -25,8 +25,9 @@ export function cogGateSystem(w: BallWorld): void {
     const mark = P.mark[eid]
     if (mark === PathEvent.Lip) {
       const hole = P.markHole[eid]!
-      if (RC.delta[eid]! < cogRadius(H.radius[hole]!, B.radius[eid]!)) {
-        RC.mode[eid] = RimMode.Entering
+      const rim = B.rim[eid]!
+      if (RC.delta[rim]! < cogRadius(H.radius[hole]!, B.radius[eid]!)) {
+        RC.mode[rim] = RimMode.Entering
         P.mark[eid] = PathEvent.None
         planRolling(w, eid)
       } else {

@@ -12,13 +12,13 @@
 // no impact), 'rimRoll' + 'lipOut' (turned at least HERO_ROLL_TURN) or 'bounce', each with 'nearMiss'
 // except the skip. Costs one reference run (~20 µs on average) per hero lip crossing; allocates only the
 // reference's result object, once per crossing, never per tick.
-// Reads Path, Ball, Hole, config; writes Ball, Path, RimContact; emits the events above.
+// Reads Path, Ball, Hole, config; writes Ball, Path, RimContact (takes the ball's slot); emits the events above.
 import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
 import { CaptureVia, EventType } from '../src/events'
 import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion'
 import { referenceOutcome, type ReferenceInput } from '../src/reference/index'
-import type { BallWorld } from '../src/world'
+import { acquireRim, type BallWorld } from '../src/world'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = (20 * Math.PI) / 180
@@ -57,12 +57,13 @@ export function heroReferenceSystem(w: BallWorld): void {
     if (out.ending === 'phaseLimit' || out.ending === 'timeLimit' || out.ending === 'integratorLimit') continue
 
     const t = P.nextT[eid]!
-    RC.hole[eid] = hole
-    RC.hasLip[eid] = 1
-    RC.delta[eid] = delta
-    RC.speed[eid] = v
-    RC.lipTime[eid] = t
-    RC.mode[eid] = RimMode.Transit
+    const rim = acquireRim(w, eid)
+    RC.hole[rim] = hole
+    RC.hasLip[rim] = 1
+    RC.delta[rim] = delta
+    RC.speed[rim] = v
+    RC.lipTime[rim] = t
+    RC.mode[rim] = RimMode.Transit
     P.mark[eid] = PathEvent.None
     const rolled = out.turnAngle >= HERO_ROLL_TURN
     if (rolled) emitHoleEvent(w, EventType.RimRoll, eid, hole, t)

@@ -4,13 +4,13 @@
 // Covers no region by itself: it finds, exactly, the instants at which the other systems decide: the lip
 // crossing (δ, v), the contact circle, the stop, the end of a rim roll. A ball stopped at such an event is
 // marked for the decision systems; the schedule then runs another pass for the marked balls.
-// Bookkeeping events are handled here and the ball goes on: leaving a hole's lip circle (the hole unlocks)
+// Bookkeeping events are handled here and the ball goes on: leaving a hole's lip circle (the hole unlocks
+// and the ball's RimContact slot is given back)
 // and the closest approach of a near miss (reported).
 //   rolling: s(τ) = v0·τ − a·τ²/2, v(τ) = v0 − a·τ        rim roll: see sampleRimRoll
 // Reads Path, RimContact, Hole; writes Ball (x, y, vx, vy), Path (speed, s, mark), RimContact (angle, arc).
 import { BallMode } from '../components/Ball'
 import { PathEvent } from '../components/Path'
-import { RimMode } from '../components/RimContact'
 import { EventType, pushEvent } from '../src/events'
 import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion'
 import {
@@ -23,7 +23,7 @@ import {
   resumeSearch,
   sampleForContact,
 } from '../src/collide'
-import { pushId, type BallWorld } from '../src/world'
+import { pushId, releaseRim, type BallWorld } from '../src/world'
 
 export function integrationSystem(w: BallWorld): void {
   if (w.collide !== null) {
@@ -155,7 +155,6 @@ const MAX_INLINE_EVENTS = 1 << 16
 
 function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
   const P = w.Path
-  const RC = w.RimContact
   for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {
     const t = P.nextT[eid]!
     if (t > tEnd) {
@@ -172,9 +171,7 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
       P.sHole[eid] = hole
     }
     if (kind === PathEvent.Exit) {
-      RC.hole[eid] = 0
-      RC.mode[eid] = RimMode.None
-      RC.hasLip[eid] = 0
+      releaseRim(w, eid)
       planRolling(w, eid)
       continue
     }

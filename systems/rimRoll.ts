@@ -31,6 +31,7 @@ export function rimRollSystem(w: BallWorld): void {
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
     const mark = P.mark[eid]
+    const rim = B.rim[eid]!
     if (mark === PathEvent.Roll) {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
@@ -42,11 +43,11 @@ export function rimRollSystem(w: BallWorld): void {
       const len = Math.hypot(nx, ny)
       // tangential speed along the counter-clockwise tangent (−n_y, n_x)
       const vt = len > 0 ? (-vx * ny + vy * nx) / len : 0
-      RC.mode[eid] = RimMode.Rolling
-      RC.angle0[eid] = Math.atan2(ny, nx)
-      RC.speed0[eid] = Math.abs(vt)
-      RC.direction[eid] = vt >= 0 ? 1 : -1
-      RC.time0[eid] = t
+      RC.mode[rim] = RimMode.Rolling
+      RC.angle0[rim] = Math.atan2(ny, nx)
+      RC.speed0[rim] = Math.abs(vt)
+      RC.direction[rim] = vt >= 0 ? 1 : -1
+      RC.time0[rim] = t
       B.mode[eid] = BallMode.RimRoll
       sampleRimRoll(w, eid, t)
       planRimRoll(w, eid)
@@ -57,7 +58,7 @@ export function rimRollSystem(w: BallWorld): void {
       const t = P.nextT[eid]!
       if (rollPopsOff(w, eid)) {
         // leave along the tangent; the state at t was set by the integration system
-        RC.mode[eid] = RimMode.Transit
+        RC.mode[rim] = RimMode.Transit
         B.mode[eid] = BallMode.Rolling
         startPath(w, eid, B.x[eid]!, B.y[eid]!, B.vx[eid]!, B.vy[eid]!, t)
         P.fromHole[eid] = hole

@@ -2,13 +2,14 @@
 //   v > v_skip(δ) = R·√(2g/r)·√(1 − δ²/R²)      (chord time shorter than the time to fall by r)
 // At the exact lip crossing, a ball faster than v_skip flies over: the hole is locked for this transit
 // (no capture, no rim contact, no near miss) until the centre leaves its lip circle.
-// Reads Path (mark, origin, direction, speed), Hole, Ball.radius; writes RimContact, Path.mark; emits 'skip'.
+// Reads Path (mark, origin, direction, speed), Hole, Ball.radius; writes RimContact (takes the ball's slot),
+// Path.mark; emits 'skip'.
 import { PathEvent } from '../components/Path'
 import { RimMode } from '../components/RimContact'
 import { EventType } from '../src/events'
 import { vSkip } from '../src/geometry'
 import { emitHoleEvent, planRolling } from '../src/motion'
-import type { BallWorld } from '../src/world'
+import { acquireRim, type BallWorld } from '../src/world'
 
 export function skipOverSystem(w: BallWorld): void {
   const P = w.Path
@@ -24,14 +25,15 @@ export function skipOverSystem(w: BallWorld): void {
     const delta = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
     const v = P.speed[eid]!
     const t = P.nextT[eid]!
-    RC.hole[eid] = hole
-    RC.hasLip[eid] = 1
-    RC.delta[eid] = delta
-    RC.speed[eid] = v
-    RC.lipTime[eid] = t
-    RC.mode[eid] = RimMode.Transit
+    const rim = acquireRim(w, eid)
+    RC.hole[rim] = hole
+    RC.hasLip[rim] = 1
+    RC.delta[rim] = delta
+    RC.speed[rim] = v
+    RC.lipTime[rim] = t
+    RC.mode[rim] = RimMode.Transit
     if (v > vSkip(delta, H.radius[hole]!, w.Ball.radius[eid]!, g)) {
-      RC.mode[eid] = RimMode.Skipping
+      RC.mode[rim] = RimMode.Skipping
       P.mark[eid] = PathEvent.None
       emitHoleEvent(w, EventType.Skip, eid, hole, t)
       planRolling(w, eid)

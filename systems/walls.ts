@@ -1,13 +1,14 @@
 // Panel walls (not a design stage: the panel's frame). Runs only for worlds that have walls.
 //   closed wall: v_n' = −e_wall·v_n, tangential speed kept      open edge: the ball leaves (the gutter)
 // The hit is a path event like the others (the centre one radius from the wall), found exactly.
-// Reads Path.mark, Ball, Walls; writes Ball, Path; emits 'wall' and 'gutter'.
+// Reads Path.mark, Ball, Walls; writes Ball, Path (a ball out of the panel gives back its RimContact slot);
+// emits 'wall' and 'gutter'.
 import { BallMode } from '../components/Ball'
 import { PathEvent } from '../components/Path'
 import { WallEdge } from '../components/Walls'
 import { EventType, pushEvent } from '../src/events'
 import { NEVER, planRolling, startPath } from '../src/motion'
-import { removeMoving, type BallWorld } from '../src/world'
+import { releaseRim, removeMoving, type BallWorld } from '../src/world'
 
 export function wallsSystem(w: BallWorld): void {
   if (w.walls === 0) return
@@ -41,6 +42,7 @@ export function wallsSystem(w: BallWorld): void {
       P.speed[eid] = 0
       P.nextT[eid] = NEVER
       P.nextKind[eid] = PathEvent.None
+      releaseRim(w, eid)
       removeMoving(w, eid)
     }
   }

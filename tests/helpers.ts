@@ -1,5 +1,5 @@
 // Shared scene builders for the system tests: each builds a fresh world.
-import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
+import { createBallPhysics, rimSlot, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
 
 export interface Shot {
   sim: BallPhysics
@@ -57,3 +57,21 @@ export function rng(seed: number): () => number {
 /** Named tolerances. */
 export const EXACT = 1e-9
 export const POSITION_TOLERANCE = 1e-6
+
+/**
+ * Keeps a copy of a ball's RimContact row as of the end of each pass, by a system appended to the
+ * schedule. Rows are pooled: a ball gives its row back when its hole lock ends, so a test that reads rim
+ * data after the ball left the hole (or fell in) reads this copy.
+ */
+export function watchRim(sim: BallPhysics, ball: number): Record<string, number> {
+  const last: Record<string, number> = {}
+  sim.schedule.push({
+    name: 'watchRim',
+    run: (w) => {
+      const slot = rimSlot(w, ball)
+      if (slot === 0) return
+      for (const [k, arr] of Object.entries(w.RimContact)) last[k] = (arr as Float64Array)[slot]!
+    },
+  })
+  return last
+}

@@ -38,7 +38,7 @@ export function naiveBounceSystem(w: BallWorld): void {
     rimBounce(vx, vy, nx, ny, e, keep, out)
     B.vx[eid] = out[0]!
     B.vy[eid] = out[1]!
-    RC.mode[eid] = RimMode.Transit
+    RC.mode[B.rim[eid]!] = RimMode.Transit
     st.store.fromHole[eid] = hole
     emitHoleEvent(w, EventType.Bounce, eid, hole, st.t)
     emitHoleEvent(w, EventType.NearMiss, eid, hole, st.t)

@@ -21,15 +21,16 @@ export function naiveCogGateSystem(w: BallWorld): void {
     const eid = list.ids[i]!
     let mark = P.mark[eid]
     const hole = P.markHole[eid]!
+    const rim = B.rim[eid]!
     const nx = B.x[eid]! - H.x[hole]!
     const ny = B.y[eid]! - H.y[hole]!
     if (mark === PathEvent.Lip) {
       const rc = cogRadius(H.radius[hole]!, B.radius[eid]!)
-      if (RC.delta[eid]! >= rc) {
+      if (RC.delta[rim]! >= rc) {
         P.mark[eid] = PathEvent.Bounce
         continue
       }
-      RC.mode[eid] = RimMode.Entering
+      RC.mode[rim] = RimMode.Entering
       P.mark[eid] = PathEvent.None
       if (nx * nx + ny * ny >= rc * rc) continue
       mark = PathEvent.Contact

@@ -14,7 +14,7 @@ import { PathEvent } from '../../components/Path'
 import { RimMode } from '../../components/RimContact'
 import { EventType, pushEvent } from '../../src/events'
 import { cogRadius, popArc } from '../../src/geometry'
-import { pushId, type BallWorld } from '../../src/world'
+import { acquireRim, pushId, releaseRim, type BallWorld } from '../../src/world'
 import { naiveState } from './state'
 
 export function naiveDetectSystem(w: BallWorld): void {
@@ -31,9 +31,10 @@ export function naiveDetectSystem(w: BallWorld): void {
   const balls = w.moving.dense
   for (let i = w.moving.count - 1; i >= 0; i--) {
     const eid = balls[i]!
+    let rim = B.rim[eid]!
     if (B.mode[eid] === BallMode.RimRoll) {
-      const hole = RC.hole[eid]!
-      if (S.rollSpeed[eid]! < cfg.RIM_ROLL_DROP_SPEED || RC.arc[eid]! > popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!)) {
+      const hole = RC.hole[rim]!
+      if (S.rollSpeed[eid]! < cfg.RIM_ROLL_DROP_SPEED || RC.arc[rim]! > popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!)) {
         P.mark[eid] = PathEvent.RollEnd
         P.markHole[eid] = hole
         pushId(st.marked, eid)
@@ -54,12 +55,11 @@ export function naiveDetectSystem(w: BallWorld): void {
       const dy = y - xyr[3 * j + 1]!
       const R = xyr[3 * j + 2]!
       const d2 = dx * dx + dy * dy
-      if (hid === RC.hole[eid]) {
+      if (hid === RC.hole[rim]) {
         if (d2 >= R * R) {
-          RC.hole[eid] = 0
-          RC.mode[eid] = RimMode.None
-          RC.hasLip[eid] = 0
-        } else if (RC.mode[eid] === RimMode.Entering) {
+          releaseRim(w, eid)
+          rim = 0
+        } else if (RC.mode[rim] === RimMode.Entering) {
           const rc = cogRadius(R, foot)
           if (d2 < rc * rc) {
             mark = PathEvent.Contact
@@ -69,13 +69,14 @@ export function naiveDetectSystem(w: BallWorld): void {
         continue
       }
       if (d2 < R * R) {
-        if (RC.hole[eid] !== 0) continue // inside two lip circles cannot happen (they do not overlap)
-        RC.hole[eid] = hid
-        RC.mode[eid] = RimMode.Transit
-        RC.hasLip[eid] = 1
-        RC.delta[eid] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
-        RC.speed[eid] = speed
-        RC.lipTime[eid] = t
+        if (RC.hole[rim] !== 0) continue // inside two lip circles cannot happen (they do not overlap)
+        rim = acquireRim(w, eid)
+        RC.hole[rim] = hid
+        RC.mode[rim] = RimMode.Transit
+        RC.hasLip[rim] = 1
+        RC.delta[rim] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
+        RC.speed[rim] = speed
+        RC.lipTime[rim] = t
         mark = PathEvent.Lip
         markHole = hid
         if (S.nearHole[eid] === hid) S.nearHole[eid] = 0

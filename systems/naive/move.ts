@@ -28,13 +28,14 @@ export function naiveMoveSystem(w: BallWorld): void {
     const vx = B.vx[eid]!
     const vy = B.vy[eid]!
     if (B.mode[eid] === BallMode.RimRoll) {
-      const hole = RC.hole[eid]!
+      const rim = B.rim[eid]!
+      const hole = RC.hole[rim]!
       const R = H.radius[hole]!
       const v = S.rollSpeed[eid]!
-      const dir = RC.direction[eid]!
-      RC.arc[eid] = RC.arc[eid]! + v * h
-      const phi = RC.angle[eid]! + (dir * v * h) / R
-      RC.angle[eid] = phi
+      const dir = RC.direction[rim]!
+      RC.arc[rim] = RC.arc[rim]! + v * h
+      const phi = RC.angle[rim]! + (dir * v * h) / R
+      RC.angle[rim] = phi
       const vNew = naiveRollDecay(v, mu, h)
       S.rollSpeed[eid] = vNew
       const c = Math.cos(phi)

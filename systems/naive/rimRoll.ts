@@ -23,6 +23,7 @@ export function naiveRimRollSystem(w: BallWorld): void {
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
     const mark = P.mark[eid]
+    const rim = B.rim[eid]!
     if (mark === PathEvent.Roll) {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
@@ -33,13 +34,13 @@ export function naiveRimRollSystem(w: BallWorld): void {
       const dir = vt >= 0 ? 1 : -1
       const phi = Math.atan2(ny, nx)
       const R = H.radius[hole]!
-      RC.mode[eid] = RimMode.Rolling
-      RC.angle[eid] = phi
-      RC.angle0[eid] = phi
-      RC.arc[eid] = 0
-      RC.speed0[eid] = Math.abs(vt)
-      RC.direction[eid] = dir
-      RC.time0[eid] = st.t
+      RC.mode[rim] = RimMode.Rolling
+      RC.angle[rim] = phi
+      RC.angle0[rim] = phi
+      RC.arc[rim] = 0
+      RC.speed0[rim] = Math.abs(vt)
+      RC.direction[rim] = dir
+      RC.time0[rim] = st.t
       S.rollSpeed[eid] = Math.abs(vt)
       B.mode[eid] = BallMode.RimRoll
       const c = Math.cos(phi)
@@ -56,7 +57,7 @@ export function naiveRimRollSystem(w: BallWorld): void {
         captureBall(w, eid, hole, st.t, CaptureVia.RimRoll)
       } else {
         // leave along the tangent (the velocity naiveMove set), hole locked until the centre is out
-        RC.mode[eid] = RimMode.Transit
+        RC.mode[rim] = RimMode.Transit
         B.mode[eid] = BallMode.Rolling
         S.fromHole[eid] = hole
         emitHoleEvent(w, EventType.LipOut, eid, hole, st.t)

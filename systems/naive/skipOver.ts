@@ -18,8 +18,9 @@ export function naiveSkipOverSystem(w: BallWorld): void {
     const eid = list.ids[i]!
     if (P.mark[eid] !== PathEvent.Lip) continue
     const hole = P.markHole[eid]!
-    if (RC.speed[eid]! > vSkip(RC.delta[eid]!, w.Hole.radius[hole]!, w.Ball.radius[eid]!, g)) {
-      RC.mode[eid] = RimMode.Skipping
+    const rim = w.Ball.rim[eid]!
+    if (RC.speed[rim]! > vSkip(RC.delta[rim]!, w.Hole.radius[hole]!, w.Ball.radius[eid]!, g)) {
+      RC.mode[rim] = RimMode.Skipping
       P.mark[eid] = PathEvent.None
       emitHoleEvent(w, EventType.Skip, eid, hole, st.t)
     }

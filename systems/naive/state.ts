@@ -1,7 +1,8 @@
 // Per-world state of the tick-sampled methods ('naive', 'v1'): the sub-step clock, the balls marked in
 // this sub-step, and a small per-ball store for what a tick-sampled port has to remember between ticks
 // (its current rim-roll speed, the near miss being tracked). Kept beside the world, not in it, so the
-// exact core's world and stores are unchanged; created on first use, grown with the world's capacity.
+// exact core's world and stores are unchanged; created on first use, grown with the world's per-ball
+// capacity (its stores are indexed by ball id).
 import { createStore, growStore } from '../../src/store'
 import { createIdList, type BallWorld, type IdList } from '../../src/world'
 
@@ -41,7 +42,7 @@ export interface NaiveState {
 
 const states = new WeakMap<BallWorld, NaiveState>()
 
-/** The world's tick-sampled state, created on first use and grown to the world's capacity. */
+/** The world's tick-sampled state, created on first use and grown to the world's per-ball capacity. */
 export function naiveState(w: BallWorld): NaiveState {
   let st = states.get(w)
   if (st === undefined) {

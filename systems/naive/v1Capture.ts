@@ -6,7 +6,7 @@
 import { BallMode } from '../../components/Ball'
 import { CaptureVia } from '../../src/events'
 import { captureBall, restBall } from '../../src/motion'
-import type { BallWorld } from '../../src/world'
+import { acquireRim, type BallWorld } from '../../src/world'
 import { naiveState } from './state'
 
 export function v1CaptureSystem(w: BallWorld): void {
@@ -35,11 +35,12 @@ export function v1CaptureSystem(w: BallWorld): void {
         const d2 = dx * dx + dy * dy
         if (d2 >= R * R) continue
         const hole = table.ids[j]!
-        RC.hole[eid] = hole
-        RC.hasLip[eid] = 1
-        RC.delta[eid] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
-        RC.speed[eid] = speed
-        RC.lipTime[eid] = st.t
+        const rim = acquireRim(w, eid)
+        RC.hole[rim] = hole
+        RC.hasLip[rim] = 1
+        RC.delta[rim] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
+        RC.speed[rim] = speed
+        RC.lipTime[rim] = st.t
         captureBall(w, eid, hole, st.t, speed > 0 ? CaptureVia.Clean : CaptureVia.Rest)
         captured = true
         break

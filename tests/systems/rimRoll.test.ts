@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics, popArc, rollDropTime } from '../../src/index'
-import { EXACT, sequence, settle, shoot } from '../helpers'
+import { createBallPhysics, popArc, rimSlot, rollDropTime } from '../../src/index'
+import { EXACT, sequence, settle, shoot, watchRim } from '../helpers'
 
 /** A (δ, v) that rolls: between the roll threshold and the gate, inside the rim band. */
 const ROLL_DROP = { delta: 11, v: 490 }
@@ -19,7 +19,7 @@ describe('rim-roll system (Stage 3)', () => {
         if (roll) t0 = roll.time
       }
       expect(t0).toBeGreaterThan(0)
-      vt0 = sim.world.RimContact.speed0[ball]!
+      vt0 = sim.world.RimContact.speed0[rimSlot(sim.world, ball)]!
       const mu = sim.config.RIM_ROLL_FRICTION
       const tDrop = rollDropTime(vt0, mu, 110)
       // step to just before the drop, with the dt under test
@@ -37,18 +37,21 @@ describe('rim-roll system (Stage 3)', () => {
 
   it('drops in when the speed falls to RIM_ROLL_DROP_SPEED, at t0 + ln(v_t0/110)/μ', () => {
     const { sim, ball } = shoot(ROLL_DROP.delta, ROLL_DROP.v)
+    const rim = watchRim(sim, ball)
     const ev = settle(sim)
     expect(sequence(ev)).toEqual(['rimRoll', 'capture:rimRoll'])
-    const vt0 = sim.world.RimContact.speed0[ball]!
+    expect(rimSlot(sim.world, ball)).toBe(0) // the capture gave the row back
+    const vt0 = rim.speed0!
     expect(Math.abs(ev[1]!.time - ev[0]!.time - Math.log(vt0 / 110) / 5)).toBeLessThan(EXACT)
     expect(ev[1]!.delta).toBeCloseTo(ROLL_DROP.delta, 9)
   })
 
   it('pops off after RIM_ROLL_MAX_TURNS of the lip circle and leaves the hole along the tangent', () => {
     const { sim, ball } = shoot(ROLL_POP.delta, ROLL_POP.v)
+    const rim = watchRim(sim, ball)
     const ev = settle(sim)
     expect(sequence(ev)).toEqual(['rimRoll', 'lipOut', 'nearMiss', 'rest'])
-    expect(sim.world.RimContact.arc[ball]).toBeCloseTo(popArc(sim.config.RIM_ROLL_MAX_TURNS, 18), 9)
+    expect(rim.arc).toBeCloseTo(popArc(sim.config.RIM_ROLL_MAX_TURNS, 18), 9)
     const st = sim.ballState(ball)
     expect(Math.hypot(st.x, st.y)).toBeGreaterThan(18)
     expect(st.mode).toBe('resting')
