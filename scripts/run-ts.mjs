@@ -1,6 +1,7 @@
 // Runs a TypeScript entry (a benchmark or a script) under plain Node: esbuild bundles it into
 // node_modules/.cache and Node imports the result. Arguments after the entry are passed through.
 import { build } from 'esbuild'
+import { createHash } from 'node:crypto'
 import { mkdirSync } from 'node:fs'
 import { basename, resolve } from 'node:path'
 import { pathToFileURL } from 'node:url'
@@ -12,7 +13,9 @@ if (!entry) {
 }
 const outdir = resolve('node_modules/.cache/run-ts')
 mkdirSync(outdir, { recursive: true })
-const outfile = resolve(outdir, basename(entry).replace(/\.ts$/, '.mjs'))
+// named by the entry's full path too, so two checkouts sharing one node_modules never overwrite each other
+const tag = createHash('sha1').update(resolve(entry)).digest('hex').slice(0, 8)
+const outfile = resolve(outdir, basename(entry).replace(/\.ts$/, `-${tag}.mjs`))
 await build({
   entryPoints: [entry],
   outfile,
