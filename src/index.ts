@@ -1,8 +1,20 @@
 // Public entry point of the ball-physics module.
-export { createBallPhysics, MAX_COORDINATE, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
+export { createBallPhysics, MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
 export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api'
-export { CAPTURE_WINDOW_SHAPES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
-export type { BallPhysicsConfig, CaptureWindowShape, ConfigOverrides, SimulationMethod } from './config'
+export { CAPTURE_WINDOW_SHAPES, COLLISION_MODES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
+export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config'
+export {
+  APPROACH_EPSILON,
+  CONTACT_DURATION,
+  GAP_TOLERANCE,
+  MIN_ADVANCE,
+  SETTLE_FLOOR,
+  contactOut,
+  resolveContact,
+  restingInsert,
+  restingRemove,
+} from './collide'
+export type { CollisionState } from './collide'
 export {
   acquireRim,
   addBallEntity,
@@ -60,5 +72,6 @@ export { bounceSystem } from '../systems/bounce'
 export { rimRollSystem } from '../systems/rimRoll'
 export { heroReferenceSystem, HERO_ROLL_TURN } from '../systems/heroReference'
 export { wallsSystem } from '../systems/walls'
+export { collisionsSystem } from '../systems/collisions'
 export { WallEdge, WallsSchema } from '../components/Walls'
 export type { WallsStore } from '../components/Walls'
