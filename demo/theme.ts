@@ -28,6 +28,7 @@ export const EVENT_COLORS: Readonly<Record<string, number>> = {
   rest: 0x5b6578,
   wall: 0x9fb4d8,
   gutter: 0x6b7890,
+  collision: 0xffe066,
 }
 export function eventColor(type: string): number {
   return EVENT_COLORS[type] ?? 0x8a94a6

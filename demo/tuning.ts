@@ -2,7 +2,7 @@
 // simulation with it (createBallPhysics + addPanel), so the message shown is the core's own RangeError;
 // a valid set waits in game.pending and takes effect at the next throw, burst or new game.
 import GUI, { type Controller } from 'lil-gui'
-import { DEFAULT_CONFIG, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
+import { CONFIG_CHOICES, DEFAULT_CONFIG, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
 import { Game } from './game'
 
 type Key = keyof BallPhysicsConfig
@@ -69,7 +69,9 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
   }
 
   for (const key of Object.keys(DEFAULT_CONFIG) as Key[]) {
-    const c = gui.add(values, key).name(key)
+    // keys that name a choice get a drop-down of their allowed values
+    const choices = (CONFIG_CHOICES as Record<string, readonly string[]>)[key]
+    const c = (choices ? gui.add(values, key, [...choices]) : gui.add(values, key)).name(key)
     const d = DECIMALS[key]
     if (d !== undefined) c.decimals(d)
     c.domElement.dataset.key = key

@@ -39,6 +39,7 @@ interface DemoHook {
   plotted: number
   fps: number
   physicsMs: number
+  eventCounts: Record<string, number>
   input: { angle: number; power: number; charging: boolean }
   recent: { type: string; player: boolean; value: number; delta?: number; speed?: number }[]
   renderer: { type: string; software: boolean; antialias: boolean }
@@ -266,6 +267,19 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(balls).toBeGreaterThanOrEqual(10_000)
     await page.click('#stress')
     await page.waitForFunction(() => window.__demo.liveBalls < 10_000, null, { timeout: 10_000 })
+  })
+
+  it('ball-ball contacts turned on from the tuning panel: a 100-ball burst reports collisions', async () => {
+    await page.locator('[data-key="BALL_COLLISIONS"] select').selectOption('on')
+    await expect.poll(() => page.textContent('#tuning-status')).toMatch(/Valid/)
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await expect.poll(() => page.textContent('#tuning-status')).toMatch(/BALL_COLLISIONS/)
+    await page.click('#multi-100')
+    await page.waitForFunction(() => (window.__demo.eventCounts.collision ?? 0) > 0, null, { timeout: 20_000 })
+    await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
+    expect(problems).toEqual([])
   })
 
   it('an invalid tuning value shows the RangeError and the demo keeps running', async () => {
