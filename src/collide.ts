@@ -20,7 +20,7 @@
 // Allocation: all state is in typed arrays that grow by doubling; nothing is allocated per ball per tick.
 import { BallMode } from '../components/Ball'
 import { RimMode } from '../components/RimContact'
-import { rollArc, rollSpeed } from './geometry'
+import { rimRollAt, rimRollState } from './motion'
 import type { BallWorld } from './world'
 
 /** Contact is declared when the gap is at most this, px, and the balls approach. */
@@ -180,27 +180,16 @@ function evalBall(w: BallWorld, eid: number, t: number): void {
   const B = w.Ball
   const mode = B.mode[eid]
   if (mode === BallMode.RimRoll) {
-    const RC = w.RimContact
-    const slot = w.Ball.rim[eid]!
-    const hole = RC.hole[slot]!
-    const R = w.Hole.radius[hole]!
-    const vt0 = RC.speed0[slot]!
-    const mu = w.config.RIM_ROLL_FRICTION
-    let tau = t - RC.time0[slot]!
-    if (tau < 0) tau = 0
-    const arc = rollArc(tau, vt0, mu)
-    const v = rollSpeed(tau, vt0, mu)
-    const dir = RC.direction[slot]!
-    const phi = RC.angle0[slot]! + (dir * arc) / R
-    const c = Math.cos(phi)
-    const s = Math.sin(phi)
-    ex = w.Hole.x[hole]! + R * c
-    ey = w.Hole.y[hole]! + R * s
-    evx = -dir * s * v
-    evy = dir * c * v
+    rimRollAt(w, eid, t)
+    const o = rimRollState
+    ex = o.x
+    ey = o.y
+    evx = o.vx
+    evy = o.vy
     eax = 0
     eay = 0
-    eacc = (v * v) / R + mu * v
+    // |acceleration| = √((v²/R)² + (μv)²) ≤ v²/R + μv, and v only falls from here
+    eacc = (o.speed * o.speed) / o.radius + w.config.RIM_ROLL_FRICTION * o.speed
     eExact = 0
     eNext = Infinity
     return

@@ -278,11 +278,13 @@ export function sampleAtDistance(w: BallWorld, eid: number, d: number): void {
   P.speed[eid] = v
 }
 
-/** Ball state at time t on the rim: v_t = v_t0·e^(−μτ), exact for every dt. */
-export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
+/** A rim-rolling ball's state at a time, written by rimRollAt (module scratch: no allocation). */
+export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc: 0, radius: 0 }
+
+/** Evaluates a rim-rolling ball at time t into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt. */
+export function rimRollAt(w: BallWorld, eid: number, t: number): void {
   const RC = w.RimContact
-  const B = w.Ball
-  const slot = B.rim[eid]!
+  const slot = w.Ball.rim[eid]!
   const hole = RC.hole[slot]!
   const R = w.Hole.radius[hole]!
   const vt0 = RC.speed0[slot]!
@@ -295,13 +297,30 @@ export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
   const phi = RC.angle0[slot]! + (dir * arc) / R
   const c = Math.cos(phi)
   const s = Math.sin(phi)
-  B.x[eid] = w.Hole.x[hole]! + R * c
-  B.y[eid] = w.Hole.y[hole]! + R * s
-  B.vx[eid] = -dir * s * v
-  B.vy[eid] = dir * c * v
-  RC.angle[slot] = phi
-  RC.arc[slot] = arc
-  w.Path.speed[eid] = v
+  const o = rimRollState
+  o.x = w.Hole.x[hole]! + R * c
+  o.y = w.Hole.y[hole]! + R * s
+  o.vx = -dir * s * v
+  o.vy = dir * c * v
+  o.speed = v
+  o.angle = phi
+  o.arc = arc
+  o.radius = R
+}
+
+/** Ball state at time t on the rim (rimRollAt), written into Ball, RimContact and Path. */
+export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
+  rimRollAt(w, eid, t)
+  const o = rimRollState
+  const B = w.Ball
+  const slot = B.rim[eid]!
+  B.x[eid] = o.x
+  B.y[eid] = o.y
+  B.vx[eid] = o.vx
+  B.vy[eid] = o.vy
+  w.RimContact.angle[slot] = o.angle
+  w.RimContact.arc[slot] = o.arc
+  w.Path.speed[eid] = o.speed
 }
 
 /** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */

@@ -23,7 +23,7 @@ import {
   resumeSearch,
   sampleForContact,
 } from '../src/collide'
-import { pushId, releaseRim, type BallWorld } from '../src/world'
+import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world'
 
 export function integrationSystem(w: BallWorld): void {
   if (w.collide !== null) {
@@ -67,10 +67,7 @@ export function integrationSystem(w: BallWorld): void {
     }
   } else {
     // continue the balls the decision systems handled in the last pass
-    const todo = w.marked
-    w.marked = w.todo
-    w.todo = todo
-    w.marked.count = 0
+    const todo = takeMarked(w)
     for (let i = 0, n = todo.count; i < n; i++) {
       const eid = todo.ids[i]!
       const m = mode[eid]
@@ -96,10 +93,7 @@ function orderedIntegration(w: BallWorld): void {
     const balls = w.moving.dense
     for (let i = 0, n = w.moving.count; i < n; i++) predictBall(w, balls[i]!)
   } else {
-    const todo = w.marked
-    w.marked = w.todo
-    w.todo = todo
-    w.marked.count = 0
+    const todo = takeMarked(w)
     for (let i = 0, n = todo.count; i < n; i++) {
       const eid = todo.ids[i]!
       bumpVersion(w, eid)
@@ -139,6 +133,15 @@ function orderedIntegration(w: BallWorld): void {
     else sampleRolling(w, eid, tEnd)
   }
   C.now = tEnd
+}
+
+/** The balls marked in the last pass, handed over for this one; `marked` starts empty. */
+function takeMarked(w: BallWorld): IdList {
+  const todo = w.marked
+  w.marked = w.todo
+  w.todo = todo
+  w.marked.count = 0
+  return todo
 }
 
 function markContact(w: BallWorld, eid: number, other: number, t: number): void {
