@@ -168,6 +168,22 @@ export function acquireRim(world: BallWorld, eid: number): number {
   return slot
 }
 
+/**
+ * Takes a hole lock for a ball at its lip crossing: a RimContact slot recording the hole, (δ, v), the
+ * crossing's time and the rim mode. Returns the slot.
+ */
+export function lockAtLip(world: BallWorld, eid: number, hole: number, delta: number, speed: number, t: number, mode: number): number {
+  const rim = acquireRim(world, eid)
+  const RC = world.RimContact
+  RC.hole[rim] = hole
+  RC.mode[rim] = mode
+  RC.hasLip[rim] = 1
+  RC.delta[rim] = delta
+  RC.speed[rim] = speed
+  RC.lipTime[rim] = t
+  return rim
+}
+
 /** Gives back the ball's RimContact slot (zeroed) when its hole lock ends; a no-op when it has none. */
 export function releaseRim(world: BallWorld, eid: number): void {
   const slot = world.Ball.rim[eid]!

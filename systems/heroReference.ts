@@ -18,7 +18,7 @@ import { RimMode } from '../components/RimContact'
 import { CaptureVia, EventType } from '../src/events'
 import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion'
 import { referenceOutcome, type ReferenceInput } from '../src/reference/index'
-import { acquireRim, type BallWorld } from '../src/world'
+import { lockAtLip, type BallWorld } from '../src/world'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = (20 * Math.PI) / 180
@@ -28,7 +28,6 @@ const input: ReferenceInput = { delta: 0, speed: 0, holeRadius: 1, ballRadius: 0
 
 export function heroReferenceSystem(w: BallWorld): void {
   const P = w.Path
-  const RC = w.RimContact
   const H = w.Hole
   const B = w.Ball
   const list = w.marked
@@ -57,13 +56,7 @@ export function heroReferenceSystem(w: BallWorld): void {
     if (out.ending === 'phaseLimit' || out.ending === 'timeLimit' || out.ending === 'integratorLimit') continue
 
     const t = P.nextT[eid]!
-    const rim = acquireRim(w, eid)
-    RC.hole[rim] = hole
-    RC.hasLip[rim] = 1
-    RC.delta[rim] = delta
-    RC.speed[rim] = v
-    RC.lipTime[rim] = t
-    RC.mode[rim] = RimMode.Transit
+    lockAtLip(w, eid, hole, delta, v, t, RimMode.Transit)
     P.mark[eid] = PathEvent.None
     const rolled = out.turnAngle >= HERO_ROLL_TURN
     if (rolled) emitHoleEvent(w, EventType.RimRoll, eid, hole, t)

@@ -9,7 +9,7 @@ import { RimMode } from '../components/RimContact'
 import { EventType } from '../src/events'
 import { vSkip } from '../src/geometry'
 import { emitHoleEvent, planRolling } from '../src/motion'
-import { acquireRim, type BallWorld } from '../src/world'
+import { lockAtLip, type BallWorld } from '../src/world'
 
 export function skipOverSystem(w: BallWorld): void {
   const P = w.Path
@@ -25,13 +25,7 @@ export function skipOverSystem(w: BallWorld): void {
     const delta = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
     const v = P.speed[eid]!
     const t = P.nextT[eid]!
-    const rim = acquireRim(w, eid)
-    RC.hole[rim] = hole
-    RC.hasLip[rim] = 1
-    RC.delta[rim] = delta
-    RC.speed[rim] = v
-    RC.lipTime[rim] = t
-    RC.mode[rim] = RimMode.Transit
+    const rim = lockAtLip(w, eid, hole, delta, v, t, RimMode.Transit)
     if (v > vSkip(delta, H.radius[hole]!, w.Ball.radius[eid]!, g)) {
       RC.mode[rim] = RimMode.Skipping
       P.mark[eid] = PathEvent.None

@@ -8,7 +8,7 @@ import { RimMode } from '../../components/RimContact'
 import { CaptureVia } from '../events'
 import { captureBall, planRolling } from '../motion'
 import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../schedule'
-import { acquireRim, type BallWorld } from '../world'
+import { lockAtLip, type BallWorld } from '../world'
 
 export function v1RuleSystem(w: BallWorld): void {
   const P = w.Path
@@ -21,12 +21,8 @@ export function v1RuleSystem(w: BallWorld): void {
     if (P.mark[eid] !== PathEvent.Lip) continue
     const hole = P.markHole[eid]!
     const t = P.nextT[eid]!
-    const rim = acquireRim(w, eid)
-    RC.hole[rim] = hole
-    RC.hasLip[rim] = 1
-    RC.delta[rim] = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
-    RC.speed[rim] = P.speed[eid]!
-    RC.lipTime[rim] = t
+    const delta = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
+    const rim = lockAtLip(w, eid, hole, delta, P.speed[eid]!, t, RimMode.None)
     P.mark[eid] = PathEvent.None
     if (P.speed[eid]! < vMax) {
       captureBall(w, eid, hole, t, CaptureVia.Clean)

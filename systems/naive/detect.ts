@@ -14,7 +14,7 @@ import { PathEvent } from '../../components/Path'
 import { RimMode } from '../../components/RimContact'
 import { EventType, pushEvent } from '../../src/events'
 import { cogRadius, popArc } from '../../src/geometry'
-import { acquireRim, pushId, releaseRim, type BallWorld } from '../../src/world'
+import { lockAtLip, pushId, releaseRim, type BallWorld } from '../../src/world'
 import { naiveState } from './state'
 
 export function naiveDetectSystem(w: BallWorld): void {
@@ -70,13 +70,7 @@ export function naiveDetectSystem(w: BallWorld): void {
       }
       if (d2 < R * R) {
         if (RC.hole[rim] !== 0) continue // inside two lip circles cannot happen (they do not overlap)
-        rim = acquireRim(w, eid)
-        RC.hole[rim] = hid
-        RC.mode[rim] = RimMode.Transit
-        RC.hasLip[rim] = 1
-        RC.delta[rim] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
-        RC.speed[rim] = speed
-        RC.lipTime[rim] = t
+        rim = lockAtLip(w, eid, hid, speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2), speed, t, RimMode.Transit)
         mark = PathEvent.Lip
         markHole = hid
         if (S.nearHole[eid] === hid) S.nearHole[eid] = 0

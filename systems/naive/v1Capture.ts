@@ -4,16 +4,16 @@
 // near miss. A ball whose speed ran out rests (or falls in, by the same rule, if its centre is inside).
 // Reads Ball, Hole, the naive store; writes Ball, RimContact (δ, v of the capture); emits 'capture', 'rest'.
 import { BallMode } from '../../components/Ball'
+import { RimMode } from '../../components/RimContact'
 import { CaptureVia } from '../../src/events'
 import { captureBall, restBall } from '../../src/motion'
-import { acquireRim, type BallWorld } from '../../src/world'
+import { lockAtLip, type BallWorld } from '../../src/world'
 import { naiveState } from './state'
 
 export function v1CaptureSystem(w: BallWorld): void {
   const st = naiveState(w)
   const S = st.store
   const B = w.Ball
-  const RC = w.RimContact
   const limit = w.config.V_MAX
   const table = w.holes
   const xyr = table.xyr
@@ -35,12 +35,7 @@ export function v1CaptureSystem(w: BallWorld): void {
         const d2 = dx * dx + dy * dy
         if (d2 >= R * R) continue
         const hole = table.ids[j]!
-        const rim = acquireRim(w, eid)
-        RC.hole[rim] = hole
-        RC.hasLip[rim] = 1
-        RC.delta[rim] = speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2)
-        RC.speed[rim] = speed
-        RC.lipTime[rim] = st.t
+        lockAtLip(w, eid, hole, speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2), speed, st.t, RimMode.None)
         captureBall(w, eid, hole, st.t, speed > 0 ? CaptureVia.Clean : CaptureVia.Rest)
         captured = true
         break
