@@ -612,6 +612,23 @@ export function predictBall(w: BallWorld, a: number): void {
       tryPair(w, C, a, b, startA, endA, now, tEnd)
     }
   }
+  // enter a's capsule, in the same cells (resting balls are found through the resting grid)
+  if (mode !== BallMode.Resting) {
+    for (let k = 0; k < n; k++) {
+      const bucket = C.cells[k]!
+      if (C.entCount === C.entNext.length) {
+        C.entNext = grown(C.entNext, C.entCount * 2)
+        C.entBall = grown(C.entBall, C.entCount * 2)
+      }
+      const e = C.entCount++
+      C.entBall[e] = a
+      if (C.sweepStamp[bucket] !== C.stamp) {
+        C.sweepStamp[bucket] = C.stamp
+        C.entNext[e] = -1
+      } else C.entNext[e] = C.sweepHead[bucket]!
+      C.sweepHead[bucket] = e
+    }
+  }
   // resting balls, by centre cell: widen by the largest radius
   if (mode !== BallMode.Resting && C.restCount > 0) {
     const rMask = C.restHead.length - 1
@@ -623,23 +640,6 @@ export function predictBall(w: BallWorld, a: number): void {
         tryPair(w, C, a, b, startA, endA, now, tEnd)
       }
     }
-  }
-  // enter a's capsule (resting balls are found through the resting grid)
-  if (mode === BallMode.Resting) return
-  n = capsuleCells(C, x1, y1, x2, y2, rho, sMask)
-  for (let k = 0; k < n; k++) {
-    const bucket = C.cells[k]!
-    if (C.entCount === C.entNext.length) {
-      C.entNext = grown(C.entNext, C.entCount * 2)
-      C.entBall = grown(C.entBall, C.entCount * 2)
-    }
-    const e = C.entCount++
-    C.entBall[e] = a
-    if (C.sweepStamp[bucket] !== C.stamp) {
-      C.sweepStamp[bucket] = C.stamp
-      C.entNext[e] = -1
-    } else C.entNext[e] = C.sweepHead[bucket]!
-    C.sweepHead[bucket] = e
   }
 }
 
