@@ -64,18 +64,21 @@ function panelSim(n: number): BallPhysics {
 
 /** The limit: one step of the same balls with the same rolling deceleration, nothing else. */
 function plainLoop(b: Ball0, n: number, decel: number): () => void {
+  return () => plainStep(b, n, decel)
+}
+
+// one function for every run (a loop in a fresh closure per run can start cold, in V8's interpreter)
+function plainStep(b: Ball0, n: number, decel: number): void {
   const { x, y, vx, vy } = b
-  return () => {
-    for (let i = 0; i < n; i++) {
-      const u = vx[i]!
-      const v = vy[i]!
-      const sp = Math.sqrt(u * u + v * v)
-      const k = sp > decel * DT ? (sp - decel * DT) / sp : 0
-      x[i] = x[i]! + u * DT
-      y[i] = y[i]! + v * DT
-      vx[i] = u * k
-      vy[i] = v * k
-    }
+  for (let i = 0; i < n; i++) {
+    const u = vx[i]!
+    const v = vy[i]!
+    const sp = Math.sqrt(u * u + v * v)
+    const k = sp > decel * DT ? (sp - decel * DT) / sp : 0
+    x[i] = x[i]! + u * DT
+    y[i] = y[i]! + v * DT
+    vx[i] = u * k
+    vy[i] = v * k
   }
 }
 
