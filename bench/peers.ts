@@ -13,7 +13,7 @@ import Matter from 'matter-js'
 import * as planck from 'planck'
 import { createBallPhysics } from '../src/index'
 import { DT, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
-import { peersFigure, type PeerRow } from './peersFigure'
+import { peersFigure, type PeerRow } from './charts'
 
 const HOLE_R = 18
 const BALL_R = 11

@@ -9,6 +9,7 @@
 import { execFileSync } from 'node:child_process'
 import { fileURLToPath } from 'node:url'
 import { createBallPhysics, type BallPhysics } from '../src/index'
+import { scaleFigure, type ScaleRow } from './charts'
 import { DT, argValue, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
 
 const STEPS = 60
@@ -132,7 +133,7 @@ for (const holes of HOLES) {
   }
 }
 
-const rows: { balls: number; holes: number; ours: number; plain: number; ratio: number; heapBytesPerBall: number }[] = []
+const rows: ScaleRow[] = []
 for (const holes of HOLES) {
   for (const n of SIZES) {
     const oursRuns: number[] = []
@@ -161,21 +162,5 @@ const json = writeResult('scale', {
   rows,
 })
 
-const data = rows.flatMap((r) => [
-  { balls: r.balls, series: `this module, ${r.holes} holes`, ns: r.ours },
-  ...(r.holes === HOLES[0] ? [{ balls: r.balls, series: 'plain loop (moves only)', ns: r.plain }] : []),
-])
-const svg = await writeFigure('scale', {
-  $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
-  title: { text: 'Cost per ball-step against the number of balls', subtitle: `dt = 1/120 s, median of ${STEPS} steps, median of ${ROUNDS} rounds, one run on a 2-core machine` },
-  width: 520,
-  height: 300,
-  data: { values: data },
-  mark: { type: 'line', point: true },
-  encoding: {
-    x: { field: 'balls', type: 'quantitative', scale: { type: 'log' }, title: 'balls' },
-    y: { field: 'ns', type: 'quantitative', title: 'ns per ball-step' },
-    color: { field: 'series', type: 'nominal', title: null, legend: { orient: 'top-left' } },
-  },
-})
+const svg = await writeFigure('scale', scaleFigure(rows, STEPS, ROUNDS))
 console.log(`wrote ${json} and ${svg}`)
