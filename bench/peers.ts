@@ -1,18 +1,20 @@
 // The same scene in general 2D engines a game might pick instead: N balls rolling with deceleration over
 // 25 holes that are sensors, capture decided in the engines' contact callbacks (speed below V_MAX when the
-// ball touches the sensor), ball-ball contacts filtered out; then with ball-ball contacts on at 1,000 balls.
+// ball touches the sensor), ball-ball contacts filtered out; then with ball-ball contacts on at 1,000 balls
+// (this module with BALL_COLLISIONS 'on', restitution 0.9 like the peers' fixtures; the balls put down
+// without overlaps, so that no engine starts by pushing overlapping pairs apart).
 // Each engine steps at 1/120 s under tinybench; printed as ns per ball-step and as the ratio to this
-// module measured in the same run. Writes bench/results/peers.json.
+// module measured in the same run. Writes docs/results/peers.json and docs/figures/peers.svg (or under
+// --out DIR).
 //
-//   npm run bench:peers            (N = 1,000 and 10,000)
+//   npm run bench:peers            (N = 1,000 and 10,000; contacts on at 1,000)
 import RAPIER from '@dimforge/rapier2d-compat'
 import Matter from 'matter-js'
 import * as planck from 'planck'
-import { mkdirSync, writeFileSync } from 'node:fs'
-import { Bench } from 'tinybench'
 import { createBallPhysics } from '../src/index'
+import { DT, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
+import { peersFigure, type PeerRow } from './charts'
 
-const DT = 1 / 120
 const HOLE_R = 18
 const BALL_R = 11
 const V_MAX = 600
@@ -29,24 +31,31 @@ interface Scene {
   holes: { x: number; y: number }[]
 }
 
-function scene(n: number): Scene {
+/** n balls at random over the field; with `separated`, a ball that would overlap an earlier one is drawn again. */
+function scene(n: number, separated = false): Scene {
   let s = 12345
   const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
   const holes = []
   for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) holes.push({ x: 200 + 400 * i, y: 200 + 400 * j })
-  const balls = []
-  for (let i = 0; i < n; i++) {
+  const balls: Scene['balls'] = []
+  while (balls.length < n) {
     const a = r() * 2 * Math.PI
     const v = 150 + 200 * r()
-    balls.push({ x: r() * SIZE, y: r() * SIZE, vx: v * Math.cos(a), vy: v * Math.sin(a) })
+    const x = r() * SIZE
+    const y = r() * SIZE
+    if (separated && balls.some((b) => (b.x - x) ** 2 + (b.y - y) ** 2 < (2 * BALL_R) ** 2)) continue
+    balls.push({ x, y, vx: v * Math.cos(a), vy: v * Math.sin(a) })
   }
   return { balls, holes }
 }
 
 type Stepper = () => void
 
-function ours(sc: Scene): Stepper {
-  const sim = createBallPhysics({ ROLLING_DECEL: DECEL }, { capacity: sc.balls.length + 64 })
+function ours(sc: Scene, contacts: boolean): Stepper {
+  const sim = createBallPhysics(
+    { ROLLING_DECEL: DECEL, BALL_COLLISIONS: contacts ? 'on' : 'off', BALL_RESTITUTION: 0.9 },
+    { capacity: sc.balls.length + 64 },
+  )
   for (const h of sc.holes) sim.addHole(h)
   for (const b of sc.balls) sim.addBall(b)
   return () => {
@@ -145,52 +154,64 @@ function rapier(sc: Scene, contacts: boolean): Stepper {
 
 /** Steps measured per engine: 1 s of simulated time, so the scene is the same for every engine throughout. */
 const MEASURED_STEPS = 120
+/** Rounds per scene, the engines interleaved within a round; each figure is the median of the rounds. */
+const ROUNDS = 3
 
-async function measure(name: string, n: number, make: () => Stepper): Promise<number> {
-  // warm the engine's code up on a throwaway scene, then measure a fresh one for a fixed number of steps
-  const warm = make()
-  for (let i = 0; i < 30; i++) warm()
-  const bench = new Bench({ time: 0, iterations: MEASURED_STEPS, warmup: false })
-  let step: Stepper = make()
-  bench.add(name, () => step(), {
-    beforeAll: () => {
-      step = make()
-    },
-  })
-  await bench.run()
-  const r = bench.tasks[0]!.result as { state: string; latency?: { p50: number }; error?: unknown }
-  if (!r.latency) throw new Error(`${name}: ${String(r.error ?? r.state)}`)
-  return (r.latency.p50 * 1e6) / n // ms per step → ns per ball-step
+async function measure(name: string, n: number, make: () => Stepper, warm: boolean): Promise<number> {
+  // warm the engine's code up on a throwaway scene (first round), then measure a fresh one for a fixed
+  // number of steps
+  if (warm) {
+    const throwaway = make()
+    for (let i = 0; i < 30; i++) throwaway()
+  }
+  const step = make()
+  collectGarbage()
+  try {
+    return ((await medianStepMs(step, MEASURED_STEPS)) * 1e6) / n // ms per step → ns per ball-step
+  } catch (e) {
+    throw new Error(`${name}: ${String(e)}`)
+  }
 }
 
 await RAPIER.init()
-const rows: Record<string, number | string>[] = []
-for (const n of [1000, 10000]) {
-  const sc = scene(n)
-  const o = await measure('ours', n, () => ours(sc))
-  const m = await measure('matter-js', n, () => matter(sc, false))
-  const p = await measure('planck', n, () => planckWorld(sc, false))
-  const r = await measure('rapier2d-compat', n, () => rapier(sc, false))
-  rows.push({ balls: n, contacts: 'off', ours: o, matter: m, planck: p, rapier: r, 'matter/ours': m / o, 'planck/ours': p / o, 'rapier/ours': r / o })
+const rows: PeerRow[] = []
+const runs: [number, boolean][] = [
+  [1000, false],
+  [10000, false],
+  [1000, true],
+]
+for (const [n, contacts] of runs) {
+  const sc = scene(n, contacts)
+  const t: Record<'o' | 'm' | 'p' | 'r', number[]> = { o: [], m: [], p: [], r: [] }
+  for (let round = 0; round < ROUNDS; round++) {
+    t.o.push(await measure('ours', n, () => ours(sc, contacts), round === 0))
+    t.m.push(await measure('matter-js', n, () => matter(sc, contacts), round === 0))
+    t.p.push(await measure('planck', n, () => planckWorld(sc, contacts), round === 0))
+    t.r.push(await measure('rapier2d-compat', n, () => rapier(sc, contacts), round === 0))
+  }
+  const [o, m, p, r] = [median(t.o), median(t.m), median(t.p), median(t.r)]
+  rows.push({ balls: n, contacts: contacts ? 'on' : 'off', ours: o, matter: m, planck: p, rapier: r, 'matter/ours': m / o, 'planck/ours': p / o, 'rapier/ours': r / o })
 }
-{
-  const sc = scene(1000)
-  const m = await measure('matter-js', 1000, () => matter(sc, true))
-  const p = await measure('planck', 1000, () => planckWorld(sc, true))
-  const r = await measure('rapier2d-compat', 1000, () => rapier(sc, true))
-  rows.push({ balls: 1000, contacts: 'on', ours: 'n/a', matter: m, planck: p, rapier: r, 'matter/ours': '-', 'planck/ours': '-', 'rapier/ours': '-' })
-}
-const f = (v: number | string | undefined) => (typeof v === 'number' ? (v >= 100 ? v.toFixed(0) : v.toFixed(1)) : String(v))
-console.log('ns per ball-step (median step time / balls), dt = 1/120 s, 25 sensor holes, one run')
-console.log('(contacts on: this module has no ball-ball collisions yet, so only the peers are measured)')
+const f = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1))
+console.log(`ns per ball-step (median step of ${MEASURED_STEPS} / balls, median of ${ROUNDS} rounds), dt = 1/120 s, 25 sensor holes, one run`)
 console.log('balls   contacts  ours      matter-js  planck    rapier2d   matter/ours  planck/ours  rapier/ours')
 for (const r of rows) {
   console.log(
-    [r.balls, r.contacts, r.ours, r.matter, r.planck, r.rapier, r['matter/ours'], r['planck/ours'], r['rapier/ours']]
-      .map((v, i) => f(v as number).padEnd(i === 0 ? 8 : 10))
-      .join(' '),
+    [String(r.balls).padEnd(7), r.contacts.padEnd(9), ...[r.ours, r.matter, r.planck, r.rapier].map((v) => f(v).padEnd(9)), ...[r['matter/ours'], r['planck/ours'], r['rapier/ours']].map((v) => `${f(v)}×`.padEnd(12))]
+      .join(' ')
+      .trimEnd(),
   )
 }
-mkdirSync('bench/results', { recursive: true })
-writeFileSync('bench/results/peers.json', JSON.stringify({ date: new Date().toISOString(), node: process.version, dt: DT, rows }, null, 2) + '\n')
-console.log('wrote bench/results/peers.json')
+const json = writeResult('peers', {
+  dt: DT,
+  measuredSteps: MEASURED_STEPS,
+  rounds: ROUNDS,
+  timing: 'tinybench: median step of MEASURED_STEPS steps of a fresh scene, ns per ball-step; median of ROUNDS rounds, the engines interleaved',
+  rollingDecel: DECEL,
+  ballRestitution: 0.9,
+  scene: 'balls at 150-350 px/s over a 2000 px square with 25 sensor holes; contacts-on rows: balls put down without overlaps',
+  rows,
+})
+
+const svg = await writeFigure('peers', peersFigure(rows, MEASURED_STEPS, ROUNDS))
+console.log(`wrote ${json} and ${svg}`)

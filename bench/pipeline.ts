@@ -1,13 +1,13 @@
-// Pipeline cost per ball-step against a plain typed-array loop that only moves the same balls.
-// Prints figures and writes bench/results/pipeline.json; asserts nothing (machines here are shared and
-// noisy: compare the ratio measured side by side in this run, not absolute times across runs).
+// Pipeline cost per ball-step against a plain typed-array loop that only moves the same balls, each step
+// timed by tinybench (median step of a run, median of the runs). Prints figures and writes
+// docs/results/pipeline.json; asserts nothing (machines here are shared and noisy: compare the ratio
+// measured side by side in this run, not absolute times across runs).
 //
-//   npm run bench            (N = 100,000)       npm run bench -- 20000   (another N)
-import { mkdirSync, writeFileSync } from 'node:fs'
+//   npm run bench:pipeline   (N = 100,000)       npm run bench:pipeline -- 20000   (another N)
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
+import { DT, collectGarbage, median, medianStepMs, writeResult } from './lib'
 
-const N = Number(process.argv[2] ?? 100_000)
-const DT = 1 / 120
+const N = Number(process.argv.slice(2).find((a) => /^\d+$/.test(a)) ?? 100_000)
 const WARMUP = 30
 const STEPS = 120
 const REPEATS = 5
@@ -62,35 +62,39 @@ function panelSim(n: number): BallPhysics {
   return sim
 }
 
-/** The limit: move the same balls with the same rolling deceleration, nothing else. */
-function plainLoop(b: Ball0, n: number, steps: number, decel: number): number {
-  const { x, y, vx, vy } = b
-  const t0 = process.hrtime.bigint()
-  for (let s = 0; s < steps; s++) {
-    for (let i = 0; i < n; i++) {
-      const u = vx[i]!
-      const v = vy[i]!
-      const sp = Math.sqrt(u * u + v * v)
-      const k = sp > decel * DT ? (sp - decel * DT) / sp : 0
-      x[i] = x[i]! + u * DT
-      y[i] = y[i]! + v * DT
-      vx[i] = u * k
-      vy[i] = v * k
-    }
-  }
-  return Number(process.hrtime.bigint() - t0)
+/** The limit: one step of the same balls with the same rolling deceleration, nothing else. */
+function plainLoop(b: Ball0, n: number, decel: number): () => void {
+  return () => plainStep(b, n, decel)
 }
 
-function timeSim(sim: BallPhysics, steps: number): number {
-  const t0 = process.hrtime.bigint()
-  for (let s = 0; s < steps; s++) {
+// one function for every run (a loop in a fresh closure per run can start cold, in V8's interpreter)
+function plainStep(b: Ball0, n: number, decel: number): void {
+  const { x, y, vx, vy } = b
+  for (let i = 0; i < n; i++) {
+    const u = vx[i]!
+    const v = vy[i]!
+    const sp = Math.sqrt(u * u + v * v)
+    const k = sp > decel * DT ? (sp - decel * DT) / sp : 0
+    x[i] = x[i]! + u * DT
+    y[i] = y[i]! + v * DT
+    vx[i] = u * k
+    vy[i] = v * k
+  }
+}
+
+function simStep(sim: BallPhysics): () => void {
+  return () => {
     sim.step(DT)
     sim.world.events.count = 0 // a game drains each frame; dropping the buffer here keeps event objects out of the timing
   }
-  return Number(process.hrtime.bigint() - t0)
 }
 
-const median = (a: number[]) => [...a].sort((p, q) => p - q)[Math.floor(a.length / 2)]!
+/** Runs WARMUP steps untimed, then STEPS timed ones: ns per ball-step of the median step. */
+async function nsPerBallStep(step: () => void): Promise<number> {
+  for (let i = 0; i < WARMUP; i++) step()
+  collectGarbage()
+  return ((await medianStepMs(step, STEPS)) * 1e6) / N
+}
 
 const decel = createBallPhysics().config.ROLLING_DECEL
 const plain: number[] = []
@@ -98,36 +102,29 @@ const open: number[] = []
 const panel: number[] = []
 let moving = 0
 for (let rep = 0; rep < REPEATS; rep++) {
-  const a = openField(N)
-  plainLoop(a, N, WARMUP, decel)
-  plain.push(plainLoop(a, N, STEPS, decel) / (N * STEPS))
+  plain.push(await nsPerBallStep(plainLoop(openField(N), N, decel)))
 
   const sim = openFieldSim(openField(N), N)
-  timeSim(sim, WARMUP)
-  open.push(timeSim(sim, STEPS) / (N * STEPS))
+  open.push(await nsPerBallStep(simStep(sim)))
   moving = sim.balls().filter((b) => sim.world.Ball.mode[b]! < 2).length
 
-  const p = panelSim(N)
-  timeSim(p, WARMUP)
-  panel.push(timeSim(p, STEPS) / (N * STEPS))
+  panel.push(await nsPerBallStep(simStep(panelSim(N))))
 }
 
 const result = {
-  date: new Date().toISOString(),
-  node: process.version,
   balls: N,
   holes: 25,
   dt: DT,
   steps: STEPS,
+  warmupSteps: WARMUP,
   repeats: REPEATS,
+  timing: 'tinybench: median step of each run of STEPS steps, median of REPEATS runs',
   nsPerBallStep: { plainLoop: median(plain), openField: median(open), panel: median(panel) },
   ratioToPlain: { openField: median(open) / median(plain), panel: median(panel) / median(plain) },
   openFieldBallsStillMovingAfterRun: moving,
 }
-console.log(`pipeline benchmark, ${N} balls, 25 holes, dt = 1/120 s, ${STEPS} steps, median of ${REPEATS}`)
+console.log(`pipeline benchmark, ${N} balls, 25 holes, dt = 1/120 s, median step of ${STEPS}, median of ${REPEATS} runs`)
 console.log(`  plain typed-array loop (moves only)   ${result.nsPerBallStep.plainLoop.toFixed(2)} ns/ball-step`)
 console.log(`  full pipeline, open field (sparse)    ${result.nsPerBallStep.openField.toFixed(2)} ns/ball-step   ${result.ratioToPlain.openField.toFixed(2)}× plain`)
 console.log(`  full pipeline, default panel (dense)  ${result.nsPerBallStep.panel.toFixed(2)} ns/ball-step   ${result.ratioToPlain.panel.toFixed(2)}× plain`)
-mkdirSync('bench/results', { recursive: true })
-writeFileSync('bench/results/pipeline.json', JSON.stringify(result, null, 2) + '\n')
-console.log('wrote bench/results/pipeline.json')
+console.log(`wrote ${writeResult('pipeline', result)}`)

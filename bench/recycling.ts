@@ -4,9 +4,9 @@
 // of live balls, not grow with the number thrown. Prints the samples and writes docs/results/recycling.json.
 // Asserts nothing (tests/lifecycle.test.ts checks the same at 200,000 throws).
 //
-//   node --expose-gc scripts/run-ts.mjs bench/recycling.ts [--throws N]
-import { mkdirSync, writeFileSync } from 'node:fs'
+//   npm run bench:recycling [-- --throws N] [-- --out DIR]
 import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
+import { writeResult } from './lib'
 
 const arg = process.argv.indexOf('--throws')
 const THROWS = arg >= 0 ? Number(process.argv[arg + 1]) : 1_000_000
@@ -64,9 +64,4 @@ console.log(
   `${THROWS.toLocaleString('en-US')} throws in ${seconds.toFixed(1)} s; peak ${peak} live balls, largest id ${maxId}; ` +
     `heap at the last sample / at the first: ${(last.heapBytes / first.heapBytes).toFixed(2)}`,
 )
-mkdirSync('docs/results', { recursive: true })
-writeFileSync(
-  'docs/results/recycling.json',
-  JSON.stringify({ date: new Date().toISOString(), node: process.version, throws: THROWS, throwsPerStep: PER_STEP, peakLive: peak, maxId, seconds, samples }, null, 2) + '\n',
-)
-console.log('wrote docs/results/recycling.json')
+console.log(`wrote ${writeResult('recycling', { throws: THROWS, throwsPerStep: PER_STEP, peakLive: peak, maxId, seconds, samples })}`)

@@ -1,22 +1,21 @@
 // Scaling: ns per ball-step and heap bytes per ball for N = 1k, 10k, 100k, 1M balls over 25 and over
 // 10,000 holes (same hole density: holes 400 px apart, balls spread over the holes' field), beside a plain
-// typed-array loop that only moves the same balls, measured in the same run with tinybench.
-// Writes docs/results/scale.json and docs/figures/scale.svg. Prints figures; asserts nothing.
+// typed-array loop that only moves the same balls, measured in the same run with tinybench: each row is
+// ROUNDS rounds of (this module on a fresh scene, the plain loop on fresh arrays), median of the rounds.
+// Writes docs/results/scale.json and docs/figures/scale.svg (or under --out DIR). Prints figures; asserts
+// nothing.
 //
 //   npm run bench:scale                 npm run bench:scale -- --max 100000   (skip the 1M rows)
 import { execFileSync } from 'node:child_process'
-import { mkdirSync, writeFileSync } from 'node:fs'
 import { fileURLToPath } from 'node:url'
-import { Bench } from 'tinybench'
-import * as vega from 'vega'
-import { compile } from 'vega-lite'
 import { createBallPhysics, type BallPhysics } from '../src/index'
+import { scaleFigure, type ScaleRow } from './charts'
+import { DT, argValue, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
 
-const DT = 1 / 120
 const STEPS = 60
+const ROUNDS = 3
 const DECEL = 20
-const maxArg = process.argv.indexOf('--max')
-const MAX_N = maxArg >= 0 ? Number(process.argv[maxArg + 1]) : 1_000_000
+const MAX_N = Number(argValue('--max') ?? 1_000_000)
 const SIZES = [1_000, 10_000, 100_000, 1_000_000].filter((n) => n <= MAX_N)
 const HOLES = [25, 10_000]
 
@@ -54,30 +53,46 @@ function plain(n: number) {
     vx[i] = v * Math.cos(a)
     vy[i] = v * Math.sin(a)
   }
-  return () => {
-    for (let i = 0; i < n; i++) {
-      const u = vx[i]!
-      const w = vy[i]!
-      const sp = Math.sqrt(u * u + w * w)
-      const k = sp > DECEL * DT ? (sp - DECEL * DT) / sp : 0
-      x[i] = x[i]! + u * DT
-      y[i] = y[i]! + w * DT
-      vx[i] = u * k
-      vy[i] = w * k
-    }
+  return () => plainStep(x, y, vx, vy, n)
+}
+
+// one function for every row (a loop in a fresh closure per row started cold, in V8's interpreter, in some
+// rounds: 100+ ns per ball-step)
+function plainStep(x: Float64Array, y: Float64Array, vx: Float64Array, vy: Float64Array, n: number): void {
+  for (let i = 0; i < n; i++) {
+    const u = vx[i]!
+    const w = vy[i]!
+    const sp = Math.sqrt(u * u + w * w)
+    const k = sp > DECEL * DT ? (sp - DECEL * DT) / sp : 0
+    x[i] = x[i]! + u * DT
+    y[i] = y[i]! + w * DT
+    vx[i] = u * k
+    vy[i] = w * k
   }
 }
 
-async function nsPerBallStep(n: number, make: () => () => void): Promise<number> {
-  const warm = make()
-  for (let i = 0; i < 10; i++) warm()
-  let step = make()
-  const bench = new Bench({ time: 0, iterations: STEPS, warmup: false })
-  bench.add('step', () => step(), { beforeAll: () => void (step = make()) })
-  await bench.run()
-  const r = bench.tasks[0]!.result as { latency?: { p50: number }; state: string }
-  if (!r.latency) throw new Error(`benchmark failed: ${r.state}`)
-  return (r.latency.p50 * 1e6) / n
+/**
+ * Times STEPS steps of a fresh scene: ns per ball-step of the median step. Just before, `warm` runs the
+ * same code untimed on a throwaway scene, so that every round is measured warm (the first round after a
+ * change of hole count otherwise paid for re-optimisation).
+ */
+async function nsPerBallStep(n: number, make: () => () => void, warm: () => () => void): Promise<number> {
+  {
+    const throwaway = warm()
+    for (let i = 0; i < 30; i++) throwaway()
+  }
+  const step = make()
+  collectGarbage()
+  const ms = await medianStepMs(step, STEPS)
+  return (ms * 1e6) / n
+}
+
+function oursStep(n: number, holes: number): () => void {
+  const sim = build(n, holes)
+  return () => {
+    sim.step(DT)
+    sim.world.events.count = 0
+  }
 }
 
 /** Heap (JS objects and typed arrays) per ball of a world with n balls, measured in a fresh Node process. */
@@ -106,10 +121,10 @@ if (process.argv.includes('--heap')) {
   process.exit(0)
 }
 
-// warm the code up once, on a mid-size scene, before any row is measured (the plain loop too: cold, its
-// first row measured the interpreter)
-{
-  const sim = build(10_000, 25)
+// warm the code up once, on mid-size scenes over both hole counts (a scan of 25 holes, a grid of 10,000),
+// before any row is measured (the plain loop too: cold, its first row measured the interpreter)
+for (const holes of HOLES) {
+  const sim = build(10_000, holes)
   const base = plain(10_000)
   for (let i = 0; i < 200; i++) {
     sim.step(DT)
@@ -118,17 +133,18 @@ if (process.argv.includes('--heap')) {
   }
 }
 
-const rows: { balls: number; holes: number; ours: number; plain: number; ratio: number; heapBytesPerBall: number }[] = []
+const rows: ScaleRow[] = []
 for (const holes of HOLES) {
   for (const n of SIZES) {
-    const ours = await nsPerBallStep(n, () => {
-      const sim = build(n, holes)
-      return () => {
-        sim.step(DT)
-        sim.world.events.count = 0
-      }
-    })
-    const base = await nsPerBallStep(n, () => plain(n))
+    const oursRuns: number[] = []
+    const baseRuns: number[] = []
+    for (let round = 0; round < ROUNDS; round++) {
+      const w = Math.min(n, 10_000)
+      oursRuns.push(await nsPerBallStep(n, () => oursStep(n, holes), () => oursStep(w, holes)))
+      baseRuns.push(await nsPerBallStep(n, () => plain(n), () => plain(w)))
+    }
+    const ours = median(oursRuns)
+    const base = median(baseRuns)
     const heap = heapPerBall(n, holes)
     rows.push({ balls: n, holes, ours, plain: base, ratio: ours / base, heapBytesPerBall: heap })
     console.log(
@@ -137,27 +153,14 @@ for (const holes of HOLES) {
   }
 }
 
-mkdirSync('docs/results', { recursive: true })
-mkdirSync('docs/figures', { recursive: true })
-writeFileSync('docs/results/scale.json', JSON.stringify({ date: new Date().toISOString(), node: process.version, dt: DT, steps: STEPS, rows }, null, 2) + '\n')
+const json = writeResult('scale', {
+  dt: DT,
+  steps: STEPS,
+  rounds: ROUNDS,
+  rollingDecel: DECEL,
+  timing: 'tinybench: median step of STEPS steps of a fresh scene; median of ROUNDS rounds, this module and the plain loop interleaved',
+  rows,
+})
 
-const data = rows.flatMap((r) => [
-  { balls: r.balls, series: `this module, ${r.holes} holes`, ns: r.ours },
-  ...(r.holes === HOLES[0] ? [{ balls: r.balls, series: 'plain loop (moves only)', ns: r.plain }] : []),
-])
-const spec = compile({
-  $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
-  title: { text: 'Cost per ball-step against the number of balls', subtitle: `dt = 1/120 s, median of ${STEPS} steps, one run on a 2-core machine` },
-  width: 520,
-  height: 300,
-  data: { values: data },
-  mark: { type: 'line', point: true },
-  encoding: {
-    x: { field: 'balls', type: 'quantitative', scale: { type: 'log' }, title: 'balls' },
-    y: { field: 'ns', type: 'quantitative', title: 'ns per ball-step' },
-    color: { field: 'series', type: 'nominal', title: null, legend: { orient: 'top-left' } },
-  },
-}).spec
-const svg = await new vega.View(vega.parse(spec), { renderer: 'none' }).toSVG()
-writeFileSync('docs/figures/scale.svg', svg)
-console.log('wrote docs/results/scale.json and docs/figures/scale.svg')
+const svg = await writeFigure('scale', scaleFigure(rows, STEPS, ROUNDS))
+console.log(`wrote ${json} and ${svg}`)

@@ -1,0 +1,141 @@
+// npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, resting,
+// recycling), then
+// a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
+// assertions (the machine is shared and noisy), so the exit status only says whether every benchmark ran.
+//
+//   npm run bench                  full run: writes docs/results/*.json and docs/figures/{scale,peers}.svg
+//   npm run bench -- --quick       (or npm run bench:quick) no 1M rows (scale up to 100k balls, 100k resting
+//                                  balls); writes under test-artifacts/bench-quick/, leaving docs/ alone
+//   npm run bench -- --out DIR     results under DIR/results and DIR/figures
+import { spawnSync } from 'node:child_process'
+import { readFileSync } from 'node:fs'
+import { join } from 'node:path'
+import { argValue } from './lib'
+
+const quick = process.argv.includes('--quick')
+const out = argValue('--out') ?? (quick ? 'test-artifacts/bench-quick' : 'docs')
+
+const benches: [string, string[]][] = [
+  ['bench/pipeline.ts', []],
+  ['bench/scale.ts', quick ? ['--max', '100000'] : []],
+  ['bench/peers.ts', []],
+  ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
+  ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
+]
+const failed: string[] = []
+for (const [entry, args] of benches) {
+  console.log(`\n== ${entry} ${args.join(' ')}`.trimEnd())
+  const t0 = Date.now()
+  const r = spawnSync(process.execPath, ['--expose-gc', 'scripts/run-ts.mjs', entry, ...args, '--out', out], { stdio: 'inherit' })
+  if (r.status !== 0) failed.push(entry)
+  console.log(`   (${((Date.now() - t0) / 1000).toFixed(0)} s)`)
+}
+
+/** A benchmark's results file, if that benchmark ran to the end in this run. */
+const read = <T>(name: string): T | undefined => {
+  if (failed.includes(`bench/${name}.ts`)) return undefined
+  try {
+    return JSON.parse(readFileSync(join(out, 'results', `${name}.json`), 'utf8')) as T
+  } catch {
+    return undefined
+  }
+}
+interface ScaleRow {
+  balls: number
+  holes: number
+  ours: number
+  plain: number
+  ratio: number
+  heapBytesPerBall: number
+}
+interface PeerRow {
+  balls: number
+  contacts: string
+  ours: number
+  matter: number
+  planck: number
+  rapier: number
+  'matter/ours': number
+  'planck/ours': number
+  'rapier/ours': number
+}
+interface RestingRow {
+  contacts: string
+  moving: number
+  resting: number
+  restingInReach: number
+  nsPerStep: { alone: number; inReach: number; all: number }
+  ratio: number
+  ratioToInReach: number
+  contactsDuringRun: { alone: number; inReach: number; all: number }
+  wokenDuringRun: { all: number }
+}
+const pipeline = read<{ balls: number; nsPerBallStep: Record<string, number>; ratioToPlain: Record<string, number> }>('pipeline')
+const scale = read<{ rows: ScaleRow[] }>('scale')
+const peers = read<{ rows: PeerRow[] }>('peers')
+const resting = read<{ rows: RestingRow[] }>('resting')
+
+const k = (n: number) => n.toLocaleString('en-US')
+const f = (v: number) => (v >= 100 ? k(Math.round(v)) : v.toFixed(1))
+const x = (v: number) => `${v >= 10 ? v.toFixed(0) : v.toFixed(2)}×`
+
+console.log(`\n== summary (${join(out, 'results')}, one run; ns per ball-step unless said otherwise)`)
+if (pipeline) {
+  const p = pipeline.nsPerBallStep
+  const q = pipeline.ratioToPlain
+  console.log(`\npipeline, ${k(pipeline.balls)} balls: plain loop ${p.plainLoop!.toFixed(2)}, open field ${p.openField!.toFixed(2)} (${x(q.openField!)}), default panel ${p.panel!.toFixed(2)} (${x(q.panel!)})`)
+}
+if (scale) {
+  console.log('\nscaling (ours beside a plain loop over the same typed arrays that only moves the balls, same run)')
+  console.log('    balls   holes   ours ns   plain ns   ours/plain   heap B/ball')
+  for (const r of scale.rows) {
+    console.log(
+      `${k(r.balls).padStart(9)} ${k(r.holes).padStart(7)} ${r.ours.toFixed(2).padStart(9)} ${r.plain.toFixed(2).padStart(10)} ${x(r.ratio).padStart(12)} ${Math.round(r.heapBytesPerBall).toString().padStart(13)}`,
+    )
+  }
+}
+if (peers) {
+  console.log('\npeers on the same scene (ratio peer / ours, same run)')
+  console.log('  balls  contacts      ours   matter-js      planck    rapier2d')
+  for (const r of peers.rows) {
+    const cell = (v: number, ratio: number) => `${f(v)} (${x(ratio)})`.padStart(16)
+    console.log(`${k(r.balls).padStart(7)}  ${r.contacts.padEnd(8)} ${f(r.ours).padStart(7)} ${cell(r.matter, r['matter/ours'])} ${cell(r.planck, r['planck/ours'])} ${cell(r.rapier, r['rapier/ours'])}`)
+  }
+}
+if (resting) {
+  console.log('\nresting balls (ns per step: 1k moving alone, beside the resting balls within their reach, beside all the resting balls)')
+  console.log('contacts      alone    in reach   all resting   all/alone   all/in reach   contacts alone/reach/all   woken')
+  for (const r of resting.rows) {
+    console.log(
+      `${r.contacts.padEnd(8)} ${k(Math.round(r.nsPerStep.alone)).padStart(10)} ${k(Math.round(r.nsPerStep.inReach)).padStart(11)} ${k(Math.round(r.nsPerStep.all)).padStart(13)} ${x(r.ratio).padStart(11)} ${x(r.ratioToInReach).padStart(14)}   ${`${r.contactsDuringRun.alone}/${r.contactsDuringRun.inReach}/${r.contactsDuringRun.all}`.padEnd(24)} ${String(r.wokenDuringRun.all).padStart(5)}   (${k(r.resting)} resting)`,
+    )
+  }
+}
+
+console.log('\nfloors (checked, not asserted)')
+const check = (ok: boolean | undefined, text: string) => console.log(`${ok === undefined ? 'SKIP' : ok ? 'PASS' : 'FAIL'}  ${text}`)
+const row100k = scale?.rows.find((r) => r.balls === 100_000 && r.holes === 25)
+check(row100k && row100k.ours <= 12, `100k balls over 25 holes: ${row100k ? row100k.ours.toFixed(2) : '?'} ns per ball-step (floor ≤ 12)`)
+check(row100k && row100k.ratio <= 4, `100k balls over 25 holes: ${row100k ? x(row100k.ratio) : '?'} the plain loop (floor ≤ 4×)`)
+const peer10k = peers?.rows.find((r) => r.balls === 10_000 && r.contacts === 'off')
+check(peer10k && peer10k['rapier/ours'] >= 50, `10k balls: ${peer10k ? x(peer10k['rapier/ours']) : '?'} faster than rapier2d-compat (floor ≥ 50×)`)
+check(peer10k && peer10k['matter/ours'] >= 100, `10k balls: ${peer10k ? x(peer10k['matter/ours']) : '?'} faster than matter-js (floor ≥ 100×)`)
+const million = scale?.rows.filter((r) => r.balls === 1_000_000) ?? []
+if (million.length === 0) check(undefined, `1M balls: heap per ball not measured (${quick ? 'quick mode' : 'no 1M rows'}; floor < 200 B)`)
+for (const r of million) check(r.heapBytesPerBall < 200, `1M balls over ${k(r.holes)} holes: ${r.heapBytesPerBall.toFixed(1)} B of heap per ball (floor < 200)`)
+const recycling = read<{ throws: number; peakLive: number; samples: { thrown: number; heapBytes: number }[] }>('recycling')
+if (recycling) {
+  // bounded: the second half of the throws adds (next to) nothing
+  const half = recycling.samples[Math.floor((recycling.samples.length - 1) / 2)]!
+  const last = recycling.samples.at(-1)!
+  const growth = last.heapBytes / half.heapBytes
+  check(
+    growth <= 1.25,
+    `${k(recycling.throws)} throws with recycling: heap ${(last.heapBytes / 1024).toFixed(0)} KiB at the end, ${x(growth)} that at ${k(half.thrown)} throws (peak ${k(recycling.peakLive)} live; bounded: ≤ 1.25×)`,
+  )
+}
+
+if (failed.length > 0) {
+  console.error(`\nbenchmarks that did not finish: ${failed.join(', ')}`)
+  process.exit(1)
+}

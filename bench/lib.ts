@@ -1,0 +1,70 @@
+// Shared by the benchmarks: where results go, the tinybench step timer, JSON and SVG writers.
+// Every benchmark prints its figures and writes files; none asserts a time (the machines are shared and
+// noisy: compare ratios measured side by side in one run, not absolute times across runs).
+import { mkdirSync, writeFileSync } from 'node:fs'
+import { join } from 'node:path'
+import { Bench } from 'tinybench'
+import type { TopLevelSpec } from 'vega-lite'
+import { renderSvg } from '../scripts/vegaSvg'
+
+/** Step of every benchmark scene, s. */
+export const DT = 1 / 120
+
+/** Value of `--name X` on the command line, or undefined. */
+export function argValue(name: string): string | undefined {
+  const i = process.argv.indexOf(name)
+  return i >= 0 ? process.argv[i + 1] : undefined
+}
+
+/**
+ * Where results go: `--out DIR` writes DIR/results/*.json and DIR/figures/*.svg; the default is `docs`
+ * (the committed results). `npm run bench -- --quick` passes test-artifacts/bench-quick.
+ */
+export function outDir(): string {
+  return argValue('--out') ?? 'docs'
+}
+
+export function writeResult(name: string, data: object): string {
+  const dir = join(outDir(), 'results')
+  mkdirSync(dir, { recursive: true })
+  const file = join(dir, `${name}.json`)
+  writeFileSync(file, JSON.stringify({ date: new Date().toISOString(), node: process.version, ...data }, null, 2) + '\n')
+  return file
+}
+
+export async function writeFigure(name: string, spec: TopLevelSpec): Promise<string> {
+  const dir = join(outDir(), 'figures')
+  mkdirSync(dir, { recursive: true })
+  const file = join(dir, `${name}.svg`)
+  writeFileSync(file, await renderSvg(spec))
+  return file
+}
+
+/** Lets go of garbage before a measurement when Node runs with --expose-gc (the npm scripts pass it). */
+export function collectGarbage(): void {
+  const gc = (globalThis as { gc?: () => void }).gc
+  if (gc) {
+    gc()
+    gc()
+  }
+}
+
+/**
+ * Median time of one call of `step`, ms, over `iterations` calls in a row, timed by tinybench (no time
+ * budget, no warm-up: the caller warms the code on a scene of its own, then hands over a fresh one, so
+ * that every engine or variant is measured over the same stretch of simulated time).
+ */
+export async function medianStepMs(step: () => void, iterations: number): Promise<number> {
+  const bench = new Bench({ time: 0, iterations, warmup: false })
+  bench.add('step', step)
+  await bench.run()
+  const r = bench.tasks[0]!.result as { state: string; latency?: { p50: number }; error?: unknown }
+  if (!r.latency) throw new Error(`benchmark failed: ${String(r.error ?? r.state)}`)
+  return r.latency.p50
+}
+
+export const median = (a: readonly number[]): number => {
+  const s = [...a].sort((p, q) => p - q)
+  const m = s.length >> 1
+  return s.length % 2 === 1 ? s[m]! : (s[m - 1]! + s[m]!) / 2
+}
