@@ -158,52 +158,59 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
 // ---------------------------------------------------------------------------------------------------------
 // The state of a ball at any time of its current motion, without writing to the stores
 
-let ex = 0
-let ey = 0
-let evx = 0
-let evy = 0
-/** exact acceleration (rolling) */
-let eax = 0
-let eay = 0
-/** bound on |acceleration| from now on (rim roll), else |(eax, eay)| */
-let eacc = 0
-/** 1 when (eax, eay) is the exact, piecewise constant acceleration (rolling or at rest) */
-let eExact = 1
-/** when the acceleration next changes (a rolling ball's stop), s */
-let eNext = Infinity
+/**
+ * The scratch state evalBall writes, in a Float64Array: V8 boxes every double written to a module-level
+ * `let` (a fresh heap number per write), and a typed array never allocates.
+ *   X, Y, VX, VY: state; AX, AY: exact acceleration (rolling); ACC: bound on |acceleration| from now on
+ *   (rim roll), else |(AX, AY)|; EXACT: 1 when (AX, AY) is the exact, piecewise constant acceleration;
+ *   NEXT: when the acceleration next changes (a rolling ball's stop), s
+ */
+const E = new Float64Array(10)
+const X = 0
+const Y = 1
+const VX = 2
+const VY = 3
+const AX = 4
+const AY = 5
+const ACC = 6
+const EXACT = 7
+const NEXT = 8
+/** input: the time evalBall evaluates at (passed here, not as an argument, which V8 would box) */
+const AT = 9
 
 /**
- * Evaluates ball `eid` at time t on its current motion into the module's scratch state. The formulas are
+ * Evaluates ball `eid` at time E[AT] on its current motion into the module's scratch state. The formulas are
  * those of sampleRolling and sampleRimRoll, term for term, so a contact sees the very state the stores get.
  */
-function evalBall(w: BallWorld, eid: number, t: number): void {
+function evalBall(w: BallWorld, eid: number): void {
+  const t = E[AT]!
   const B = w.Ball
   const mode = B.mode[eid]
   if (mode === BallMode.RimRoll) {
     rimRollAt(w, eid, t)
     const o = rimRollState
-    ex = o.x
-    ey = o.y
-    evx = o.vx
-    evy = o.vy
-    eax = 0
-    eay = 0
+    E[X] = o.x
+    E[Y] = o.y
+    E[VX] = o.vx
+    E[VY] = o.vy
+    E[AX] = 0
+    E[AY] = 0
     // |acceleration| = √((v²/R)² + (μv)²) ≤ v²/R + μv, and v only falls from here
-    eacc = (o.speed * o.speed) / o.radius + w.config.RIM_ROLL_FRICTION * o.speed
-    eExact = 0
-    eNext = Infinity
+    E[ACC] = (o.speed * o.speed) / o.radius + w.config.RIM_ROLL_FRICTION * o.speed
+    E[EXACT] = 0
+    E[NEXT] = Infinity
     return
   }
   if (mode === BallMode.Resting) {
-    ex = B.x[eid]!
-    ey = B.y[eid]!
-    evx = 0
-    evy = 0
-    eax = 0
-    eay = 0
-    eacc = 0
-    eExact = 1
-    eNext = Infinity
+    E[X] = B.x[eid]!
+    E[Y] = B.y[eid]!
+    E[VX] = 0
+    E[VY] = 0
+    E[AX] = 0
+    E[AY] = 0
+    E[ACC] = 0
+    E[EXACT] = 1
+    E[NEXT] = Infinity
     return
   }
   const P = w.Path
@@ -221,21 +228,21 @@ function evalBall(w: BallWorld, eid: number, t: number): void {
   const v = v0 - decel * tau
   const ux = P.ux[eid]!
   const uy = P.uy[eid]!
-  ex = P.x0[eid]! + ux * d
-  ey = P.y0[eid]! + uy * d
-  evx = ux * v
-  evy = uy * v
-  eExact = 1
+  E[X] = P.x0[eid]! + ux * d
+  E[Y] = P.y0[eid]! + uy * d
+  E[VX] = ux * v
+  E[VY] = uy * v
+  E[EXACT] = 1
   if (moving && decel > 0) {
-    eax = -decel * ux
-    eay = -decel * uy
-    eacc = decel
-    eNext = t0 + v0 / decel
+    E[AX] = -decel * ux
+    E[AY] = -decel * uy
+    E[ACC] = decel
+    E[NEXT] = t0 + v0 / decel
   } else {
-    eax = 0
-    eay = 0
-    eacc = 0
-    eNext = Infinity
+    E[AX] = 0
+    E[AY] = 0
+    E[ACC] = 0
+    E[NEXT] = Infinity
   }
 }
 
@@ -265,58 +272,61 @@ function motionEnd(w: BallWorld, eid: number, cap: number): number {
 // Contact search
 
 export const SearchResult = { None: 0, Contact: 1, Resume: 2 } as const
-/** result of the last search, and its time */
-export let searchResult = 0
-export let searchTime = 0
+/** result of the last search (a SearchResult) and its time, s; a typed array: no allocation per write */
+export const search = new Float64Array(2)
+const RESULT = 0
+const TIME = 1
 
 /**
  * First contact of balls a and b in [from, to], on their current motions: the earliest time at which their
- * gap is at most GAP_TOLERANCE while they approach. Sets searchResult/searchTime: Contact at that time, None
+ * gap is at most GAP_TOLERANCE while they approach. Sets search[RESULT]/search[TIME]: Contact at that time, None
  * if there is none before `to`, or Resume with the time reached after MAX_SEARCH_STEPS (the search continues
  * from there when that time comes up in the heap).
  */
 export function searchContact(w: BallWorld, a: number, b: number, from: number, to: number): void {
-  searchResult = SearchResult.None
+  search[RESULT] = SearchResult.None
   if (!(from <= to)) return
   const S = w.Ball.radius[a]! + w.Ball.radius[b]!
   const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
   let t = from
   for (let iter = 0; iter < MAX_SEARCH_STEPS; iter++) {
-    evalBall(w, a, t)
-    const xa = ex
-    const ya = ey
-    const vxa = evx
-    const vya = evy
-    const axa = eax
-    const aya = eay
-    const acca = eacc
-    const exa = eExact
-    const na = eNext
-    evalBall(w, b, t)
-    const dx = ex - xa
-    const dy = ey - ya
-    const dvx = evx - vxa
-    const dvy = evy - vya
+    E[AT] = t
+    evalBall(w, a)
+    const xa = E[X]
+    const ya = E[Y]
+    const vxa = E[VX]
+    const vya = E[VY]
+    const axa = E[AX]
+    const aya = E[AY]
+    const acca = E[ACC]
+    const exa = E[EXACT]
+    const na = E[NEXT]
+    E[AT] = t
+    evalBall(w, b)
+    const dx = E[X] - xa
+    const dy = E[Y] - ya
+    const dvx = E[VX] - vxa
+    const dvy = E[VY] - vya
     const dist = Math.sqrt(dx * dx + dy * dy)
     const g = dist - S
     // rate of change of the gap (negative: approaching); coincident centres count as approaching
     const vrel = Math.sqrt(dvx * dvx + dvy * dvy)
     const vn = dist > 0 ? (dx * dvx + dy * dvy) / dist : -vrel
     if (g <= GAP_TOLERANCE && vn < -(floor + APPROACH_EPSILON * (1 + vrel))) {
-      searchResult = SearchResult.Contact
-      searchTime = t
+      search[RESULT] = SearchResult.Contact
+      search[TIME] = t
       return
     }
     // bound on the relative acceleration until the next change of either ball's acceleration
     let A: number
     let pieceEnd: number
-    if (exa === 1 && eExact === 1) {
-      const rx = eax - axa
-      const ry = eay - aya
+    if (exa === 1 && E[EXACT] === 1) {
+      const rx = E[AX] - axa
+      const ry = E[AY] - aya
       A = Math.sqrt(rx * rx + ry * ry)
-      pieceEnd = na < eNext ? na : eNext
+      pieceEnd = na < E[NEXT] ? na : E[NEXT]
     } else {
-      A = acca + eacc
+      A = acca + E[ACC]
       pieceEnd = Infinity
     }
     const gg = g > 0 ? g : 0
@@ -335,8 +345,8 @@ export function searchContact(w: BallWorld, a: number, b: number, from: number, 
     if (!(next > t)) next = t + MIN_ADVANCE // h below the time resolution at t
     t = next
   }
-  searchResult = SearchResult.Resume
-  searchTime = t
+  search[RESULT] = SearchResult.Resume
+  search[TIME] = t
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -542,28 +552,32 @@ export function beginCollisionStep(w: BallWorld): void {
 }
 
 /** The capsule a ball may sweep from `from` to the end of its known motion (capped at `to`). */
-let capX1 = 0
-let capY1 = 0
-let capX2 = 0
-let capY2 = 0
-let capR = 0
+/** the capsule sweptCapsule writes: ends (X1, Y1), (X2, Y2) and radius CR */
+const cap = new Float64Array(5)
+const X1 = 0
+const Y1 = 1
+const X2 = 2
+const Y2 = 3
+const CR = 4
 function sweptCapsule(w: BallWorld, eid: number, from: number, to: number): void {
   const r = w.Ball.radius[eid]!
   if (w.Ball.mode[eid] === BallMode.RimRoll) {
     // anywhere on the rim circle of its hole
     const hole = w.RimContact.hole[w.Ball.rim[eid]!]!
-    capX1 = capX2 = w.Hole.x[hole]!
-    capY1 = capY2 = w.Hole.y[hole]!
-    capR = w.Hole.radius[hole]! + r
+    cap[X1] = cap[X2] = w.Hole.x[hole]!
+    cap[Y1] = cap[Y2] = w.Hole.y[hole]!
+    cap[CR] = w.Hole.radius[hole]! + r
     return
   }
-  evalBall(w, eid, from)
-  capX1 = ex
-  capY1 = ey
-  evalBall(w, eid, motionEnd(w, eid, to))
-  capX2 = ex
-  capY2 = ey
-  capR = r
+  E[AT] = from
+  evalBall(w, eid)
+  cap[X1] = E[X]
+  cap[Y1] = E[Y]
+  E[AT] = motionEnd(w, eid, to)
+  evalBall(w, eid)
+  cap[X2] = E[X]
+  cap[Y2] = E[Y]
+  cap[CR] = r
 }
 
 /**
@@ -582,11 +596,11 @@ export function predictBall(w: BallWorld, a: number): void {
   }
   const now = C.now
   sweptCapsule(w, a, now, tEnd)
-  const x1 = capX1
-  const y1 = capY1
-  const x2 = capX2
-  const y2 = capY2
-  const rho = capR
+  const x1 = cap[X1]
+  const y1 = cap[Y1]
+  const x2 = cap[X2]
+  const y2 = cap[Y2]
+  const rho = cap[CR]
   const startA = motionStart(w, a)
   const endA = mode === BallMode.Resting ? tEnd : motionEnd(w, a, tEnd)
   if (++C.seenStamp === 0xffffffff) {
@@ -637,10 +651,25 @@ export function predictBall(w: BallWorld, a: number): void {
       for (let b = C.restHead[C.cells[k]!]!; b !== 0; b = C.restNext[b]!) {
         if (C.seen[b] === stamp) continue
         C.seen[b] = stamp
+        // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
+        if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > (rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE) ** 2) continue
         tryPair(w, C, a, b, startA, endA, now, tEnd)
       }
     }
   }
+}
+
+/** Squared distance from (px, py) to the segment (x1, y1)–(x2, y2). */
+function segmentDistance2(px: number, py: number, x1: number, y1: number, x2: number, y2: number): number {
+  const dx = x2 - x1
+  const dy = y2 - y1
+  const len2 = dx * dx + dy * dy
+  let s = len2 > 0 ? ((px - x1) * dx + (py - y1) * dy) / len2 : 0
+  if (s < 0) s = 0
+  else if (s > 1) s = 1
+  const ex = x1 + s * dx - px
+  const ey = y1 + s * dy - py
+  return ex * ex + ey * ey
 }
 
 function tryPair(w: BallWorld, C: CollisionState, a: number, b: number, startA: number, endA: number, now: number, tEnd: number): void {
@@ -649,12 +678,12 @@ function tryPair(w: BallWorld, C: CollisionState, a: number, b: number, startA: 
   const endB = motionEnd(w, b, tEnd)
   const to = endA < endB ? endA : endB
   searchContact(w, a, b, from, to)
-  if (searchResult === SearchResult.None) return
+  if (search[RESULT] === SearchResult.None) return
   // a contact found behind the clock (balls put down overlapping) is handled now
-  const t = searchTime > now ? searchTime : now
+  const t = search[TIME] > now ? search[TIME] : now
   const lo = a < b ? a : b
   const hi = a < b ? b : a
-  heapPush(C, t, searchResult === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume, lo, hi)
+  heapPush(C, t, search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume, lo, hi)
 }
 
 /** Continues a search that ran out of steps, from where it stopped. */
@@ -664,8 +693,8 @@ export function resumeSearch(w: BallWorld, a: number, b: number, from: number): 
   const endA = motionEnd(w, a, tEnd)
   const endB = motionEnd(w, b, tEnd)
   searchContact(w, a, b, from, endA < endB ? endA : endB)
-  if (searchResult === SearchResult.None) return
-  heapPush(C, searchTime > C.now ? searchTime : C.now, searchResult === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume, a, b)
+  if (search[RESULT] === SearchResult.None) return
+  heapPush(C, search[TIME] > C.now ? search[TIME] : C.now, search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume, a, b)
 }
 
 /**
@@ -724,9 +753,10 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
 function touches(w: BallWorld, c: number, x: number, y: number, r: number, t: number): boolean {
   const mode = w.Ball.mode[c]
   if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return false
-  evalBall(w, c, t)
-  const dx = ex - x
-  const dy = ey - y
+  E[AT] = t
+  evalBall(w, c)
+  const dx = E[X] - x
+  const dy = E[Y] - y
   const S = r + w.Ball.radius[c]! + CLUSTER_TOUCH
   if (dx * dx + dy * dy > S * S) return false
   sampleForContact(w, c, t)
@@ -735,12 +765,13 @@ function touches(w: BallWorld, c: number, x: number, y: number, r: number, t: nu
 
 /** Writes ball `eid`'s state at time t (on its current motion) into Ball. */
 export function sampleForContact(w: BallWorld, eid: number, t: number): void {
-  evalBall(w, eid, t)
+  E[AT] = t
+  evalBall(w, eid)
   const B = w.Ball
-  B.x[eid] = ex
-  B.y[eid] = ey
-  B.vx[eid] = evx
-  B.vy[eid] = evy
+  B.x[eid] = E[X]
+  B.y[eid] = E[Y]
+  B.vx[eid] = E[VX]
+  B.vy[eid] = E[VY]
 }
 
 /** Marks a ball's motion as changed: its heap entries become stale. */

@@ -58,54 +58,50 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
 
 // The planner's working state, kept in module scope so that planning allocates nothing (it never runs
 // re-entrantly).
-let qX0 = 0
-let qY0 = 0
-let qUx = 0
-let qUy = 0
-let qS = 0
+// Doubles live in an object's fields, updated in place: a module-level `let` holding a double gets a fresh
+// heap number at every write (V8), which made every plan allocate.
+const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5 }
 let qSHole = 0
 let qFrom = 0
 let qLocked = 0
-let qFoot = 0
 let qXyr: Float64Array = new Float64Array(0)
 let qIds: Uint32Array = new Uint32Array(0)
-let best = 0
 let bestHole = 0
 let bestKind = 0
 
 /** Tests hole `i` of the table against the path; keeps the earliest event. Returns the best distance. */
 function considerHole(i: number): number {
   const hid = qIds[i]!
-  const hx = qXyr[3 * i]! - qX0
-  const hy = qXyr[3 * i + 1]! - qY0
+  const hx = qXyr[3 * i]! - Q.x0
+  const hy = qXyr[3 * i + 1]! - Q.y0
   const R = qXyr[3 * i + 2]!
-  const p = hx * qUx + hy * qUy
+  const p = hx * Q.ux + hy * Q.uy
   // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
-  if (p - R > best || hid === qLocked) return best
-  const c = hx * qUy - hy * qUx
+  if (p - R > Q.best || hid === qLocked) return Q.best
+  const c = hx * Q.uy - hy * Q.ux
   const c2 = c * c
   if (c2 < R * R) {
     // lip crossing, if the centre is still approaching the hole centre
-    if (!(p > qS)) return best
+    if (!(p > Q.s)) return Q.best
     let d = p - Math.sqrt(R * R - c2)
-    if (d < qS) d = qS // a rounding error behind (or found inside): decided now, never lost
-    if (d < best || (d === best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
-      best = d
+    if (d < Q.s) d = Q.s // a rounding error behind (or found inside): decided now, never lost
+    if (d < Q.best || (d === Q.best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
+      Q.best = d
       bestHole = hid
       bestKind = PathEvent.Lip
     }
   } else {
-    const f = R + qFoot
-    if (c2 >= f * f) return best
+    const f = R + Q.foot
+    if (c2 >= f * f) return Q.best
     // near miss at the closest approach, if not already handled and not the hole the path leaves
-    if (!(p > qS || (p === qS && hid > qSHole)) || hid === qFrom) return best
-    if (p < best || (p === best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
-      best = p
+    if (!(p > Q.s || (p === Q.s && hid > qSHole)) || hid === qFrom) return Q.best
+    if (p < Q.best || (p === Q.best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
+      Q.best = p
       bestHole = hid
       bestKind = PathEvent.Near
     }
   }
-  return best
+  return Q.best
 }
 
 /**
@@ -115,25 +111,25 @@ function considerHole(i: number): number {
 function considerWalls(w: BallWorld, e: number): void {
   const W = w.Walls
   const open = W.open[e]!
-  const r = qFoot
+  const r = Q.foot
   // x faces: (coordinate, direction that reaches it, edge bit); then y faces
   for (let axis = 0; axis < 2; axis++) {
-    const u = axis === 0 ? qUx : qUy
+    const u = axis === 0 ? Q.ux : Q.uy
     if (u === 0) continue
-    const o = axis === 0 ? qX0 : qY0
+    const o = axis === 0 ? Q.x0 : Q.y0
     const toMax = u > 0
     const edge = axis === 0 ? (toMax ? WallEdge.Right : WallEdge.Left) : toMax ? WallEdge.Bottom : WallEdge.Top
     const face = axis === 0 ? (toMax ? W.maxX[e]! : W.minX[e]!) : toMax ? W.maxY[e]! : W.minY[e]!
     const isOpen = (open & edge) !== 0
     const target = isOpen ? face : toMax ? face - r : face + r
     let d = (target - o) / u
-    if (d < qS) {
+    if (d < Q.s) {
       if (isOpen) continue // already past an open edge: it has left
-      d = qS
+      d = Q.s
     }
     // walls come before holes at the same distance (they are met first by the footprint)
-    if (d < best || (d === best && bestKind !== PathEvent.Stop)) {
-      best = d
+    if (d < Q.best || (d === Q.best && bestKind !== PathEvent.Stop)) {
+      Q.best = d
       bestHole = edge // for wall events the "hole" slot carries the WallEdge bit
       bestKind = isOpen ? PathEvent.Gutter : PathEvent.Wall
     }
@@ -151,42 +147,42 @@ export function planRolling(w: BallWorld, eid: number): void {
   const RC = w.RimContact
   const v0 = P.v0[eid]!
   const decel = w.config.ROLLING_DECEL
-  qX0 = P.x0[eid]!
-  qY0 = P.y0[eid]!
-  qUx = P.ux[eid]!
-  qUy = P.uy[eid]!
-  qS = P.s[eid]!
+  Q.x0 = P.x0[eid]!
+  Q.y0 = P.y0[eid]!
+  Q.ux = P.ux[eid]!
+  Q.uy = P.uy[eid]!
+  Q.s = P.s[eid]!
   qSHole = P.sHole[eid]!
   qFrom = P.fromHole[eid]!
-  qFoot = w.Ball.radius[eid]!
+  Q.foot = w.Ball.radius[eid]!
   const slot = w.Ball.rim[eid]!
   qLocked = RC.hole[slot]!
 
-  best = stopDistance(v0, decel)
+  Q.best = stopDistance(v0, decel)
   bestHole = 0
-  bestKind = best === Infinity ? PathEvent.None : PathEvent.Stop
+  bestKind = Q.best === Infinity ? PathEvent.None : PathEvent.Stop
 
   if (v0 > 0) {
     const locked = qLocked
     if (locked !== 0) {
-      const hx = w.Hole.x[locked]! - qX0
-      const hy = w.Hole.y[locked]! - qY0
+      const hx = w.Hole.x[locked]! - Q.x0
+      const hy = w.Hole.y[locked]! - Q.y0
       const R = w.Hole.radius[locked]!
-      const p = hx * qUx + hy * qUy
-      const c = hx * qUy - hy * qUx
+      const p = hx * Q.ux + hy * Q.uy
+      const c = hx * Q.uy - hy * Q.ux
       const c2 = c * c
       let d: number
       let k: number = PathEvent.Exit
-      const rc = cogRadius(R, qFoot)
+      const rc = cogRadius(R, Q.foot)
       if (RC.mode[slot] === RimMode.Entering && c2 < rc * rc) {
         d = p - Math.sqrt(rc * rc - c2)
         k = PathEvent.Contact
       } else {
-        d = c2 < R * R ? p + Math.sqrt(R * R - c2) : qS
+        d = c2 < R * R ? p + Math.sqrt(R * R - c2) : Q.s
       }
-      if (d < qS) d = qS
-      if (d < best) {
-        best = d
+      if (d < Q.s) d = Q.s
+      if (d < Q.best) {
+        Q.best = d
         bestHole = locked
         bestKind = k
       }
@@ -201,8 +197,8 @@ export function planRolling(w: BallWorld, eid: number): void {
     if (table.count < w.gridFrom) {
       for (let i = 0, n = table.count; i < n; i++) considerHole(i)
     } else {
-      if (grid.dirty || qFoot > grid.ballRadius) buildHoleGrid(grid, table, Math.max(qFoot, grid.ballRadius, w.config.BALL_RADIUS))
-      walkHoleGrid(grid, qX0, qY0, qUx, qUy, qS, best, considerHole)
+      if (grid.dirty || Q.foot > grid.ballRadius) buildHoleGrid(grid, table, Math.max(Q.foot, grid.ballRadius, w.config.BALL_RADIUS))
+      walkHoleGrid(grid, Q.x0, Q.y0, Q.ux, Q.uy, Q.s, Q.best, considerHole)
     }
   }
 
@@ -212,8 +208,8 @@ export function planRolling(w: BallWorld, eid: number): void {
     P.nextS[eid] = 0
     P.nextT[eid] = NEVER
   } else {
-    P.nextS[eid] = best
-    const tau = bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(best, v0, decel)
+    P.nextS[eid] = Q.best
+    const tau = bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel)
     P.nextT[eid] = P.t0[eid]! + tau
   }
 }
