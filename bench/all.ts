@@ -10,6 +10,7 @@
 import { spawnSync } from 'node:child_process'
 import { readFileSync } from 'node:fs'
 import { join } from 'node:path'
+import type { PeerRow, ScaleRow } from './charts'
 import { argValue } from './lib'
 
 const quick = process.argv.includes('--quick')
@@ -39,25 +40,6 @@ const read = <T>(name: string): T | undefined => {
   } catch {
     return undefined
   }
-}
-interface ScaleRow {
-  balls: number
-  holes: number
-  ours: number
-  plain: number
-  ratio: number
-  heapBytesPerBall: number
-}
-interface PeerRow {
-  balls: number
-  contacts: string
-  ours: number
-  matter: number
-  planck: number
-  rapier: number
-  'matter/ours': number
-  'planck/ours': number
-  'rapier/ours': number
 }
 interface RestingRow {
   contacts: string

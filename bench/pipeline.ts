@@ -5,7 +5,7 @@
 //
 //   npm run bench:pipeline   (N = 100,000)       npm run bench:pipeline -- 20000   (another N)
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
-import { DT, collectGarbage, median, medianStepMs, writeResult } from './lib'
+import { DT, collectGarbage, median, medianStepMs, plainStep, writeResult } from './lib'
 
 const N = Number(process.argv.slice(2).find((a) => /^\d+$/.test(a)) ?? 100_000)
 const WARMUP = 30
@@ -64,23 +64,9 @@ function panelSim(n: number): BallPhysics {
 
 /** The limit: one step of the same balls with the same rolling deceleration, nothing else. */
 function plainLoop(b: Ball0, n: number, decel: number): () => void {
-  return () => plainStep(b, n, decel)
+  return () => plainStep(b.x, b.y, b.vx, b.vy, n, decel)
 }
 
-// one function for every run (a loop in a fresh closure per run can start cold, in V8's interpreter)
-function plainStep(b: Ball0, n: number, decel: number): void {
-  const { x, y, vx, vy } = b
-  for (let i = 0; i < n; i++) {
-    const u = vx[i]!
-    const v = vy[i]!
-    const sp = Math.sqrt(u * u + v * v)
-    const k = sp > decel * DT ? (sp - decel * DT) / sp : 0
-    x[i] = x[i]! + u * DT
-    y[i] = y[i]! + v * DT
-    vx[i] = u * k
-    vy[i] = v * k
-  }
-}
 
 function simStep(sim: BallPhysics): () => void {
   return () => {

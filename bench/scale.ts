@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process'
 import { fileURLToPath } from 'node:url'
 import { createBallPhysics, type BallPhysics } from '../src/index'
 import { scaleFigure, type ScaleRow } from './charts'
-import { DT, argValue, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
+import { DT, argValue, collectGarbage, median, medianStepMs, plainStep, writeFigure, writeResult } from './lib'
 
 const STEPS = 60
 const ROUNDS = 3
@@ -53,23 +53,9 @@ function plain(n: number) {
     vx[i] = v * Math.cos(a)
     vy[i] = v * Math.sin(a)
   }
-  return () => plainStep(x, y, vx, vy, n)
+  return () => plainStep(x, y, vx, vy, n, DECEL)
 }
 
-// one function for every row (a loop in a fresh closure per row started cold, in V8's interpreter, in some
-// rounds: 100+ ns per ball-step)
-function plainStep(x: Float64Array, y: Float64Array, vx: Float64Array, vy: Float64Array, n: number): void {
-  for (let i = 0; i < n; i++) {
-    const u = vx[i]!
-    const w = vy[i]!
-    const sp = Math.sqrt(u * u + w * w)
-    const k = sp > DECEL * DT ? (sp - DECEL * DT) / sp : 0
-    x[i] = x[i]! + u * DT
-    y[i] = y[i]! + w * DT
-    vx[i] = u * k
-    vy[i] = w * k
-  }
-}
 
 /**
  * Times STEPS steps of a fresh scene: ns per ball-step of the median step. Just before, `warm` runs the
