@@ -319,6 +319,29 @@ export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
   w.Path.speed[eid] = o.speed
 }
 
+/**
+ * Puts a ball on the rim of `hole` at time t (Stage 3's start), from its state in Ball: angle, tangential
+ * speed |v_t| along the counter-clockwise tangent (−n_y, n_x), direction and start time into its RimContact
+ * slot, mode RimRoll. Returns the angle. Shared by the exact and the naive rim-roll systems.
+ */
+export function startRimRoll(w: BallWorld, eid: number, hole: number, t: number): number {
+  const B = w.Ball
+  const RC = w.RimContact
+  const rim = B.rim[eid]!
+  const nx = B.x[eid]! - w.Hole.x[hole]!
+  const ny = B.y[eid]! - w.Hole.y[hole]!
+  const len = Math.hypot(nx, ny)
+  const vt = len > 0 ? (-B.vx[eid]! * ny + B.vy[eid]! * nx) / len : 0
+  const phi = Math.atan2(ny, nx)
+  RC.mode[rim] = RimMode.Rolling
+  RC.angle0[rim] = phi
+  RC.speed0[rim] = Math.abs(vt)
+  RC.direction[rim] = vt >= 0 ? 1 : -1
+  RC.time0[rim] = t
+  B.mode[eid] = BallMode.RimRoll
+  return phi
+}
+
 /** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
 export function emitHoleEvent(
   w: BallWorld,

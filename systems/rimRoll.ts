@@ -19,13 +19,13 @@ import {
   rollPopsOff,
   sampleRimRoll,
   startPath,
+  startRimRoll,
 } from '../src/motion'
 import type { BallWorld } from '../src/world'
 
 export function rimRollSystem(w: BallWorld): void {
   const P = w.Path
   const RC = w.RimContact
-  const H = w.Hole
   const B = w.Ball
   const list = w.marked
   for (let i = 0; i < list.count; i++) {
@@ -36,19 +36,7 @@ export function rimRollSystem(w: BallWorld): void {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
       const t = P.nextT[eid]!
-      const nx = B.x[eid]! - H.x[hole]!
-      const ny = B.y[eid]! - H.y[hole]!
-      const vx = B.vx[eid]!
-      const vy = B.vy[eid]!
-      const len = Math.hypot(nx, ny)
-      // tangential speed along the counter-clockwise tangent (−n_y, n_x)
-      const vt = len > 0 ? (-vx * ny + vy * nx) / len : 0
-      RC.mode[rim] = RimMode.Rolling
-      RC.angle0[rim] = Math.atan2(ny, nx)
-      RC.speed0[rim] = Math.abs(vt)
-      RC.direction[rim] = vt >= 0 ? 1 : -1
-      RC.time0[rim] = t
-      B.mode[eid] = BallMode.RimRoll
+      startRimRoll(w, eid, hole, t)
       sampleRimRoll(w, eid, t)
       planRimRoll(w, eid)
       emitHoleEvent(w, EventType.RimRoll, eid, hole, t)

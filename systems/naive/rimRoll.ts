@@ -8,7 +8,7 @@ import { BallMode } from '../../components/Ball'
 import { PathEvent } from '../../components/Path'
 import { RimMode } from '../../components/RimContact'
 import { CaptureVia, EventType } from '../../src/events'
-import { captureBall, emitHoleEvent } from '../../src/motion'
+import { captureBall, emitHoleEvent, startRimRoll } from '../../src/motion'
 import type { BallWorld } from '../../src/world'
 import { naiveState } from './state'
 
@@ -27,28 +27,19 @@ export function naiveRimRollSystem(w: BallWorld): void {
     if (mark === PathEvent.Roll) {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
-      const nx = B.x[eid]! - H.x[hole]!
-      const ny = B.y[eid]! - H.y[hole]!
-      const len = Math.hypot(nx, ny)
-      const vt = (-B.vx[eid]! * ny + B.vy[eid]! * nx) / len
-      const dir = vt >= 0 ? 1 : -1
-      const phi = Math.atan2(ny, nx)
+      const phi = startRimRoll(w, eid, hole, st.t)
       const R = H.radius[hole]!
-      RC.mode[rim] = RimMode.Rolling
       RC.angle[rim] = phi
-      RC.angle0[rim] = phi
       RC.arc[rim] = 0
-      RC.speed0[rim] = Math.abs(vt)
-      RC.direction[rim] = dir
-      RC.time0[rim] = st.t
-      S.rollSpeed[eid] = Math.abs(vt)
-      B.mode[eid] = BallMode.RimRoll
+      const v = RC.speed0[rim]!
+      const dir = RC.direction[rim]!
+      S.rollSpeed[eid] = v
       const c = Math.cos(phi)
       const s = Math.sin(phi)
       B.x[eid] = H.x[hole]! + R * c
       B.y[eid] = H.y[hole]! + R * s
-      B.vx[eid] = -dir * s * Math.abs(vt)
-      B.vy[eid] = dir * c * Math.abs(vt)
+      B.vx[eid] = -dir * s * v
+      B.vy[eid] = dir * c * v
       emitHoleEvent(w, EventType.RimRoll, eid, hole, st.t)
     } else if (mark === PathEvent.RollEnd) {
       P.mark[eid] = PathEvent.None
