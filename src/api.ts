@@ -7,7 +7,6 @@ import { WallEdge } from '../components/Walls'
 import type { BallPhysicsConfig, ConfigOverrides } from './config'
 import { CaptureVia, drainEventBuffer, type BallEvent } from './events'
 import { captureBall, launchBall, planRolling, sampleRimRoll, sampleRolling, startPath } from './motion'
-import { bumpVersion } from './collide'
 import { createSchedule, runSchedule, type ScheduleEntry } from './schedule'
 import { clearSlot, fitStore } from './store'
 import {
@@ -223,7 +222,6 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     if (w.collide !== null) {
       w.collide.mass[eid] = mass
       if (radius > w.collide.maxRadius) w.collide.maxRadius = radius
-      bumpVersion(w, eid)
     }
     // rule for a ball added inside a lip circle: it is in transit through that hole (no decision is made
     // for it); if it stops before leaving, it falls in

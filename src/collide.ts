@@ -602,7 +602,7 @@ export function predictBall(w: BallWorld, a: number): void {
   const y2 = cap[Y2]
   const rho = cap[CR]
   const startA = motionStart(w, a)
-  const endA = mode === BallMode.Resting ? tEnd : motionEnd(w, a, tEnd)
+  const endA = motionEnd(w, a, tEnd)
   if (++C.seenStamp === 0xffffffff) {
     C.seen.fill(0)
     C.seenStamp = 1
@@ -623,7 +623,7 @@ export function predictBall(w: BallWorld, a: number): void {
       const mb = w.Ball.mode[b]
       if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
       C.seen[b] = stamp
-      tryPair(w, C, a, b, startA, endA, now, tEnd)
+      tryPair(w, a, b, startA, endA, tEnd)
     }
   }
   // enter a's capsule, in the same cells (resting balls are found through the resting grid)
@@ -653,7 +653,7 @@ export function predictBall(w: BallWorld, a: number): void {
         C.seen[b] = stamp
         // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
         if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > (rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE) ** 2) continue
-        tryPair(w, C, a, b, startA, endA, now, tEnd)
+        tryPair(w, a, b, startA, endA, tEnd)
       }
     }
   }
@@ -672,29 +672,28 @@ function segmentDistance2(px: number, py: number, x1: number, y1: number, x2: nu
   return ex * ex + ey * ey
 }
 
-function tryPair(w: BallWorld, C: CollisionState, a: number, b: number, startA: number, endA: number, now: number, tEnd: number): void {
+function tryPair(w: BallWorld, a: number, b: number, startA: number, endA: number, tEnd: number): void {
   const startB = motionStart(w, b)
-  const from = startA > startB ? startA : startB
   const endB = motionEnd(w, b, tEnd)
-  const to = endA < endB ? endA : endB
-  searchContact(w, a, b, from, to)
-  if (search[RESULT] === SearchResult.None) return
-  // a contact found behind the clock (balls put down overlapping) is handled now
-  const t = search[TIME] > now ? search[TIME] : now
-  const lo = a < b ? a : b
-  const hi = a < b ? b : a
-  heapPush(C, t, search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume, lo, hi)
+  searchAndPush(w, a, b, startA > startB ? startA : startB, endA < endB ? endA : endB)
 }
 
 /** Continues a search that ran out of steps, from where it stopped. */
 export function resumeSearch(w: BallWorld, a: number, b: number, from: number): void {
-  const C = w.collide!
-  const tEnd = w.tickEnd
-  const endA = motionEnd(w, a, tEnd)
-  const endB = motionEnd(w, b, tEnd)
-  searchContact(w, a, b, from, endA < endB ? endA : endB)
+  const endA = motionEnd(w, a, w.tickEnd)
+  const endB = motionEnd(w, b, w.tickEnd)
+  searchAndPush(w, a, b, from, endA < endB ? endA : endB)
+}
+
+/** Searches a and b over [from, to] and pushes what it finds: their contact, or where to resume. */
+function searchAndPush(w: BallWorld, a: number, b: number, from: number, to: number): void {
+  searchContact(w, a, b, from, to)
   if (search[RESULT] === SearchResult.None) return
-  heapPush(C, search[TIME] > C.now ? search[TIME] : C.now, search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume, a, b)
+  const C = w.collide!
+  // a contact found behind the clock (balls put down overlapping) is handled now
+  const t = search[TIME] > C.now ? search[TIME] : C.now
+  const kind = search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume
+  heapPush(C, t, kind, a < b ? a : b, a < b ? b : a)
 }
 
 /**
@@ -790,9 +789,8 @@ export const contactOut = { vax: 0, vay: 0, vbx: 0, vby: 0, impulse: 0, approach
  * Velocities after a contact of balls a and b (masses ma, mb, centres a→b along (nx, ny), unit), with
  * restitution e: the normal impulse j = (1 + e)·w / (1/ma + 1/mb), w the approach speed, changes a by −j·n/ma
  * and b by +j·n/mb; tangential velocities are kept (smooth balls). Momentum is conserved exactly in exact
- * arithmetic and kinetic energy falls by (1 − e²)·w²/(2(1/ma + 1/mb)) ≥ 0. With `stick`, both leave with
- * their centre-of-mass velocity (perfectly inelastic, the least energy that momentum allows): see
- * isRepeatContact.
+ * arithmetic and kinetic energy falls by (1 − e²)·w²/(2(1/ma + 1/mb)) ≥ 0. (A settling contact instead
+ * gives the touching cluster its centre-of-mass velocity: systems/collisions.ts.)
  */
 export function resolveContact(
   ma: number,
@@ -804,22 +802,12 @@ export function resolveContact(
   nx: number,
   ny: number,
   e: number,
-  stick: boolean,
 ): void {
   const o = contactOut
   const rx = vbx - vax
   const ry = vby - vay
   const approach = -(rx * nx + ry * ny)
   o.approach = approach
-  if (stick) {
-    const m = ma + mb
-    const cx = (ma * vax + mb * vbx) / m
-    const cy = (ma * vay + mb * vby) / m
-    o.vax = o.vbx = cx
-    o.vay = o.vby = cy
-    o.impulse = ma * Math.hypot(cx - vax, cy - vay)
-    return
-  }
   if (!(approach > 0)) {
     o.vax = vax
     o.vay = vay

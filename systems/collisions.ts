@@ -12,7 +12,6 @@
 //   struck while skipping over or entering a hole: likewise in transit (the lip decision no longer applies)
 //   struck at rest: it wakes and rolls
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
-import { BallMode } from '../components/Ball'
 import { PathEvent } from '../components/Path'
 import { WallEdge } from '../components/Walls'
 import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/collide'
@@ -63,7 +62,7 @@ export function collisionsSystem(w: BallWorld): void {
     }
     const rapid = t - C.lastContact[a]! < CONTACT_DURATION || t - C.lastContact[b]! < CONTACT_DURATION
     const e = rapid ? 1 : w.config.BALL_RESTITUTION
-    resolveContact(C.mass[a]!, C.mass[b]!, B.vx[a]!, B.vy[a]!, B.vx[b]!, B.vy[b]!, nx, ny, e, false)
+    resolveContact(C.mass[a]!, C.mass[b]!, B.vx[a]!, B.vy[a]!, B.vx[b]!, B.vy[b]!, nx, ny, e)
     const o = contactOut
     C.lastContact[a] = t
     C.lastContact[b] = t
@@ -125,6 +124,6 @@ const WALL_TOUCH = 1e-6
 
 function restart(w: BallWorld, eid: number, vx: number, vy: number, t: number): void {
   const B = w.Ball
-  if (B.mode[eid] !== BallMode.Resting) strikeLeavesRim(w, eid)
+  strikeLeavesRim(w, eid)
   launchBall(w, eid, B.x[eid]!, B.y[eid]!, vx, vy, t)
 }
