@@ -1,8 +1,8 @@
 // Public entry point of the ball-physics module.
-export { createBallPhysics, MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api'
-export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api'
-export { CAPTURE_WINDOW_SHAPES, COLLISION_MODES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config'
-export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config'
+export { createBallPhysics, MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api.js'
+export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api.js'
+export { CAPTURE_WINDOW_SHAPES, COLLISION_MODES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config.js'
+export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config.js'
 export {
   APPROACH_EPSILON,
   CONTACT_DURATION,
@@ -13,8 +13,8 @@ export {
   resolveContact,
   restingInsert,
   restingRemove,
-} from './collide'
-export type { CollisionState } from './collide'
+} from './collide.js'
+export type { CollisionState } from './collide.js'
 export {
   acquireRim,
   addBallEntity,
@@ -25,17 +25,17 @@ export {
   releaseRim,
   removeBallEntity,
   rimSlot,
-} from './world'
-export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex } from './world'
-export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule'
-export type { ScheduleEntry, System } from './schedule'
-export { createFixedStepClock } from './clock'
-export type { FixedStepClock, FixedStepClockOptions } from './clock'
-export { EVENT_TYPE_NAMES } from './events'
-export type { BallEvent, BallEventType, CaptureViaName } from './events'
-export { DEFAULT_PANEL, addPanel } from './panel'
-export { PHYSICAL_CONFIG } from './physical/preset'
-export type { PanelHole, PanelLayout } from './panel'
+} from './world.js'
+export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex } from './world.js'
+export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule.js'
+export type { ScheduleEntry, System } from './schedule.js'
+export { createFixedStepClock } from './clock.js'
+export type { FixedStepClock, FixedStepClockOptions } from './clock.js'
+export { EVENT_TYPE_NAMES } from './events.js'
+export type { BallEvent, BallEventType, CaptureViaName } from './events.js'
+export { DEFAULT_PANEL, addPanel } from './panel.js'
+export { PHYSICAL_CONFIG } from './physical/preset.js'
+export type { PanelHole, PanelLayout } from './panel.js'
 export {
   captureSpeed,
   captureWindow,
@@ -54,24 +54,24 @@ export {
   stopTime,
   timeToDistance,
   vSkip,
-} from './geometry'
-export { LIP_EPSILON } from './motion'
-export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball'
-export type { BallModeName, BallStore } from '../components/Ball'
-export { HoleSchema } from '../components/Hole'
-export type { HoleStore } from '../components/Hole'
-export { RIM_MODE_NAMES, RimContactSchema, RimMode } from '../components/RimContact'
-export type { RimContactStore } from '../components/RimContact'
-export { PathEvent, PathSchema } from '../components/Path'
-export type { PathStore } from '../components/Path'
-export { integrationSystem } from '../systems/integration'
-export { skipOverSystem } from '../systems/skipOver'
-export { captureSystem } from '../systems/capture'
-export { cogGateSystem } from '../systems/cogGate'
-export { bounceSystem } from '../systems/bounce'
-export { rimRollSystem } from '../systems/rimRoll'
-export { heroReferenceSystem, HERO_ROLL_TURN } from '../systems/heroReference'
-export { wallsSystem } from '../systems/walls'
-export { collisionsSystem } from '../systems/collisions'
-export { WallEdge, WallsSchema } from '../components/Walls'
-export type { WallsStore } from '../components/Walls'
+} from './geometry.js'
+export { LIP_EPSILON } from './motion.js'
+export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'
+export type { BallModeName, BallStore } from '../components/Ball.js'
+export { HoleSchema } from '../components/Hole.js'
+export type { HoleStore } from '../components/Hole.js'
+export { RIM_MODE_NAMES, RimContactSchema, RimMode } from '../components/RimContact.js'
+export type { RimContactStore } from '../components/RimContact.js'
+export { PathEvent, PathSchema } from '../components/Path.js'
+export type { PathStore } from '../components/Path.js'
+export { integrationSystem } from '../systems/integration.js'
+export { skipOverSystem } from '../systems/skipOver.js'
+export { captureSystem } from '../systems/capture.js'
+export { cogGateSystem } from '../systems/cogGate.js'
+export { bounceSystem } from '../systems/bounce.js'
+export { rimRollSystem } from '../systems/rimRoll.js'
+export { heroReferenceSystem, HERO_ROLL_TURN } from '../systems/heroReference.js'
+export { wallsSystem } from '../systems/walls.js'
+export { collisionsSystem } from '../systems/collisions.js'
+export { WallEdge, WallsSchema } from '../components/Walls.js'
+export type { WallsStore } from '../components/Walls.js'

@@ -3,18 +3,18 @@
 // before the step's end or MAX_EVENT_PASSES is reached (a ball still behind then finishes next step, on the
 // same exact path). A game may read the list, reorder with care, or add its own systems; each added system
 // runs in every pass and can tell passes apart by `world.pass`.
-import { bounceSystem } from '../systems/bounce'
-import { captureSystem } from '../systems/capture'
-import { collisionsSystem } from '../systems/collisions'
-import { cogGateSystem } from '../systems/cogGate'
-import { heroReferenceSystem } from '../systems/heroReference'
-import { integrationSystem } from '../systems/integration'
-import { rimRollSystem } from '../systems/rimRoll'
-import { skipOverSystem } from '../systems/skipOver'
-import { wallsSystem } from '../systems/walls'
-import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/naive/schedule'
-import type { BallPhysicsConfig } from './config'
-import type { BallWorld } from './world'
+import { bounceSystem } from '../systems/bounce.js'
+import { captureSystem } from '../systems/capture.js'
+import { collisionsSystem } from '../systems/collisions.js'
+import { cogGateSystem } from '../systems/cogGate.js'
+import { heroReferenceSystem } from '../systems/heroReference.js'
+import { integrationSystem } from '../systems/integration.js'
+import { rimRollSystem } from '../systems/rimRoll.js'
+import { skipOverSystem } from '../systems/skipOver.js'
+import { wallsSystem } from '../systems/walls.js'
+import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/naive/schedule.js'
+import type { BallPhysicsConfig } from './config.js'
+import type { BallWorld } from './world.js'
 
 export type System = (world: BallWorld) => void
 

@@ -3,12 +3,12 @@
 // With e = 0.30 a head-on hit loses 1 − e² = 91 % of its normal kinetic energy (Stage 4). The ball leaves
 // on a new straight path; the hole stays locked until its centre is back outside the lip circle.
 // Reads Path.mark, Ball, Hole; writes Ball, Path, RimContact.mode; emits 'bounce' and 'nearMiss'.
-import { PathEvent } from '../components/Path'
-import { RimMode } from '../components/RimContact'
-import { EventType } from '../src/events'
-import { emitHoleEvent, planRolling, startPath } from '../src/motion'
-import { rimBounce } from '../src/geometry'
-import type { BallWorld } from '../src/world'
+import { PathEvent } from '../components/Path.js'
+import { RimMode } from '../components/RimContact.js'
+import { EventType } from '../src/events.js'
+import { emitHoleEvent, planRolling, startPath } from '../src/motion.js'
+import { rimBounce } from '../src/geometry.js'
+import type { BallWorld } from '../src/world.js'
 
 /** the bounced velocity, reused for every ball */
 const out = new Float64Array(2)

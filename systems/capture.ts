@@ -5,11 +5,11 @@
 // (via 'rest'); one that stops elsewhere rests on the panel, whatever its footprint covers (the v1
 // "covering capture" failure is fixed by testing the centre, not the footprint).
 // Reads Path.mark, RimContact (δ, v), Hole; writes Ball, RimContact, Path.mark; emits 'capture', 'rest'.
-import { PathEvent } from '../components/Path'
-import { CaptureVia } from '../src/events'
-import { capturesClean } from '../src/geometry'
-import { captureBall, restBall } from '../src/motion'
-import type { BallWorld } from '../src/world'
+import { PathEvent } from '../components/Path.js'
+import { CaptureVia } from '../src/events.js'
+import { capturesClean } from '../src/geometry.js'
+import { captureBall, restBall } from '../src/motion.js'
+import type { BallWorld } from '../src/world.js'
 
 export function captureSystem(w: BallWorld): void {
   const P = w.Path

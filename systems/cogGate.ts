@@ -7,11 +7,11 @@
 // substantially over the hole, so both the gate and the roll test can hold), and the velocity split at
 // that point decides: roll on the rim, or bounce.
 // Reads Path, RimContact, Hole, Ball; writes RimContact.mode, Path.mark (Bounce or Roll for the next systems).
-import { PathEvent } from '../components/Path'
-import { RimMode } from '../components/RimContact'
-import { cogRadius } from '../src/geometry'
-import { planRolling } from '../src/motion'
-import type { BallWorld } from '../src/world'
+import { PathEvent } from '../components/Path.js'
+import { RimMode } from '../components/RimContact.js'
+import { cogRadius } from '../src/geometry.js'
+import { planRolling } from '../src/motion.js'
+import type { BallWorld } from '../src/world.js'
 
 export function cogGateSystem(w: BallWorld): void {
   const P = w.Path

@@ -12,12 +12,12 @@
 //   struck while skipping over or entering a hole: likewise in transit (the lip decision no longer applies)
 //   struck at rest: it wakes and rolls
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
-import { PathEvent } from '../components/Path'
-import { WallEdge } from '../components/Walls'
-import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/collide'
-import { EventType, pushEvent } from '../src/events'
-import { launchBall } from '../src/motion'
-import { pushId, type BallWorld } from '../src/world'
+import { PathEvent } from '../components/Path.js'
+import { WallEdge } from '../components/Walls.js'
+import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/collide.js'
+import { EventType, pushEvent } from '../src/events.js'
+import { launchBall } from '../src/motion.js'
+import { pushId, type BallWorld } from '../src/world.js'
 
 export function collisionsSystem(w: BallWorld): void {
   const C = w.collide

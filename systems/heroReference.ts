@@ -13,12 +13,12 @@
 // except the skip. Costs one reference run (~20 µs on average) per hero lip crossing; allocates only the
 // reference's result object, once per crossing, never per tick.
 // Reads Path, Ball, Hole, config; writes Ball, Path, RimContact (takes the ball's slot); emits the events above.
-import { PathEvent } from '../components/Path'
-import { RimMode } from '../components/RimContact'
-import { CaptureVia, EventType } from '../src/events'
-import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion'
-import { referenceOutcome, type ReferenceInput } from '../src/reference/index'
-import { lockAtLip, type BallWorld } from '../src/world'
+import { PathEvent } from '../components/Path.js'
+import { RimMode } from '../components/RimContact.js'
+import { CaptureVia, EventType } from '../src/events.js'
+import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion.js'
+import { referenceOutcome, type ReferenceInput } from '../src/reference/index.js'
+import { lockAtLip, type BallWorld } from '../src/world.js'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = (20 * Math.PI) / 180

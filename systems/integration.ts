@@ -9,10 +9,10 @@
 // and the closest approach of a near miss (reported).
 //   rolling: s(τ) = v0·τ − a·τ²/2, v(τ) = v0 − a·τ        rim roll: see sampleRimRoll
 // Reads Path, RimContact, Hole; writes Ball (x, y, vx, vy), Path (speed, s, mark), RimContact (angle, arc).
-import { BallMode } from '../components/Ball'
-import { PathEvent } from '../components/Path'
-import { EventType, pushEvent } from '../src/events'
-import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion'
+import { BallMode } from '../components/Ball.js'
+import { PathEvent } from '../components/Path.js'
+import { EventType, pushEvent } from '../src/events.js'
+import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion.js'
 import {
   HeapKind,
   beginCollisionStep,
@@ -22,8 +22,8 @@ import {
   predictBall,
   resumeSearch,
   sampleForContact,
-} from '../src/collide'
-import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world'
+} from '../src/collide.js'
+import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world.js'
 
 export function integrationSystem(w: BallWorld): void {
   if (w.collide !== null) {

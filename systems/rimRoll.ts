@@ -7,10 +7,10 @@
 // A drop is a capture (via 'rimRoll'); a pop-off leaves along the tangent with the hole locked until the
 // centre is outside the lip circle.
 // Reads Path.mark, Ball, Hole, RimContact; writes Ball, RimContact, Path; emits 'rimRoll', 'capture', 'lipOut', 'nearMiss'.
-import { BallMode } from '../components/Ball'
-import { PathEvent } from '../components/Path'
-import { RimMode } from '../components/RimContact'
-import { CaptureVia, EventType } from '../src/events'
+import { BallMode } from '../components/Ball.js'
+import { PathEvent } from '../components/Path.js'
+import { RimMode } from '../components/RimContact.js'
+import { CaptureVia, EventType } from '../src/events.js'
 import {
   captureBall,
   emitHoleEvent,
@@ -20,8 +20,8 @@ import {
   sampleRimRoll,
   startPath,
   startRimRoll,
-} from '../src/motion'
-import type { BallWorld } from '../src/world'
+} from '../src/motion.js'
+import type { BallWorld } from '../src/world.js'
 
 export function rimRollSystem(w: BallWorld): void {
   const P = w.Path

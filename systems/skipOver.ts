@@ -4,12 +4,12 @@
 // (no capture, no rim contact, no near miss) until the centre leaves its lip circle.
 // Reads Path (mark, origin, direction, speed), Hole, Ball.radius; writes RimContact (takes the ball's slot),
 // Path.mark; emits 'skip'.
-import { PathEvent } from '../components/Path'
-import { RimMode } from '../components/RimContact'
-import { EventType } from '../src/events'
-import { vSkip } from '../src/geometry'
-import { emitHoleEvent, planRolling } from '../src/motion'
-import { lockAtLip, type BallWorld } from '../src/world'
+import { PathEvent } from '../components/Path.js'
+import { RimMode } from '../components/RimContact.js'
+import { EventType } from '../src/events.js'
+import { vSkip } from '../src/geometry.js'
+import { emitHoleEvent, planRolling } from '../src/motion.js'
+import { lockAtLip, type BallWorld } from '../src/world.js'
 
 export function skipOverSystem(w: BallWorld): void {
   const P = w.Path

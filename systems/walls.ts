@@ -3,12 +3,12 @@
 // The hit is a path event like the others (the centre one radius from the wall), found exactly.
 // Reads Path.mark, Ball, Walls; writes Ball, Path (a ball out of the panel gives back its RimContact slot);
 // emits 'wall' and 'gutter'.
-import { BallMode } from '../components/Ball'
-import { PathEvent } from '../components/Path'
-import { WallEdge } from '../components/Walls'
-import { EventType, pushEvent } from '../src/events'
-import { NEVER, planRolling, startPath } from '../src/motion'
-import { releaseRim, removeMoving, type BallWorld } from '../src/world'
+import { BallMode } from '../components/Ball.js'
+import { PathEvent } from '../components/Path.js'
+import { WallEdge } from '../components/Walls.js'
+import { EventType, pushEvent } from '../src/events.js'
+import { NEVER, planRolling, startPath } from '../src/motion.js'
+import { releaseRim, removeMoving, type BallWorld } from '../src/world.js'
 
 export function wallsSystem(w: BallWorld): void {
   if (w.walls === 0) return

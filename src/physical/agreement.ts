@@ -1,10 +1,10 @@
 // The game model against the physical reference on a (δ, v) grid (docs/physical.md). The game's side is
 // the engine itself: one hole, a ball shot to cross the lip at exactly (δ, v) (as tests/helpers.ts shoot()),
 // stepped until it is captured or at rest; nothing here re-derives the systems' formulas.
-import { createBallPhysics, type BallPhysics } from '../api'
-import type { ConfigOverrides } from '../config'
-import { referenceOutcome } from '../reference/index'
-import type { ScheduleEntry } from '../schedule'
+import { createBallPhysics, type BallPhysics } from '../api.js'
+import type { ConfigOverrides } from '../config.js'
+import { referenceOutcome } from '../reference/index.js'
+import type { ScheduleEntry } from '../schedule.js'
 
 export interface DeltaSpeedGrid {
   /** cell centres: δ_i = (i + ½)·R/nDelta, v_k = (k + ½)·vMax/nSpeed */

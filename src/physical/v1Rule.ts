@@ -3,12 +3,12 @@
 // Put it ahead of skipOver and it handles every lip crossing, so the six stages never see one. It exists
 // to chart the v1 model's fidelity and cost; no game should use it.
 // Reads Path, Hole; writes RimContact, Path.mark; emits 'capture'.
-import { PathEvent } from '../../components/Path'
-import { RimMode } from '../../components/RimContact'
-import { CaptureVia } from '../events'
-import { captureBall, planRolling } from '../motion'
-import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../schedule'
-import { lockAtLip, type BallWorld } from '../world'
+import { PathEvent } from '../../components/Path.js'
+import { RimMode } from '../../components/RimContact.js'
+import { CaptureVia } from '../events.js'
+import { captureBall, planRolling } from '../motion.js'
+import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../schedule.js'
+import { lockAtLip, type BallWorld } from '../world.js'
 
 export function v1RuleSystem(w: BallWorld): void {
   const P = w.Path

@@ -14,7 +14,7 @@ export {
   LIP_ATOL,
   MAX_PHASES,
   MAX_TIME,
-} from './sphereLip'
+} from './sphereLip.js'
 export type {
   ReferenceInput,
   ReferenceOutcome,
@@ -23,7 +23,7 @@ export type {
   PhaseRecord,
   PhaseEnd,
   LipState,
-} from './sphereLip'
+} from './sphereLip.js'
 export {
   dopri5,
   dopri5Interpolate,
@@ -35,5 +35,5 @@ export {
   DOPRI5_MAX_FACTOR,
   DOPRI5_PI_BETA,
   DOPRI5_DEFAULT_MAX_STEPS,
-} from './dopri5'
-export type { OdeRhs, EventFunction, OdeEvent, Dopri5Options, Dopri5Result, Dopri5Status, Dopri5Workspace } from './dopri5'
+} from './dopri5.js'
+export type { OdeRhs, EventFunction, OdeEvent, Dopri5Options, Dopri5Result, Dopri5Status, Dopri5Workspace } from './dopri5.js'

@@ -22,7 +22,7 @@
 // One addition to the spec, for a case it leaves open: a "held" roll when, at N ≤ 0, the free path would run
 // straight back into the lip (see HELD_EVENTS).
 
-import { brentRoot, createDopri5Workspace, dopri5, type OdeEvent, type OdeRhs } from './dopri5'
+import { brentRoot, createDopri5Workspace, dopri5, type OdeEvent, type OdeRhs } from './dopri5.js'
 
 export interface ReferenceInput {
   /** offset of the straight path from the hole centre (its closest approach); |delta| < holeRadius */

@@ -2,16 +2,16 @@
 // core's order; the step's schedule lists that group SUBSTEPS times (substeps are configuration).
 //   'naive': clock, move, detect, skip-over, capture, COG gate, bounce, rim-roll
 //   'v1':    clock, move, v1 capture
-import type { ScheduleEntry } from '../../src/schedule'
-import { naiveBounceSystem } from './bounce'
-import { naiveCaptureSystem } from './capture'
-import { naiveClockSystem } from './clock'
-import { naiveCogGateSystem } from './cogGate'
-import { naiveDetectSystem } from './detect'
-import { naiveMoveSystem } from './move'
-import { naiveRimRollSystem } from './rimRoll'
-import { naiveSkipOverSystem } from './skipOver'
-import { v1CaptureSystem } from './v1Capture'
+import type { ScheduleEntry } from '../../src/schedule.js'
+import { naiveBounceSystem } from './bounce.js'
+import { naiveCaptureSystem } from './capture.js'
+import { naiveClockSystem } from './clock.js'
+import { naiveCogGateSystem } from './cogGate.js'
+import { naiveDetectSystem } from './detect.js'
+import { naiveMoveSystem } from './move.js'
+import { naiveRimRollSystem } from './rimRoll.js'
+import { naiveSkipOverSystem } from './skipOver.js'
+import { v1CaptureSystem } from './v1Capture.js'
 
 export const NAIVE_SUBSTEP: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'naive.clock', run: naiveClockSystem }),

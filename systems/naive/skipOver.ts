@@ -1,12 +1,12 @@
 // Stage 5, skip-over, decided at the tick: v > v_skip(δ) with v the speed at the overshot position.
 // Reads the naive marks, RimContact (δ, v); writes RimContact.mode, Path.mark; emits 'skip'.
-import { PathEvent } from '../../components/Path'
-import { RimMode } from '../../components/RimContact'
-import { EventType } from '../../src/events'
-import { vSkip } from '../../src/geometry'
-import { emitHoleEvent } from '../../src/motion'
-import type { BallWorld } from '../../src/world'
-import { naiveState } from './state'
+import { PathEvent } from '../../components/Path.js'
+import { RimMode } from '../../components/RimContact.js'
+import { EventType } from '../../src/events.js'
+import { vSkip } from '../../src/geometry.js'
+import { emitHoleEvent } from '../../src/motion.js'
+import type { BallWorld } from '../../src/world.js'
+import { naiveState } from './state.js'
 
 export function naiveSkipOverSystem(w: BallWorld): void {
   const st = naiveState(w)
