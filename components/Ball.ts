@@ -3,7 +3,7 @@
 // Indexed by ball id. A ball is a lightweight entity: its id comes from the world's entity index (shared
 // with holes and walls), but it carries no bitECS components; `live` says which ids are balls
 // (src/world.ts).
-import { createStore } from '../src/store.js'
+import { createStore } from './store.js'
 
 export const BallMode = {
   Rolling: 0,

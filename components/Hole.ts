@@ -1,7 +1,7 @@
 // Hole: a circular hole in the panel. Holes are static; their lip circles may not overlap.
 // Indexed by entity id; the store grows only when a hole's id passes its length, so holes made before the
 // balls (the usual order) keep it small however many balls follow.
-import { createStore } from '../src/store.js'
+import { createStore } from './store.js'
 
 export const HoleSchema = {
   /** centre, px */

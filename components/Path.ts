@@ -1,7 +1,7 @@
 // Path: the closed-form trajectory a ball follows since its last event, and its next event. Positions are
 // always evaluated from the path's origin, never accumulated tick by tick, so event times and (δ, v)
 // depend only on earlier events, not on where ticks fell (DECISIONS.md §1, first "must hold").
-import { createStore } from '../src/store.js'
+import { createStore } from './store.js'
 
 /** What a ball meets next. Decision events stop the ball for the systems; the others are bookkeeping. */
 export const PathEvent = {

@@ -9,7 +9,7 @@
 // share of a large scene, so the store grows with the peak number of concurrent contacts instead of
 // costing its 71 bytes for every ball. Read a ball's row as RimContact.x[rimSlot(world, ball)]; write
 // only through acquireRim (src/world.ts). A row says nothing once its lock has ended.
-import { createStore } from '../src/store.js'
+import { createStore } from './store.js'
 
 export const RimMode = {
   /** not inside any lip circle */

@@ -2,7 +2,7 @@
 // a ball whose centre crosses it leaves the panel (the gutter). A world without walls never reads this.
 // Indexed by entity id; the store grows only when the walls entity's id passes its length (set the walls
 // before adding many balls, as for holes, and it stays small).
-import { createStore } from '../src/store.js'
+import { createStore } from './store.js'
 
 export const WallEdge = { Left: 1, Top: 2, Right: 4, Bottom: 8 } as const
 

@@ -2,8 +2,8 @@
 // cost, on a seeded set of throws at the default panel. Used by scripts/accuracy.ts (10,000 throws) and by
 // tests/accuracy.test.ts (a small sample).
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type SimulationMethod } from '../src/index'
-import { solveBall, throwVelocity, type SolverEvent, type SolverResult } from '../src/eventSolver'
-import { resolveConfig } from '../src/config'
+import { solveBall, throwVelocity, type SolverEvent, type SolverResult } from '../src/reference/eventSolver'
+import { resolveConfig } from '../src/config/design'
 
 export interface Throw {
   x: number

@@ -9,7 +9,7 @@
 import { mkdirSync, writeFileSync } from 'node:fs'
 import * as vega from 'vega'
 import * as vegaLite from 'vega-lite'
-import { DEFAULT_CONFIG, resolveConfig, type ConfigOverrides } from '../src/config'
+import { DEFAULT_CONFIG, resolveConfig, type ConfigOverrides } from '../src/config/design'
 import { captureSpeed } from '../src/geometry'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
 import {
@@ -23,8 +23,8 @@ import {
   type CaptureMap,
   type DeltaSpeedGrid,
 } from '../src/physical/agreement'
-import { PHYSICAL_CONFIG } from '../src/physical/preset'
-import { v1Schedule } from '../src/physical/v1Rule'
+import { PHYSICAL_CONFIG } from '../src/config/presets'
+import { v1Schedule } from '../systems/variants/v1Rule'
 import { referenceCaptureSpeed, referenceOutcome } from '../src/reference/index'
 import type { ScheduleEntry } from '../src/schedule'
 

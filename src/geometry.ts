@@ -3,7 +3,7 @@
 //
 // Notation (ball-physics-iteration-2.md): R hole radius, r ball radius, δ offset of the ball's straight
 // path from the hole centre, v speed when the centre crosses the lip circle (radius R), g gravity.
-import type { CaptureWindowShape } from './config.js'
+import type { CaptureWindowShape } from './config/design.js'
 
 /**
  * Stage 5 skip speed: v_skip(δ) = R·√(2g/r)·√(1 − δ²/R²). A ball faster than this at the lip flies over

@@ -1,8 +1,8 @@
 // Public entry point of the ball-physics module.
-export { createBallPhysics, MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api.js'
-export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api.js'
-export { CAPTURE_WINDOW_SHAPES, COLLISION_MODES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config.js'
-export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config.js'
+export { createBallPhysics, MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './api/createBallPhysics.js'
+export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api/createBallPhysics.js'
+export { CAPTURE_WINDOW_SHAPES, COLLISION_MODES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config/design.js'
+export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config/design.js'
 export {
   APPROACH_EPSILON,
   CONTACT_DURATION,
@@ -13,8 +13,8 @@ export {
   resolveContact,
   restingInsert,
   restingRemove,
-} from './collide.js'
-export type { CollisionState } from './collide.js'
+} from './contacts/state.js'
+export type { CollisionState } from './contacts/state.js'
 export {
   acquireRim,
   addBallEntity,
@@ -25,8 +25,8 @@ export {
   releaseRim,
   removeBallEntity,
   rimSlot,
-} from './world.js'
-export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex } from './world.js'
+} from './world/createWorld.js'
+export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex } from './world/createWorld.js'
 export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule.js'
 export type { ScheduleEntry, System } from './schedule.js'
 export { createFixedStepClock } from './clock.js'
@@ -34,7 +34,7 @@ export type { FixedStepClock, FixedStepClockOptions } from './clock.js'
 export { EVENT_TYPE_NAMES } from './events.js'
 export type { BallEvent, BallEventType, CaptureViaName } from './events.js'
 export { DEFAULT_PANEL, addPanel } from './panel.js'
-export { PHYSICAL_CONFIG } from './physical/preset.js'
+export { PHYSICAL_CONFIG } from './config/presets.js'
 export type { PanelHole, PanelLayout } from './panel.js'
 export {
   captureSpeed,
@@ -55,7 +55,7 @@ export {
   timeToDistance,
   vSkip,
 } from './geometry.js'
-export { LIP_EPSILON } from './motion.js'
+export { LIP_EPSILON } from './motion/rolling.js'
 export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'
 export type { BallModeName, BallStore } from '../components/Ball.js'
 export { HoleSchema } from '../components/Hole.js'

@@ -2,7 +2,7 @@
 // 300 px/s² a throw reaches the first row (80 px up) from power ≈ 0.04 and the top row (320 px up) from
 // power ≈ 0.48: the top row's sweet spot is the middle of the meter, and the upper third arrives at the
 // lower rows fast enough to skip them for most aims (design §4).
-import type { BallPhysics } from './api.js'
+import type { BallPhysics } from './api/createBallPhysics.js'
 
 export interface PanelHole {
   x: number

@@ -12,9 +12,9 @@ import { integrationSystem } from '../systems/integration.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { wallsSystem } from '../systems/walls.js'
-import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/naive/schedule.js'
-import type { BallPhysicsConfig } from './config.js'
-import type { BallWorld } from './world.js'
+import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
+import type { BallPhysicsConfig } from './config/design.js'
+import type { BallWorld } from './world/createWorld.js'
 
 export type System = (world: BallWorld) => void
 

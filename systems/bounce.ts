@@ -6,9 +6,9 @@
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { EventType } from '../src/events.js'
-import { emitHoleEvent, planRolling, startPath } from '../src/motion.js'
+import { emitHoleEvent, planRolling, startPath } from '../src/motion/rolling.js'
 import { rimBounce } from '../src/geometry.js'
-import type { BallWorld } from '../src/world.js'
+import type { BallWorld } from '../src/world/createWorld.js'
 
 /** the bounced velocity, reused for every ball */
 const out = new Float64Array(2)

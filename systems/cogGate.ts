@@ -10,8 +10,8 @@
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { cogRadius } from '../src/geometry.js'
-import { planRolling } from '../src/motion.js'
-import type { BallWorld } from '../src/world.js'
+import { planRolling } from '../src/motion/rolling.js'
+import type { BallWorld } from '../src/world/createWorld.js'
 
 export function cogGateSystem(w: BallWorld): void {
   const P = w.Path

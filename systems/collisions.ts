@@ -14,10 +14,10 @@
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/collide.js'
+import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/state.js'
 import { EventType, pushEvent } from '../src/events.js'
-import { launchBall } from '../src/motion.js'
-import { pushId, type BallWorld } from '../src/world.js'
+import { launchBall } from '../src/motion/rolling.js'
+import { pushId, type BallWorld } from '../src/world/createWorld.js'
 
 export function collisionsSystem(w: BallWorld): void {
   const C = w.collide

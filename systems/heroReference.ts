@@ -16,9 +16,9 @@
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { CaptureVia, EventType } from '../src/events.js'
-import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion.js'
+import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion/rolling.js'
 import { referenceOutcome, type ReferenceInput } from '../src/reference/index.js'
-import { lockAtLip, type BallWorld } from '../src/world.js'
+import { lockAtLip, type BallWorld } from '../src/world/createWorld.js'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = (20 * Math.PI) / 180

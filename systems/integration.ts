@@ -12,7 +12,7 @@
 import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { EventType, pushEvent } from '../src/events.js'
-import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion.js'
+import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion/rolling.js'
 import {
   HeapKind,
   beginCollisionStep,
@@ -22,8 +22,8 @@ import {
   predictBall,
   resumeSearch,
   sampleForContact,
-} from '../src/collide.js'
-import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world.js'
+} from '../src/contacts/state.js'
+import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world/createWorld.js'
 
 export function integrationSystem(w: BallWorld): void {
   if (w.collide !== null) {

@@ -20,8 +20,8 @@ import {
   sampleRimRoll,
   startPath,
   startRimRoll,
-} from '../src/motion.js'
-import type { BallWorld } from '../src/world.js'
+} from '../src/motion/rolling.js'
+import type { BallWorld } from '../src/world/createWorld.js'
 
 export function rimRollSystem(w: BallWorld): void {
   const P = w.Path

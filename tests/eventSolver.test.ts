@@ -2,7 +2,7 @@
 // agreement with the ECS core's 'exact' method on thousands of throws at the default panel.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, resolveConfig, type BallEvent } from '../src/index'
-import { solveBall, throwVelocity } from '../src/eventSolver'
+import { solveBall, throwVelocity } from '../src/reference/eventSolver'
 import { EXACT, POSITION_TOLERANCE, rng } from './helpers'
 
 const cfg = resolveConfig()

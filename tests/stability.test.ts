@@ -3,8 +3,8 @@
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, rollSpeed, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
-import { rimBounce, solveBall, throwVelocity } from '../src/eventSolver'
-import { naiveRollDecay } from '../systems/naive/move'
+import { rimBounce, solveBall, throwVelocity } from '../src/reference/eventSolver'
+import { naiveRollDecay } from '../systems/variants/naive/move'
 import { rng, sequence } from './helpers'
 
 type Method = 'exact' | 'naive'

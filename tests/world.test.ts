@@ -3,7 +3,7 @@
 import { entityExists, hasComponent } from 'bitecs'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, isBall, rimSlot, RimMode } from '../src/index'
-import { storeLength } from '../src/store'
+import { storeLength } from '../components/store'
 import { rng, settle, shoot } from './helpers'
 
 describe('balls are lightweight entities', () => {

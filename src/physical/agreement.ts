@@ -1,8 +1,8 @@
 // The game model against the physical reference on a (δ, v) grid (docs/physical.md). The game's side is
 // the engine itself: one hole, a ball shot to cross the lip at exactly (δ, v) (as tests/helpers.ts shoot()),
 // stepped until it is captured or at rest; nothing here re-derives the systems' formulas.
-import { createBallPhysics, type BallPhysics } from '../api.js'
-import type { ConfigOverrides } from '../config.js'
+import { createBallPhysics, type BallPhysics } from '../api/createBallPhysics.js'
+import type { ConfigOverrides } from '../config/design.js'
 import { referenceOutcome } from '../reference/index.js'
 import type { ScheduleEntry } from '../schedule.js'
 

@@ -6,7 +6,7 @@
 //   createBallPhysics(PHYSICAL_CONFIG)                 // or { ...PHYSICAL_CONFIG, ROLLING_DECEL: 200 }
 //
 // The design's constants stay the default (DEFAULT_CONFIG): this is a choice a game makes, not a fix.
-import type { ConfigOverrides } from '../config.js'
+import type { ConfigOverrides } from './design.js'
 
 export const PHYSICAL_CONFIG: Readonly<ConfigOverrides> = Object.freeze({
   /** Penner's quadratic window v_c(δ) = V_MAX·(1 − δ²/R²) instead of the design's ellipse */

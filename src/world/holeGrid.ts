@@ -6,7 +6,7 @@
 // The walk goes cell by cell in order of distance; a hole not yet seen when the walk enters a cell at
 // distance t has its closest approach beyond t, so none of its events comes before t − R_max, and the walk
 // stops once t − R_max passes the best event found.
-import type { HoleTable } from './world.js'
+import type { HoleTable } from './createWorld.js'
 
 /** Below this many holes the planner scans them all (no grid to keep); from it on, it walks the grid. */
 export const GRID_MIN_HOLES = 32

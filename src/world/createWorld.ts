@@ -10,16 +10,16 @@
 // (src/store.ts): the per-ball ones grow with ball ids, Hole and Walls with their own entities' ids, and
 // RimContact is pooled by slot (components/RimContact.ts).
 import { createEntityIndex, createWorld, type World } from 'bitecs'
-import { createBallStore, type BallStore } from '../components/Ball.js'
-import { createHoleStore, type HoleStore } from '../components/Hole.js'
-import { createPathStore, type PathStore } from '../components/Path.js'
-import { createRimContactStore, type RimContactStore } from '../components/RimContact.js'
-import { createWallsStore, type WallsStore } from '../components/Walls.js'
-import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from './config.js'
-import { createEventBuffer, type EventBuffer } from './events.js'
-import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './broadphase.js'
-import { clearSlot, growStore } from './store.js'
-import { bumpVersion, createCollisionState, growCollisionState, restingRemove, type CollisionState } from './collide.js'
+import { createBallStore, type BallStore } from '../../components/Ball.js'
+import { createHoleStore, type HoleStore } from '../../components/Hole.js'
+import { createPathStore, type PathStore } from '../../components/Path.js'
+import { createRimContactStore, type RimContactStore } from '../../components/RimContact.js'
+import { createWallsStore, type WallsStore } from '../../components/Walls.js'
+import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from '../config/design.js'
+import { createEventBuffer, type EventBuffer } from '../events.js'
+import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './holeGrid.js'
+import { clearSlot, growStore } from '../../components/store.js'
+import { bumpVersion, createCollisionState, growCollisionState, restingRemove, type CollisionState } from '../contacts/state.js'
 
 /** A growable list of entity ids. */
 export interface IdList {

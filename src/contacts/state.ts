@@ -18,10 +18,10 @@
 // across steps, updated when a ball comes to rest or wakes), so resting balls cost nothing until struck.
 //
 // Allocation: all state is in typed arrays that grow by doubling; nothing is allocated per ball per tick.
-import { BallMode } from '../components/Ball.js'
-import { RimMode } from '../components/RimContact.js'
-import { rimRollAt, rimRollState } from './motion.js'
-import type { BallWorld } from './world.js'
+import { BallMode } from '../../components/Ball.js'
+import { RimMode } from '../../components/RimContact.js'
+import { rimRollAt, rimRollState } from '../motion/rolling.js'
+import type { BallWorld } from '../world/createWorld.js'
 
 /** Contact is declared when the gap is at most this, px, and the balls approach. */
 export const GAP_TOLERANCE = 1e-7

@@ -4,12 +4,12 @@
 // it finds the arc past RIM_ROLL_MAX_TURNS·2πR it pops off along the tangent, hole locked until it is out.
 // Reads the naive marks, Ball, Hole, RimContact; writes Ball, RimContact, the naive store;
 // emits 'rimRoll', 'capture', 'lipOut', 'nearMiss'.
-import { BallMode } from '../../components/Ball.js'
-import { PathEvent } from '../../components/Path.js'
-import { RimMode } from '../../components/RimContact.js'
-import { CaptureVia, EventType } from '../../src/events.js'
-import { captureBall, emitHoleEvent, startRimRoll } from '../../src/motion.js'
-import type { BallWorld } from '../../src/world.js'
+import { BallMode } from '../../../components/Ball.js'
+import { PathEvent } from '../../../components/Path.js'
+import { RimMode } from '../../../components/RimContact.js'
+import { CaptureVia, EventType } from '../../../src/events.js'
+import { captureBall, emitHoleEvent, startRimRoll } from '../../../src/motion/rolling.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveRimRollSystem(w: BallWorld): void {

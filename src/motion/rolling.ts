@@ -4,11 +4,11 @@
 // A straight path is (origin, unit direction, speed v0, start time t0) with constant deceleration a; the
 // distance rolled is s(τ) = v0·τ − a·τ²/2. Events are found as distances along the path (where geometry
 // is exact) and turned into times once. Nothing here depends on where ticks fall.
-import { BallMode } from '../components/Ball.js'
-import { PathEvent } from '../components/Path.js'
-import { RimMode } from '../components/RimContact.js'
-import { WallEdge } from '../components/Walls.js'
-import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from './events.js'
+import { BallMode } from '../../components/Ball.js'
+import { PathEvent } from '../../components/Path.js'
+import { RimMode } from '../../components/RimContact.js'
+import { WallEdge } from '../../components/Walls.js'
+import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from '../events.js'
 import {
   cogRadius,
   popArc,
@@ -20,10 +20,10 @@ import {
   stopDistance,
   stopTime,
   timeToDistance,
-} from './geometry.js'
-import { buildHoleGrid, walkHoleGrid } from './broadphase.js'
-import { addMoving, releaseRim, removeMoving, type BallWorld } from './world.js'
-import { restingInsert, restingRemove } from './collide.js'
+} from '../geometry.js'
+import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
+import { addMoving, releaseRim, removeMoving, type BallWorld } from '../world/createWorld.js'
+import { restingInsert, restingRemove } from '../contacts/state.js'
 
 /** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
 export const NEVER = 1e300

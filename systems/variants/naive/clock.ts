@@ -2,7 +2,7 @@
 // sub-steps of length h and sets the current one's end time. The schedule lists the stage systems once per
 // sub-step, each list headed by this system, so substeps are configuration, not code.
 // Reads world.time, world.tickEnd; writes the naive state's h, t, index; clears its marked list.
-import type { BallWorld } from '../../src/world.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveClockSystem(w: BallWorld): void {

@@ -5,10 +5,10 @@
 // Reads Path, Hole; writes RimContact, Path.mark; emits 'capture'.
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
-import { CaptureVia } from '../events.js'
-import { captureBall, planRolling } from '../motion.js'
-import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../schedule.js'
-import { lockAtLip, type BallWorld } from '../world.js'
+import { CaptureVia } from '../../src/events.js'
+import { captureBall, planRolling } from '../../src/motion/rolling.js'
+import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../../src/schedule.js'
+import { lockAtLip, type BallWorld } from '../../src/world/createWorld.js'
 
 export function v1RuleSystem(w: BallWorld): void {
   const P = w.Path

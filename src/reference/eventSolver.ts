@@ -8,8 +8,8 @@
 // rim roll). It shares no code with systems/ (only the closed forms), so the ECS core can be checked against
 // it. Events on one straight segment are listed once, sorted by (distance, stop first, hole id), and
 // consumed in order; a decision that changes the velocity starts a new segment.
-import type { BallPhysicsConfig } from './config.js'
-import type { BallEventType, CaptureViaName } from './events.js'
+import type { BallPhysicsConfig } from '../config/design.js'
+import type { BallEventType, CaptureViaName } from '../events.js'
 import {
   capturesClean,
   cogRadius,
@@ -23,7 +23,7 @@ import {
   stopTime,
   timeToDistance,
   vSkip,
-} from './geometry.js'
+} from '../geometry.js'
 
 export interface SolverHole {
   x: number

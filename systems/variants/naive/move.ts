@@ -4,8 +4,8 @@
 //   arc ← arc + v·h,  φ ← φ ± v·h/R,  v ← v·(1 − μ_roll·h)      (negative for h > 1/μ_roll)
 // No event is found in time: whatever happened inside the sub-step is seen at its end (naiveDetect).
 // Reads Ball, RimContact, Hole, the naive store; writes Ball, RimContact (angle, arc), the naive store.
-import { BallMode } from '../../components/Ball.js'
-import type { BallWorld } from '../../src/world.js'
+import { BallMode } from '../../../components/Ball.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 /** One first-order step of the rim-roll decay: v·(1 − μ·h). Exported for the stability tests. */

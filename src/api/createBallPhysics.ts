@@ -1,14 +1,14 @@
 // The public API: a world, its schedule and clock behind a small typed surface. Every call validates all
 // of its input before it changes anything, so a rejected call leaves the world as it was.
 import { addComponent, addEntity, entityExists, hasComponent, removeEntity } from 'bitecs'
-import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../components/Ball.js'
-import { RimMode } from '../components/RimContact.js'
-import { WallEdge } from '../components/Walls.js'
-import type { BallPhysicsConfig, ConfigOverrides } from './config.js'
-import { CaptureVia, drainEventBuffer, type BallEvent } from './events.js'
-import { captureBall, launchBall, planRolling, sampleRimRoll, sampleRolling, startPath } from './motion.js'
-import { createSchedule, runSchedule, type ScheduleEntry } from './schedule.js'
-import { clearSlot, fitStore } from './store.js'
+import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../../components/Ball.js'
+import { RimMode } from '../../components/RimContact.js'
+import { WallEdge } from '../../components/Walls.js'
+import type { BallPhysicsConfig, ConfigOverrides } from '../config/design.js'
+import { CaptureVia, drainEventBuffer, type BallEvent } from '../events.js'
+import { captureBall, launchBall, planRolling, sampleRimRoll, sampleRolling, startPath } from '../motion/rolling.js'
+import { createSchedule, runSchedule, type ScheduleEntry } from '../schedule.js'
+import { clearSlot, fitStore } from '../../components/store.js'
 import {
   acquireRim,
   addBallEntity,
@@ -20,7 +20,7 @@ import {
   rimSlot,
   type BallWorld,
   type BallWorldOptions,
-} from './world.js'
+} from '../world/createWorld.js'
 
 /** Largest |coordinate| accepted, px: keeps squares of distances far from overflow. */
 export const MAX_COORDINATE = 1e9

@@ -1,11 +1,11 @@
 // Stage 1, capture, decided at the tick: δ ≤ δ_eff(v) with v the speed at the overshot position; and a
 // ball whose speed ran out in this sub-step falls in if its centre is inside a lip circle, else rests.
 // Reads the naive marks, RimContact (δ, v); writes Ball, RimContact, Path.mark; emits 'capture', 'rest'.
-import { PathEvent } from '../../components/Path.js'
-import { CaptureVia } from '../../src/events.js'
-import { capturesClean } from '../../src/geometry.js'
-import { captureBall, restBall } from '../../src/motion.js'
-import type { BallWorld } from '../../src/world.js'
+import { PathEvent } from '../../../components/Path.js'
+import { CaptureVia } from '../../../src/events.js'
+import { capturesClean } from '../../../src/geometry.js'
+import { captureBall, restBall } from '../../../src/motion/rolling.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveCaptureSystem(w: BallWorld): void {

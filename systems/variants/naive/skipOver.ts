@@ -1,11 +1,11 @@
 // Stage 5, skip-over, decided at the tick: v > v_skip(δ) with v the speed at the overshot position.
 // Reads the naive marks, RimContact (δ, v); writes RimContact.mode, Path.mark; emits 'skip'.
-import { PathEvent } from '../../components/Path.js'
-import { RimMode } from '../../components/RimContact.js'
-import { EventType } from '../../src/events.js'
-import { vSkip } from '../../src/geometry.js'
-import { emitHoleEvent } from '../../src/motion.js'
-import type { BallWorld } from '../../src/world.js'
+import { PathEvent } from '../../../components/Path.js'
+import { RimMode } from '../../../components/RimContact.js'
+import { EventType } from '../../../src/events.js'
+import { vSkip } from '../../../src/geometry.js'
+import { emitHoleEvent } from '../../../src/motion/rolling.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveSkipOverSystem(w: BallWorld): void {

@@ -3,8 +3,8 @@
 // (its current rim-roll speed, the near miss being tracked). Kept beside the world, not in it, so the
 // exact core's world and stores are unchanged; created on first use, grown with the world's per-ball
 // capacity (its stores are indexed by ball id).
-import { createStore, growStore } from '../../src/store.js'
-import { createIdList, type BallWorld, type IdList } from '../../src/world.js'
+import { createStore, growStore } from '../../../components/store.js'
+import { createIdList, type BallWorld, type IdList } from '../../../src/world/createWorld.js'
 
 export const NaiveBallSchema = {
   /** current rim-roll speed, px/s (v ← v·(1 − μ·dt): may turn negative) */

@@ -3,10 +3,10 @@
 // that finds it inside (this one, if it already is) takes the contact with the normal at that position:
 //   roll iff |v_t| / |v_n| > RIM_ROLL_RATIO.
 // Reads the naive marks, Ball, Hole, RimContact; writes RimContact.mode, Path.mark (Bounce or Roll).
-import { PathEvent } from '../../components/Path.js'
-import { RimMode } from '../../components/RimContact.js'
-import { cogRadius } from '../../src/geometry.js'
-import type { BallWorld } from '../../src/world.js'
+import { PathEvent } from '../../../components/Path.js'
+import { RimMode } from '../../../components/RimContact.js'
+import { cogRadius } from '../../../src/geometry.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveCogGateSystem(w: BallWorld): void {

@@ -9,12 +9,12 @@
 // the speed at the overshot position, up to v·h past the lip.
 // Reads Ball, Hole, RimContact, the naive store; writes RimContact, Path.mark/markHole, the naive marks;
 // emits 'nearMiss'.
-import { BallMode } from '../../components/Ball.js'
-import { PathEvent } from '../../components/Path.js'
-import { RimMode } from '../../components/RimContact.js'
-import { EventType, pushEvent } from '../../src/events.js'
-import { cogRadius, popArc } from '../../src/geometry.js'
-import { lockAtLip, pushId, releaseRim, type BallWorld } from '../../src/world.js'
+import { BallMode } from '../../../components/Ball.js'
+import { PathEvent } from '../../../components/Path.js'
+import { RimMode } from '../../../components/RimContact.js'
+import { EventType, pushEvent } from '../../../src/events.js'
+import { cogRadius, popArc } from '../../../src/geometry.js'
+import { lockAtLip, pushId, releaseRim, type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveDetectSystem(w: BallWorld): void {

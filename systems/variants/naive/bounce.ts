@@ -3,12 +3,12 @@
 // with no guard for a centre on the hole centre (|ball − hole| = 0), as a direct port writes it.
 // The hole stays locked until the centre is outside its lip circle.
 // Reads the naive marks, Ball, Hole; writes Ball, RimContact.mode, the naive store; emits 'bounce', 'nearMiss'.
-import { PathEvent } from '../../components/Path.js'
-import { RimMode } from '../../components/RimContact.js'
-import { EventType } from '../../src/events.js'
-import { emitHoleEvent } from '../../src/motion.js'
-import { rimBounce } from '../../src/geometry.js'
-import type { BallWorld } from '../../src/world.js'
+import { PathEvent } from '../../../components/Path.js'
+import { RimMode } from '../../../components/RimContact.js'
+import { EventType } from '../../../src/events.js'
+import { emitHoleEvent } from '../../../src/motion/rolling.js'
+import { rimBounce } from '../../../src/geometry.js'
+import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 /** the bounced velocity, reused for every ball */

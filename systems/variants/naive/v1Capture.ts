@@ -3,11 +3,11 @@
 // the design's own "low enough") is captured. Nothing else: no skip, no rim contact, no bounce or roll, no
 // near miss. A ball whose speed ran out rests (or falls in, by the same rule, if its centre is inside).
 // Reads Ball, Hole, the naive store; writes Ball, RimContact (δ, v of the capture); emits 'capture', 'rest'.
-import { BallMode } from '../../components/Ball.js'
-import { RimMode } from '../../components/RimContact.js'
-import { CaptureVia } from '../../src/events.js'
-import { captureBall, restBall } from '../../src/motion.js'
-import { lockAtLip, type BallWorld } from '../../src/world.js'
+import { BallMode } from '../../../components/Ball.js'
+import { RimMode } from '../../../components/RimContact.js'
+import { CaptureVia } from '../../../src/events.js'
+import { captureBall, restBall } from '../../../src/motion/rolling.js'
+import { lockAtLip, type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function v1CaptureSystem(w: BallWorld): void {
