@@ -1,4 +1,5 @@
-// Dormand–Prince 5(4) with adaptive step size, dense output and event location. No dependency.
+// Dormand–Prince 5(4) with adaptive step size, dense output and event location. No external dependency: the
+// Butcher tableau is in dopri5Tableau.ts, Brent's root finder in brent.ts.
 //
 // The method (Dormand & Prince 1980; Hairer, Nørsett & Wanner, "Solving ODEs I", §II.4–II.6):
 // - seven stages, first-same-as-last (the last stage of a step is the first of the next), so six right-hand
@@ -21,6 +22,46 @@
 //
 // Work arrays are preallocated in a workspace; a call to `dopri5` allocates only its small result object
 // (and a closure when it has to locate an event).
+
+import { brentRoot } from './brent.js'
+import {
+  A21,
+  A31,
+  A32,
+  A41,
+  A42,
+  A43,
+  A51,
+  A52,
+  A53,
+  A54,
+  A61,
+  A62,
+  A63,
+  A64,
+  A65,
+  B1,
+  B3,
+  B4,
+  B5,
+  B6,
+  C2,
+  C3,
+  C4,
+  C5,
+  E1,
+  E3,
+  E4,
+  E5,
+  E6,
+  E7,
+  P1,
+  P3,
+  P4,
+  P5,
+  P6,
+  P7,
+} from './dopri5Tableau.js'
 
 /** Right-hand side: write dy/dt at (t, y) into `dydt`. Must not keep references to the arrays. */
 export type OdeRhs = (t: number, y: Float64Array, dydt: Float64Array) => void
@@ -107,49 +148,6 @@ const STEP_UNDERFLOW_ULPS = 16
 const LAST_STEP_STRETCH = 1.01
 /** Brent tolerance on the event's position within a step, as a fraction of the step (machine level) */
 const EVENT_STEP_FRACTION_TOL = 1e-15
-/** iteration cap for Brent's method (it converges in far fewer for smooth functions) */
-const BRENT_MAX_ITERATIONS = 200
-
-// ---- Dormand–Prince 5(4) coefficients ----
-const C2 = 1 / 5
-const C3 = 3 / 10
-const C4 = 4 / 5
-const C5 = 8 / 9
-const A21 = 1 / 5
-const A31 = 3 / 40
-const A32 = 9 / 40
-const A41 = 44 / 45
-const A42 = -56 / 15
-const A43 = 32 / 9
-const A51 = 19372 / 6561
-const A52 = -25360 / 2187
-const A53 = 64448 / 6561
-const A54 = -212 / 729
-const A61 = 9017 / 3168
-const A62 = -355 / 33
-const A63 = 46732 / 5247
-const A64 = 49 / 176
-const A65 = -5103 / 18656
-// 5th-order weights (also the 7th stage's row: first same as last)
-const B1 = 35 / 384
-const B3 = 500 / 1113
-const B4 = 125 / 192
-const B5 = -2187 / 6784
-const B6 = 11 / 84
-// error weights: 5th-order minus embedded 4th-order weights
-const E1 = 71 / 57600
-const E3 = -71 / 16695
-const E4 = 71 / 1920
-const E5 = -17253 / 339200
-const E6 = 22 / 525
-const E7 = -1 / 40
-// dense output: y(t + x·h) = y + h·Σ_k k_k·(P_k1·x + P_k2·x² + P_k3·x³ + P_k4·x⁴); row 2 is zero
-const P1 = [1, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432] as const
-const P3 = [0, 131558114200 / 32700410799, -68118460800 / 10900136933, 87487479700 / 32700410799] as const
-const P4 = [0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072] as const
-const P5 = [0, 127303824393 / 49829197408, -318862633887 / 49829197408, 701980252875 / 199316789632] as const
-const P6 = [0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844] as const
-const P7 = [0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423] as const
 
 /** Work arrays for a system of dimension `n` with up to `maxEvents` event functions. */
 export function createDopri5Workspace(n: number, maxEvents = 4): Dopri5Workspace {
@@ -240,80 +238,6 @@ function initialStep(ws: Dopri5Workspace, rhs: OdeRhs, t: number, y: Float64Arra
   const dm = Math.max(d1, d2)
   const h1 = dm <= 1e-15 ? Math.max(1e-6, h0 * 1e-3) : Math.pow(0.01 / dm, 1 / 5)
   return Math.min(100 * h0, h1, hMax)
-}
-
-/**
- * Brent's method on [a, b] where fa and fb have opposite signs (or one is zero). Returns a point within
- * about `xtol` of the root at which f has the sign `after` (or is zero): for an event, the first point at
- * which the crossing has happened, so the caller never starts the next phase just short of the surface.
- */
-export function brentRoot(
-  f: (x: number) => number,
-  a: number,
-  b: number,
-  fa: number,
-  fb: number,
-  xtol: number,
-  after: 1 | -1,
-): number {
-  if (fb === 0) return b
-  if (fa === 0 && after * fb < 0) return a
-  if (fa * fb > 0) throw new RangeError('brentRoot: the interval does not bracket a root')
-  let c = a
-  let fc = fa
-  let d = b - a
-  let e = d
-  for (let iter = 0; iter < BRENT_MAX_ITERATIONS; iter++) {
-    if ((fb > 0 && fc > 0) || (fb < 0 && fc < 0)) {
-      c = a
-      fc = fa
-      d = b - a
-      e = d
-    }
-    if (Math.abs(fc) < Math.abs(fb)) {
-      a = b
-      b = c
-      c = a
-      fa = fb
-      fb = fc
-      fc = fa
-    }
-    const tol1 = 2 * Number.EPSILON * Math.abs(b) + 0.5 * xtol
-    const xm = 0.5 * (c - b)
-    if (Math.abs(xm) <= tol1 || fb === 0) return fb === 0 || after * fb > 0 ? b : c
-    if (Math.abs(e) >= tol1 && Math.abs(fa) > Math.abs(fb)) {
-      // inverse quadratic interpolation (secant when only two points are distinct)
-      const s = fb / fa
-      let p: number
-      let q: number
-      if (a === c) {
-        p = 2 * xm * s
-        q = 1 - s
-      } else {
-        const qq = fa / fc
-        const r = fb / fc
-        p = s * (2 * xm * qq * (qq - r) - (b - a) * (r - 1))
-        q = (qq - 1) * (r - 1) * (s - 1)
-      }
-      if (p > 0) q = -q
-      p = Math.abs(p)
-      if (2 * p < Math.min(3 * xm * q - Math.abs(tol1 * q), Math.abs(e * q))) {
-        e = d
-        d = p / q
-      } else {
-        d = xm
-        e = d
-      }
-    } else {
-      d = xm
-      e = d
-    }
-    a = b
-    fa = fb
-    b += Math.abs(d) > tol1 ? d : xm > 0 ? tol1 : -tol1
-    fb = f(b)
-  }
-  return after * fb >= 0 ? b : c
 }
 
 function crosses(direction: -1 | 0 | 1, g0: number, g1: number): boolean {

@@ -1,20 +1,11 @@
-// Physical reference model of a rigid sphere meeting a sharp circular lip (shared/spec/reference-model.md):
-// the ground truth the game's six-stage model is charted against. See docs/reference-model.md.
-export {
-  referenceOutcome,
-  referenceTrace,
-  referenceCaptureSpeed,
-  referenceCaptureOffset,
-  singleImpactDeadCentreLimit,
-  singleImpactEscapes,
-  lipEnergy,
-  rollOnLip,
-  validateReferenceInput,
-  LIP_RTOL,
-  LIP_ATOL,
-  MAX_PHASES,
-  MAX_TIME,
-} from './sphereLip.js'
+// Physical reference model of a rigid sphere meeting a sharp circular lip: the ground truth the game's
+// six-stage model is charted against. See docs/reference-model.md.
+export { referenceOutcome, referenceTrace } from './sphereLip.js'
+export { referenceCaptureSpeed, referenceCaptureOffset } from './captureSearch.js'
+export { singleImpactDeadCentreLimit, singleImpactEscapes } from './singleImpact.js'
+export { lipEnergy, rollOnLip } from './lipRoll.js'
+export { validateReferenceInput } from './types.js'
+export { LIP_RTOL, LIP_ATOL, MAX_PHASES, MAX_TIME } from './tolerances.js'
 export type {
   ReferenceInput,
   ReferenceOutcome,
@@ -23,17 +14,17 @@ export type {
   PhaseRecord,
   PhaseEnd,
   LipState,
-} from './sphereLip.js'
+} from './types.js'
 export {
   dopri5,
   dopri5Interpolate,
   dopri5DenseOutput,
   createDopri5Workspace,
-  brentRoot,
   DOPRI5_SAFETY,
   DOPRI5_MIN_FACTOR,
   DOPRI5_MAX_FACTOR,
   DOPRI5_PI_BETA,
   DOPRI5_DEFAULT_MAX_STEPS,
 } from './dopri5.js'
+export { brentRoot } from './brent.js'
 export type { OdeRhs, EventFunction, OdeEvent, Dopri5Options, Dopri5Result, Dopri5Status, Dopri5Workspace } from './dopri5.js'
