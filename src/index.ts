@@ -3,18 +3,8 @@ export { createBallPhysics, MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX
 export type { BallPhysics, BallSpec, BallState, HoleSpec, HoleState, ThrowSpec, WallsSpec } from './api/createBallPhysics.js'
 export { CAPTURE_WINDOW_SHAPES, COLLISION_MODES, CONFIG_CHOICES, CONFIG_RANGES, DEFAULT_CONFIG, METHODS, gravityFromSkip, resolveConfig, skipFromGravity } from './config/design.js'
 export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config/design.js'
-export {
-  APPROACH_EPSILON,
-  CONTACT_DURATION,
-  GAP_TOLERANCE,
-  MIN_ADVANCE,
-  SETTLE_FLOOR,
-  contactOut,
-  resolveContact,
-  restingInsert,
-  restingRemove,
-} from './contacts/state.js'
-export type { CollisionState } from './contacts/state.js'
+export { resolveContact } from './contacts/law.js'
+export type { CollisionState } from './world/contactState.js'
 export {
   acquireRim,
   addBallEntity,
@@ -55,7 +45,6 @@ export {
   timeToDistance,
   vSkip,
 } from './geometry.js'
-export { LIP_EPSILON } from './motion/rolling.js'
 export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'
 export type { BallModeName, BallStore } from '../components/Ball.js'
 export { HoleSchema } from '../components/Hole.js'

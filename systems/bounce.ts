@@ -6,7 +6,8 @@
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { EventType } from '../src/events.js'
-import { emitHoleEvent, planRolling, startPath } from '../src/motion/rolling.js'
+import { emitHoleEvent } from '../src/motion/ballFate.js'
+import { planRolling, startPath } from '../src/motion/rolling.js'
 import { rimBounce } from '../src/geometry.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 

@@ -8,7 +8,7 @@
 import { PathEvent } from '../components/Path.js'
 import { CaptureVia } from '../src/events.js'
 import { capturesClean } from '../src/geometry.js'
-import { captureBall, restBall } from '../src/motion/rolling.js'
+import { captureBall, restBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 
 export function captureSystem(w: BallWorld): void {

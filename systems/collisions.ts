@@ -14,9 +14,11 @@
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { CONTACT_DURATION, collectCluster, contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/state.js'
+import { CONTACT_DURATION, TOUCH_GAP } from '../src/config/tolerances.js'
+import { collectCluster } from '../src/contacts/cluster.js'
+import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
 import { EventType, pushEvent } from '../src/events.js'
-import { launchBall } from '../src/motion/rolling.js'
+import { launchBall } from '../src/motion/ballFate.js'
 import { pushId, type BallWorld } from '../src/world/createWorld.js'
 
 export function collisionsSystem(w: BallWorld): void {
@@ -104,10 +106,10 @@ function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
       const x = B.x[eid]!
       const y = B.y[eid]!
       const r = B.radius[eid]!
-      if (vx < 0 && (open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= WALL_TOUCH) vx = 0
-      if (vx > 0 && (open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= WALL_TOUCH) vx = 0
-      if (vy < 0 && (open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= WALL_TOUCH) vy = 0
-      if (vy > 0 && (open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= WALL_TOUCH) vy = 0
+      if (vx < 0 && (open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= TOUCH_GAP) vx = 0
+      if (vx > 0 && (open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= TOUCH_GAP) vx = 0
+      if (vy < 0 && (open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= TOUCH_GAP) vy = 0
+      if (vy > 0 && (open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= TOUCH_GAP) vy = 0
     }
   }
   for (let k = 0; k < n; k++) {
@@ -119,8 +121,6 @@ function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
   }
 }
 
-/** Distance, px, within which a ball counts as touching a wall. */
-const WALL_TOUCH = 1e-6
 
 function restart(w: BallWorld, eid: number, vx: number, vy: number, t: number): void {
   const B = w.Ball

@@ -16,7 +16,8 @@
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { CaptureVia, EventType } from '../src/events.js'
-import { captureBall, emitHoleEvent, planRolling, startPath } from '../src/motion/rolling.js'
+import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
+import { planRolling, startPath } from '../src/motion/rolling.js'
 import { referenceOutcome, type ReferenceInput } from '../src/reference/index.js'
 import { lockAtLip, type BallWorld } from '../src/world/createWorld.js'
 

@@ -12,18 +12,15 @@
 import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { EventType, pushEvent } from '../src/events.js'
-import { planRolling, sampleAtDistance, sampleRimRoll, sampleRolling } from '../src/motion/rolling.js'
-import {
-  HeapKind,
-  beginCollisionStep,
-  bumpVersion,
-  heapPop,
-  heapTopLive,
-  predictBall,
-  resumeSearch,
-  sampleForContact,
-} from '../src/contacts/state.js'
+import { planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
+import { sampleRimRoll } from '../src/motion/rimRoll.js'
+import { HeapKind, heapPop, heapTopLive } from '../src/contacts/eventHeap.js'
+import { beginCollisionStep } from '../src/contacts/sweepGrid.js'
+import { bumpVersion } from '../src/world/contactState.js'
+import { predictBall, resumeSearch } from '../src/contacts/predict.js'
+import { sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world/createWorld.js'
+import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
 
 export function integrationSystem(w: BallWorld): void {
   if (w.collide !== null) {
@@ -152,9 +149,6 @@ function markContact(w: BallWorld, eid: number, other: number, t: number): void 
   P.nextT[eid] = t
   pushId(w.marked, eid)
 }
-
-/** Upper bound on bookkeeping events handled for one ball in one pass (each consumes a hole ahead). */
-const MAX_INLINE_EVENTS = 1 << 16
 
 function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
   const P = w.Path

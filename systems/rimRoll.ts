@@ -11,16 +11,9 @@ import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { CaptureVia, EventType } from '../src/events.js'
-import {
-  captureBall,
-  emitHoleEvent,
-  planRimRoll,
-  planRolling,
-  rollPopsOff,
-  sampleRimRoll,
-  startPath,
-  startRimRoll,
-} from '../src/motion/rolling.js'
+import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
+import { planRimRoll, rollPopsOff, sampleRimRoll, startRimRoll } from '../src/motion/rimRoll.js'
+import { planRolling, startPath } from '../src/motion/rolling.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 
 export function rimRollSystem(w: BallWorld): void {

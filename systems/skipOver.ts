@@ -8,7 +8,8 @@ import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { EventType } from '../src/events.js'
 import { vSkip } from '../src/geometry.js'
-import { emitHoleEvent, planRolling } from '../src/motion/rolling.js'
+import { emitHoleEvent } from '../src/motion/ballFate.js'
+import { planRolling } from '../src/motion/rolling.js'
 import { lockAtLip, type BallWorld } from '../src/world/createWorld.js'
 
 export function skipOverSystem(w: BallWorld): void {

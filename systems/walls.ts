@@ -7,7 +7,8 @@ import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
 import { EventType, pushEvent } from '../src/events.js'
-import { NEVER, planRolling, startPath } from '../src/motion/rolling.js'
+import { NEVER } from '../src/config/tolerances.js'
+import { planRolling, startPath } from '../src/motion/rolling.js'
 import { releaseRim, removeMoving, type BallWorld } from '../src/world/createWorld.js'
 
 export function wallsSystem(w: BallWorld): void {

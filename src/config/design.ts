@@ -2,6 +2,7 @@
 // design leaves open (DECISIONS.md): ROLLING_DECEL, RIM_ROLL_MAX_TURNS and the engine's clock bounds.
 // GRAVITY and V_SKIP_MAX are one fact written twice (V_SKIP_MAX = R·√(2g/r)); resolveConfig keeps them
 // consistent, so they can never disagree.
+import { CONSISTENCY_TOLERANCE } from './tolerances.js'
 
 /** How a world steps: the exact event-driven core, a tick-sampled port of the six stages, or v1's rule. */
 export const METHODS = ['exact', 'naive', 'v1'] as const
@@ -181,9 +182,6 @@ function checkKey(key: NumericKey, value: unknown): number {
   if (!ok) throw new RangeError(`config.${key} must be in ${describeRange(range)}, got ${value}`)
   return value
 }
-
-/** Relative tolerance for GRAVITY and V_SKIP_MAX given together: they must describe the same g. */
-const CONSISTENCY_TOLERANCE = 1e-9
 
 /**
  * Validates overrides and returns a complete, frozen config. Unknown keys, non-finite or out-of-range

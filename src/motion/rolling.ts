@@ -4,35 +4,13 @@
 // A straight path is (origin, unit direction, speed v0, start time t0) with constant deceleration a; the
 // distance rolled is s(τ) = v0·τ − a·τ²/2. Events are found as distances along the path (where geometry
 // is exact) and turned into times once. Nothing here depends on where ticks fall.
-import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
-import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from '../events.js'
-import {
-  cogRadius,
-  popArc,
-  rollArc,
-  rollDropTime,
-  rollPopTime,
-  rollSpeed,
-  speedAtDistance,
-  stopDistance,
-  stopTime,
-  timeToDistance,
-} from '../geometry.js'
+import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } from '../geometry.js'
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
-import { addMoving, releaseRim, removeMoving, type BallWorld } from '../world/createWorld.js'
-import { restingInsert, restingRemove } from '../contacts/state.js'
-
-/** Stand-in for "never" in time arrays (component arrays hold no Infinity). */
-export const NEVER = 1e300
-
-/**
- * A lip crossing this far (px) behind the ball still counts as happening now. It covers rounding of a
- * path origin placed on a circle; it is far below any distance the game can show.
- */
-export const LIP_EPSILON = 1e-7
+import { type BallWorld } from '../world/createWorld.js'
+import { NEVER } from '../config/tolerances.js'
 
 /** Starts a straight path at (x, y) with velocity (vx, vy) at time t, and sets the ball's state there. */
 export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
@@ -214,32 +192,6 @@ export function planRolling(w: BallWorld, eid: number): void {
   }
 }
 
-/** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
-export function planRimRoll(w: BallWorld, eid: number): void {
-  const RC = w.RimContact
-  const cfg = w.config
-  const slot = w.Ball.rim[eid]!
-  const hole = RC.hole[slot]!
-  const vt0 = RC.speed0[slot]!
-  const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
-  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!))
-  const P = w.Path
-  P.nextKind[eid] = PathEvent.RollEnd
-  P.nextHole[eid] = hole
-  P.nextT[eid] = RC.time0[slot]! + Math.min(tDrop, tPop)
-}
-
-/** True when a rim roll that started with speed vt0 pops off before it drops. */
-export function rollPopsOff(w: BallWorld, eid: number): boolean {
-  const RC = w.RimContact
-  const cfg = w.config
-  const slot = w.Ball.rim[eid]!
-  const vt0 = RC.speed0[slot]!
-  const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
-  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[RC.hole[slot]!]!))
-  return tPop < tDrop
-}
-
 /** Ball state at time t on its straight path (clamped at its stop). */
 export function sampleRolling(w: BallWorld, eid: number, t: number): void {
   const P = w.Path
@@ -272,131 +224,4 @@ export function sampleAtDistance(w: BallWorld, eid: number, d: number): void {
   B.vx[eid] = ux * v
   B.vy[eid] = uy * v
   P.speed[eid] = v
-}
-
-/** A rim-rolling ball's state at a time, written by rimRollAt (module scratch: no allocation). */
-export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc: 0, radius: 0 }
-
-/** Evaluates a rim-rolling ball at time t into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt. */
-export function rimRollAt(w: BallWorld, eid: number, t: number): void {
-  const RC = w.RimContact
-  const slot = w.Ball.rim[eid]!
-  const hole = RC.hole[slot]!
-  const R = w.Hole.radius[hole]!
-  const vt0 = RC.speed0[slot]!
-  const mu = w.config.RIM_ROLL_FRICTION
-  let tau = t - RC.time0[slot]!
-  if (tau < 0) tau = 0
-  const arc = rollArc(tau, vt0, mu)
-  const v = rollSpeed(tau, vt0, mu)
-  const dir = RC.direction[slot]!
-  const phi = RC.angle0[slot]! + (dir * arc) / R
-  const c = Math.cos(phi)
-  const s = Math.sin(phi)
-  const o = rimRollState
-  o.x = w.Hole.x[hole]! + R * c
-  o.y = w.Hole.y[hole]! + R * s
-  o.vx = -dir * s * v
-  o.vy = dir * c * v
-  o.speed = v
-  o.angle = phi
-  o.arc = arc
-  o.radius = R
-}
-
-/** Ball state at time t on the rim (rimRollAt), written into Ball, RimContact and Path. */
-export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
-  rimRollAt(w, eid, t)
-  const o = rimRollState
-  const B = w.Ball
-  const slot = B.rim[eid]!
-  B.x[eid] = o.x
-  B.y[eid] = o.y
-  B.vx[eid] = o.vx
-  B.vy[eid] = o.vy
-  w.RimContact.angle[slot] = o.angle
-  w.RimContact.arc[slot] = o.arc
-  w.Path.speed[eid] = o.speed
-}
-
-/**
- * Puts a ball on the rim of `hole` at time t (Stage 3's start), from its state in Ball: angle, tangential
- * speed |v_t| along the counter-clockwise tangent (−n_y, n_x), direction and start time into its RimContact
- * slot, mode RimRoll. Returns the angle. Shared by the exact and the naive rim-roll systems.
- */
-export function startRimRoll(w: BallWorld, eid: number, hole: number, t: number): number {
-  const B = w.Ball
-  const RC = w.RimContact
-  const rim = B.rim[eid]!
-  const nx = B.x[eid]! - w.Hole.x[hole]!
-  const ny = B.y[eid]! - w.Hole.y[hole]!
-  const len = Math.hypot(nx, ny)
-  const vt = len > 0 ? (-B.vx[eid]! * ny + B.vy[eid]! * nx) / len : 0
-  const phi = Math.atan2(ny, nx)
-  RC.mode[rim] = RimMode.Rolling
-  RC.angle0[rim] = phi
-  RC.speed0[rim] = Math.abs(vt)
-  RC.direction[rim] = vt >= 0 ? 1 : -1
-  RC.time0[rim] = t
-  B.mode[eid] = BallMode.RimRoll
-  return phi
-}
-
-/** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
-export function emitHoleEvent(
-  w: BallWorld,
-  type: (typeof EventType)[keyof typeof EventType],
-  eid: number,
-  hole: number,
-  t: number,
-  via: CaptureViaCode = CaptureVia.None,
-): void {
-  const RC = w.RimContact
-  const slot = w.Ball.rim[eid]!
-  const hasLip = RC.hole[slot] === hole && RC.hasLip[slot] === 1
-  pushEvent(w.events, type, eid, hole, t, hasLip, RC.delta[slot]!, RC.speed[slot]!, via)
-}
-
-/**
- * The ball falls into `hole` at time t: it sits at the hole centre, at rest, and stops being simulated.
- * Its hole lock ends with the capture event, so its RimContact slot is given back.
- */
-export function captureBall(w: BallWorld, eid: number, hole: number, t: number, via: CaptureViaCode): void {
-  emitHoleEvent(w, EventType.Capture, eid, hole, t, via)
-  const B = w.Ball
-  B.mode[eid] = BallMode.Captured
-  B.x[eid] = w.Hole.x[hole]!
-  B.y[eid] = w.Hole.y[hole]!
-  B.vx[eid] = 0
-  B.vy[eid] = 0
-  w.Path.speed[eid] = 0
-  w.Path.nextT[eid] = NEVER
-  w.Path.nextKind[eid] = PathEvent.None
-  releaseRim(w, eid)
-  removeMoving(w, eid)
-  if (w.collide !== null) restingRemove(w, eid)
-}
-
-/** The ball stops on the panel, outside every hole, at time t. */
-export function restBall(w: BallWorld, eid: number, t: number): void {
-  pushEvent(w.events, EventType.Rest, eid, 0, t, false, 0, 0)
-  const B = w.Ball
-  B.mode[eid] = BallMode.Resting
-  B.vx[eid] = 0
-  B.vy[eid] = 0
-  w.Path.speed[eid] = 0
-  w.Path.nextT[eid] = NEVER
-  w.Path.nextKind[eid] = PathEvent.None
-  removeMoving(w, eid)
-  // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid
-  if (w.collide !== null) restingInsert(w, eid)
-}
-
-/** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
-export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
-  if (w.collide !== null) restingRemove(w, eid)
-  w.Ball.mode[eid] = BallMode.Rolling
-  startPath(w, eid, x, y, vx, vy, t)
-  planRolling(w, eid)
-  addMoving(w, eid)
 }

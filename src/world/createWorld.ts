@@ -19,7 +19,8 @@ import { resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from '../
 import { createEventBuffer, type EventBuffer } from '../events.js'
 import { GRID_MIN_HOLES, createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { clearSlot, growStore } from '../../components/store.js'
-import { bumpVersion, createCollisionState, growCollisionState, restingRemove, type CollisionState } from '../contacts/state.js'
+import { bumpVersion, createCollisionState, growCollisionState, type CollisionState } from './contactState.js'
+import { restingRemove } from './restingGrid.js'
 
 /** A growable list of entity ids. */
 export interface IdList {

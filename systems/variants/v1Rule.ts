@@ -6,7 +6,8 @@
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { CaptureVia } from '../../src/events.js'
-import { captureBall, planRolling } from '../../src/motion/rolling.js'
+import { captureBall } from '../../src/motion/ballFate.js'
+import { planRolling } from '../../src/motion/rolling.js'
 import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../../src/schedule.js'
 import { lockAtLip, type BallWorld } from '../../src/world/createWorld.js'
 

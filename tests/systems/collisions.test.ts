@@ -1,7 +1,7 @@
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
-import { contactOut, resolveContact } from '../../src/contacts/state'
+import { contactOut, resolveContact } from '../../src/contacts/law'
 import { PathEvent } from '../../components/Path'
 import { EXACT, rng, shoot } from '../helpers'
 

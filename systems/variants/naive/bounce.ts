@@ -6,7 +6,7 @@
 import { PathEvent } from '../../../components/Path.js'
 import { RimMode } from '../../../components/RimContact.js'
 import { EventType } from '../../../src/events.js'
-import { emitHoleEvent } from '../../../src/motion/rolling.js'
+import { emitHoleEvent } from '../../../src/motion/ballFate.js'
 import { rimBounce } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'

@@ -4,7 +4,7 @@ import { PathEvent } from '../../../components/Path.js'
 import { RimMode } from '../../../components/RimContact.js'
 import { EventType } from '../../../src/events.js'
 import { vSkip } from '../../../src/geometry.js'
-import { emitHoleEvent } from '../../../src/motion/rolling.js'
+import { emitHoleEvent } from '../../../src/motion/ballFate.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 

@@ -6,7 +6,7 @@
 import { BallMode } from '../../../components/Ball.js'
 import { RimMode } from '../../../components/RimContact.js'
 import { CaptureVia } from '../../../src/events.js'
-import { captureBall, restBall } from '../../../src/motion/rolling.js'
+import { captureBall, restBall } from '../../../src/motion/ballFate.js'
 import { lockAtLip, type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 

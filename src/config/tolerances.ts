@@ -1,0 +1,40 @@
+// Every tolerance and work cap of the simulation, each with what it guards. Geometry is in px, time in s.
+// Changing one changes outcomes: the tests pin their consequences (tests/stability.test.ts,
+// tests/systems/collisions.test.ts).
+
+/** Returned for "no such event" times and distances: far beyond any simulated time, yet finite. */
+export const NEVER = 1e300
+
+/** Largest relative disagreement accepted between a given GRAVITY and V_SKIP_MAX (one derives the other). */
+export const CONSISTENCY_TOLERANCE = 1e-9
+
+/** Contact is declared when the gap is at most this, px, and the balls approach. */
+export const GAP_TOLERANCE = 1e-7
+/**
+ * Balls approach when the gap closes faster than this share of their relative speed plus SETTLE_FLOOR of
+ * BALL_SETTLE_SPEED: rounding after a contact that left them sliding side by side is not a new contact,
+ * and balls settled against each other (their speeds equal to within a thousandth of the settle speed)
+ * stay settled instead of averaging their velocities ever more finely.
+ */
+export const APPROACH_EPSILON = 1e-9
+export const SETTLE_FLOOR = 1e-3
+/**
+ * A contact within this time, s, of an earlier contact of either ball is elastic (the TC model of Luding and
+ * McNamara): a push through a row of touching balls then passes along it in one sweep, as in Newton's
+ * cradle, instead of dissipating in an endless run of ever-smaller contacts (inelastic collapse).
+ */
+export const CONTACT_DURATION = 1e-4
+/**
+ * Gap, px, within which two balls, or a ball and a wall, count as touching: when a settling contact gathers
+ * its cluster, and when a settled ball's motion into a wall it touches is removed.
+ */
+export const TOUCH_GAP = 1e-6
+/** Most balls one settling contact moves together. */
+export const MAX_CLUSTER = 256
+/** Least advance of the contact search while two balls touch without approaching, s. */
+export const MIN_ADVANCE = 1e-6
+/** Iterations of one contact search before it is put back in the heap to continue later. */
+export const MAX_SEARCH_STEPS = 512
+
+/** Bookkeeping events (exits, near misses) one ball may take in one pass of the integration system, each consuming a hole ahead. */
+export const MAX_INLINE_EVENTS = 1 << 16

@@ -1,0 +1,72 @@
+// The touching cluster of a settling contact: the balls touching the pair, and those touching them.
+import { BallMode } from '../../components/Ball.js'
+import { MAX_CLUSTER, TOUCH_GAP } from '../config/tolerances.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { AT, E, X, Y, evalBall, sampleForContact } from './evalMotion.js'
+import { capsuleCells } from './sweepGrid.js'
+
+/**
+ * Gathers into C.cluster the balls touching a or b (gap ≤ TOUCH_GAP at time t), and those touching
+ * them, breadth first, up to MAX_CLUSTER balls; a and b come first. Members are sampled into Ball at t.
+ */
+export function collectCluster(w: BallWorld, a: number, b: number, t: number): void {
+  const C = w.collide!
+  if (++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  const stamp = C.seenStamp
+  const list = C.cluster
+  list[0] = a
+  list[1] = b
+  C.seen[a] = stamp
+  C.seen[b] = stamp
+  let n = 2
+  const B = w.Ball
+  for (let head = 0; head < n && n < MAX_CLUSTER; head++) {
+    const m = list[head]!
+    const x = B.x[m]!
+    const y = B.y[m]!
+    const r = B.radius[m]!
+    const sMask = C.sweepHead.length - 1
+    let k = capsuleCells(C, x, y, x, y, r, sMask)
+    for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
+      const bucket = C.cells[i]!
+      if (C.sweepStamp[bucket] !== C.stamp) continue
+      for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) {
+        const c = C.entBall[e]!
+        if (C.seen[c] === stamp) continue
+        if (touches(w, c, x, y, r, t)) {
+          C.seen[c] = stamp
+          list[n++] = c
+        }
+      }
+    }
+    if (C.restCount === 0) continue
+    const rMask = C.restHead.length - 1
+    k = capsuleCells(C, x, y, x, y, r + C.maxRadius, rMask)
+    for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
+      for (let c = C.restHead[C.cells[i]!]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) {
+        if (C.seen[c] === stamp) continue
+        if (touches(w, c, x, y, r, t)) {
+          C.seen[c] = stamp
+          list[n++] = c
+        }
+      }
+    }
+  }
+  C.clusterCount = n
+}
+
+function touches(w: BallWorld, c: number, x: number, y: number, r: number, t: number): boolean {
+  const mode = w.Ball.mode[c]
+  if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return false
+  E[AT] = t
+  evalBall(w, c)
+  const dx = E[X] - x
+  const dy = E[Y] - y
+  const S = r + w.Ball.radius[c]! + TOUCH_GAP
+  if (dx * dx + dy * dy > S * S) return false
+  sampleForContact(w, c, t)
+  return true
+}

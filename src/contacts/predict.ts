@@ -1,0 +1,127 @@
+// Contact prediction: a ball's contacts with every ball near its path over the rest of the step, and its
+// own next event, pushed into the event heap.
+import { BallMode } from '../../components/Ball.js'
+import { GAP_TOLERANCE } from '../config/tolerances.js'
+import { grown } from '../world/contactState.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { HeapKind, heapPush } from './eventHeap.js'
+import { motionEnd, motionStart } from './evalMotion.js'
+import { RESULT, SearchResult, TIME, search, searchContact } from './search.js'
+import { CR, X1, X2, Y1, Y2, cap, capsuleCells, sweptCapsule } from './sweepGrid.js'
+
+/**
+ * Predicts ball `a`'s contacts with every ball near its path over [C.now, tickEnd] and pushes them, and its
+ * own next event, into the heap; then enters its capsule into the hash. A step's first build calls this once
+ * per moving ball, so each pair is tried once (by the later of the two); later calls try every neighbour.
+ */
+export function predictBall(w: BallWorld, a: number): void {
+  const C = w.collide!
+  const mode = w.Ball.mode[a]
+  if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return
+  const tEnd = w.tickEnd
+  if (mode !== BallMode.Resting) {
+    const own = w.Path.nextT[a]!
+    if (own <= tEnd) heapPush(C, own, HeapKind.Own, a, 0)
+  }
+  const now = C.now
+  sweptCapsule(w, a, now, tEnd)
+  const x1 = cap[X1]
+  const y1 = cap[Y1]
+  const x2 = cap[X2]
+  const y2 = cap[Y2]
+  const rho = cap[CR]
+  const startA = motionStart(w, a)
+  const endA = motionEnd(w, a, tEnd)
+  if (++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  const stamp = C.seenStamp
+  C.seen[a] = stamp
+
+  // moving balls' capsules
+  const sMask = C.sweepHead.length - 1
+  let n = capsuleCells(C, x1, y1, x2, y2, rho, sMask)
+  for (let k = 0; k < n; k++) {
+    const bucket = C.cells[k]!
+    if (C.sweepStamp[bucket] !== C.stamp) continue
+    for (let e = C.sweepHead[bucket]!; e >= 0; e = C.entNext[e]!) {
+      const b = C.entBall[e]!
+      if (C.seen[b] === stamp) continue
+      // stale entries of balls that have since stopped: those are found through the resting grid
+      const mb = w.Ball.mode[b]
+      if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
+      C.seen[b] = stamp
+      tryPair(w, a, b, startA, endA, tEnd)
+    }
+  }
+  // enter a's capsule, in the same cells (resting balls are found through the resting grid)
+  if (mode !== BallMode.Resting) {
+    for (let k = 0; k < n; k++) {
+      const bucket = C.cells[k]!
+      if (C.entCount === C.entNext.length) {
+        C.entNext = grown(C.entNext, C.entCount * 2)
+        C.entBall = grown(C.entBall, C.entCount * 2)
+      }
+      const e = C.entCount++
+      C.entBall[e] = a
+      if (C.sweepStamp[bucket] !== C.stamp) {
+        C.sweepStamp[bucket] = C.stamp
+        C.entNext[e] = -1
+      } else C.entNext[e] = C.sweepHead[bucket]!
+      C.sweepHead[bucket] = e
+    }
+  }
+  // resting balls, by centre cell: widen by the largest radius
+  if (mode !== BallMode.Resting && C.restCount > 0) {
+    const rMask = C.restHead.length - 1
+    n = capsuleCells(C, x1, y1, x2, y2, rho + C.maxRadius, rMask)
+    for (let k = 0; k < n; k++) {
+      for (let b = C.restHead[C.cells[k]!]!; b !== 0; b = C.restNext[b]!) {
+        if (C.seen[b] === stamp) continue
+        C.seen[b] = stamp
+        // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
+        if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > (rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE) ** 2) continue
+        tryPair(w, a, b, startA, endA, tEnd)
+      }
+    }
+  }
+}
+
+/** Squared distance from (px, py) to the segment (x1, y1)–(x2, y2). */
+function segmentDistance2(px: number, py: number, x1: number, y1: number, x2: number, y2: number): number {
+  const dx = x2 - x1
+  const dy = y2 - y1
+  const len2 = dx * dx + dy * dy
+  let s = len2 > 0 ? ((px - x1) * dx + (py - y1) * dy) / len2 : 0
+  if (s < 0) s = 0
+  else if (s > 1) s = 1
+  const ex = x1 + s * dx - px
+  const ey = y1 + s * dy - py
+  return ex * ex + ey * ey
+}
+
+function tryPair(w: BallWorld, a: number, b: number, startA: number, endA: number, tEnd: number): void {
+  const startB = motionStart(w, b)
+  const endB = motionEnd(w, b, tEnd)
+  searchAndPush(w, a, b, startA > startB ? startA : startB, endA < endB ? endA : endB)
+}
+
+/** Continues a search that ran out of steps, from where it stopped. */
+export function resumeSearch(w: BallWorld, a: number, b: number, from: number): void {
+  const endA = motionEnd(w, a, w.tickEnd)
+  const endB = motionEnd(w, b, w.tickEnd)
+  searchAndPush(w, a, b, from, endA < endB ? endA : endB)
+}
+
+/** Searches a and b over [from, to] and pushes what it finds: their contact, or where to resume. */
+function searchAndPush(w: BallWorld, a: number, b: number, from: number, to: number): void {
+  searchContact(w, a, b, from, to)
+  if (search[RESULT] === SearchResult.None) return
+  const C = w.collide!
+  // a contact found behind the clock (balls put down overlapping) is handled now
+  const t = search[TIME] > C.now ? search[TIME] : C.now
+  const kind = search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume
+  heapPush(C, t, kind, a < b ? a : b, a < b ? b : a)
+}
+

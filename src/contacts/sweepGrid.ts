@@ -1,0 +1,98 @@
+// The swept-capsule hash of a contacts-on step: each moving ball's capsule over the rest of the step,
+// rasterised into a uniform grid of hash buckets, so a ball meets only the balls near its path.
+import { BallMode } from '../../components/Ball.js'
+import { grown, type CollisionState } from '../world/contactState.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { bucketOf } from '../world/restingGrid.js'
+import { AT, E, X, Y, evalBall, motionEnd } from './evalMotion.js'
+
+/**
+ * Fills C.cells with the buckets (of a table of mask + 1) of every grid cell that the capsule from
+ * (x1, y1) to (x2, y2) with radius rho may touch: row by row, the segment's extent within the row's band,
+ * widened by rho. Returns the count.
+ */
+export function capsuleCells(C: CollisionState, x1: number, y1: number, x2: number, y2: number, rho: number, mask: number): number {
+  const c = C.cell
+  const lo = Math.min(y1, y2) - rho
+  const hi = Math.max(y1, y2) + rho
+  const row0 = Math.floor(lo / c)
+  const row1 = Math.floor(hi / c)
+  const dy = y2 - y1
+  let n = 0
+  for (let row = row0; row <= row1; row++) {
+    // the part of the segment whose y lies within rho of this row's band
+    const bandLo = row * c - rho
+    const bandHi = (row + 1) * c + rho
+    let s0 = 0
+    let s1 = 1
+    if (dy !== 0) {
+      let sa = (bandLo - y1) / dy
+      let sb = (bandHi - y1) / dy
+      if (sa > sb) {
+        const tmp = sa
+        sa = sb
+        sb = tmp
+      }
+      if (sa > s0) s0 = sa
+      if (sb < s1) s1 = sb
+      if (s0 > s1) continue
+    }
+    const xa = x1 + (x2 - x1) * s0
+    const xb = x1 + (x2 - x1) * s1
+    const col0 = Math.floor((Math.min(xa, xb) - rho) / c)
+    const col1 = Math.floor((Math.max(xa, xb) + rho) / c)
+    for (let col = col0; col <= col1; col++) {
+      if (n === C.cells.length) C.cells = grown(C.cells, n * 2)
+      C.cells[n++] = bucketOf(col, row, mask)
+    }
+  }
+  return n
+}
+
+/** Starts a step: empties the heap and the swept-capsule hash (sized for the moving balls). */
+export function beginCollisionStep(w: BallWorld): void {
+  const C = w.collide!
+  C.heapCount = 0
+  C.entCount = 0
+  let size = C.sweepHead.length
+  while (size < 4 * w.moving.count) size *= 2
+  if (size !== C.sweepHead.length) {
+    C.sweepHead = new Int32Array(size)
+    C.sweepStamp = new Uint32Array(size)
+    C.stamp = 0
+  }
+  C.stamp++
+  if (C.stamp === 0xffffffff) {
+    C.sweepStamp.fill(0)
+    C.stamp = 1
+  }
+}
+
+/** The capsule a ball may sweep from `from` to the end of its known motion (capped at `to`). */
+/** the capsule sweptCapsule writes: ends (X1, Y1), (X2, Y2) and radius CR */
+export const cap = new Float64Array(5)
+export const X1 = 0
+export const Y1 = 1
+export const X2 = 2
+export const Y2 = 3
+export const CR = 4
+export function sweptCapsule(w: BallWorld, eid: number, from: number, to: number): void {
+  const r = w.Ball.radius[eid]!
+  if (w.Ball.mode[eid] === BallMode.RimRoll) {
+    // anywhere on the rim circle of its hole
+    const hole = w.RimContact.hole[w.Ball.rim[eid]!]!
+    cap[X1] = cap[X2] = w.Hole.x[hole]!
+    cap[Y1] = cap[Y2] = w.Hole.y[hole]!
+    cap[CR] = w.Hole.radius[hole]! + r
+    return
+  }
+  E[AT] = from
+  evalBall(w, eid)
+  cap[X1] = E[X]
+  cap[Y1] = E[Y]
+  E[AT] = motionEnd(w, eid, to)
+  evalBall(w, eid)
+  cap[X2] = E[X]
+  cap[Y2] = E[Y]
+  cap[CR] = r
+}

@@ -1,0 +1,67 @@
+// The transitions that end or restart a ball's motion: capture, rest, launch, and the hole events they emit.
+import { BallMode } from '../../components/Ball.js'
+import { PathEvent } from '../../components/Path.js'
+import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from '../events.js'
+import { addMoving, releaseRim, removeMoving, type BallWorld } from '../world/createWorld.js'
+import { restingInsert, restingRemove } from '../world/restingGrid.js'
+import { NEVER } from '../config/tolerances.js'
+import { startPath, planRolling } from './rolling.js'
+
+/** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
+export function emitHoleEvent(
+  w: BallWorld,
+  type: (typeof EventType)[keyof typeof EventType],
+  eid: number,
+  hole: number,
+  t: number,
+  via: CaptureViaCode = CaptureVia.None,
+): void {
+  const RC = w.RimContact
+  const slot = w.Ball.rim[eid]!
+  const hasLip = RC.hole[slot] === hole && RC.hasLip[slot] === 1
+  pushEvent(w.events, type, eid, hole, t, hasLip, RC.delta[slot]!, RC.speed[slot]!, via)
+}
+
+/**
+ * The ball falls into `hole` at time t: it sits at the hole centre, at rest, and stops being simulated.
+ * Its hole lock ends with the capture event, so its RimContact slot is given back.
+ */
+export function captureBall(w: BallWorld, eid: number, hole: number, t: number, via: CaptureViaCode): void {
+  emitHoleEvent(w, EventType.Capture, eid, hole, t, via)
+  const B = w.Ball
+  B.mode[eid] = BallMode.Captured
+  B.x[eid] = w.Hole.x[hole]!
+  B.y[eid] = w.Hole.y[hole]!
+  B.vx[eid] = 0
+  B.vy[eid] = 0
+  w.Path.speed[eid] = 0
+  w.Path.nextT[eid] = NEVER
+  w.Path.nextKind[eid] = PathEvent.None
+  releaseRim(w, eid)
+  removeMoving(w, eid)
+  if (w.collide !== null) restingRemove(w, eid)
+}
+
+/** The ball stops on the panel, outside every hole, at time t. */
+export function restBall(w: BallWorld, eid: number, t: number): void {
+  pushEvent(w.events, EventType.Rest, eid, 0, t, false, 0, 0)
+  const B = w.Ball
+  B.mode[eid] = BallMode.Resting
+  B.vx[eid] = 0
+  B.vy[eid] = 0
+  w.Path.speed[eid] = 0
+  w.Path.nextT[eid] = NEVER
+  w.Path.nextKind[eid] = PathEvent.None
+  removeMoving(w, eid)
+  // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid
+  if (w.collide !== null) restingInsert(w, eid)
+}
+
+/** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
+export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  if (w.collide !== null) restingRemove(w, eid)
+  w.Ball.mode[eid] = BallMode.Rolling
+  startPath(w, eid, x, y, vx, vy, t)
+  planRolling(w, eid)
+  addMoving(w, eid)
+}

@@ -1,0 +1,101 @@
+// A ball rolling round a hole's lip (Stage 3): its closed-form state at any time, v_t = v_t0·e^(−μτ), the
+// start of a roll and its end (drop or pop-off), exact for every dt.
+import { BallMode } from '../../components/Ball.js'
+import { PathEvent } from '../../components/Path.js'
+import { RimMode } from '../../components/RimContact.js'
+import { popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
+import { type BallWorld } from '../world/createWorld.js'
+
+/** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
+export function planRimRoll(w: BallWorld, eid: number): void {
+  const RC = w.RimContact
+  const cfg = w.config
+  const slot = w.Ball.rim[eid]!
+  const hole = RC.hole[slot]!
+  const vt0 = RC.speed0[slot]!
+  const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
+  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!))
+  const P = w.Path
+  P.nextKind[eid] = PathEvent.RollEnd
+  P.nextHole[eid] = hole
+  P.nextT[eid] = RC.time0[slot]! + Math.min(tDrop, tPop)
+}
+
+/** True when a rim roll that started with speed vt0 pops off before it drops. */
+export function rollPopsOff(w: BallWorld, eid: number): boolean {
+  const RC = w.RimContact
+  const cfg = w.config
+  const slot = w.Ball.rim[eid]!
+  const vt0 = RC.speed0[slot]!
+  const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
+  const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[RC.hole[slot]!]!))
+  return tPop < tDrop
+}
+
+/** A rim-rolling ball's state at a time, written by rimRollAt (module scratch: no allocation). */
+export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc: 0, radius: 0 }
+
+/** Evaluates a rim-rolling ball at time t into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt. */
+export function rimRollAt(w: BallWorld, eid: number, t: number): void {
+  const RC = w.RimContact
+  const slot = w.Ball.rim[eid]!
+  const hole = RC.hole[slot]!
+  const R = w.Hole.radius[hole]!
+  const vt0 = RC.speed0[slot]!
+  const mu = w.config.RIM_ROLL_FRICTION
+  let tau = t - RC.time0[slot]!
+  if (tau < 0) tau = 0
+  const arc = rollArc(tau, vt0, mu)
+  const v = rollSpeed(tau, vt0, mu)
+  const dir = RC.direction[slot]!
+  const phi = RC.angle0[slot]! + (dir * arc) / R
+  const c = Math.cos(phi)
+  const s = Math.sin(phi)
+  const o = rimRollState
+  o.x = w.Hole.x[hole]! + R * c
+  o.y = w.Hole.y[hole]! + R * s
+  o.vx = -dir * s * v
+  o.vy = dir * c * v
+  o.speed = v
+  o.angle = phi
+  o.arc = arc
+  o.radius = R
+}
+
+/** Ball state at time t on the rim (rimRollAt), written into Ball, RimContact and Path. */
+export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
+  rimRollAt(w, eid, t)
+  const o = rimRollState
+  const B = w.Ball
+  const slot = B.rim[eid]!
+  B.x[eid] = o.x
+  B.y[eid] = o.y
+  B.vx[eid] = o.vx
+  B.vy[eid] = o.vy
+  w.RimContact.angle[slot] = o.angle
+  w.RimContact.arc[slot] = o.arc
+  w.Path.speed[eid] = o.speed
+}
+
+/**
+ * Puts a ball on the rim of `hole` at time t (Stage 3's start), from its state in Ball: angle, tangential
+ * speed |v_t| along the counter-clockwise tangent (−n_y, n_x), direction and start time into its RimContact
+ * slot, mode RimRoll. Returns the angle. Shared by the exact and the naive rim-roll systems.
+ */
+export function startRimRoll(w: BallWorld, eid: number, hole: number, t: number): number {
+  const B = w.Ball
+  const RC = w.RimContact
+  const rim = B.rim[eid]!
+  const nx = B.x[eid]! - w.Hole.x[hole]!
+  const ny = B.y[eid]! - w.Hole.y[hole]!
+  const len = Math.hypot(nx, ny)
+  const vt = len > 0 ? (-B.vx[eid]! * ny + B.vy[eid]! * nx) / len : 0
+  const phi = Math.atan2(ny, nx)
+  RC.mode[rim] = RimMode.Rolling
+  RC.angle0[rim] = phi
+  RC.speed0[rim] = Math.abs(vt)
+  RC.direction[rim] = vt >= 0 ? 1 : -1
+  RC.time0[rim] = t
+  B.mode[eid] = BallMode.RimRoll
+  return phi
+}

@@ -1,0 +1,118 @@
+// Ball-ball contact state (config.BALL_COLLISIONS = 'on'): masses, path versions, the resting grid's
+// links, the swept-capsule hash, the event heap and scratch lists, all in typed arrays that grow by
+// doubling, so nothing is allocated per ball per tick. A world with contacts off has none of it (null).
+// The algorithms that use it are in src/contacts/.
+import { MAX_CLUSTER } from '../config/tolerances.js'
+import type { BallWorld } from './createWorld.js'
+
+export interface CollisionState {
+  /** mass of each ball (by entity id), in units of a default ball */
+  mass: Float64Array
+  /** path version of each ball; heap entries made with an older version are stale */
+  ver: Uint32Array
+  /** the ball this one last touched (0: none), and when, s */
+  partner: Uint32Array
+  lastContact: Float64Array
+  /** resting grid: bucket of a resting ball (−1: not in the grid) and its list links (0: none) */
+  restBucket: Int32Array
+  restNext: Uint32Array
+  restPrev: Uint32Array
+  restHead: Uint32Array
+  restCount: number
+  /** largest radius of any ball the grids have seen, px */
+  maxRadius: number
+  /** grid cell, px */
+  cell: number
+  /** swept-capsule hash: bucket heads (valid where stamp matches), entries as linked lists */
+  sweepHead: Int32Array
+  sweepStamp: Uint32Array
+  stamp: number
+  entNext: Int32Array
+  entBall: Uint32Array
+  entCount: number
+  /** per-query stamp by entity id, so a candidate is tested once per query */
+  seen: Uint32Array
+  seenStamp: number
+  /** bucket indices of the capsule being rasterised */
+  cells: Int32Array
+  /** members of the touching cluster being settled */
+  cluster: Uint32Array
+  clusterCount: number
+  /** binary heap of events, keyed by (time, a, b, kind) */
+  hT: Float64Array
+  hA: Uint32Array
+  hB: Uint32Array
+  hVA: Uint32Array
+  hVB: Uint32Array
+  hKind: Uint8Array
+  heapCount: number
+  /** time of the last event handled, s */
+  now: number
+  /** contacts resolved since the world was made */
+  contacts: number
+}
+
+export function createCollisionState(capacity: number, ballRadius: number): CollisionState {
+  const restBucket = new Int32Array(capacity)
+  restBucket.fill(-1)
+  return {
+    mass: new Float64Array(capacity),
+    ver: new Uint32Array(capacity),
+    partner: new Uint32Array(capacity),
+    lastContact: new Float64Array(capacity).fill(-1e300),
+    restBucket,
+    restNext: new Uint32Array(capacity),
+    restPrev: new Uint32Array(capacity),
+    restHead: new Uint32Array(1 << 12),
+    restCount: 0,
+    maxRadius: ballRadius,
+    cell: 4 * ballRadius,
+    sweepHead: new Int32Array(1 << 10),
+    sweepStamp: new Uint32Array(1 << 10),
+    stamp: 0,
+    entNext: new Int32Array(1 << 12),
+    entBall: new Uint32Array(1 << 12),
+    entCount: 0,
+    seen: new Uint32Array(capacity),
+    seenStamp: 0,
+    cells: new Int32Array(256),
+    cluster: new Uint32Array(MAX_CLUSTER),
+    clusterCount: 0,
+    hT: new Float64Array(1 << 10),
+    hA: new Uint32Array(1 << 10),
+    hB: new Uint32Array(1 << 10),
+    hVA: new Uint32Array(1 << 10),
+    hVB: new Uint32Array(1 << 10),
+    hKind: new Uint8Array(1 << 10),
+    heapCount: 0,
+    now: 0,
+    contacts: 0,
+  }
+}
+
+/** A copy of `a`, `n` long, the new tail filled with `fill`. */
+export function grown<T extends Float64Array | Uint32Array | Int32Array | Uint8Array>(a: T, n: number, fill = 0): T {
+  const next = new (a.constructor as new (n: number) => T)(n)
+  next.set(a)
+  if (fill !== 0) next.fill(fill, a.length)
+  return next
+}
+
+/** Grows the per-ball arrays to `capacity` entities. */
+export function growCollisionState(C: CollisionState, capacity: number): void {
+  if (C.mass.length >= capacity) return
+  C.mass = grown(C.mass, capacity)
+  C.ver = grown(C.ver, capacity)
+  C.partner = grown(C.partner, capacity)
+  C.lastContact = grown(C.lastContact, capacity, -1e300)
+  C.restBucket = grown(C.restBucket, capacity, -1)
+  C.restNext = grown(C.restNext, capacity)
+  C.restPrev = grown(C.restPrev, capacity)
+  C.seen = grown(C.seen, capacity)
+}
+
+/** Marks a ball's motion as changed: its heap entries become stale. */
+export function bumpVersion(w: BallWorld, eid: number): void {
+  const C = w.collide!
+  C.ver[eid] = (C.ver[eid]! + 1) >>> 0
+}

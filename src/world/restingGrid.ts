@@ -1,0 +1,59 @@
+// The resting grid (ball-ball contacts on): resting balls hashed by the grid cell of their centre, kept
+// across steps and updated when a ball comes to rest or wakes, so resting balls cost nothing until struck.
+import type { BallWorld } from './createWorld.js'
+
+/** Hash bucket of grid cell (ix, iy) in a table of mask + 1 buckets. */
+export function bucketOf(ix: number, iy: number, mask: number): number {
+  return (Math.imul(ix, 73856093) ^ Math.imul(iy, 19349663)) & mask
+}
+
+/** Puts a resting ball into the resting grid (no-op if it is there). */
+export function restingInsert(w: BallWorld, eid: number): void {
+  const C = w.collide
+  if (C === null || C.restBucket[eid]! >= 0) return
+  if (C.restCount + 1 > 2 * C.restHead.length) rehashResting(w, C.restHead.length * 4)
+  const r = w.Ball.radius[eid]!
+  if (r > C.maxRadius) C.maxRadius = r
+  const mask = C.restHead.length - 1
+  const bucket = bucketOf(Math.floor(w.Ball.x[eid]! / C.cell), Math.floor(w.Ball.y[eid]! / C.cell), mask)
+  const head = C.restHead[bucket]!
+  C.restBucket[eid] = bucket
+  C.restPrev[eid] = 0
+  C.restNext[eid] = head
+  if (head !== 0) C.restPrev[head] = eid
+  C.restHead[bucket] = eid
+  C.restCount++
+}
+
+/** Takes a ball out of the resting grid (no-op if it is not there). */
+export function restingRemove(w: BallWorld, eid: number): void {
+  const C = w.collide
+  if (C === null) return
+  const bucket = C.restBucket[eid]!
+  if (bucket < 0) return
+  const prev = C.restPrev[eid]!
+  const next = C.restNext[eid]!
+  if (prev !== 0) C.restNext[prev] = next
+  else C.restHead[bucket] = next
+  if (next !== 0) C.restPrev[next] = prev
+  C.restBucket[eid] = -1
+  C.restNext[eid] = 0
+  C.restPrev[eid] = 0
+  C.restCount--
+}
+
+function rehashResting(w: BallWorld, buckets: number): void {
+  const C = w.collide!
+  const old = C.restHead
+  C.restHead = new Uint32Array(buckets)
+  const count = C.restCount
+  C.restCount = 0
+  // collect the chains first (they are relinked as they are walked)
+  const ids = new Uint32Array(count)
+  let k = 0
+  for (let b = 0; b < old.length; b++) {
+    for (let e = old[b]!; e !== 0; e = C.restNext[e]!) ids[k++] = e
+  }
+  for (let i = 0; i < k; i++) C.restBucket[ids[i]!] = -1
+  for (let i = 0; i < k; i++) restingInsert(w, ids[i]!)
+}
