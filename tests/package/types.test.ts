@@ -158,7 +158,7 @@ describe('published package', () => {
   })
 
   it('packs the three bundles, their shared chunks and the declarations of the three entries', () => {
-    for (const f of ['package.json', 'README.md', 'dist/index.js', 'dist/ecs.js', 'dist/reference.js']) expect(packed).toContain(f)
+    for (const f of ['package.json', 'README.md', 'LICENSE', 'dist/index.js', 'dist/ecs.js', 'dist/reference.js']) expect(packed).toContain(f)
     expect(packed.some((f) => f.startsWith('dist/chunks/') && f.endsWith('.js'))).toBe(true)
     const dts = new Set(packed.filter((f) => f.endsWith('.d.ts')))
     for (const f of ['dist/types/src/index.d.ts', 'dist/types/src/ecs.d.ts', 'dist/types/src/reference/index.d.ts']) expect(dts).toContain(f)
