@@ -11,7 +11,8 @@
 // Writes docs/results/resting.json (or under --out DIR). Prints figures; asserts nothing.
 //
 //   npm run bench:resting            npm run bench:resting -- --resting 100000   (fewer resting balls)
-import { BallMode, createBallPhysics, type BallPhysics } from '../src/index'
+import { BallMode } from '../src/ecs'
+import { createBallPhysics, type BallPhysics } from '../src/index'
 import { DT, argValue, collectGarbage, median, medianStepMs, writeResult } from './lib'
 
 const MOVING = 1000

@@ -25,7 +25,7 @@ export const PathEvent = {
   Wall: 9,
   /** centre crosses an open edge of the walls (walls system) */
   Gutter: 10,
-  /** touches another ball (collisions system; markHole holds the other ball) */
+  /** touches another ball (collisions system; markOther holds the other ball) */
   Collide: 11,
 } as const
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
@@ -56,10 +56,15 @@ export const PathSchema = {
   nextS: Float64Array,
   nextKind: Uint8Array,
   nextHole: Uint32Array,
-  /** for Wall and Gutter events, nextHole and markHole hold the WallEdge bit instead of a hole id */
+  /** the WallEdge bit of a Wall or Gutter event (0 for other kinds) */
+  nextEdge: Uint8Array,
   /** the event the ball is stopped at in this pass, for the systems (PathEvent.None when none) */
   mark: Uint8Array,
   markHole: Uint32Array,
+  /** the WallEdge bit of a marked Wall or Gutter event */
+  markEdge: Uint8Array,
+  /** the other ball of a marked Collide event */
+  markOther: Uint32Array,
 }
 
 export const createPathStore = (capacity: number) => createStore(PathSchema, capacity)

@@ -3,21 +3,8 @@
 // interpolation, and the per-frame event feed. Everything that changes the physics goes through the
 // public API (createBallPhysics, addPanel, throwBall, step, drainEvents, removeBall); the world's typed
 // arrays are only read.
-import {
-  BALL_MODE_NAMES,
-  BallMode,
-  DEFAULT_PANEL,
-  EVENT_TYPE_NAMES,
-  addPanel,
-  createBallPhysics,
-  createFixedStepClock,
-  type BallEvent,
-  type BallPhysics,
-  type BallPhysicsConfig,
-  type ConfigOverrides,
-  type FixedStepClock,
-  type PanelLayout,
-} from '../src/index'
+import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout } from '../src/index'
+import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
 import { isHoleEvent } from './theme'
 

@@ -2,7 +2,8 @@
 // single draw), velocity vectors, event flashes with their (δ, v), score pops, the aim arrow, the power
 // meter and the tray of balls left. It only reads the game and the world's arrays.
 import { Container, Graphics, Particle, ParticleContainer, Text, Texture } from 'pixi.js'
-import { BALL_MODE_NAMES, BallMode, cogRadius } from '../src/index'
+import { BALL_MODE_NAMES, cogRadius } from '../src/index'
+import { BallMode } from '../src/ecs'
 import { BALLS_PER_GAME, Kind, type DemoEvent, type Game } from './game'
 import type { ThrowInput } from './input'
 import { COLORS, FONT, MONO, PLAIN_BALL, eventColor, modeColor, valueColor } from './theme'

@@ -24,7 +24,7 @@ import {
   type DeltaSpeedGrid,
 } from '../src/physical/agreement'
 import { PHYSICAL_CONFIG } from '../src/config/presets'
-import { v1Schedule } from '../systems/variants/v1Rule'
+import { v1Schedule } from '../src/schedule'
 import { referenceCaptureSpeed, referenceOutcome } from '../src/reference/index'
 import type { ScheduleEntry } from '../src/schedule'
 

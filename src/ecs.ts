@@ -1,26 +1,67 @@
-// The `positron-ball-physics/ecs` entry: the bitECS world, its components, the commands that change it,
-// the systems and the schedule, and what a game's own system needs. Games that run their own loop start
-// here; `createBallPhysics` (the main entry) is a thin facade over the same functions.
-export { createBallWorld, ensureCapacity } from './world/createWorld.js'
-export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex } from './world/createWorld.js'
-export { DEFAULT_SCHEDULE, createSchedule, runSchedule } from './schedule.js'
+// `positron-ball-physics/ecs`: the bitECS world, its components, the commands that change it, the systems
+// and the schedule, and what a game's own system needs. Balls, holes and the walls are bitECS entities: a
+// game may put its own components on them, query them together with ours, and remove them with bitECS's
+// removeEntity. createBallPhysics (the main entry) is a thin facade over the same functions.
+
+// world
+export { createBallWorld } from './commands/createBallWorld.js'
+export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex, HoleTable, IdList, MovingSet } from './world/createWorld.js'
+export { forEachBall, isBall } from './world/balls.js'
+export { acquireRim, lockAtLip, releaseRim, rimSlot } from './world/rimSlots.js'
+export { addMoving, isMoving, pushId, removeMoving } from './world/idLists.js'
+export type { CollisionState } from './world/contactState.js'
+
+// schedule
+export { DEFAULT_SCHEDULE, createSchedule, runSchedule, v1Schedule } from './schedule.js'
 export type { ScheduleEntry, System } from './schedule.js'
+
+// commands
+export {
+  addBall,
+  ballState,
+  holeState,
+  isHeroBall,
+  listBalls,
+  listHoles,
+  removeBall,
+  setBallVelocity,
+  setHeroBall,
+  throwBall,
+  throwVelocity,
+} from './commands/balls.js'
+export type { BallSpec, BallState, HoleState, ThrowSpec } from './commands/balls.js'
+export { addHole, addHoles, removeHole } from './commands/holes.js'
+export type { HoleSpec } from './commands/holes.js'
+export { clearWalls, setWalls } from './commands/walls.js'
+export type { WallsSpec } from './commands/walls.js'
+export { drainEvents } from './commands/events.js'
+
+// components
 export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'
-export type { BallModeName, BallStore } from '../components/Ball.js'
+export type { BallModeCode, BallModeName, BallStore } from '../components/Ball.js'
 export { HoleSchema } from '../components/Hole.js'
 export type { HoleStore } from '../components/Hole.js'
 export { RIM_MODE_NAMES, RimContactSchema, RimMode } from '../components/RimContact.js'
-export type { RimContactStore } from '../components/RimContact.js'
+export type { RimContactStore, RimModeCode } from '../components/RimContact.js'
 export { PathEvent, PathSchema } from '../components/Path.js'
-export type { PathStore } from '../components/Path.js'
+export type { PathEventCode, PathStore } from '../components/Path.js'
 export { WallEdge, WallsSchema } from '../components/Walls.js'
 export type { WallsStore } from '../components/Walls.js'
+
+// for a game's own systems: events, and the motion a decision restarts
+export { CaptureVia, EventType, pushEvent } from './events.js'
+export type { BallEvent, CaptureViaCode, EventTypeCode } from './events.js'
+export { planRolling, sampleAtDistance, sampleRolling, startPath } from './motion/rolling.js'
+export { planRimRoll, rimRollAt, rimRollState, sampleRimRoll, startRimRoll } from './motion/rimRoll.js'
+export { captureBall, emitHoleEvent, launchBall, restBall } from './motion/ballFate.js'
+
+// systems, in the default schedule's order
 export { integrationSystem } from '../systems/integration.js'
+export { heroReferenceSystem } from '../systems/heroReference.js'
 export { skipOverSystem } from '../systems/skipOver.js'
 export { captureSystem } from '../systems/capture.js'
 export { cogGateSystem } from '../systems/cogGate.js'
 export { bounceSystem } from '../systems/bounce.js'
 export { rimRollSystem } from '../systems/rimRoll.js'
-export { heroReferenceSystem } from '../systems/heroReference.js'
 export { wallsSystem } from '../systems/walls.js'
 export { collisionsSystem } from '../systems/collisions.js'

@@ -53,6 +53,18 @@ export interface EventBuffer {
   /** 1 when delta and speed are set */
   hasDV: Uint8Array
   via: Uint8Array
+  /** the other ball of a collision (0 otherwise) */
+  other: Uint32Array
+  /** the normal impulse of a collision (0 otherwise) */
+  impulse: Float64Array
+  /**
+   * Entities removed since the last drain: `cutIds[k]` was removed when `cutAt[k]` events were buffered.
+   * Buffered events that name one of them (as ball, other or hole) are dropped at the drain, so no event
+   * ever names a new entity that reuses a removed one's id.
+   */
+  cutCount: number
+  cutIds: Uint32Array
+  cutAt: Uint32Array
 }
 
 export function createEventBuffer(capacity = 1024): EventBuffer {
@@ -66,6 +78,11 @@ export function createEventBuffer(capacity = 1024): EventBuffer {
     speed: new Float64Array(capacity),
     hasDV: new Uint8Array(capacity),
     via: new Uint8Array(capacity),
+    other: new Uint32Array(capacity),
+    impulse: new Float64Array(capacity),
+    cutCount: 0,
+    cutIds: new Uint32Array(16),
+    cutAt: new Uint32Array(16),
   }
 }
 
@@ -80,6 +97,8 @@ function grow(buf: EventBuffer): void {
   next.speed.set(buf.speed)
   next.hasDV.set(buf.hasDV)
   next.via.set(buf.via)
+  next.other.set(buf.other)
+  next.impulse.set(buf.impulse)
   buf.type = next.type
   buf.ball = next.ball
   buf.hole = next.hole
@@ -88,6 +107,8 @@ function grow(buf: EventBuffer): void {
   buf.speed = next.speed
   buf.hasDV = next.hasDV
   buf.via = next.via
+  buf.other = next.other
+  buf.impulse = next.impulse
 }
 
 /** Appends one event. `delta`/`speed` are recorded only when `hasDV` is true; `hole` 0 means none. */
@@ -112,6 +133,42 @@ export function pushEvent(
   buf.delta[i] = hasDV ? delta : 0
   buf.speed[i] = hasDV ? speed : 0
   buf.via[i] = via
+  buf.other[i] = 0
+  buf.impulse[i] = 0
+}
+
+/** Appends a collision of balls `ball` and `other` at `time`: approach speed and normal impulse. */
+export function pushCollisionEvent(buf: EventBuffer, ball: number, other: number, time: number, speed: number, impulse: number): void {
+  if (buf.count === buf.type.length) grow(buf)
+  const i = buf.count++
+  buf.type[i] = EventType.Collision
+  buf.ball[i] = ball
+  buf.hole[i] = 0
+  buf.time[i] = time
+  buf.hasDV[i] = 0
+  buf.delta[i] = 0
+  buf.speed[i] = speed
+  buf.via[i] = CaptureVia.None
+  buf.other[i] = other
+  buf.impulse[i] = impulse
+}
+
+/**
+ * Records that entity `id` (a ball or a hole) is removed now: the events buffered so far that name it are
+ * dropped at the next drain (its id may be reused by a new entity before then).
+ */
+export function cutEvents(buf: EventBuffer, id: number): void {
+  if (buf.count === 0) return
+  if (buf.cutCount === buf.cutIds.length) {
+    const ids = new Uint32Array(buf.cutCount * 2)
+    ids.set(buf.cutIds)
+    const at = new Uint32Array(buf.cutCount * 2)
+    at.set(buf.cutAt)
+    buf.cutIds = ids
+    buf.cutAt = at
+  }
+  buf.cutIds[buf.cutCount] = id
+  buf.cutAt[buf.cutCount++] = buf.count
 }
 
 /**
@@ -119,19 +176,28 @@ export function pushEvent(
  * recorded, so the order is deterministic) and empties the buffer.
  */
 export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
-  const n = buf.count
-  const order = new Array<number>(n)
-  for (let i = 0; i < n; i++) order[i] = i
+  // events that name an entity removed after they were buffered are dropped
+  let cut: Map<number, number> | null = null
+  if (buf.cutCount > 0) {
+    cut = new Map()
+    for (let k = 0; k < buf.cutCount; k++) cut.set(buf.cutIds[k]!, buf.cutAt[k]!) // later cuts overwrite
+    buf.cutCount = 0
+  }
+  const order: number[] = []
+  for (let i = 0, n = buf.count; i < n; i++) {
+    if (cut !== null && (i < (cut.get(buf.ball[i]!) ?? 0) || i < (cut.get(buf.hole[i]!) ?? 0) || i < (cut.get(buf.other[i]!) ?? 0))) continue
+    order.push(i)
+  }
+  const n = order.length
   order.sort((a, b) => buf.time[a]! - buf.time[b]! || buf.ball[a]! - buf.ball[b]! || a - b)
   const out = new Array<BallEvent>(n)
   for (let k = 0; k < n; k++) {
     const i = order[k]!
     const e: BallEvent = { type: EVENT_TYPE_NAMES[buf.type[i]!]!, ball: buf.ball[i]!, time: buf.time[i]! }
     if (buf.type[i] === EventType.Collision) {
-      // the hole slot carries the other ball; speed is the approach speed, delta the impulse
-      e.other = buf.hole[i]!
+      e.other = buf.other[i]!
       e.speed = buf.speed[i]!
-      e.impulse = buf.delta[i]!
+      e.impulse = buf.impulse[i]!
       out[k] = e
       continue
     }

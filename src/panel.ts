@@ -1,8 +1,11 @@
 // The built-in ball-toss panel: 5 rows of 5 holes, the launch point below them. With ROLLING_DECEL =
 // 300 px/s² a throw reaches the first row (80 px up) from power ≈ 0.04 and the top row (320 px up) from
 // power ≈ 0.48: the top row's sweet spot is the middle of the meter, and the upper third arrives at the
-// lower rows fast enough to skip them for most aims (design §4).
+// lower rows fast enough to skip them for most aims (docs/design.md §1).
 import type { BallPhysics } from './api/createBallPhysics.js'
+import { addHoles } from './commands/holes.js'
+import { describe } from './check.js'
+import type { BallWorld } from './world/createWorld.js'
 
 export interface PanelHole {
   x: number
@@ -32,7 +35,18 @@ export const DEFAULT_PANEL: Readonly<PanelLayout> = Object.freeze({
   ),
 })
 
-/** Adds a layout's holes to a simulation; returns their entity ids in layout order. */
-export function addPanel(sim: BallPhysics, layout: PanelLayout = DEFAULT_PANEL): number[] {
-  return layout.holes.map((h) => sim.addHole({ x: h.x, y: h.y, value: h.value }))
+/**
+ * Adds a layout's holes to a simulation (or a bare world), all or nothing: every hole is checked before the
+ * first is added. Returns their entity ids in layout order.
+ */
+export function addPanel(target: BallPhysics | BallWorld, layout: PanelLayout = DEFAULT_PANEL): number[] {
+  if (target === null || typeof target !== 'object') throw new TypeError(`addPanel: target must be a simulation or a world, got ${describe(target)}`)
+  const world = 'step' in target && 'world' in target ? target.world : (target as BallWorld)
+  if (layout === null || typeof layout !== 'object') throw new TypeError(`addPanel: layout must be a panel layout, got ${describe(layout)}`)
+  const holes = layout.holes
+  if (!Array.isArray(holes)) throw new TypeError(`layout.holes must be an array, got ${describe(holes)}`)
+  return addHoles(
+    world,
+    holes.map((h: PanelHole) => ({ x: h.x, y: h.y, value: h.value })),
+  )
 }

@@ -13,16 +13,13 @@ import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
+import { v1RuleSystem } from '../systems/variants/v1Rule.js'
 import type { BallPhysicsConfig } from './config/design.js'
+import { checkWorld, describe } from './check.js'
 import type { BallWorld } from './world/createWorld.js'
+import type { ScheduleEntry } from './world/system.js'
 
-export type System = (world: BallWorld) => void
-
-export interface ScheduleEntry {
-  readonly name: string
-  readonly run: System
-}
-
+export type { ScheduleEntry, System } from './world/system.js'
 /**
  * integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
  * capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3), then the panel's walls
@@ -54,6 +51,22 @@ export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEn
  * API's step does that); it must be finite and > 0.
  */
 export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
+  checkWorld('runSchedule', world)
+  if (!Array.isArray(schedule)) throw new TypeError(`runSchedule: schedule must be an array of { name, run } entries, got ${describe(schedule)}`)
+  if (typeof dt !== 'number') throw new TypeError(`dt must be a number of seconds > 0, got ${describe(dt)}`)
+  if (!Number.isFinite(dt) || dt <= 0) throw new RangeError(`dt must be a finite number of seconds > 0, got ${dt}`)
+  if (world.stepping) {
+    throw new Error('runSchedule: the world is already stepping (called from inside a system?); a step cannot run inside a step')
+  }
+  world.stepping = true
+  try {
+    runPasses(world, schedule, dt)
+  } finally {
+    world.stepping = false
+  }
+}
+
+function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   world.tickEnd = world.time + dt
   // with ball-ball contacts a pass handles one event, so the bound is per moving ball
   const maxPasses = world.collide === null ? world.config.MAX_EVENT_PASSES : world.config.MAX_EVENT_PASSES * (world.moving.count + 1)
@@ -62,4 +75,11 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
     if (world.marked.count === 0) break
   }
   world.time = world.tickEnd
+}
+
+/** The default schedule with the v1 rule ahead of the six stages: for charting the v1 model (docs/physical.md). */
+export function v1Schedule(): ScheduleEntry[] {
+  const s = DEFAULT_SCHEDULE.slice()
+  s.splice(1, 0, { name: 'v1Rule', run: v1RuleSystem })
+  return s
 }

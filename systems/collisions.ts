@@ -17,9 +17,10 @@ import { WallEdge } from '../components/Walls.js'
 import { CONTACT_DURATION, TOUCH_GAP } from '../src/config/tolerances.js'
 import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
-import { EventType, pushEvent } from '../src/events.js'
+import { pushCollisionEvent } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
-import { pushId, type BallWorld } from '../src/world/createWorld.js'
+import { pushId } from '../src/world/idLists.js'
+import { type BallWorld } from '../src/world/createWorld.js'
 
 export function collisionsSystem(w: BallWorld): void {
   const C = w.collide
@@ -31,8 +32,8 @@ export function collisionsSystem(w: BallWorld): void {
   for (let i = 0; i < n0; i++) {
     const a = list.ids[i]!
     if (P.mark[a] !== PathEvent.Collide) continue
-    const b = P.markHole[a]!
-    if (P.mark[b] !== PathEvent.Collide || P.markHole[b] !== a) {
+    const b = P.markOther[a]!
+    if (P.mark[b] !== PathEvent.Collide || P.markOther[b] !== a) {
       throw new Error(`ball ${a}: contact with ball ${b} was marked on one ball only`)
     }
     P.mark[a] = PathEvent.None
@@ -59,7 +60,7 @@ export function collisionsSystem(w: BallWorld): void {
     C.contacts++
     if (settle) {
       settleCluster(w, a, b, t)
-      pushEvent(w.events, EventType.Collision, a < b ? a : b, a < b ? b : a, t, true, contactOut.impulse, approach)
+      pushCollisionEvent(w.events, a < b ? a : b, a < b ? b : a, t, approach, contactOut.impulse)
       continue
     }
     const rapid = t - C.lastContact[a]! < CONTACT_DURATION || t - C.lastContact[b]! < CONTACT_DURATION
@@ -68,7 +69,7 @@ export function collisionsSystem(w: BallWorld): void {
     const o = contactOut
     C.lastContact[a] = t
     C.lastContact[b] = t
-    pushEvent(w.events, EventType.Collision, a < b ? a : b, a < b ? b : a, t, true, o.impulse, o.approach)
+    pushCollisionEvent(w.events, a < b ? a : b, a < b ? b : a, t, o.approach, o.impulse)
     restart(w, a, o.vax, o.vay, t)
     restart(w, b, o.vbx, o.vby, t)
     // set after the restart (a new path clears it): any later change of either path clears it again

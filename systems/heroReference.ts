@@ -19,7 +19,8 @@ import { CaptureVia, EventType } from '../src/events.js'
 import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
 import { referenceOutcome, type ReferenceInput } from '../src/reference/index.js'
-import { lockAtLip, type BallWorld } from '../src/world/createWorld.js'
+import { lockAtLip } from '../src/world/rimSlots.js'
+import { type BallWorld } from '../src/world/createWorld.js'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = (20 * Math.PI) / 180

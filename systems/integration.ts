@@ -19,7 +19,9 @@ import { beginCollisionStep } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
-import { pushId, releaseRim, type BallWorld, type IdList } from '../src/world/createWorld.js'
+import { pushId } from '../src/world/idLists.js'
+import { releaseRim } from '../src/world/rimSlots.js'
+import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
 
 export function integrationSystem(w: BallWorld): void {
@@ -145,7 +147,7 @@ function markContact(w: BallWorld, eid: number, other: number, t: number): void 
   const P = w.Path
   sampleForContact(w, eid, t)
   P.mark[eid] = PathEvent.Collide
-  P.markHole[eid] = other
+  P.markOther[eid] = other
   P.nextT[eid] = t
   pushId(w.marked, eid)
 }
@@ -186,6 +188,7 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
     }
     P.mark[eid] = kind
     P.markHole[eid] = hole
+    P.markEdge[eid] = P.nextEdge[eid]!
     pushId(w.marked, eid)
     return
   }

@@ -10,7 +10,8 @@ import { EventType } from '../src/events.js'
 import { vSkip } from '../src/geometry.js'
 import { emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRolling } from '../src/motion/rolling.js'
-import { lockAtLip, type BallWorld } from '../src/world/createWorld.js'
+import { lockAtLip } from '../src/world/rimSlots.js'
+import { type BallWorld } from '../src/world/createWorld.js'
 
 export function skipOverSystem(w: BallWorld): void {
   const P = w.Path

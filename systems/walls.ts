@@ -9,7 +9,9 @@ import { WallEdge } from '../components/Walls.js'
 import { EventType, pushEvent } from '../src/events.js'
 import { NEVER } from '../src/config/tolerances.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
-import { releaseRim, removeMoving, type BallWorld } from '../src/world/createWorld.js'
+import { releaseRim } from '../src/world/rimSlots.js'
+import { removeMoving } from '../src/world/idLists.js'
+import { type BallWorld } from '../src/world/createWorld.js'
 
 export function wallsSystem(w: BallWorld): void {
   if (w.walls === 0) return
@@ -23,7 +25,7 @@ export function wallsSystem(w: BallWorld): void {
     const mark = P.mark[eid]
     if (mark === PathEvent.Wall) {
       P.mark[eid] = PathEvent.None
-      const edge = P.markHole[eid]!
+      const edge = P.markEdge[eid]!
       const t = P.nextT[eid]!
       const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
       // with contacts on, a ball pressed to the wall by others slides along it instead of bouncing forever

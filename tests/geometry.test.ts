@@ -1,17 +1,5 @@
 import { describe, expect, it } from 'vitest'
-import {
-  captureWindow,
-  capturesClean,
-  midRimDropSpeed,
-  rollArc,
-  rollDropTime,
-  rollPopTime,
-  rollSpeed,
-  speedAtDistance,
-  stopDistance,
-  timeToDistance,
-  vSkip,
-} from '../src/index'
+import { captureWindow, capturesClean, midRimDropSpeed, rollArc, rollDropTime, rollPopTime, rollSpeed, speedAtDistance, stopDistance, timeToDistance, vSkip } from '../src/index'
 
 const G = (640 * 640 * 11) / (2 * 18 * 18)
 

@@ -1,5 +1,6 @@
 // Shared scene builders for the system tests: each builds a fresh world.
-import { createBallPhysics, rimSlot, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
+import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
+import { rimSlot } from '../src/ecs'
 
 export interface Shot {
   sim: BallPhysics

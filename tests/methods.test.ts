@@ -1,6 +1,7 @@
 // METHOD and SUBSTEPS: one config option selects the schedule; validation names the key and the values.
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_SCHEDULE, addPanel, createBallPhysics, createSchedule, resolveConfig } from '../src/index'
+import { DEFAULT_SCHEDULE, createSchedule } from '../src/ecs'
+import { addPanel, createBallPhysics, resolveConfig } from '../src/index'
 import { settle } from './helpers'
 
 describe('METHOD and SUBSTEPS', () => {

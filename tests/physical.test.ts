@@ -3,7 +3,7 @@
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_CONFIG, PHYSICAL_CONFIG, captureSpeed, captureWindow, capturesClean, createBallPhysics, resolveConfig } from '../src/index'
 import { agreement, createShotRig, engineMap, gameGrid, gridDelta, gridSpeed, referenceMap } from '../src/physical/agreement'
-import { v1Schedule } from '../systems/variants/v1Rule'
+import { v1Schedule } from '../src/schedule'
 import { referenceOutcome } from '../src/reference/index'
 import { rng, sequence, settle, shoot } from './helpers'
 

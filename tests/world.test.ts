@@ -2,7 +2,8 @@
 // rows are pooled, and each store is sized by its own component's use (the heap budget of a large world).
 import { entityExists, hasComponent } from 'bitecs'
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_PANEL, addPanel, createBallPhysics, isBall, rimSlot, RimMode } from '../src/index'
+import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
+import { isBall, rimSlot, RimMode } from '../src/ecs'
 import { storeLength } from '../components/store'
 import { rng, settle, shoot } from './helpers'
 

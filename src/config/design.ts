@@ -2,6 +2,7 @@
 // design leaves open (DECISIONS.md): ROLLING_DECEL, RIM_ROLL_MAX_TURNS and the engine's clock bounds.
 // GRAVITY and V_SKIP_MAX are one fact written twice (V_SKIP_MAX = R·√(2g/r)); resolveConfig keeps them
 // consistent, so they can never disagree.
+import { describe } from '../check.js'
 import { CONSISTENCY_TOLERANCE } from './tolerances.js'
 
 /** How a world steps: the exact event-driven core, a tick-sampled port of the six stages, or v1's rule. */
@@ -163,7 +164,7 @@ export function describeRange(r: Range): string {
 function checkChoice(key: ChoiceKey, value: unknown): string {
   const allowed = CONFIG_CHOICES[key]
   if (typeof value !== 'string' || !allowed.includes(value)) {
-    const got = typeof value === 'string' ? `'${value}'` : String(value)
+    const got = typeof value === 'string' ? `'${value}'` : describe(value)
     throw new RangeError(`config.${key} must be one of ${allowed.map((a) => `'${a}'`).join(', ')}, got ${got}`)
   }
   return value
@@ -172,7 +173,7 @@ function checkChoice(key: ChoiceKey, value: unknown): string {
 function checkKey(key: NumericKey, value: unknown): number {
   const range = CONFIG_RANGES[key]
   if (typeof value !== 'number') {
-    throw new TypeError(`config.${key} must be a number in ${describeRange(range)}, got ${typeof value}`)
+    throw new TypeError(`config.${key} must be a number in ${describeRange(range)}, got ${describe(value)}`)
   }
   const ok =
     Number.isFinite(value) &&
@@ -190,16 +191,20 @@ function checkKey(key: NumericKey, value: unknown): number {
  * is kept while GRAVITY follows the radii.
  */
 export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhysicsConfig> {
-  if (overrides === null || typeof overrides !== 'object') {
-    throw new TypeError('config overrides must be an object of DEFAULT_CONFIG keys')
+  if (overrides === null || typeof overrides !== 'object' || Array.isArray(overrides)) {
+    const got = overrides === null ? 'null' : Array.isArray(overrides) ? 'an array' : typeof overrides
+    throw new TypeError(`config overrides must be an object of DEFAULT_CONFIG keys, got ${got}`)
   }
+  // each key read once: what is validated is what is used
+  const given: Record<string, unknown> = {}
+  for (const key of Object.keys(overrides)) given[key] = (overrides as Record<string, unknown>)[key]
   const out = { ...DEFAULT_CONFIG } as BallPhysicsConfig
-  for (const key of Object.keys(overrides)) {
+  for (const key of Object.keys(given)) {
     if (!(key in CONFIG_RANGES) && !(key in CONFIG_CHOICES)) {
       const known = [...Object.keys(CONFIG_RANGES), ...Object.keys(CONFIG_CHOICES)]
       throw new RangeError(`config.${key} is not a known key; known keys: ${known.join(', ')}`)
     }
-    const value = (overrides as Record<string, unknown>)[key]
+    const value = given[key]
     if (value === undefined) continue
     if (key in CONFIG_CHOICES) {
       ;(out as unknown as Record<string, unknown>)[key] = checkChoice(key as ChoiceKey, value)
@@ -213,8 +218,8 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
   if (out.MAX_VY < out.MIN_VY) {
     throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)
   }
-  const hasG = overrides.GRAVITY !== undefined
-  const hasSkip = overrides.V_SKIP_MAX !== undefined
+  const hasG = given.GRAVITY !== undefined
+  const hasSkip = given.V_SKIP_MAX !== undefined
   if (hasG && hasSkip) {
     const implied = skipFromGravity(out.GRAVITY, out.HOLE_RADIUS, out.BALL_RADIUS)
     if (Math.abs(implied - out.V_SKIP_MAX) > CONSISTENCY_TOLERANCE * out.V_SKIP_MAX) {

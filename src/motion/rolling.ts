@@ -46,6 +46,8 @@ let qXyr: Float64Array = new Float64Array(0)
 let qIds: Uint32Array = new Uint32Array(0)
 let bestHole = 0
 let bestKind = 0
+/** the WallEdge bit of the best candidate when it is a wall or an open edge */
+let bestEdge = 0
 
 /** Tests hole `i` of the table against the path; keeps the earliest event. Returns the best distance. */
 function considerHole(i: number): number {
@@ -108,7 +110,8 @@ function considerWalls(w: BallWorld, e: number): void {
     // walls come before holes at the same distance (they are met first by the footprint)
     if (d < Q.best || (d === Q.best && bestKind !== PathEvent.Stop)) {
       Q.best = d
-      bestHole = edge // for wall events the "hole" slot carries the WallEdge bit
+      bestHole = 0
+      bestEdge = edge
       bestKind = isOpen ? PathEvent.Gutter : PathEvent.Wall
     }
   }
@@ -182,6 +185,7 @@ export function planRolling(w: BallWorld, eid: number): void {
 
   P.nextKind[eid] = bestKind
   P.nextHole[eid] = bestHole
+  P.nextEdge[eid] = bestKind === PathEvent.Wall || bestKind === PathEvent.Gutter ? bestEdge : 0
   if (bestKind === PathEvent.None) {
     P.nextS[eid] = 0
     P.nextT[eid] = NEVER

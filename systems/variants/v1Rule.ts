@@ -8,8 +8,8 @@ import { RimMode } from '../../components/RimContact.js'
 import { CaptureVia } from '../../src/events.js'
 import { captureBall } from '../../src/motion/ballFate.js'
 import { planRolling } from '../../src/motion/rolling.js'
-import { DEFAULT_SCHEDULE, type ScheduleEntry } from '../../src/schedule.js'
-import { lockAtLip, type BallWorld } from '../../src/world/createWorld.js'
+import { lockAtLip } from '../../src/world/rimSlots.js'
+import { type BallWorld } from '../../src/world/createWorld.js'
 
 export function v1RuleSystem(w: BallWorld): void {
   const P = w.Path
@@ -32,11 +32,4 @@ export function v1RuleSystem(w: BallWorld): void {
       planRolling(w, eid)
     }
   }
-}
-
-/** The default schedule with the v1 rule ahead of the six stages. */
-export function v1Schedule(): ScheduleEntry[] {
-  const s = DEFAULT_SCHEDULE.slice()
-  s.splice(1, 0, { name: 'v1Rule', run: v1RuleSystem })
-  return s
 }

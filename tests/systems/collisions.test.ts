@@ -328,8 +328,8 @@ describe('contact law: momentum and energy', () => {
         pair = [0, 0]
         for (let i = 0; i < w.marked.count; i++) {
           const a = w.marked.ids[i]!
-          if (P.mark[a] === PathEvent.Collide && P.markHole[a]! > a) {
-            pair = [a, P.markHole[a]!]
+          if (P.mark[a] === PathEvent.Collide && P.markOther[a]! > a) {
+            pair = [a, P.markOther[a]!]
             pre.set([B.vx[a]!, B.vy[a]!, B.vx[pair[1]!]!, B.vy[pair[1]!]!])
           }
         }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics, popArc, rimSlot, rollDropTime } from '../../src/index'
+import { createBallPhysics, popArc, rollDropTime } from '../../src/index'
+import { rimSlot } from '../../src/ecs'
 import { EXACT, sequence, settle, shoot, watchRim } from '../helpers'
 
 /** A (δ, v) that rolls: between the roll threshold and the gate, inside the rim band. */

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_SCHEDULE, createBallPhysics, type BallEvent, type BallPhysics } from '../../src/index'
+import { DEFAULT_SCHEDULE } from '../../src/ecs'
+import { createBallPhysics, type BallEvent, type BallPhysics } from '../../src/index'
 import { EXACT, rng } from '../helpers'
 
 function run(sim: BallPhysics, dt: number, seconds: number): BallEvent[] {

@@ -14,7 +14,9 @@ import { PathEvent } from '../../../components/Path.js'
 import { RimMode } from '../../../components/RimContact.js'
 import { EventType, pushEvent } from '../../../src/events.js'
 import { cogRadius, popArc } from '../../../src/geometry.js'
-import { lockAtLip, pushId, releaseRim, type BallWorld } from '../../../src/world/createWorld.js'
+import { lockAtLip, releaseRim } from '../../../src/world/rimSlots.js'
+import { pushId } from '../../../src/world/idLists.js'
+import { type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function naiveDetectSystem(w: BallWorld): void {

@@ -2,7 +2,7 @@
 // core's order; the step's schedule lists that group SUBSTEPS times (substeps are configuration).
 //   'naive': clock, move, detect, skip-over, capture, COG gate, bounce, rim-roll
 //   'v1':    clock, move, v1 capture
-import type { ScheduleEntry } from '../../../src/schedule.js'
+import type { ScheduleEntry } from '../../../src/world/system.js'
 import { naiveBounceSystem } from './bounce.js'
 import { naiveCaptureSystem } from './capture.js'
 import { naiveClockSystem } from './clock.js'

@@ -4,7 +4,8 @@
 // exact core's world and stores are unchanged; created on first use, grown with the world's per-ball
 // capacity (its stores are indexed by ball id).
 import { createStore, growStore } from '../../../components/store.js'
-import { createIdList, type BallWorld, type IdList } from '../../../src/world/createWorld.js'
+import { createIdList } from '../../../src/world/idLists.js'
+import { type BallWorld, type IdList } from '../../../src/world/createWorld.js'
 
 export const NaiveBallSchema = {
   /** current rim-roll speed, px/s (v ← v·(1 − μ·dt): may turn negative) */

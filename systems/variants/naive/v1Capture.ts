@@ -7,7 +7,8 @@ import { BallMode } from '../../../components/Ball.js'
 import { RimMode } from '../../../components/RimContact.js'
 import { CaptureVia } from '../../../src/events.js'
 import { captureBall, restBall } from '../../../src/motion/ballFate.js'
-import { lockAtLip, type BallWorld } from '../../../src/world/createWorld.js'
+import { lockAtLip } from '../../../src/world/rimSlots.js'
+import { type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
 export function v1CaptureSystem(w: BallWorld): void {

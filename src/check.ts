@@ -1,0 +1,78 @@
+// Input checks for every entry point. A spec is read once, field by field, into a plain record (a getter
+// runs once; what is validated is what is used), then checked; errors name the field, the allowed range and
+// what was given, and are thrown before anything in the world changes.
+import type { BallWorld } from './world/createWorld.js'
+
+/** A value as an error message shows it: numbers as they are, anything else with its kind. */
+export function describe(value: unknown): string {
+  switch (typeof value) {
+    case 'number':
+      return String(value)
+    case 'string':
+      return `the string ${JSON.stringify(value)}`
+    case 'symbol':
+      return `a symbol (${value.toString()})`
+    case 'bigint':
+      return `a bigint (${value.toString()}n)`
+    case 'boolean':
+      return `the boolean ${value}`
+    case 'undefined':
+      return 'undefined'
+    case 'function':
+      return 'a function'
+    default:
+      return value === null ? 'null' : Array.isArray(value) ? 'an array' : 'an object'
+  }
+}
+
+/** Reads the named fields of a spec object once each. Throws a TypeError when it is not a plain object. */
+export function readSpec<K extends string>(name: string, spec: unknown, keys: readonly K[]): Record<K, unknown> {
+  if (spec === null || typeof spec !== 'object' || Array.isArray(spec)) {
+    throw new TypeError(`${name} must be an object, got ${describe(spec)}`)
+  }
+  const out = {} as Record<K, unknown>
+  const source = spec as Record<string, unknown>
+  for (const key of keys) out[key] = source[key]
+  return out
+}
+
+/** A finite number in [−limit, limit]. */
+export function finite(field: string, value: unknown, limit: number): number {
+  if (typeof value !== 'number') throw new TypeError(`${field} must be a number in [${-limit}, ${limit}], got ${describe(value)}`)
+  if (!Number.isFinite(value) || Math.abs(value) > limit) {
+    throw new RangeError(`${field} must be a finite number in [${-limit}, ${limit}], got ${value}`)
+  }
+  return value
+}
+
+/** A number in (0, limit]. */
+export function positive(field: string, value: unknown, limit: number): number {
+  if (typeof value !== 'number') throw new TypeError(`${field} must be a number in (0, ${limit}], got ${describe(value)}`)
+  if (!Number.isFinite(value) || value <= 0 || value > limit) {
+    throw new RangeError(`${field} must be in (0, ${limit}], got ${value}`)
+  }
+  return value
+}
+
+/** A number in [lo, hi]. */
+export function within(field: string, value: unknown, lo: number, hi: number): number {
+  if (typeof value !== 'number') throw new TypeError(`${field} must be a number in [${lo}, ${hi}], got ${describe(value)}`)
+  if (!(value >= lo && value <= hi)) throw new RangeError(`${field} must be in [${lo}, ${hi}], got ${value}`)
+  return value
+}
+
+/** An optional boolean (undefined: false). */
+export function flag(field: string, value: unknown): boolean {
+  if (value === undefined) return false
+  if (typeof value !== 'boolean') throw new TypeError(`${field} must be a boolean, got ${describe(value)}`)
+  return value
+}
+
+/** A world made by createBallWorld (or createBallPhysics().world). */
+export function checkWorld(caller: string, world: unknown): BallWorld {
+  const w = world as BallWorld | null
+  if (w === null || typeof w !== 'object' || !('Ball' in w) || !('holes' in w) || !('config' in w)) {
+    throw new TypeError(`${caller}: world must be a world made by createBallWorld, got ${describe(world)}`)
+  }
+  return w
+}

@@ -1,0 +1,202 @@
+// Balls: put down (addBall) or thrown (throwBall), re-aimed, made hero, read and removed. A ball added
+// inside a lip circle is in transit through that hole (no decision is made for it; if it stops before
+// leaving, it falls in).
+import { removeEntity } from 'bitecs'
+import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../../components/Ball.js'
+import { RimMode } from '../../components/RimContact.js'
+import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED } from '../config/limits.js'
+import { launchBall } from '../motion/ballFate.js'
+import { sampleRimRoll } from '../motion/rimRoll.js'
+import { sampleRolling } from '../motion/rolling.js'
+import { addBallEntity, forEachBall } from '../world/balls.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { holeAt } from '../world/holeTable.js'
+import { acquireRim, rimSlot } from '../world/rimSlots.js'
+import { checkBall, checkHole, checkWorld, finite, flag, positive, readSpec, within } from './validate.js'
+
+export interface BallSpec {
+  x: number
+  y: number
+  vx: number
+  vy: number
+  /** px, default config.BALL_RADIUS */
+  radius?: number
+  /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
+  hero?: boolean
+  /**
+   * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
+   * (same density). Used only when config.BALL_COLLISIONS is 'on'.
+   */
+  mass?: number
+}
+
+export interface ThrowSpec {
+  x: number
+  y: number
+  /** 0..1, mapped linearly onto MIN_VY..MAX_VY */
+  power: number
+  /** radians, 0 = straight up the panel (−y), positive toward +x; in [−2π, 2π] */
+  angle: number
+  /** px, default config.BALL_RADIUS */
+  radius?: number
+  /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
+  hero?: boolean
+  /** as BallSpec.mass */
+  mass?: number
+}
+
+export interface BallState {
+  x: number
+  y: number
+  vx: number
+  vy: number
+  radius: number
+  mode: BallModeName
+}
+
+export interface HoleState {
+  x: number
+  y: number
+  radius: number
+  value: number
+}
+
+function massOf(w: BallWorld, field: string, value: unknown, radius: number): number {
+  if (value === undefined) {
+    const k = radius / w.config.BALL_RADIUS
+    return k * k * k
+  }
+  return positive(field, value, MAX_MASS)
+}
+
+function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number): number {
+  const eid = addBallEntity(w)
+  w.Ball.radius[eid] = radius
+  w.Ball.hero[eid] = hero ? 1 : 0
+  if (w.collide !== null) {
+    w.collide.mass[eid] = mass
+    if (radius > w.collide.maxRadius) w.collide.maxRadius = radius
+  }
+  const inside = holeAt(w, x, y)
+  if (inside !== 0) {
+    const slot = acquireRim(w, eid)
+    w.RimContact.hole[slot] = inside
+    w.RimContact.mode[slot] = RimMode.Transit
+  }
+  launchBall(w, eid, x, y, vx, vy, w.time)
+  return eid
+}
+
+/** Puts a ball down at (x, y) with velocity (vx, vy), now; returns its entity id. */
+export function addBall(world: BallWorld, spec: BallSpec): number {
+  const w = checkWorld('addBall', world)
+  const s = readSpec('addBall spec', spec, ['x', 'y', 'vx', 'vy', 'radius', 'hero', 'mass'] as const)
+  const x = finite('ball.x', s.x, MAX_COORDINATE)
+  const y = finite('ball.y', s.y, MAX_COORDINATE)
+  const vx = finite('ball.vx', s.vx, MAX_SPEED)
+  const vy = finite('ball.vy', s.vy, MAX_SPEED)
+  const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
+  const hero = flag('ball.hero', s.hero)
+  const mass = massOf(w, 'ball.mass', s.mass, radius)
+  return newBall(w, x, y, vx, vy, radius, hero, mass)
+}
+
+/** The throw's velocity: speed MIN_VY + power·(MAX_VY − MIN_VY), at `angle` from straight up the panel. */
+export function throwVelocity(world: BallWorld, power: number, angle: number): { vx: number; vy: number } {
+  const cfg = world.config
+  const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
+  return { vx: speed * Math.sin(angle), vy: -speed * Math.cos(angle) }
+}
+
+/** Throws a ball from (x, y) with the meter's power and an aim; returns its entity id. */
+export function throwBall(world: BallWorld, spec: ThrowSpec): number {
+  const w = checkWorld('throwBall', world)
+  const s = readSpec('throwBall spec', spec, ['x', 'y', 'power', 'angle', 'radius', 'hero', 'mass'] as const)
+  const x = finite('throw.x', s.x, MAX_COORDINATE)
+  const y = finite('throw.y', s.y, MAX_COORDINATE)
+  const power = within('throw.power', s.power, 0, 1)
+  const angle = finite('throw.angle', s.angle, 2 * Math.PI)
+  const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
+  const hero = flag('throw.hero', s.hero)
+  const mass = massOf(w, 'throw.mass', s.mass, radius)
+  const cfg = w.config
+  const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
+  return newBall(w, x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius, hero, mass)
+}
+
+/**
+ * Removes a ball: the same as bitECS removeEntity on it (the simulation forgets it, the game's components
+ * go with it, and events buffered for it are dropped at the next drain).
+ */
+export function removeBall(world: BallWorld, ball: number): void {
+  const w = checkWorld('removeBall', world)
+  removeEntity(w, checkBall(w, 'ball', ball))
+}
+
+/**
+ * Sets a ball's velocity now: wakes a resting ball, re-aims a rolling one, and knocks a ball off a rim
+ * (it leaves on a straight path, the hole locked until it is out). Captured and out balls cannot move.
+ */
+export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: number): void {
+  const w = checkWorld('setBallVelocity', world)
+  const b = checkBall(w, 'ball', ball)
+  const nvx = finite('vx', vx, MAX_SPEED)
+  const nvy = finite('vy', vy, MAX_SPEED)
+  const mode = w.Ball.mode[b]!
+  if (mode === BallMode.Captured || mode === BallMode.Out) {
+    throw new RangeError(`ball ${b} is ${BALL_MODE_NAMES[mode]}: only rolling, rimRoll or resting balls can be moved`)
+  }
+  if (mode === BallMode.RimRoll) {
+    sampleRimRoll(w, b, w.time)
+    w.RimContact.mode[rimSlot(w, b)] = RimMode.Transit
+  } else if (mode === BallMode.Rolling) {
+    sampleRolling(w, b, w.time)
+  }
+  launchBall(w, b, w.Ball.x[b]!, w.Ball.y[b]!, nvx, nvy, w.time)
+}
+
+/**
+ * Makes a ball a hero (or not): from its next lip crossing on, the physical reference decides it instead
+ * of the six stages (systems/heroReference.ts). Costs one reference run per hero lip crossing.
+ */
+export function setHeroBall(world: BallWorld, ball: number, hero = true): void {
+  const w = checkWorld('setHeroBall', world)
+  const b = checkBall(w, 'ball', ball)
+  w.Ball.hero[b] = flag('hero', hero) ? 1 : 0
+}
+
+/** True for a hero ball. */
+export function isHeroBall(world: BallWorld, ball: number): boolean {
+  const w = checkWorld('isHeroBall', world)
+  return w.Ball.hero[checkBall(w, 'ball', ball)] === 1
+}
+
+/** A ball's state at the end of the last step (a new object). */
+export function ballState(world: BallWorld, ball: number): BallState {
+  const w = checkWorld('ballState', world)
+  const b = checkBall(w, 'ball', ball)
+  const B = w.Ball
+  return { x: B.x[b]!, y: B.y[b]!, vx: B.vx[b]!, vy: B.vy[b]!, radius: B.radius[b]!, mode: BALL_MODE_NAMES[B.mode[b]!]! }
+}
+
+/** A hole's geometry and value (a new object). */
+export function holeState(world: BallWorld, hole: number): HoleState {
+  const w = checkWorld('holeState', world)
+  const h = checkHole(w, 'hole', hole)
+  const H = w.Hole
+  return { x: H.x[h]!, y: H.y[h]!, radius: H.radius[h]!, value: H.value[h]! }
+}
+
+/** ids of the live balls, ascending (a new array). */
+export function listBalls(world: BallWorld): number[] {
+  const w = checkWorld('listBalls', world)
+  const out: number[] = []
+  forEachBall(w, (b) => void out.push(b))
+  return out
+}
+
+/** ids of the holes, in the order they were added (a new array). */
+export function listHoles(world: BallWorld): number[] {
+  const w = checkWorld('listHoles', world)
+  return Array.from(w.holes.ids.subarray(0, w.holes.count))
+}

@@ -1,0 +1,146 @@
+// Holes: added one by one or as a set (all or nothing), and removed. A hole added under a resting ball
+// captures it; a ball inside its lip circle when it is added is in transit through it. Removing a hole
+// frees the balls it holds: a ball rolling on its rim leaves on the tangent at the rim speed, a ball in
+// transit, skipping or entering rolls on; captured balls stay captured. Rolling balls are re-planned.
+import { addComponent, addEntity, removeEntity } from 'bitecs'
+import { BallMode } from '../../components/Ball.js'
+import { RimMode } from '../../components/RimContact.js'
+import { clearSlot, fitStore } from '../../components/store.js'
+import { MAX_COORDINATE, MAX_RADIUS, MAX_VALUE } from '../config/limits.js'
+import { CaptureVia, cutEvents } from '../events.js'
+import { captureBall, launchBall } from '../motion/ballFate.js'
+import { sampleRimRoll } from '../motion/rimRoll.js'
+import { sampleRolling } from '../motion/rolling.js'
+import { forEachBall } from '../world/balls.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { addHoleToTable, overlappingHole, removeHoleFromTable } from '../world/holeTable.js'
+import { acquireRim, releaseRim } from '../world/rimSlots.js'
+import { replanRolling } from './replan.js'
+import { checkHole, checkWorld, describe, finite, positive, readSpec } from './validate.js'
+
+export interface HoleSpec {
+  x: number
+  y: number
+  /** px, default config.HOLE_RADIUS */
+  radius?: number
+  /** points, default 1 */
+  value?: number
+}
+
+interface CheckedHole {
+  x: number
+  y: number
+  radius: number
+  value: number
+}
+
+function readHole(w: BallWorld, name: string, spec: unknown): CheckedHole {
+  const s = readSpec(name, spec, ['x', 'y', 'radius', 'value'] as const)
+  return {
+    x: finite('hole.x', s.x, MAX_COORDINATE),
+    y: finite('hole.y', s.y, MAX_COORDINATE),
+    radius: s.radius === undefined ? w.config.HOLE_RADIUS : positive('hole.radius', s.radius, MAX_RADIUS),
+    value: s.value === undefined ? 1 : finite('hole.value', s.value, MAX_VALUE),
+  }
+}
+
+function checkClear(w: BallWorld, h: CheckedHole): void {
+  const i = overlappingHole(w, h.x, h.y, h.radius)
+  if (i < 0) return
+  const min = h.radius + w.holes.xyr[3 * i + 2]!
+  throw new RangeError(
+    `hole at (${h.x}, ${h.y}) with radius ${h.radius} overlaps hole ${w.holes.ids[i]}: lip circles may not overlap ` +
+      `(centres at least ${min} px apart)`,
+  )
+}
+
+function placeHole(w: BallWorld, h: CheckedHole): number {
+  const eid = addEntity(w)
+  fitStore(w.Hole, eid)
+  addComponent(w, eid, w.IsHole)
+  addComponent(w, eid, w.Hole)
+  w.Hole.x[eid] = h.x
+  w.Hole.y[eid] = h.y
+  w.Hole.radius[eid] = h.radius
+  w.Hole.value[eid] = h.value
+  addHoleToTable(w, eid)
+  // balls already out there: a ball inside the new lip circle follows the rule for a ball added inside a
+  // hole (a resting one falls in)
+  forEachBall(w, (b) => {
+    const mode = w.Ball.mode[b]
+    if (mode === BallMode.Rolling) sampleRolling(w, b, w.time)
+    else if (mode !== BallMode.Resting) return
+    const dx = w.Ball.x[b]! - h.x
+    const dy = w.Ball.y[b]! - h.y
+    if (dx * dx + dy * dy >= h.radius * h.radius) return
+    const slot = acquireRim(w, b)
+    w.RimContact.hole[slot] = eid
+    w.RimContact.hasLip[slot] = 0
+    if (mode === BallMode.Resting) captureBall(w, b, eid, w.time, CaptureVia.Rest)
+    else w.RimContact.mode[slot] = RimMode.Transit
+  })
+  return eid
+}
+
+/** Adds a hole; returns its entity id. Lip circles may not overlap. Rolling balls are re-planned. */
+export function addHole(world: BallWorld, spec: HoleSpec): number {
+  const w = checkWorld('addHole', world)
+  const h = readHole(w, 'addHole spec', spec)
+  checkClear(w, h)
+  const eid = placeHole(w, h)
+  replanRolling(w)
+  return eid
+}
+
+/**
+ * Adds a set of holes, all or nothing: every spec is read and checked (against the world's holes and each
+ * other) before the first is added. Returns their ids in order.
+ */
+export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[] {
+  const w = checkWorld('addHoles', world)
+  if (!Array.isArray(specs)) throw new TypeError(`holes must be an array of hole specs, got ${describe(specs)}`)
+  const list: CheckedHole[] = []
+  for (let i = 0; i < specs.length; i++) list.push(readHole(w, `holes[${i}]`, specs[i]))
+  for (const h of list) checkClear(w, h)
+  for (let i = 0; i < list.length; i++) {
+    for (let j = 0; j < i; j++) {
+      const dx = list[i]!.x - list[j]!.x
+      const dy = list[i]!.y - list[j]!.y
+      const min = list[i]!.radius + list[j]!.radius
+      if (dx * dx + dy * dy < min * min) {
+        throw new RangeError(`holes[${i}] at (${list[i]!.x}, ${list[i]!.y}) overlaps holes[${j}]: lip circles may not overlap (centres at least ${min} px apart)`)
+      }
+    }
+  }
+  const ids = list.map((h) => placeHole(w, h))
+  replanRolling(w)
+  return ids
+}
+
+/** Removes a hole (see the top of this file for the balls it holds). */
+export function removeHole(world: BallWorld, hole: number): void {
+  const w = checkWorld('removeHole', world)
+  const h = checkHole(w, 'hole', hole)
+  removeEntity(w, h) // forgetHole runs here
+}
+
+/** onRemove(Hole): the simulation forgets the hole and frees the balls it holds. */
+export function forgetHole(w: BallWorld, eid: number): void {
+  removeHoleFromTable(w, eid)
+  forEachBall(w, (b) => {
+    const slot = w.Ball.rim[b]!
+    if (slot === 0 || w.RimContact.hole[slot] !== eid) return
+    const mode = w.Ball.mode[b]
+    if (mode === BallMode.RimRoll) {
+      sampleRimRoll(w, b, w.time)
+      releaseRim(w, b)
+      launchBall(w, b, w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
+    } else {
+      if (mode === BallMode.Rolling) sampleRolling(w, b, w.time)
+      releaseRim(w, b)
+    }
+  })
+  cutEvents(w.events, eid)
+  clearSlot(w.Hole, eid)
+  replanRolling(w)
+}

@@ -1,0 +1,16 @@
+// When the holes or the walls change, rolling balls continue from where they are now on a path planned
+// against the new scene.
+import { BallMode } from '../../components/Ball.js'
+import { planRolling, sampleRolling, startPath } from '../motion/rolling.js'
+import { forEachBall } from '../world/balls.js'
+import type { BallWorld } from '../world/createWorld.js'
+
+/** Re-plans every rolling ball from its state at the world's time. */
+export function replanRolling(w: BallWorld): void {
+  forEachBall(w, (b) => {
+    if (w.Ball.mode[b] !== BallMode.Rolling) return
+    sampleRolling(w, b, w.time)
+    startPath(w, b, w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
+    planRolling(w, b)
+  })
+}

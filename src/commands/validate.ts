@@ -1,0 +1,30 @@
+// Entity checks for the commands (the field checks are in src/check.ts).
+import { entityExists, hasComponent } from 'bitecs'
+import { describe } from '../check.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { isBall } from '../world/balls.js'
+
+export { checkWorld, describe, finite, flag, positive, readSpec, within } from '../check.js'
+
+function checkId(field: string, eid: unknown, kind: string): number {
+  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1) {
+    throw new TypeError(`${field} must be a ${kind} id (a positive integer), got ${describe(eid)}`)
+  }
+  return eid
+}
+
+/** The id of a live ball of the world. */
+export function checkBall(world: BallWorld, field: string, eid: unknown): number {
+  const b = checkId(field, eid, 'ball')
+  if (!isBall(world, b)) throw new RangeError(`${field} ${b} is not a live ball of this world (unknown or removed)`)
+  return b
+}
+
+/** The id of a live hole of the world. */
+export function checkHole(world: BallWorld, field: string, eid: unknown): number {
+  const h = checkId(field, eid, 'hole')
+  if (!entityExists(world, h) || !hasComponent(world, h, world.Hole)) {
+    throw new RangeError(`${field} ${h} is not a live hole of this world (unknown or removed)`)
+  }
+  return h
+}

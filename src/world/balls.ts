@@ -1,0 +1,65 @@
+// Balls as bitECS entities. A ball is an entity with the Ball and Path components (and RimContact while a
+// hole holds it). The world keeps its own stores in step with bitECS through two observers, registered by
+// createBallWorld:
+//   - onAdd(Ball): the entity's rows are zeroed and it becomes a live ball, out of play (mode 'out') until
+//     a command puts it on the panel (addBall and throwBall do both at once);
+//   - onRemove(Ball): fired by removeEntity (ours or the game's) and by removeComponent(Ball). The
+//     simulation forgets the ball: it leaves the moving set, gives back its RimContact slot, leaves the
+//     resting grid, its pending contacts go stale, its rows are zeroed and the events buffered for it are
+//     dropped at the next drain (its id may be handed to a new entity before then).
+import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
+import { BallMode } from '../../components/Ball.js'
+import { clearSlot } from '../../components/store.js'
+import { cutEvents } from '../events.js'
+import { bumpVersion } from './contactState.js'
+import { ensureCapacity, type BallWorld } from './createWorld.js'
+import { removeMoving } from './idLists.js'
+import { restingRemove } from './restingGrid.js'
+import { releaseRim } from './rimSlots.js'
+
+/** Makes a ball entity (Ball and Path), out of play at the origin; a command then places and launches it. */
+export function addBallEntity(world: BallWorld): number {
+  const eid = addEntity(world)
+  addComponent(world, eid, world.Ball) // adoptBall runs here
+  addComponent(world, eid, world.Path)
+  return eid
+}
+
+/** onAdd(Ball): the entity becomes a live ball with zeroed rows, default radius and mass, out of play. */
+export function adoptBall(world: BallWorld, eid: number): void {
+  ensureCapacity(world, eid)
+  clearSlot(world.Ball, eid)
+  clearSlot(world.Path, eid)
+  const B = world.Ball
+  B.live[eid] = 1
+  B.radius[eid] = world.config.BALL_RADIUS
+  B.mode[eid] = BallMode.Out
+  if (world.collide !== null) world.collide.mass[eid] = 1
+}
+
+/** onRemove(Ball): the simulation forgets the ball (see the top of this file). */
+export function forgetBall(world: BallWorld, eid: number): void {
+  if (!isBall(world, eid)) return
+  removeMoving(world, eid)
+  releaseRim(world, eid)
+  if (world.collide !== null) {
+    restingRemove(world, eid)
+    bumpVersion(world, eid)
+  }
+  cutEvents(world.events, eid)
+  clearSlot(world.Ball, eid)
+  clearSlot(world.Path, eid)
+  // a Ball removed by removeComponent leaves an entity the game keeps: it is no longer a ball at all
+  if (hasComponent(world, eid, world.Path)) removeComponent(world, eid, world.Path)
+}
+
+/** True when `eid` is a live ball of this world. */
+export function isBall(world: BallWorld, eid: number): boolean {
+  return eid > 0 && eid < world.capacity && world.Ball.live[eid] === 1
+}
+
+/** Calls `fn` for every live ball, in ascending id order. */
+export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
+  const live = world.Ball.live
+  for (let eid = 1, n = Math.min(live.length, world.entityIndex.maxId + 1); eid < n; eid++) if (live[eid] === 1) fn(eid)
+}
