@@ -2,7 +2,8 @@
 // from the core's exported regime functions, and every hole entry of the game as a dot coloured by its
 // outcome. δ runs from 0 to R along x, v from 0 to ~700 px/s up y.
 import { Container, Graphics, Particle, ParticleContainer, Text, Texture } from 'pixi.js'
-import { captureWindow, cogRadius, rollRatioDelta, vSkip, type BallPhysicsConfig } from '../src/index'
+import { vSkip, type BallPhysicsConfig } from '../src/index'
+import { regimeCurves } from './regimeCurves'
 import type { DemoEvent } from './game'
 import { COLORS, FONT, HOLE_EVENT_TYPES, MONO, eventColor, isHoleEvent } from './theme'
 
@@ -119,18 +120,12 @@ export class RegimeView {
 
     // regions: skip above v_skip(δ); clean capture inside the capture window δ ≤ δ_eff(v)
     const cv = this.curves.clear()
-    const N = 80
+    const curves = regimeCurves(c, 80, vt)
     const skipPts: number[] = []
-    for (let i = 0; i <= N; i++) {
-      const d = (i / N) * R
-      skipPts.push(this.px(d), this.py(vSkip(d, R, r, c.GRAVITY)))
-    }
+    for (const p of curves.skip) skipPts.push(this.px(p.delta), this.py(p.speed))
     cv.poly([this.px(0), this.py(vt), ...skipPts, this.px(R), this.py(vt)]).fill({ color: SKIP, alpha: 0.09 })
     const winPts: number[] = []
-    for (let i = 0; i <= N; i++) {
-      const v = Math.min(c.V_MAX, vt) * (i / N)
-      winPts.push(this.px(Math.min(R, captureWindow(v, R, c.V_MAX))), this.py(v))
-    }
+    for (const p of curves.window) winPts.push(this.px(p.delta), this.py(p.speed))
     cv.poly([this.px(0), this.py(0), ...winPts, this.px(0), this.py(Math.min(c.V_MAX, vt))]).fill({
       color: WINDOW,
       alpha: 0.08,
@@ -154,8 +149,8 @@ export class RegimeView {
       for (let yy = top; yy < y + h; yy += 8) cv.moveTo(X, yy).lineTo(X, Math.min(yy + 4, y + h))
       cv.stroke({ width: 1.5, color, alpha: 0.9 })
     }
-    const dCog = cogRadius(R, r)
-    const dRoll = rollRatioDelta(R, r, c.RIM_ROLL_RATIO)
+    const dCog = curves.cog
+    const dRoll = curves.roll
     dashed(dCog, COG, y - 12)
     dashed(dRoll, ROLL, y)
 

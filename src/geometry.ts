@@ -1,7 +1,7 @@
 // The design's regime curves in the (δ, v) plane and the closed forms of a ball's motion, as pure
 // functions. The systems, the demo overlay, the charts and the tests all call these: one formula, one place.
 //
-// Notation (ball-physics-iteration-2.md): R hole radius, r ball radius, δ offset of the ball's straight
+// Notation (docs/design.md §1): R hole radius, r ball radius, δ offset of the ball's straight
 // path from the hole centre, v speed when the centre crosses the lip circle (radius R), g gravity.
 import type { CaptureWindowShape } from './config/design.js'
 
@@ -20,7 +20,7 @@ export function vSkip(delta: number, holeRadius: number, ballRadius: number, gra
  *   'quadratic' (Penner's fit):  δ_eff(v) = R·√(1 − v/V_MAX), the inverse of v_c(δ) = V_MAX·(1 − δ²/R²)
  * 0 for v ≥ V_MAX (only a dead-centre ball at exactly V_MAX).
  */
-export function captureWindow(speed: number, holeRadius: number, vMax: number, shape: CaptureWindowShape = 'ellipse'): number {
+export function captureWindow(speed: number, holeRadius: number, vMax: number, shape: CaptureWindowShape): number {
   const q = speed / vMax
   const k = shape === 'quadratic' ? 1 - q : 1 - q * q
   return k > 0 ? holeRadius * Math.sqrt(k) : 0
@@ -30,7 +30,7 @@ export function captureWindow(speed: number, holeRadius: number, vMax: number, s
  * The same window read the other way, for overlays and charts: v_c(δ), the largest speed captured clean
  * at offset δ; 'ellipse' V_MAX·√(1 − δ²/R²), 'quadratic' V_MAX·(1 − δ²/R²). 0 for δ ≥ R.
  */
-export function captureSpeed(delta: number, holeRadius: number, vMax: number, shape: CaptureWindowShape = 'ellipse'): number {
+export function captureSpeed(delta: number, holeRadius: number, vMax: number, shape: CaptureWindowShape): number {
   const k = 1 - (delta * delta) / (holeRadius * holeRadius)
   if (!(k > 0)) return 0
   return shape === 'quadratic' ? vMax * k : vMax * Math.sqrt(k)
@@ -42,14 +42,14 @@ export function capturesClean(
   speed: number,
   holeRadius: number,
   vMax: number,
-  shape: CaptureWindowShape = 'ellipse',
+  shape: CaptureWindowShape,
 ): boolean {
   return speed <= vMax && delta <= captureWindow(speed, holeRadius, vMax, shape)
 }
 
 /**
  * Stage 6 COG gate radius, R − r/2: a rim contact can roll only where more than half the ball is over the
- * hole. The engine also takes rim contacts on this circle (the contact circle, DECISIONS.md §1).
+ * hole. The engine also takes rim contacts on this circle (the contact circle, docs/decisions.md §2).
  */
 export function cogRadius(holeRadius: number, ballRadius: number): number {
   return holeRadius - ballRadius / 2
@@ -64,15 +64,15 @@ export function rollRatioDelta(holeRadius: number, ballRadius: number, ratio: nu
 }
 
 /**
- * Region 2 of the lip-out paper, v ≈ √(2gr/(1+j)) / √(Rδ²/(R−r)³ − 1). No stage uses it; it is here for
- * charts. Its radicand is negative for δ < (R − r)^{3/2}/√R: there it returns undefined.
+ * Region 2 of the lip-out paper, v ≈ √(2gr/(1+j)) / √(Rδ²/(R−r)³ − 1), j the ball's inertia factor
+ * (config.BALL_INERTIA). No stage uses it; it is here for charts. Its radicand is negative for δ < (R − r)^{3/2}/√R: there it returns undefined.
  */
 export function midRimDropSpeed(
   delta: number,
   holeRadius: number,
   ballRadius: number,
   gravity: number,
-  inertia = 0.4,
+  inertia: number,
 ): number | undefined {
   const gap = holeRadius - ballRadius
   const radicand = (holeRadius * delta * delta) / (gap * gap * gap) - 1

@@ -9,22 +9,22 @@ describe('regime curves', () => {
       const k = Math.sqrt(1 - (d * d) / 324)
       expect(vSkip(d, 18, 11, G)).toBeCloseTo(640 * k, 9)
       // δ_eff(v) inverts the same ellipse: at v = 600·k the window is exactly d
-      expect(captureWindow(600 * k, 18, 600)).toBeCloseTo(d, 9)
+      expect(captureWindow(600 * k, 18, 600, 'ellipse')).toBeCloseTo(d, 9)
     }
     expect(vSkip(18, 18, 11, G)).toBe(0)
     expect(vSkip(25, 18, 11, G)).toBe(0)
-    expect(captureWindow(0, 18, 600)).toBe(18)
-    expect(captureWindow(700, 18, 600)).toBe(0)
-    expect(capturesClean(0, 600, 18, 600)).toBe(true)
-    expect(capturesClean(0, 600.0001, 18, 600)).toBe(false)
+    expect(captureWindow(0, 18, 600, 'ellipse')).toBe(18)
+    expect(captureWindow(700, 18, 600, 'ellipse')).toBe(0)
+    expect(capturesClean(0, 600, 18, 600, 'ellipse')).toBe(true)
+    expect(capturesClean(0, 600.0001, 18, 600, 'ellipse')).toBe(false)
   })
 
   it('guards the unused Region 2 formula where its radicand is negative (δ < (R − r)^1.5/√R ≈ 4.4 px)', () => {
     const edge = Math.pow(7, 1.5) / Math.sqrt(18)
     expect(edge).toBeCloseTo(4.365, 3)
-    expect(midRimDropSpeed(edge * 0.99, 18, 11, G)).toBeUndefined()
-    expect(midRimDropSpeed(0, 18, 11, G)).toBeUndefined()
-    const v = midRimDropSpeed(10, 18, 11, G)!
+    expect(midRimDropSpeed(edge * 0.99, 18, 11, G, 0.4)).toBeUndefined()
+    expect(midRimDropSpeed(0, 18, 11, G, 0.4)).toBeUndefined()
+    const v = midRimDropSpeed(10, 18, 11, G, 0.4)!
     expect(Number.isFinite(v) && v > 0).toBe(true)
   })
 })

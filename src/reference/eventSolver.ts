@@ -221,7 +221,7 @@ export function solveBall(
           continue
         }
         // Stage 1: clean capture
-        if (capturesClean(c, here.v, h.R, config.V_MAX)) {
+        if (capturesClean(c, here.v, h.R, config.V_MAX, config.CAPTURE_WINDOW)) {
           holeEvent('capture', h.id, t, 'clean')
           return done(h.x, h.y, 0, 0, 'captured', t)
         }

@@ -5,7 +5,7 @@ import { sequence, settle, shoot } from '../helpers'
 describe('capture system (Stage 1)', () => {
   for (const v of [50, 200, 400, 550, 599]) {
     it(`captures clean inside the window δ_eff(v) and not outside it, v = ${v}`, () => {
-      const w = captureWindow(v, 18, 600)
+      const w = captureWindow(v, 18, 600, 'ellipse')
       const inside = settle(shoot(w * (1 - 1e-6), v).sim)
       expect(sequence(inside)[0]).toBe('capture:clean')
       if (w * (1 + 1e-3) < 18) {

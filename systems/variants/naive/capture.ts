@@ -20,7 +20,7 @@ export function naiveCaptureSystem(w: BallWorld): void {
     const rim = w.Ball.rim[eid]!
     if (mark === PathEvent.Lip) {
       const hole = P.markHole[eid]!
-      if (capturesClean(RC.delta[rim]!, RC.speed[rim]!, w.Hole.radius[hole]!, vMax)) {
+      if (capturesClean(RC.delta[rim]!, RC.speed[rim]!, w.Hole.radius[hole]!, vMax, w.config.CAPTURE_WINDOW)) {
         P.mark[eid] = PathEvent.None
         captureBall(w, eid, hole, st.t, CaptureVia.Clean)
       }
