@@ -1,6 +1,6 @@
 // Path: the closed-form trajectory a ball follows since its last event, and its next event. Positions are
 // always evaluated from the path's origin, never accumulated tick by tick, so event times and (δ, v)
-// depend only on earlier events, not on where ticks fell (DECISIONS.md §1, first "must hold").
+// depend only on earlier events, not on where ticks fell (docs/decisions.md §1).
 import { createStore } from './store.js'
 
 /** What a ball meets next. Decision events stop the ball for the systems; the others are bookkeeping. */

@@ -1,6 +1,6 @@
 // RimContact: a ball's business with the one hole whose lip circle its centre is inside (holes do not
 // overlap, so there is at most one). While `hole` is set, that hole makes no new decision for the ball:
-// this is the transit lock of Stage 5, used also after a bounce or a pop-off (DECISIONS.md §3).
+// this is the transit lock of Stage 5, used also after a bounce or a pop-off (docs/decisions.md §6).
 //
 // Pooled: the store is indexed by slot, not by ball id. A ball takes a slot (Ball.rim) when it gets a
 // hole lock and gives it back when the lock ends (it leaves the lip circle, falls in, leaves the panel or

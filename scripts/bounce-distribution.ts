@@ -1,4 +1,4 @@
-// Where do bounced balls stop? DECISIONS.md §1 asks to measure it for the defaults rather than bend the
+// Where do bounced balls stop? docs/decisions.md §4 asks to measure it for the defaults rather than bend the
 // constants. Shoots a uniform grid over the bounce region of the (δ, v) plane at one hole and prints the
 // distribution of the distance from the impact point to where the ball rests, in hole widths (2R).
 //   npm run bounce-distribution

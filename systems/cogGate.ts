@@ -3,7 +3,7 @@
 //   at that circle, roll iff |v_t| / |v_n| > RIM_ROLL_RATIO                 (Stage 3 entry)
 // A ball that crossed the lip and was neither skipped nor captured touches the rim. A tangential brush
 // (δ ≥ R − r/2: most of the ball stays outside) is bounced at the lip crossing and deflects out. Otherwise
-// the ball goes on to the contact circle, where the contact is taken (DECISIONS.md §1: there the ball is
+// the ball goes on to the contact circle, where the contact is taken (docs/decisions.md §2: there the ball is
 // substantially over the hole, so both the gate and the roll test can hold), and the velocity split at
 // that point decides: roll on the rim, or bounce.
 // Reads Path, RimContact, Hole, Ball; writes RimContact.mode, Path.mark (Bounce or Roll for the next systems).

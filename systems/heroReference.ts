@@ -1,5 +1,5 @@
 // Hero ball: the physical reference decides its lip crossings ("model no more than a scene needs"; see
-// docs/physical.md §4). Covers the whole (δ, v) plane, for the balls flagged Ball.hero only.
+// docs/physical.md). Covers the whole (δ, v) plane, for the balls flagged Ball.hero only.
 //   at the exact lip crossing (δ, v): referenceOutcome({ δ, v, R, r, g, j }) → captured, or the exit
 //   (point, speed, direction, time) of a rigid sphere rolling on and flying over a sharp lip
 // Runs ahead of skipOver; a hero crossing it decides is unmarked, so the six stages never see it. Other
@@ -22,7 +22,7 @@ import { referenceOutcome, type ReferenceInput } from '../src/reference/index.js
 import { lockAtLip } from '../src/world/rimSlots.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 
-/** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (reference-model.md: about 20°). */
+/** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (docs/reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = (20 * Math.PI) / 180
 
 // one input object, reused: a crossing allocates nothing of its own

@@ -1,5 +1,5 @@
 // Integration: moves every ball along its closed-form path to the end of the step, or to its next event
-// if that comes first (DECISIONS.md §5).
+// if that comes first (docs/decisions.md §1).
 //
 // Covers no region by itself: it finds, exactly, the instants at which the other systems decide: the lip
 // crossing (δ, v), the contact circle, the stop, the end of a rim roll. A ball stopped at such an event is

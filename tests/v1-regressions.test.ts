@@ -1,9 +1,9 @@
-// The six failures of the v1 rule (design §1), each pinned by a test.
+// The six failures of the v1 rule (docs/design.md §2), each pinned by a test.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, createBallPhysics } from '../src/index'
 import { sequence, settle, shoot } from './helpers'
 
-describe('v1 failures (design §1) stay fixed', () => {
+describe('v1 failures (docs/design.md §2) stay fixed', () => {
   it('1. no skip-over: a ball fast enough to fly over the hole skips it, straight and undistorted', () => {
     const { sim, ball } = shoot(2, 680)
     expect(sequence(settle(sim))).toEqual(['skip', 'rest'])

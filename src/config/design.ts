@@ -1,5 +1,5 @@
-// The design table's constants (ball-physics-iteration-2.md §4) under their own names, plus the few the
-// design leaves open (DECISIONS.md): ROLLING_DECEL, RIM_ROLL_MAX_TURNS and the engine's clock bounds.
+// The design table's constants (docs/design.md §5) under their own names, plus the few the
+// design leaves open (docs/decisions.md §3, §4, §5, §7): ROLLING_DECEL, RIM_ROLL_MAX_TURNS and the engine's clock bounds.
 // GRAVITY and V_SKIP_MAX are one fact written twice (V_SKIP_MAX = R·√(2g/r)); resolveConfig keeps them
 // consistent, so they can never disagree.
 import { describe } from '../check.js'

@@ -1,4 +1,4 @@
-// The v1 rule, as a system, for measuring it on the same engine as the design (docs/physical.md §4):
+// The v1 rule, as a system, for measuring it on the same engine as the design (docs/physical.md):
 //   capture iff the centre crosses the lip and v < V_MAX; otherwise the hole is not there.
 // Put it ahead of skipOver and it handles every lip crossing, so the six stages never see one. It exists
 // to chart the v1 model's fidelity and cost; no game should use it.

@@ -1,4 +1,4 @@
-// v1, the rule the design replaced (ball-physics-iteration-2.md §1): at each tick, a ball whose centre is
+// v1, the rule the design replaced (docs/design.md §2): at each tick, a ball whose centre is
 // inside a lip circle with speed below V1_SPEED_LIMIT = V_MAX (the speed at which the Stage 1 window closes,
 // the design's own "low enough") is captured. Nothing else: no skip, no rim contact, no bounce or roll, no
 // near miss. A ball whose speed ran out rests (or falls in, by the same rule, if its centre is inside).
