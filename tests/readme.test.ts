@@ -1,0 +1,81 @@
+// The README's TypeScript examples run as written (the package's names resolve to the sources here), so
+// the docs cannot drift from the API. Each block is written to a module and imported; its console output
+// is captured and checked for what the example promises.
+import { execFileSync } from 'node:child_process'
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs'
+import { resolve } from 'node:path'
+import { describe, expect, it, vi } from 'vitest'
+
+const root = resolve(import.meta.dirname, '..')
+const readme = readFileSync(resolve(root, 'README.md'), 'utf8')
+const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]!).filter((b) => b.includes("from 'positron-ball-physics"))
+
+async function run(code: string, name: string): Promise<unknown[][]> {
+  const dir = resolve(root, 'test-artifacts/readme')
+  mkdirSync(dir, { recursive: true })
+  const file = resolve(dir, `${name}.ts`)
+  writeFileSync(file, code)
+  const logs: unknown[][] = []
+  const spy = vi.spyOn(console, 'log').mockImplementation((...args: unknown[]) => void logs.push(args))
+  try {
+    await import(/* @vite-ignore */ `${file}?t=${Date.now()}`)
+  } finally {
+    spy.mockRestore()
+  }
+  return logs
+}
+
+describe('README examples', () => {
+  it('has the two examples (the game API and the ecs entry)', () => {
+    expect(blocks.length).toBe(2)
+    expect(blocks[0]).toContain('createBallPhysics')
+    expect(blocks[1]).toContain("from 'positron-ball-physics/ecs'")
+  })
+
+  it('the game API example runs and reports events', async () => {
+    const logs = await run(blocks[0]!, 'use')
+    expect(logs.length).toBeGreaterThan(0)
+    for (const [type, ball, time] of logs) {
+      expect(typeof type).toBe('string')
+      expect(ball).toBe(26) // the first ball after the panel's 25 holes
+      expect(time as number).toBeGreaterThan(0)
+    }
+  })
+
+  it('the ecs example runs: its own system counts lip crossings, its own component is queried with Ball', async () => {
+    const logs = await run(blocks[1]!, 'ecs')
+    expect(logs).toHaveLength(1)
+    const [lipCrossings, trail] = logs[0] as [number, number]
+    expect(lipCrossings).toBeGreaterThan(0)
+    expect(trail).toBeGreaterThan(50) // px rolled while it was a ball
+  })
+
+  it('the examples typecheck (strict, the names resolved to the sources)', async () => {
+    await run(blocks[0]!, 'use')
+    await run(blocks[1]!, 'ecs')
+    const dir = resolve(root, 'test-artifacts/readme')
+    writeFileSync(
+      resolve(dir, 'tsconfig.json'),
+      JSON.stringify({
+        extends: '../../tsconfig.json',
+        compilerOptions: {
+          noEmit: true,
+          rootDir: '../..',
+          paths: {
+            'positron-ball-physics': ['../../src/index.ts'],
+            'positron-ball-physics/ecs': ['../../src/ecs.ts'],
+            'positron-ball-physics/reference': ['../../src/reference/index.ts'],
+          },
+        },
+        include: ['use.ts', 'ecs.ts'],
+      }),
+    )
+    let out = ''
+    try {
+      execFileSync(resolve(root, 'node_modules/.bin/tsc'), ['-p', resolve(dir, 'tsconfig.json')], { encoding: 'utf8' })
+    } catch (e) {
+      out = String((e as { stdout?: string }).stdout ?? e)
+    }
+    expect(out).toBe('')
+  })
+})
