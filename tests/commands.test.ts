@@ -1,0 +1,334 @@
+// Commands over a bare world and the createBallPhysics facade are the same functions: the same scene gives
+// bit-identical events and stores. removeHole's rules for the balls a hole holds. A game's own system.
+import { addComponent, entityExists, query, removeEntity } from 'bitecs'
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type ConfigOverrides, type ThrowSpec, type WallsSpec } from '../src/index'
+import {
+  BallMode,
+  PathEvent,
+  addBall,
+  addHole,
+  ballState,
+  createBallWorld,
+  createSchedule,
+  drainEvents,
+  listBalls,
+  listHoles,
+  removeBall,
+  removeHole,
+  runSchedule,
+  setBallVelocity,
+  setHeroBall,
+  setWalls,
+  throwBall,
+  type BallWorld,
+} from '../src/ecs'
+import { rng } from './helpers'
+
+interface Driver {
+  world: BallWorld
+  panel(): number[]
+  setWalls(s: WallsSpec): void
+  throwBall(s: ThrowSpec): number
+  setBallVelocity(b: number, vx: number, vy: number): void
+  removeBall(b: number): void
+  removeHole(h: number): void
+  setHeroBall(b: number): void
+  step(dt: number): void
+  drain(): BallEvent[]
+}
+
+function commandsDriver(overrides: ConfigOverrides): Driver {
+  const w = createBallWorld(overrides)
+  const schedule = createSchedule(w.config)
+  return {
+    world: w,
+    panel: () => addPanel(w),
+    setWalls: (s) => setWalls(w, s),
+    throwBall: (s) => throwBall(w, s),
+    setBallVelocity: (b, vx, vy) => setBallVelocity(w, b, vx, vy),
+    removeBall: (b) => removeBall(w, b),
+    removeHole: (h) => removeHole(w, h),
+    setHeroBall: (b) => setHeroBall(w, b),
+    step: (dt) => runSchedule(w, schedule, dt),
+    drain: () => drainEvents(w),
+  }
+}
+
+function facadeDriver(overrides: ConfigOverrides): Driver {
+  const sim = createBallPhysics(overrides)
+  return {
+    world: sim.world,
+    panel: () => addPanel(sim),
+    setWalls: (s) => sim.setWalls(s),
+    throwBall: (s) => sim.throwBall(s),
+    setBallVelocity: (b, vx, vy) => sim.setBallVelocity(b, vx, vy),
+    removeBall: (b) => sim.removeBall(b),
+    removeHole: (h) => sim.removeHole(h),
+    setHeroBall: (b) => sim.setHeroBall(b),
+    step: (dt) => void sim.step(dt),
+    drain: () => sim.drainEvents(),
+  }
+}
+
+/** The scene of the brief: panel, walls open at the bottom, 200 seeded throws, a few commands, 600 steps. */
+function scene(d: Driver, seed: number, throws = 200, steps = 600): BallEvent[] {
+  const rand = rng(seed)
+  const holes = d.panel()
+  d.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, restitution: 0.6, open: { bottom: true } })
+  const events: BallEvent[] = []
+  const balls: number[] = []
+  const rolling = () => balls.filter((b) => d.world.Ball.live[b] === 1 && d.world.Ball.mode[b] === BallMode.Rolling)
+  const every = Math.max(1, Math.floor((steps * 0.5) / throws))
+  for (let i = 0; i < steps; i++) {
+    if (balls.length < throws && i % every === 0) {
+      const x = DEFAULT_PANEL.launch.x + (rand() - 0.5) * 200
+      balls.push(d.throwBall({ x, y: DEFAULT_PANEL.launch.y, power: rand(), angle: (rand() - 0.5) * 1.2 }))
+    }
+    if (i === 90 || i === 180 || i === 270) {
+      const r = rolling()
+      for (let k = 0; k < Math.min(3, r.length); k++) d.setBallVelocity(r[k]!, (rand() - 0.5) * 400, -rand() * 400)
+    }
+    if (i === 300) balls.push(d.throwBall({ x: 405, y: 440, power: 0.2, angle: Math.PI })) // down, into the gutter
+    if (i === 120) d.removeBall(rolling()[0] ?? balls[0]!)
+    if (i === 200) d.removeHole(holes[12]!)
+    if (i === 240) d.setHeroBall(rolling()[1] ?? balls[1]!)
+    d.step(1 / 120)
+    events.push(...d.drain())
+  }
+  return events
+}
+
+function numbers(value: unknown, out: number[] = []): number[] {
+  if (typeof value === 'number') out.push(value)
+  else if (Array.isArray(value)) for (const v of value) numbers(v, out)
+  else if (value !== null && typeof value === 'object') for (const k of Object.keys(value).sort()) numbers((value as Record<string, unknown>)[k], out)
+  return out
+}
+
+function expectSameStores(a: BallWorld, b: BallWorld): void {
+  expect(a.entityIndex.maxId).toBe(b.entityIndex.maxId)
+  const n = a.entityIndex.maxId + 1
+  for (const [name, sa, sb] of [['Ball', a.Ball, b.Ball], ['Path', a.Path, b.Path]] as const) {
+    for (const key of Object.keys(sa)) {
+      const x = (sa as unknown as Record<string, Float64Array>)[key]!
+      const y = (sb as unknown as Record<string, Float64Array>)[key]!
+      for (let i = 0; i < n; i++) if (!Object.is(x[i], y[i])) expect.fail(`${name}.${key}[${i}]: ${x[i]} vs ${y[i]}`)
+    }
+  }
+}
+
+describe('commands and the facade are the same functions', () => {
+  for (const [name, overrides, seed, throws] of [
+    ['panel, walls, 200 throws', {}, 7, 200],
+    ['ball-ball contacts on', { BALL_COLLISIONS: 'on' }, 8, 200],
+  ] as const) {
+    it(`${name}: bit-identical events and stores`, () => {
+      const a = commandsDriver(overrides)
+      const b = facadeDriver(overrides)
+      const ea = scene(a, seed, throws)
+      const eb = scene(b, seed, throws)
+      expect(ea.length).toBeGreaterThan(200)
+      expect(ea.filter((e) => e.type === 'capture').length).toBeGreaterThan(10)
+      expect(ea.some((e) => e.type === 'gutter')).toBe(true)
+      if ('BALL_COLLISIONS' in overrides) expect(ea.some((e) => e.type === 'collision')).toBe(true)
+      expect(ea).toEqual(eb)
+      const na = numbers(ea)
+      const nb = numbers(eb)
+      expect(na.length).toBe(nb.length)
+      for (let i = 0; i < na.length; i++) if (!Object.is(na[i], nb[i])) expect.fail(`number ${i}: ${na[i]} vs ${nb[i]}`)
+      expectSameStores(a.world, b.world)
+      expect(a.world.time).toBe(b.world.time)
+      expect(listBalls(a.world)).toEqual(listBalls(b.world))
+      expect(listHoles(a.world)).toEqual(listHoles(b.world))
+    })
+  }
+})
+
+/** A world with one hole at the origin and a ball on its rim (δ = 11, crossing at 490 px/s). */
+function rimRoller(w: BallWorld, hx = 0, hy = 0): { hole: number; ball: number } {
+  const hole = addHole(w, { x: hx, y: hy })
+  const lipX = hx - Math.sqrt(18 * 18 - 11 * 11)
+  const ball = addBall(w, { x: lipX - 60, y: hy + 11, vx: Math.sqrt(490 ** 2 + 2 * 300 * 60), vy: 0 })
+  return { hole, ball }
+}
+
+function stepN(w: BallWorld, n: number, dt = 1 / 120): BallEvent[] {
+  const schedule = createSchedule(w.config)
+  const out: BallEvent[] = []
+  for (let i = 0; i < n; i++) {
+    runSchedule(w, schedule, dt)
+    out.push(...drainEvents(w))
+  }
+  return out
+}
+
+/** The removeHole scene: a rim roller, a skipper, a captured ball, a ball in transit and two bystanders. */
+function removeHoleScene(how: 'removeHole' | 'removeEntity' | 'none') {
+  const w = createBallWorld()
+  const { hole, ball: roller } = rimRoller(w)
+  const other = addHole(w, { x: 0, y: 200 })
+  const captured = addBall(w, { x: 2, y: 1, vx: 0, vy: 0 }) // inside the lip, at rest: falls in
+  const transit = addBall(w, { x: 0, y: -2, vx: 0, vy: -80 }) // put down inside: in transit, would stop inside
+  const toward = addBall(w, { x: -150, y: -2, vx: 330, vy: 0 }) // will roll over where the hole is
+  const away = addBall(w, { x: 300, y: 300, vx: 100, vy: 40 }) // far from it
+  const before: BallEvent[] = []
+  for (let i = 0; i < 400 && ballState(w, roller).mode !== 'rimRoll'; i++) before.push(...stepN(w, 1, 1 / 2000))
+  const at = { roller: ballState(w, roller), transit: ballState(w, transit), captured: ballState(w, captured) }
+  if (how === 'removeHole') removeHole(w, hole)
+  else if (how === 'removeEntity') removeEntity(w, hole)
+  const after = stepN(w, 360)
+  return { w, hole, other, roller, captured, transit, toward, away, before, at, after }
+}
+
+describe('removeHole', () => {
+  it('a rim roller leaves on the tangent; transit rolls on; captured stays; no later event names the hole', () => {
+    const s = removeHoleScene('removeHole')
+    const { w, hole, at } = s
+    expect(at.roller.mode).toBe('rimRoll')
+    expect(at.transit.mode).toBe('rolling')
+    expect(at.captured.mode).toBe('captured')
+    expect(s.before.some((e) => e.type === 'rimRoll' && e.hole === hole)).toBe(true)
+    expect(s.after.filter((e) => e.hole === hole)).toEqual([])
+    expect(listHoles(w)).toEqual([s.other])
+    // the roller left on the tangent: its velocity was perpendicular to the radius, and it went straight on
+    const { x, y, vx, vy } = at.roller
+    expect(Math.abs(x * vx + y * vy) / (Math.hypot(x, y) * Math.hypot(vx, vy))).toBeLessThan(1e-9)
+    const end = ballState(w, s.roller)
+    expect(end.mode).toBe('resting')
+    const cross = (end.x - x) * vy - (end.y - y) * vx
+    expect(Math.abs(cross) / (Math.hypot(end.x - x, end.y - y) * Math.hypot(vx, vy))).toBeLessThan(1e-9)
+    expect(Math.hypot(end.x, end.y)).toBeGreaterThan(18)
+    // in transit: rolled on in a straight line, stopped where a lone ball stops
+    const tr = ballState(w, s.transit)
+    expect(tr.mode).toBe('resting')
+    expect(tr.x).toBe(0)
+    expect(tr.y).toBeCloseTo(-2 - (80 * 80) / 600, 9)
+    expect(w.Ball.rim[s.transit]).toBe(0)
+    expect(ballState(w, s.captured)).toEqual(at.captured)
+    // the ball heading for the hole rolls over where it was
+    const tw = ballState(w, s.toward)
+    expect(tw.mode).toBe('resting')
+    expect(tw.x).toBeCloseTo(-150 + (330 * 330) / 600, 6)
+    expect(s.after.filter((e) => e.ball === s.toward).map((e) => e.type)).toEqual(['rest'])
+  })
+
+  it('rolling balls elsewhere are unaffected apart from re-planning', () => {
+    const kept = removeHoleScene('none')
+    const gone = removeHoleScene('removeHole')
+    const a = ballState(kept.w, kept.away)
+    const b = ballState(gone.w, gone.away)
+    expect(b.mode).toBe(a.mode)
+    expect(b.x).toBeCloseTo(a.x, 9)
+    expect(b.y).toBeCloseTo(a.y, 9)
+    const restA = kept.after.find((e) => e.ball === kept.away)!
+    const restB = gone.after.find((e) => e.ball === gone.away)!
+    expect(restB.type).toBe('rest')
+    expect(restB.time).toBeCloseTo(restA.time, 9)
+    // without the removal the ball in transit would have stopped inside the lip and fallen in
+    expect(ballState(kept.w, kept.transit).mode).toBe('captured')
+  })
+
+  it("bitECS removeEntity on a hole does exactly what removeHole does", () => {
+    const a = removeHoleScene('removeHole')
+    const b = removeHoleScene('removeEntity')
+    expect(b.after).toEqual(a.after)
+    expectSameStores(a.w, b.w)
+    expect(listHoles(b.w)).toEqual(listHoles(a.w))
+    expect(b.w.Hole.x[b.hole]).toBe(0)
+  })
+
+  it('removeHole of an id that is not a live hole throws and changes nothing', () => {
+    const w = createBallWorld()
+    const { hole, ball } = rimRoller(w)
+    setWalls(w, { minX: -500, minY: -500, maxX: 500, maxY: 500 })
+    const gone = addHole(w, { x: 200, y: 200 })
+    removeHole(w, gone)
+    stepN(w, 10)
+    const snap = () => JSON.stringify([listHoles(w), listBalls(w), w.time, w.events.count, Array.from(w.Ball.x.subarray(0, 8)), Array.from(w.Path.nextT.subarray(0, 8)), w.holes.count])
+    const before = snap()
+    for (const bad of [ball, w.walls, gone, 9999, 0, -1, 1.5, '1', null]) {
+      expect(() => removeHole(w, bad as number), String(bad)).toThrow(typeof bad === 'number' && Number.isInteger(bad) && bad > 0 ? RangeError : TypeError)
+      expect(snap()).toBe(before)
+    }
+    expect(ballState(w, ball).x).toBe(w.Ball.x[ball])
+    expect(listHoles(w)).toEqual([hole])
+  })
+})
+
+describe("a game's own system in the schedule", () => {
+  it("runs in every pass, sees each Lip mark once right after integration, tints by a component (README's ecs example)", () => {
+    const w = createBallWorld()
+    const holes = addPanel(w)
+    const Sprite = { tint: [] as number[] }
+    const rand = rng(3)
+    const balls: number[] = []
+    for (let i = 0; i < 40; i++) {
+      const b = throwBall(w, { x: 210 + (rand() - 0.5) * 200, y: 450, power: rand(), angle: (rand() - 0.5) })
+      balls.push(b)
+      if (i % 2 === 0) addComponent(w, b, Sprite)
+    }
+    const schedule = createSchedule(w.config)
+    const calls: { pass: number; time: number; tickEnd: number }[] = []
+    const lips: { ball: number; hole: number; t: number; speed: number; r: number }[] = []
+    schedule.splice(1, 0, {
+      name: 'countLips',
+      run: (world) => {
+        calls.push({ pass: world.pass, time: world.time, tickEnd: world.tickEnd })
+        for (let i = 0; i < world.marked.count; i++) {
+          const b = world.marked.ids[i]!
+          if (world.Path.mark[b] !== PathEvent.Lip) continue
+          const h = world.Path.markHole[b]!
+          const r = Math.hypot(world.Ball.x[b]! - world.Hole.x[h]!, world.Ball.y[b]! - world.Hole.y[h]!)
+          lips.push({ ball: b, hole: h, t: world.Path.nextT[b]!, speed: world.Path.speed[b]!, r })
+        }
+      },
+    })
+    schedule.push({
+      name: 'tint',
+      run: (world) => {
+        for (const b of query(world, [world.Ball, Sprite])) Sprite.tint[b] = world.Ball.mode[b]! + 1
+      },
+    })
+    const events: BallEvent[] = []
+    const removed = new Set<number>()
+    const dt = 1 / 60
+    for (let s = 0; s < 240; s++) {
+      const t0 = w.time
+      const first = calls.length
+      runSchedule(w, schedule, dt)
+      const drained = drainEvents(w)
+      events.push(...drained)
+      // as in the README: a captured ball is removed with bitECS's removeEntity, its Sprite goes with it
+      for (const e of drained) if (e.type === 'capture') removed.add((removeEntity(w, e.ball), e.ball))
+      for (const b of removed) expect(entityExists(w, b) || query(w, [Sprite]).includes(b)).toBe(false)
+      const mine = calls.slice(first)
+      expect(mine.length).toBeGreaterThanOrEqual(1)
+      expect(mine.map((c) => c.pass)).toEqual(mine.map((_, i) => i)) // every pass, in order
+      for (const c of mine) expect(c).toMatchObject({ time: t0, tickEnd: t0 + dt })
+      for (const b of balls) if (!removed.has(b)) expect(Sprite.tint[b]).toBe(hasSprite(b) ? w.Ball.mode[b]! + 1 : undefined)
+    }
+    expect(removed.size).toBeGreaterThan(5)
+    expect(listBalls(w)).toEqual(balls.filter((b) => !removed.has(b)))
+    function hasSprite(b: number) {
+      return balls.indexOf(b) % 2 === 0
+    }
+    expect(calls.some((c) => c.pass > 0)).toBe(true)
+    expect(lips.length).toBeGreaterThan(10)
+    // each crossing is seen once: a ball's mark is not seen again in a later pass
+    expect(new Set(lips.map((l) => `${l.ball}/${l.hole}/${l.t}`)).size).toBe(lips.length)
+    for (const l of lips) {
+      expect(holes).toContain(l.hole)
+      expect(l.r).toBeCloseTo(18, 9) // the ball's centre is on the lip circle
+    }
+    // every hole event that carries a lip crossing's (δ, v) came from a Lip mark the system saw
+    const withLip = events.filter((e) => e.hole !== undefined && e.speed !== undefined && e.type !== 'nearMiss')
+    expect(withLip.length).toBeGreaterThan(10)
+    for (const e of withLip) {
+      expect(lips.some((l) => l.ball === e.ball && l.hole === e.hole && Object.is(l.speed, e.speed))).toBe(true)
+    }
+    for (const e of events.filter((x) => x.type === 'skip')) {
+      expect(lips.some((l) => l.ball === e.ball && l.hole === e.hole && Object.is(l.t, e.time))).toBe(true)
+    }
+  })
+})

@@ -1,0 +1,414 @@
+// Balls are bitECS entities: Ball and Path (and RimContact while a hole holds them), a game's own
+// components beside ours, observers, and removal by our commands or by bitECS itself.
+import { addComponent, addEntity, entityExists, getEntityComponents, hasComponent, observe, onAdd, onRemove, query } from 'bitecs'
+import { removeComponent, removeEntity } from 'bitecs'
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_PANEL, addPanel, type BallEvent } from '../src/index'
+import { addBall, addHole, ballState, createBallWorld, createSchedule, drainEvents, listBalls, removeBall } from '../src/ecs'
+import { removeHole, runSchedule, setHeroBall, throwBall, type BallWorld } from '../src/ecs'
+import { rng } from './helpers'
+
+const Sprite = { tint: [] as number[] }
+
+function step(w: BallWorld, dt = 1 / 120, n = 1): BallEvent[] {
+  const schedule = createSchedule(w.config)
+  const out: BallEvent[] = []
+  for (let i = 0; i < n; i++) {
+    runSchedule(w, schedule, dt)
+    out.push(...drainEvents(w))
+  }
+  return out
+}
+
+const sorted = (ids: Iterable<number> | ArrayLike<number>) => Array.from(ids).sort((a, b) => a - b)
+const moving = (w: BallWorld) => Array.from(w.moving.dense.subarray(0, w.moving.count))
+const names = (e: BallEvent) => [e.ball, e.hole ?? 0, e.other ?? 0]
+
+/** A ball rolling toward the hole at the origin along +x at offset delta, crossing the lip at `speed`. */
+function aimAt(w: BallWorld, hx: number, delta: number, speed: number, lead = 60): number {
+  const R = w.config.HOLE_RADIUS
+  const lipX = hx - Math.sqrt(Math.max(0, R * R - delta * delta))
+  return addBall(w, { x: lipX - lead, y: delta, vx: Math.sqrt(speed * speed + 2 * w.config.ROLLING_DECEL * lead), vy: 0 })
+}
+
+type Removal = 'removeBall' | 'removeEntity'
+const remove = (w: BallWorld, b: number, how: Removal) => (how === 'removeBall' ? removeBall(w, b) : removeEntity(w, b))
+
+describe('balls are bitECS entities', () => {
+  it('a ball from addBall or throwBall has Ball and Path; query([Ball]) returns every live ball and only balls', () => {
+    const w = createBallWorld()
+    const holes = addPanel(w)
+    const plain = addEntity(w)
+    const a = addBall(w, { x: 600, y: 600, vx: 0, vy: 0 })
+    const b = throwBall(w, { x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3, angle: 0.2 })
+    for (const ball of [a, b]) {
+      expect(hasComponent(w, ball, w.Ball)).toBe(true)
+      expect(hasComponent(w, ball, w.Path)).toBe(true)
+      expect(hasComponent(w, ball, w.Hole)).toBe(false)
+      const comps = getEntityComponents(w, ball)
+      expect(comps).toContain(w.Ball)
+      expect(comps).toContain(w.Path)
+    }
+    for (const h of holes) expect(hasComponent(w, h, w.Ball)).toBe(false)
+    expect(hasComponent(w, plain, w.Ball)).toBe(false)
+    expect(sorted(query(w, [w.Ball]))).toEqual([a, b])
+    expect(sorted(query(w, [w.Ball, w.Path]))).toEqual([a, b])
+    step(w, 1 / 60, 30)
+    const c = addBall(w, { x: 700, y: 700, vx: 10, vy: 0 })
+    removeBall(w, a)
+    expect(sorted(query(w, [w.Ball]))).toEqual(listBalls(w))
+    expect(listBalls(w)).toEqual([b, c])
+  })
+
+  it("a game's own component sits beside ours: add, query together, remove, listed by getEntityComponents", () => {
+    const w = createBallWorld()
+    const balls = Array.from({ length: 6 }, (_, i) => addBall(w, { x: 40 * i, y: 0, vx: 0, vy: -50 }))
+    const tinted = [balls[1]!, balls[3]!, balls[4]!]
+    for (const b of tinted) {
+      addComponent(w, b, Sprite)
+      Sprite.tint[b] = b * 10
+    }
+    const other = addEntity(w)
+    addComponent(w, other, Sprite) // a game entity with a Sprite but no Ball
+    expect(sorted(query(w, [w.Ball, Sprite]))).toEqual(tinted)
+    expect(sorted(query(w, [Sprite]))).toEqual(sorted([...tinted, other]))
+    expect(getEntityComponents(w, balls[1]!)).toContain(Sprite)
+    expect(getEntityComponents(w, balls[0]!)).not.toContain(Sprite)
+    step(w, 1 / 60, 10)
+    expect(hasComponent(w, balls[3]!, Sprite)).toBe(true) // stepping leaves a game component alone
+    removeComponent(w, balls[3]!, Sprite)
+    expect(hasComponent(w, balls[3]!, Sprite)).toBe(false)
+    expect(getEntityComponents(w, balls[3]!)).not.toContain(Sprite)
+    expect(hasComponent(w, balls[3]!, w.Ball)).toBe(true)
+    expect(sorted(query(w, [w.Ball, Sprite]))).toEqual([balls[1], balls[4]])
+    expect(listBalls(w)).toEqual(balls)
+  })
+
+  it('onAdd(Ball) fires for each new ball, onRemove(Ball) for each removed one (removeBall and removeEntity)', () => {
+    const w = createBallWorld()
+    const added: number[] = []
+    const removed: number[] = []
+    observe(w, onAdd(w.Ball), (eid: number) => void added.push(eid))
+    observe(w, onRemove(w.Ball), (eid: number) => void removed.push(eid))
+    const h = addHole(w, { x: 500, y: 500 })
+    const game = addEntity(w)
+    addComponent(w, game, Sprite)
+    expect(added).toEqual([])
+    const a = addBall(w, { x: 0, y: 0, vx: 100, vy: 0 })
+    const b = throwBall(w, { x: 0, y: 100, power: 0.5, angle: 0 })
+    const c = addBall(w, { x: 50, y: 0, vx: 0, vy: 0 })
+    expect(added).toEqual([a, b, c])
+    // the observer sees a ball already set up
+    step(w, 1 / 60, 5)
+    removeBall(w, a)
+    expect(removed).toEqual([a])
+    removeEntity(w, b)
+    expect(removed).toEqual([a, b])
+    removeHole(w, h)
+    removeEntity(w, game)
+    expect(removed).toEqual([a, b])
+    const d = addBall(w, { x: 0, y: 0, vx: 0, vy: 0 })
+    expect(added).toEqual([a, b, c, d])
+    expect(listBalls(w)).toEqual(sorted([c, d]))
+  })
+
+  it('RimContact is on a ball exactly while Ball.rim is set, after every small step; query([RimContact]) agrees', () => {
+    // rim roll, skip, slow capture (decided at the lip: no step ends while it holds a row), and a ball put
+    // down inside a lip circle (in transit)
+    const w = createBallWorld()
+    const holes = [0, 200, 400, 600].map((x) => addHole(w, { x, y: 0 }))
+    const balls = [aimAt(w, 0, 11, 490), aimAt(w, 200, 2, 900), aimAt(w, 400, 0, 60), addBall(w, { x: 605, y: 0, vx: 150, vy: 0 })]
+    const held = balls.map(() => 0)
+    const released = balls.map(() => 0)
+    const schedule = createSchedule(w.config)
+    const check = () => {
+      const withRim = sorted(query(w, [w.RimContact]))
+      expect(withRim).toEqual(balls.filter((b) => w.Ball.rim[b] !== 0))
+      balls.forEach((b, i) => {
+        const on = w.Ball.rim[b] !== 0
+        expect(hasComponent(w, b, w.RimContact), `ball ${b} at t=${w.time}`).toBe(on)
+        if (on) held[i]++
+        else if (held[i]! > 0) released[i]++
+      })
+    }
+    check()
+    expect(w.Ball.rim[balls[3]!]).not.toBe(0) // added inside: in transit at once
+    for (let i = 0; i < 1500; i++) {
+      runSchedule(w, schedule, 1 / 2000)
+      check()
+    }
+    for (const i of [0, 1, 3]) {
+      expect(held[i], `ball ${i}`).toBeGreaterThan(0)
+      expect(released[i], `ball ${i}`).toBeGreaterThan(0)
+    }
+    const modes = balls.map((b) => ballState(w, b).mode)
+    expect(modes[2]).toBe('captured')
+    expect(drainEvents(w).some((e) => e.type === 'skip' && e.hole === holes[1])).toBe(true)
+  })
+})
+
+describe('removal', () => {
+  for (const how of ['removeBall', 'removeEntity'] as const) {
+    it(`${how}: the ball is gone everywhere, never moves or is reported again, and its id starts clean`, () => {
+      const w = createBallWorld()
+      const h = addHole(w, { x: 0, y: 0 })
+      const a = aimAt(w, 0, 11, 490) // will roll on the rim
+      const b = addBall(w, { x: -300, y: 300, vx: 200, vy: 0 })
+      addComponent(w, a, Sprite)
+      Sprite.tint[a] = 7
+      for (let i = 0; i < 400 && ballState(w, a).mode !== 'rimRoll'; i++) step(w, 1 / 2000)
+      expect(ballState(w, a).mode).toBe('rimRoll')
+      setHeroBall(w, a, true)
+      expect(moving(w)).toContain(a)
+      remove(w, a, how)
+      expect(entityExists(w, a)).toBe(false)
+      expect(listBalls(w)).toEqual([b])
+      expect(moving(w)).not.toContain(a)
+      expect(sorted(query(w, [w.Ball]))).toEqual([b])
+      expect(query(w, [w.RimContact])).not.toContain(a)
+      const ev = step(w, 1 / 120, 120)
+      expect(ev.filter((e) => names(e).includes(a))).toEqual([])
+      for (const arr of [...Object.values(w.Ball), ...Object.values(w.Path)] as Float64Array[]) expect(arr[a]).toBe(0)
+      expect(ev.filter((e) => e.hole === h)).toEqual([]) // b's path never came near the hole
+      // a plain game entity takes the id: it inherits nothing
+      const g = addEntity(w)
+      expect(g).toBe(a)
+      expect(getEntityComponents(w, g)).toEqual([]) // no Sprite, Ball, Path or RimContact
+      expect(hasComponent(w, g, Sprite)).toBe(false)
+      expect(listBalls(w)).toEqual([b])
+      removeEntity(w, g)
+      // a new ball takes it: fresh rows
+      const c = addBall(w, { x: 300, y: 300, vx: 0, vy: 50 })
+      expect(c).toBe(a)
+      expect(ballState(w, c)).toEqual({ x: 300, y: 300, vx: 0, vy: 50, radius: w.config.BALL_RADIUS, mode: 'rolling' })
+      expect([w.Ball.rim[c], w.Ball.hero[c]]).toEqual([0, 0])
+      expect(hasComponent(w, c, Sprite)).toBe(false)
+      expect(getEntityComponents(w, c)).toHaveLength(2)
+      for (const k of ['s', 'sHole', 'fromHole', 'mark', 'markHole', 'markEdge', 'markOther'] as const) expect(w.Path[k][c], k).toBe(0)
+      const later = step(w, 1 / 60, 60)
+      expect(later.filter((e) => e.ball === c).map((e) => e.type)).toEqual(['rest'])
+    })
+  }
+
+  it("METHOD 'naive': a new ball reusing the id inherits nothing from the tick-sampled per-ball state", () => {
+    // the removed ball bounced off the hole (the naive port remembers that hole to skip its near miss);
+    // a new ball with its id passing the hole with its footprint over the lip gets its near miss
+    const run = (reuse: boolean) => {
+      const w = createBallWorld({ METHOD: 'naive' })
+      addHole(w, { x: 0, y: 0 })
+      const a = aimAt(w, 0, 14, 400)
+      const first = step(w, 1 / 120, 240)
+      expect(first.map((e) => e.type)).toContain('bounce')
+      removeBall(w, a)
+      if (!reuse) addEntity(w)
+      const b = addBall(w, { x: -100, y: 23, vx: 300, vy: 0 })
+      expect(b === a).toBe(reuse)
+      return step(w, 1 / 120, 240).filter((e) => e.ball === b).map((e) => e.type)
+    }
+    expect(run(false)).toEqual(['nearMiss', 'rest'])
+    expect(run(true)).toEqual(['nearMiss', 'rest'])
+  })
+
+  it('no id is handed out twice through random adds, removals (both paths) and plain game entities', () => {
+    const w = createBallWorld({}, { capacity: 8 })
+    const rand = rng(11)
+    const holes = [addHole(w, { x: -5000, y: 0 }), addHole(w, { x: -6000, y: 0 })]
+    const balls = new Set<number>()
+    const games = new Set<number>()
+    const gone = new Set<number>()
+    const pick = (s: Set<number>) => [...s][Math.floor(rand() * s.size)]!
+    const take = (set: Set<number>, id: number) => {
+      expect(balls.has(id) || games.has(id) || holes.includes(id), `id ${id} handed out twice`).toBe(false)
+      set.add(id)
+      gone.delete(id)
+    }
+    const drop = (set: Set<number>, id: number, how: Removal) => {
+      remove(w, id, how)
+      set.delete(id)
+      gone.add(id)
+    }
+    const schedule = createSchedule(w.config)
+    for (let i = 0; i < 1500; i++) {
+      const op = rand()
+      if (op < 0.25) take(balls, addBall(w, { x: rand() * 1000, y: rand() * 1000, vx: rand() * 100, vy: 0 }))
+      else if (op < 0.35) take(balls, throwBall(w, { x: rand() * 1000, y: 2000, power: rand(), angle: 0 }))
+      else if (op < 0.5) {
+        const g = addEntity(w)
+        if (rand() < 0.5) addComponent(w, g, Sprite)
+        take(games, g)
+      } else if (op < 0.8 && balls.size > 0) drop(balls, pick(balls), op < 0.65 ? 'removeBall' : 'removeEntity')
+      else if (op < 0.9 && games.size > 0) drop(games, pick(games), 'removeEntity')
+      else runSchedule(w, schedule, rand() * 0.05 + 1e-4)
+      expect(listBalls(w).length).toBe(balls.size)
+      for (const id of gone) if (entityExists(w, id)) expect.fail(`removed id ${id} still exists`)
+    }
+    expect(listBalls(w)).toEqual(sorted(balls))
+    expect(sorted(query(w, [w.Ball]))).toEqual(sorted(balls))
+    for (const id of [...balls, ...games, ...holes]) expect(entityExists(w, id)).toBe(true)
+    for (const g of games) expect(hasComponent(w, g, w.Ball)).toBe(false)
+    expect(sorted(query(w, [Sprite])).every((id) => games.has(id))).toBe(true)
+  })
+})
+
+describe('removal with ball-ball contacts on', () => {
+  it('a resting ball removed by removeEntity is not struck later, even after a new ball took its id elsewhere', () => {
+    const run = (removeIt: boolean, reuse: boolean) => {
+      const w = createBallWorld({ BALL_COLLISIONS: 'on' })
+      const r = addBall(w, { x: 0, y: 0, vx: 0, vy: 0 })
+      step(w, 1 / 60, 2)
+      expect(ballState(w, r).mode).toBe('resting')
+      if (removeIt) removeEntity(w, r)
+      // the freed id goes to a new ball far away, or to a plain game entity
+      const other = reuse ? addBall(w, { x: 5000, y: 5000, vx: 0, vy: 0 }) : addEntity(w)
+      if (removeIt) expect(other).toBe(r)
+      const t = addBall(w, { x: 0, y: 200, vx: 0, vy: -400 })
+      const ev = step(w, 1 / 60, 120)
+      return { w, t, ev, r }
+    }
+    const control = run(false, false)
+    expect(control.ev.some((e) => e.type === 'collision')).toBe(true) // the throw does reach it
+    for (const reuse of [false, true]) {
+      const { w, t, ev, r } = run(true, reuse)
+      expect(ev.filter((e) => e.type === 'collision')).toEqual([])
+      expect(ev.filter((e) => e.ball === r || e.other === r).map((e) => e.type)).toEqual(reuse ? ['rest'] : [])
+      const s = ballState(w, t)
+      expect(s.x).toBe(0)
+      expect(s.y).toBeCloseTo(200 - (400 * 400) / (2 * w.config.ROLLING_DECEL), 6) // rolled straight through
+    }
+  })
+
+  it('moving balls removed mid-run leave no collision with them afterwards; their partners roll on alone', () => {
+    const run = (removeSome: boolean) => {
+      const w = createBallWorld({ BALL_COLLISIONS: 'on' })
+      const pairs: [number, number][] = []
+      for (let k = 0; k < 6; k++) pairs.push([addBall(w, { x: 0, y: 100 * k, vx: 300, vy: 0 }), addBall(w, { x: 250, y: 100 * k, vx: -300, vy: 0 })])
+      const early = step(w, 1 / 120, 12) // 0.1 s: no pair has touched yet
+      const removed = removeSome ? pairs.filter((_, k) => k % 3 !== 2).map(([a]) => a) : []
+      removed.forEach((a, k) => remove(w, a, k % 2 === 0 ? 'removeBall' : 'removeEntity'))
+      const ev = step(w, 1 / 120, 240)
+      return { w, pairs, early, ev, removed }
+    }
+    const control = run(false)
+    expect(control.early.filter((e) => e.type === 'collision')).toEqual([])
+    expect(control.ev.filter((e) => e.type === 'collision')).toHaveLength(6)
+    const { w, pairs, ev, removed } = run(true)
+    expect(removed).toHaveLength(4)
+    expect(ev.filter((e) => removed.includes(e.ball) || removed.includes(e.other ?? 0))).toEqual([])
+    expect(ev.filter((e) => e.type === 'collision')).toHaveLength(2)
+    // a partner whose ball was removed rolls on as if alone: the same straight path as a lone ball
+    const solo = createBallWorld({ BALL_COLLISIONS: 'on' })
+    const lone = addBall(solo, { x: 250, y: 0, vx: -300, vy: 0 })
+    step(solo, 1 / 120, 252)
+    for (const [a, b] of pairs) {
+      if (!removed.includes(a)) continue
+      const s = ballState(w, b)
+      expect(s.x).toBe(ballState(solo, lone).x)
+      expect(s.mode).toBe('resting')
+    }
+  })
+
+  it('a new ball reusing the id of a ball that just struck another starts with no contact history', () => {
+    // ball A strikes B at t = 0.1; A is removed 20 µs later and C takes its id and strikes D 20 µs after
+    // that. C's contact must use BALL_RESTITUTION, as it does for a ball with a fresh id: A's contact
+    // (within CONTACT_DURATION = 1e-4 s of C's) is not C's.
+    const run = (absorb: boolean) => {
+      const w = createBallWorld({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0, BALL_RESTITUTION: 0.5 })
+      const a = addBall(w, { x: 0, y: 0, vx: 300, vy: 0 })
+      addBall(w, { x: 52, y: 0, vx: 0, vy: 0 })
+      const d = addBall(w, { x: 500 + 22 + 300 * 2e-5, y: 0, vx: 0, vy: 0 })
+      const first = step(w, 0.1 + 2e-5)
+      expect(first.filter((e) => e.type === 'collision')).toHaveLength(1)
+      removeBall(w, a)
+      if (absorb) addEntity(w) // the freed id goes to a game entity instead
+      const c = addBall(w, { x: 500, y: 0, vx: 300, vy: 0 })
+      expect(c === a).toBe(!absorb)
+      const ev = step(w, 1e-3).filter((e) => e.type === 'collision')
+      return { ev, vc: ballState(w, c).vx, vd: ballState(w, d).vx }
+    }
+    const fresh = run(true)
+    const reused = run(false)
+    expect(fresh.ev).toHaveLength(1)
+    expect(fresh.vd).toBeCloseTo(225, 9) // (1 + e)/2 · 300 with e = 0.5
+    expect(reused.ev.map((e) => e.impulse)).toEqual(fresh.ev.map((e) => e.impulse))
+    expect(reused.vc).toBe(fresh.vc)
+    expect(reused.vd).toBe(fresh.vd)
+  })
+})
+
+describe('removing the Ball component by hand', () => {
+  it('the simulation forgets the ball; the entity lives on for the game', () => {
+    const w = createBallWorld()
+    addHole(w, { x: 0, y: 0 })
+    const a = aimAt(w, 0, 11, 490)
+    const b = addBall(w, { x: 500, y: 500, vx: 100, vy: 0 })
+    addComponent(w, a, Sprite)
+    for (let i = 0; i < 400 && ballState(w, a).mode !== 'rimRoll'; i++) step(w, 1 / 2000)
+    expect(hasComponent(w, a, w.RimContact)).toBe(true)
+    removeComponent(w, a, w.Ball)
+    expect(entityExists(w, a)).toBe(true)
+    expect(hasComponent(w, a, Sprite)).toBe(true)
+    expect(hasComponent(w, a, w.Ball)).toBe(false)
+    expect(hasComponent(w, a, w.RimContact)).toBe(false)
+    expect(listBalls(w)).toEqual([b])
+    expect(moving(w)).toEqual([b])
+    expect(() => ballState(w, a)).toThrow(RangeError)
+    const ev = step(w, 1 / 60, 60)
+    expect(ev.filter((e) => e.ball === a)).toEqual([])
+    expect(w.Ball.x[a]).toBe(0)
+    expect(w.Ball.y[a]).toBe(0)
+    expect(w.Ball.live[a]).toBe(0)
+    expect(w.Ball.rim[a]).toBe(0)
+    // the game still owns it, and its removal does not disturb the simulation
+    removeEntity(w, a)
+    expect(entityExists(w, a)).toBe(false)
+    expect(listBalls(w)).toEqual([b])
+  })
+})
+
+describe('buffered events of removed entities', () => {
+  for (const how of ['removeBall', 'removeEntity'] as const) {
+    it(`${how}: events buffered for a removed ball are dropped; the new ball with its id gets its own`, () => {
+      const w = createBallWorld()
+      const h = addHole(w, { x: 0, y: 0 })
+      const keep = addBall(w, { x: 500, y: 0, vx: 30, vy: 0 })
+      const a = aimAt(w, 0, 0, 60) // a clean capture
+      const schedule = createSchedule(w.config)
+      for (let i = 0; i < 200 && w.events.count < 2; i++) runSchedule(w, schedule, 1 / 120)
+      expect(w.events.count).toBe(2) // a's capture and keep's rest, not drained
+      const tA = w.time
+      remove(w, a, how)
+      const b = aimAt(w, 0, 0, 60)
+      expect(b).toBe(a)
+      for (let i = 0; i < 200; i++) runSchedule(w, schedule, 1 / 120)
+      const ev = drainEvents(w)
+      expect(ev.filter((e) => e.ball === keep).map((e) => e.type)).toEqual(['rest'])
+      const ofId = ev.filter((e) => e.ball === a)
+      expect(ofId.map((e) => `${e.type}:${e.via}`)).toEqual(['capture:clean'])
+      expect(ofId[0]!.time).toBeGreaterThan(tA)
+      expect(ofId[0]!.hole).toBe(h)
+    })
+  }
+
+  it('a removed hole: its buffered events are dropped, the others kept, and a hole reusing its id gets its own', () => {
+    const w = createBallWorld()
+    const h = addHole(w, { x: 0, y: 0 })
+    const h2 = addHole(w, { x: 0, y: 300 })
+    const a = aimAt(w, 0, 2, 900) // skips h
+    const c = addBall(w, { x: -80, y: 302, vx: Math.sqrt(60 * 60 + 2 * 300 * (80 - 18)), vy: 0 }) // falls into h2
+    const schedule = createSchedule(w.config)
+    for (let i = 0; i < 120; i++) runSchedule(w, schedule, 1 / 120)
+    const buffered = w.events.count
+    expect(buffered).toBeGreaterThanOrEqual(2)
+    removeHole(w, h)
+    const h3 = addHole(w, { x: 0, y: -400 })
+    expect(h3).toBe(h)
+    const d = aimAt(w, 0, 0, 60) // rolls along y = 0, where h was
+    const e = addBall(w, { x: -80, y: -400, vx: Math.sqrt(60 * 60 + 2 * 300 * (80 - 18)), vy: 0 }) // falls into h3
+    for (let i = 0; i < 360; i++) runSchedule(w, schedule, 1 / 120)
+    const ev = drainEvents(w)
+    expect(ev.filter((x) => x.hole === h).map((x) => x.ball)).toEqual([e])
+    expect(ev.filter((x) => x.ball === a).map((x) => x.type)).toEqual(['rest'])
+    expect(ev.some((x) => x.ball === c && x.type === 'capture' && x.hole === h2)).toBe(true)
+    expect(ev.filter((x) => x.ball === d).map((x) => x.type)).toEqual(['rest'])
+  })
+})
