@@ -45,8 +45,5 @@ export function addPanel(target: BallPhysics | BallWorld, layout: PanelLayout = 
   if (layout === null || typeof layout !== 'object') throw new TypeError(`addPanel: layout must be a panel layout, got ${describe(layout)}`)
   const holes = layout.holes
   if (!Array.isArray(holes)) throw new TypeError(`layout.holes must be an array, got ${describe(holes)}`)
-  return addHoles(
-    world,
-    holes.map((h: PanelHole) => ({ x: h.x, y: h.y, value: h.value })),
-  )
+  return addHoles(world, holes as readonly PanelHole[])
 }

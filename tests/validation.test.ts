@@ -112,8 +112,8 @@ describe('addPanel is all or nothing', () => {
 
   it('a bad third hole (x NaN, x a string) adds none', () => {
     const sim = createBallPhysics()
-    expectRefused(sim, () => addPanel(sim, layout([h0, h1, { x: NaN, y: 10, value: 5 }, h3])), RangeError, /hole\.x/, /got NaN/)
-    expectRefused(sim, () => addPanel(sim, layout([h0, h1, { x: '5', y: 10, value: 5 }, h3])), TypeError, /hole\.x/, /the string "5"/)
+    expectRefused(sim, () => addPanel(sim, layout([h0, h1, { x: NaN, y: 10, value: 5 }, h3])), RangeError, /holes\[2\]\.x/, /got NaN/)
+    expectRefused(sim, () => addPanel(sim, layout([h0, h1, { x: '5', y: 10, value: 5 }, h3])), TypeError, /holes\[2\]\.x/, /the string "5"/)
     expect(listHoles(sim.world)).toEqual([])
   })
 

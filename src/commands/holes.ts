@@ -37,10 +37,10 @@ interface CheckedHole {
 function readHole(w: BallWorld, name: string, spec: unknown): CheckedHole {
   const s = readSpec(name, spec, ['x', 'y', 'radius', 'value'] as const)
   return {
-    x: finite('hole.x', s.x, MAX_COORDINATE),
-    y: finite('hole.y', s.y, MAX_COORDINATE),
-    radius: s.radius === undefined ? w.config.HOLE_RADIUS : positive('hole.radius', s.radius, MAX_RADIUS),
-    value: s.value === undefined ? 1 : finite('hole.value', s.value, MAX_VALUE),
+    x: finite(`${name}.x`, s.x, MAX_COORDINATE),
+    y: finite(`${name}.y`, s.y, MAX_COORDINATE),
+    radius: s.radius === undefined ? w.config.HOLE_RADIUS : positive(`${name}.radius`, s.radius, MAX_RADIUS),
+    value: s.value === undefined ? 1 : finite(`${name}.value`, s.value, MAX_VALUE),
   }
 }
 
@@ -85,7 +85,7 @@ function placeHole(w: BallWorld, h: CheckedHole): number {
 /** Adds a hole; returns its entity id. Lip circles may not overlap. Rolling balls are re-planned. */
 export function addHole(world: BallWorld, spec: HoleSpec): number {
   const w = checkWorld('addHole', world)
-  const h = readHole(w, 'addHole spec', spec)
+  const h = readHole(w, 'hole', spec)
   checkClear(w, h)
   const eid = placeHole(w, h)
   replanRolling(w)

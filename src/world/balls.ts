@@ -11,7 +11,7 @@ import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
 import { BallMode } from '../../components/Ball.js'
 import { clearSlot } from '../../components/store.js'
 import { cutEvents } from '../events.js'
-import { bumpVersion } from './contactState.js'
+import { NO_CONTACT, bumpVersion } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
 import { removeMoving } from './idLists.js'
 import { restingRemove } from './restingGrid.js'
@@ -20,21 +20,28 @@ import { releaseRim } from './rimSlots.js'
 /** Makes a ball entity (Ball and Path), out of play at the origin; a command then places and launches it. */
 export function addBallEntity(world: BallWorld): number {
   const eid = addEntity(world)
-  addComponent(world, eid, world.Ball) // adoptBall runs here
-  addComponent(world, eid, world.Path)
+  addComponent(world, eid, world.Ball) // adoptBall runs here (and adds Path)
   return eid
 }
 
-/** onAdd(Ball): the entity becomes a live ball with zeroed rows, default radius and mass, out of play. */
+/** onAdd(Ball): the entity becomes a live ball (with Path) with zeroed rows, default radius and mass, out of play. */
 export function adoptBall(world: BallWorld, eid: number): void {
   ensureCapacity(world, eid)
+  if (!hasComponent(world, eid, world.Path)) addComponent(world, eid, world.Path)
   clearSlot(world.Ball, eid)
   clearSlot(world.Path, eid)
   const B = world.Ball
   B.live[eid] = 1
   B.radius[eid] = world.config.BALL_RADIUS
   B.mode[eid] = BallMode.Out
-  if (world.collide !== null) world.collide.mass[eid] = 1
+  const C = world.collide
+  if (C !== null) {
+    // a reused id starts with no contact history (its version is not reset: stale heap entries stay stale)
+    C.mass[eid] = 1
+    C.partner[eid] = 0
+    C.lastContact[eid] = NO_CONTACT
+  }
+  for (let i = 0; i < world.ballStores.length; i++) clearSlot(world.ballStores[i]!, eid)
 }
 
 /** onRemove(Ball): the simulation forgets the ball (see the top of this file). */

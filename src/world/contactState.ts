@@ -5,6 +5,9 @@
 import { MAX_CLUSTER } from '../config/tolerances.js'
 import type { BallWorld } from './createWorld.js'
 
+/** lastContact of a ball that has touched nothing yet: long before any simulated time */
+export const NO_CONTACT = -1e300
+
 export interface CollisionState {
   /** mass of each ball (by entity id), in units of a default ball */
   mass: Float64Array
@@ -59,7 +62,7 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     mass: new Float64Array(capacity),
     ver: new Uint32Array(capacity),
     partner: new Uint32Array(capacity),
-    lastContact: new Float64Array(capacity).fill(-1e300),
+    lastContact: new Float64Array(capacity).fill(NO_CONTACT),
     restBucket,
     restNext: new Uint32Array(capacity),
     restPrev: new Uint32Array(capacity),
@@ -104,7 +107,7 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.mass = grown(C.mass, capacity)
   C.ver = grown(C.ver, capacity)
   C.partner = grown(C.partner, capacity)
-  C.lastContact = grown(C.lastContact, capacity, -1e300)
+  C.lastContact = grown(C.lastContact, capacity, NO_CONTACT)
   C.restBucket = grown(C.restBucket, capacity, -1)
   C.restNext = grown(C.restNext, capacity)
   C.restPrev = grown(C.restPrev, capacity)

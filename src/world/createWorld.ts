@@ -72,6 +72,12 @@ export interface BallWorldData {
   collide: CollisionState | null
   /** true while runSchedule runs (a nested step is refused) */
   stepping: boolean
+  /**
+   * Per-ball stores kept outside the core (indexed by ball id, made with components/store.ts), such as the
+   * tick-sampled methods' state: their rows are zeroed when an id becomes a ball, so a reused id inherits
+   * nothing. Register a store by pushing it here.
+   */
+  ballStores: object[]
 }
 
 export type BallWorld = World<BallWorldData>
@@ -123,6 +129,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     events: createEventBuffer(),
     collide: config.BALL_COLLISIONS === 'on' ? createCollisionState(capacity, config.BALL_RADIUS) : null,
     stepping: false,
+    ballStores: [],
   }
   return createWorld<BallWorldData>(data, entityIndex)
 }

@@ -58,6 +58,7 @@ export function naiveState(w: BallWorld): NaiveState {
       capacity: w.capacity,
     }
     states.set(w, st)
+    w.ballStores.push(st.store)
   } else if (st.capacity < w.capacity) {
     growStore(st.store, w.capacity)
     st.capacity = w.capacity
