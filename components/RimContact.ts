@@ -8,7 +8,11 @@
 // slot reads hole 0, mode None. At any moment only the balls inside a lip circle hold a slot, a small
 // share of a large scene, so the store grows with the peak number of concurrent contacts instead of
 // costing its 71 bytes for every ball. Read a ball's row as RimContact.x[rimSlot(world, ball)]; write
-// only through acquireRim (src/world.ts). A row says nothing once its lock has ended.
+// only through acquireRim (src/world/rimSlots.ts). A row says nothing once its lock has ended.
+//
+// As a bitECS component, RimContact marks the balls a hole holds on its rim (mode rimRoll): query or
+// observe it for rim contacts (src/world/ballMode.ts). Balls inside a lip circle without touching the rim
+// (skipping, entering, in transit) hold a row but not the component.
 import { createStore } from './store.js'
 
 export const RimMode = {

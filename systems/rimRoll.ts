@@ -15,6 +15,7 @@ import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRimRoll, rollPopsOff, sampleRimRoll, startRimRoll } from '../src/motion/rimRoll.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { setBallMode } from '../src/world/ballMode.js'
 
 export function rimRollSystem(w: BallWorld): void {
   const P = w.Path
@@ -40,7 +41,7 @@ export function rimRollSystem(w: BallWorld): void {
       if (rollPopsOff(w, eid)) {
         // leave along the tangent; the state at t was set by the integration system
         RC.mode[rim] = RimMode.Transit
-        B.mode[eid] = BallMode.Rolling
+        setBallMode(w, eid, BallMode.Rolling)
         startPath(w, eid, B.x[eid]!, B.y[eid]!, B.vx[eid]!, B.vy[eid]!, t)
         P.fromHole[eid] = hole
         planRolling(w, eid)

@@ -12,6 +12,7 @@ import { planRolling, startPath } from '../src/motion/rolling.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { removeMoving } from '../src/world/idLists.js'
 import { type BallWorld } from '../src/world/createWorld.js'
+import { setBallMode } from '../src/world/ballMode.js'
 
 export function wallsSystem(w: BallWorld): void {
   if (w.walls === 0) return
@@ -39,7 +40,7 @@ export function wallsSystem(w: BallWorld): void {
     } else if (mark === PathEvent.Gutter) {
       P.mark[eid] = PathEvent.None
       pushEvent(w.events, EventType.Gutter, eid, 0, P.nextT[eid]!, false, 0, 0)
-      B.mode[eid] = BallMode.Out
+      setBallMode(w, eid, BallMode.Out)
       B.vx[eid] = 0
       B.vy[eid] = 0
       P.speed[eid] = 0

@@ -8,6 +8,7 @@ import { type BallWorld } from '../world/createWorld.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { NEVER } from '../config/tolerances.js'
 import { startPath, planRolling } from './rolling.js'
+import { setBallMode } from '../world/ballMode.js'
 
 /** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
 export function emitHoleEvent(
@@ -31,7 +32,7 @@ export function emitHoleEvent(
 export function captureBall(w: BallWorld, eid: number, hole: number, t: number, via: CaptureViaCode): void {
   emitHoleEvent(w, EventType.Capture, eid, hole, t, via)
   const B = w.Ball
-  B.mode[eid] = BallMode.Captured
+  setBallMode(w, eid, BallMode.Captured)
   B.x[eid] = w.Hole.x[hole]!
   B.y[eid] = w.Hole.y[hole]!
   B.vx[eid] = 0
@@ -48,7 +49,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
 export function restBall(w: BallWorld, eid: number, t: number): void {
   pushEvent(w.events, EventType.Rest, eid, 0, t, false, 0, 0)
   const B = w.Ball
-  B.mode[eid] = BallMode.Resting
+  setBallMode(w, eid, BallMode.Resting)
   B.vx[eid] = 0
   B.vy[eid] = 0
   w.Path.speed[eid] = 0
@@ -62,7 +63,7 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
 /** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
 export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
   if (w.collide !== null) restingRemove(w, eid)
-  w.Ball.mode[eid] = BallMode.Rolling
+  setBallMode(w, eid, BallMode.Rolling)
   startPath(w, eid, x, y, vx, vy, t)
   planRolling(w, eid)
   addMoving(w, eid)

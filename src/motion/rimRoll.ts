@@ -5,6 +5,7 @@ import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
+import { setBallMode } from '../world/ballMode.js'
 
 /** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
 export function planRimRoll(w: BallWorld, eid: number): void {
@@ -96,6 +97,6 @@ export function startRimRoll(w: BallWorld, eid: number, hole: number, t: number)
   RC.speed0[rim] = Math.abs(vt)
   RC.direction[rim] = vt >= 0 ? 1 : -1
   RC.time0[rim] = t
-  B.mode[eid] = BallMode.RimRoll
+  setBallMode(w, eid, BallMode.RimRoll)
   return phi
 }

@@ -58,6 +58,7 @@ export function forgetBall(world: BallWorld, eid: number): void {
   clearSlot(world.Path, eid)
   // a Ball removed by removeComponent leaves an entity the game keeps: it is no longer a ball at all
   if (hasComponent(world, eid, world.Path)) removeComponent(world, eid, world.Path)
+  if (hasComponent(world, eid, world.RimContact)) removeComponent(world, eid, world.RimContact)
 }
 
 /** True when `eid` is a live ball of this world. */

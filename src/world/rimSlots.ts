@@ -1,7 +1,6 @@
 // A ball's RimContact row: taken when it gets a hole lock (its centre enters a lip circle), given back when
-// the lock ends. The store is pooled by slot (components/RimContact.ts); the ball carries the bitECS
-// RimContact component exactly while it holds a slot, so a game can query or observe balls at a hole.
-import { addComponent, removeComponent } from 'bitecs'
+// the lock ends. The store is pooled by slot (components/RimContact.ts). The bitECS RimContact component
+// marks the balls rolling on a rim (src/world/ballMode.ts).
 import { growStore } from '../../components/store.js'
 import { pushId } from './idLists.js'
 import type { BallWorld } from './createWorld.js'
@@ -22,7 +21,6 @@ export function acquireRim(world: BallWorld, eid: number): number {
   const slot = pool.count > 0 ? pool.ids[--pool.count]! : world.rimNext++
   if (slot >= world.RimContact.hole.length) growStore(world.RimContact, 2 * world.RimContact.hole.length)
   world.Ball.rim[eid] = slot
-  addComponent(world, eid, world.RimContact)
   return slot
 }
 
@@ -62,5 +60,4 @@ export function releaseRim(world: BallWorld, eid: number): void {
   RC.time0[slot] = 0
   pushId(world.rimFree, slot)
   world.Ball.rim[eid] = 0
-  removeComponent(world, eid, world.RimContact)
 }

@@ -12,6 +12,7 @@ import { captureBall, emitHoleEvent } from '../../../src/motion/ballFate.js'
 import { startRimRoll } from '../../../src/motion/rimRoll.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { setBallMode } from '../../../src/world/ballMode.js'
 
 export function naiveRimRollSystem(w: BallWorld): void {
   const st = naiveState(w)
@@ -50,7 +51,7 @@ export function naiveRimRollSystem(w: BallWorld): void {
       } else {
         // leave along the tangent (the velocity naiveMove set), hole locked until the centre is out
         RC.mode[rim] = RimMode.Transit
-        B.mode[eid] = BallMode.Rolling
+        setBallMode(w, eid, BallMode.Rolling)
         S.fromHole[eid] = hole
         emitHoleEvent(w, EventType.LipOut, eid, hole, st.t)
         emitHoleEvent(w, EventType.NearMiss, eid, hole, st.t)
