@@ -1,8 +1,10 @@
 // The game and its clock, without any drawing: one simulation of the built-in panel, the player's ten
 // balls and score, the multi-ball bursts and the stress mode, a 120 Hz fixed-step loop with render
 // interpolation, and the per-frame event feed. Everything that changes the physics goes through the
-// public API (createBallPhysics, addPanel, throwBall, step, drainEvents, removeBall); the world's typed
-// arrays are only read.
+// public API (createBallPhysics, addPanel, throwBall, step, drainEvents, bitECS removeEntity); the world's
+// typed arrays are only read. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
+// component of its own, DemoBall, on the simulation's ball entities: its balls are query([Ball, DemoBall]).
+import { addComponent, query, removeEntity } from 'bitecs'
 import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
@@ -47,8 +49,14 @@ export interface FrameResult {
 
 export type Validation = { ok: true; config: Readonly<BallPhysicsConfig> } | { ok: false; error: string }
 
-/** The walls spec (WallsSpec is not re-exported by src/index.ts). */
+/** The walls spec. */
 type WallsSpec = Parameters<BallPhysics['setWalls']>[0]
+
+/** The demo's component on its balls: which kind of ball, and the demo time it stopped (0 while it moves). */
+export interface DemoBallStore {
+  kind: Uint8Array
+  doneAt: Float64Array
+}
 
 /** Rails on the left, top and right of the panel; the bottom edge is open (the gutter below the launch). */
 export function wallsFor(panel: Readonly<PanelLayout>): WallsSpec {
@@ -94,12 +102,8 @@ export class Game {
   // per entity id; positions at the start of the last step, for interpolation
   prevX = new Float64Array(1024)
   prevY = new Float64Array(1024)
-  kind = new Uint8Array(1024)
-  /** demo time at which the ball stopped (rested or was captured); 0 while it moves */
-  doneAt = new Float64Array(1024)
-  private liveIndex = new Int32Array(1024).fill(-1)
-  /** ids of the live balls the demo created */
-  readonly live: number[] = []
+  /** the demo's component (indexed by entity id, grown as ids grow) */
+  readonly DemoBall: DemoBallStore = { kind: new Uint8Array(1024), doneAt: new Float64Array(1024) }
   private holeIndexById = new Map<number, number>()
 
   score = 0
@@ -125,6 +129,17 @@ export class Game {
 
   get config(): Readonly<BallPhysicsConfig> {
     return this.sim.config
+  }
+
+  /** The demo's live balls: the entities with Ball and DemoBall (a live array: read it, don't keep it). */
+  get live(): readonly number[] {
+    const w = this.sim.world
+    return query(w, [w.Ball, this.DemoBall]) as readonly number[]
+  }
+
+  /** Kind of ball by entity id. */
+  get kind(): Uint8Array {
+    return this.DemoBall.kind
   }
 
   get gameOver(): boolean {
@@ -163,10 +178,8 @@ export class Game {
     sim.setWalls(wallsFor(this.panel))
     this.holeIndexById = new Map(this.holes.map((id, i) => [id, i]))
     this.sim = sim
-    this.kind.fill(0)
-    this.doneAt.fill(0)
-    this.liveIndex.fill(-1)
-    this.live.length = 0
+    this.DemoBall.kind.fill(0)
+    this.DemoBall.doneAt.fill(0)
     this.stressLive = 0
     this.playerMoving = 0
     this.generation++
@@ -236,9 +249,11 @@ export class Game {
   }
 
   private removeWhere(test: (kind: number) => boolean): void {
-    for (let i = this.live.length - 1; i >= 0; i--) {
-      const id = this.live[i]!
-      if (test(this.kind[id]!)) this.remove(id)
+    // bitECS applies removals at the next query, so the live array does not change under the loop
+    const live = this.live
+    for (let i = live.length - 1; i >= 0; i--) {
+      const id = live[i]!
+      if (test(this.DemoBall.kind[id]!)) this.remove(id)
     }
   }
 
@@ -255,39 +270,32 @@ export class Game {
 
   private spawn(kind: KindCode, x: number, y: number, power: number, angle: number): number {
     const id = this.sim.throwBall({ x, y, power, angle })
-    const need = id + 1
-    if (this.kind.length < need) {
-      this.kind = grow(this.kind, need)
-      this.doneAt = grow(this.doneAt, need)
-      this.liveIndex = grow(this.liveIndex, need, -1)
+    const D = this.DemoBall
+    if (D.kind.length < id + 1) {
+      D.kind = grow(D.kind, id + 1)
+      D.doneAt = grow(D.doneAt, id + 1)
     }
+    addComponent(this.sim.world, id, D)
     this.ensurePrev()
     const B = this.sim.world.Ball
     this.prevX[id] = B.x[id]!
     this.prevY[id] = B.y[id]!
-    this.kind[id] = kind
-    this.doneAt[id] = 0
-    this.liveIndex[id] = this.live.length
-    this.live.push(id)
+    D.kind[id] = kind
+    D.doneAt[id] = 0
     if (kind === Kind.Stress) this.stressLive++
     if (kind === Kind.Player) this.playerMoving++
     return id
   }
 
   private remove(id: number): void {
-    const k = this.kind[id]!
+    const D = this.DemoBall
+    const k = D.kind[id]!
     if (k === Kind.Stress) this.stressLive--
-    if (k === Kind.Player && this.doneAt[id] === 0) this.playerMoving--
-    this.sim.removeBall(id)
-    const i = this.liveIndex[id]!
-    const last = this.live.pop()!
-    if (last !== id) {
-      this.live[i] = last
-      this.liveIndex[last] = i
-    }
-    this.liveIndex[id] = -1
-    this.kind[id] = 0
-    this.doneAt[id] = 0
+    if (k === Kind.Player && D.doneAt[id] === 0) this.playerMoving--
+    // the simulation forgets the ball, and DemoBall goes with the entity
+    removeEntity(this.sim.world, id)
+    D.kind[id] = 0
+    D.doneAt[id] = 0
   }
 
   private ensurePrev(): void {
@@ -335,7 +343,7 @@ export class Game {
       // wall events carry no hole (whatever is in their hole slot): only hole events are mapped
       const holeIndex = isHoleEvent(e.type) ? this.holeIndex(e.hole) : -1
       const value = holeIndex >= 0 ? this.panel.holes[holeIndex]!.value : 0
-      const player = this.kind[e.ball] === Kind.Player
+      const player = this.DemoBall.kind[e.ball] === Kind.Player
       const d: DemoEvent = { ...e, holeIndex, value, player }
       out[i] = d
       this.eventsSeen++
@@ -361,8 +369,10 @@ export class Game {
     const W = this.panel.width
     const H = this.panel.height
     const now = this.time
-    for (let i = this.live.length - 1; i >= 0; i--) {
-      const id = this.live[i]!
+    const D = this.DemoBall
+    const live = this.live
+    for (let i = live.length - 1; i >= 0; i--) {
+      const id = live[i]!
       const r = B.radius[id]!
       const x = X[id]!
       const y = Y[id]!
@@ -373,13 +383,13 @@ export class Game {
       }
       const stopped = mode === BallMode.Resting || mode === BallMode.Captured
       if (!stopped) continue
-      if (this.doneAt[id] === 0) {
-        this.doneAt[id] = Math.max(now, 1e-9)
-        if (this.kind[id] === Kind.Player) this.playerMoving--
+      if (D.doneAt[id] === 0) {
+        D.doneAt[id] = Math.max(now, 1e-9)
+        if (D.kind[id] === Kind.Player) this.playerMoving--
         continue
       }
-      const age = now - this.doneAt[id]!
-      const k = this.kind[id]
+      const age = now - D.doneAt[id]!
+      const k = D.kind[id]
       if (k === Kind.Stress) {
         if (age > (mode === BallMode.Captured ? STRESS_CAPTURE_HOLD : STRESS_REST_HOLD)) this.remove(id)
       } else if (mode === BallMode.Resting && age > REST_HOLD + REST_FADE) {
@@ -390,9 +400,9 @@ export class Game {
 
   /** Opacity of a live ball (resting balls fade before they are removed). */
   opacity(id: number): number {
-    const t = this.doneAt[id]!
+    const t = this.DemoBall.doneAt[id]!
     if (t === 0 || this.sim.world.Ball.mode[id] !== BallMode.Resting) return 1
-    const hold = this.kind[id] === Kind.Stress ? STRESS_REST_HOLD : REST_HOLD
+    const hold = this.DemoBall.kind[id] === Kind.Stress ? STRESS_REST_HOLD : REST_HOLD
     const age = this.time - t - hold
     return age <= 0 ? 1 : Math.max(0, 1 - age / REST_FADE)
   }

@@ -5,11 +5,9 @@
 
 // world
 export { createBallWorld } from './commands/createBallWorld.js'
-export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex, HoleTable, IdList, MovingSet } from './world/createWorld.js'
+export type { BallWorld, BallWorldData, BallWorldOptions, EntityIndex, IdList } from './world/createWorld.js'
 export { forEachBall, isBall } from './world/balls.js'
-export { acquireRim, lockAtLip, releaseRim, rimSlot } from './world/rimSlots.js'
-export { addMoving, isMoving, pushId, removeMoving } from './world/idLists.js'
-export type { CollisionState } from './world/contactState.js'
+export { lockAtLip, releaseRim, rimSlot } from './world/rimSlots.js'
 
 // schedule
 export { DEFAULT_SCHEDULE, createSchedule, runSchedule, v1Schedule } from './schedule.js'
@@ -52,7 +50,7 @@ export type { WallsStore } from '../components/Walls.js'
 export { CaptureVia, EventType, pushEvent } from './events.js'
 export type { BallEvent, CaptureViaCode, EventTypeCode } from './events.js'
 export { planRolling, sampleAtDistance, sampleRolling, startPath } from './motion/rolling.js'
-export { planRimRoll, rimRollAt, rimRollState, sampleRimRoll, startRimRoll } from './motion/rimRoll.js'
+export { planRimRoll, sampleRimRoll, startRimRoll } from './motion/rimRoll.js'
 export { captureBall, emitHoleEvent, launchBall, restBall } from './motion/ballFate.js'
 
 // systems, in the default schedule's order

@@ -6,10 +6,8 @@
 // The walk goes cell by cell in order of distance; a hole not yet seen when the walk enters a cell at
 // distance t has its closest approach beyond t, so none of its events comes before t − R_max, and the walk
 // stops once t − R_max passes the best event found.
+import { MAX_GRID_CELLS } from '../config/tolerances.js'
 import type { HoleTable } from './createWorld.js'
-
-/** Below this many holes the planner scans them all (no grid to keep); from it on, it walks the grid. */
-export const GRID_MIN_HOLES = 32
 
 export interface HoleGrid {
   /** the table changed since the grid was built */
@@ -51,8 +49,6 @@ export function createHoleGrid(): HoleGrid {
   }
 }
 
-/** Largest number of cells the grid may have; a sparser grid is made coarser to stay under it. */
-const MAX_CELLS = 1 << 22
 
 /** Builds the grid for the holes in `table`, sized for balls up to `ballRadius`. */
 export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: number): void {
@@ -76,7 +72,7 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
   // one cell of padding on every side, so a path point within R + r of a hole is inside the grid
   let nx = Math.floor((maxX - minX) / cell) + 3
   let ny = Math.floor((maxY - minY) / cell) + 3
-  while (nx * ny > MAX_CELLS) {
+  while (nx * ny > MAX_GRID_CELLS) {
     cell *= 2
     nx = Math.floor((maxX - minX) / cell) + 3
     ny = Math.floor((maxY - minY) / cell) + 3
