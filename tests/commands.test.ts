@@ -23,7 +23,7 @@ import {
   throwBall,
   type BallWorld,
 } from '../src/ecs'
-import { rng } from './helpers'
+import { rng, stepWorld } from './helpers'
 
 interface Driver {
   world: BallWorld
@@ -153,15 +153,7 @@ function rimRoller(w: BallWorld, hx = 0, hy = 0): { hole: number; ball: number }
   return { hole, ball }
 }
 
-function stepN(w: BallWorld, n: number, dt = 1 / 120): BallEvent[] {
-  const schedule = createSchedule(w.config)
-  const out: BallEvent[] = []
-  for (let i = 0; i < n; i++) {
-    runSchedule(w, schedule, dt)
-    out.push(...drainEvents(w))
-  }
-  return out
-}
+const stepN = (w: BallWorld, n: number, dt = 1 / 120): BallEvent[] => stepWorld(w, n, dt)
 
 /** The removeHole scene: a rim roller, a skipper, a captured ball, a ball in transit and two bystanders. */
 function removeHoleScene(how: 'removeHole' | 'removeEntity' | 'none') {

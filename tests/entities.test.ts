@@ -6,19 +6,11 @@ import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, type BallEvent } from '../src/index'
 import { addBall, addHole, ballState, createBallWorld, createSchedule, drainEvents, listBalls, removeBall } from '../src/ecs'
 import { BallMode, removeHole, runSchedule, setHeroBall, throwBall, type BallWorld } from '../src/ecs'
-import { rng } from './helpers'
+import { rng, stepWorld } from './helpers'
 
 const Sprite = { tint: [] as number[] }
 
-function step(w: BallWorld, dt = 1 / 120, n = 1): BallEvent[] {
-  const schedule = createSchedule(w.config)
-  const out: BallEvent[] = []
-  for (let i = 0; i < n; i++) {
-    runSchedule(w, schedule, dt)
-    out.push(...drainEvents(w))
-  }
-  return out
-}
+const step = (w: BallWorld, dt = 1 / 120, n = 1): BallEvent[] => stepWorld(w, n, dt)
 
 const sorted = (ids: Iterable<number> | ArrayLike<number>) => Array.from(ids).sort((a, b) => a - b)
 const moving = (w: BallWorld) => Array.from(w.moving.dense.subarray(0, w.moving.count))

@@ -1,6 +1,6 @@
 // Shared scene builders for the system tests: each builds a fresh world.
 import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
-import { rimSlot } from '../src/ecs'
+import { createSchedule, drainEvents, rimSlot, runSchedule, type BallWorld } from '../src/ecs'
 
 export interface Shot {
   sim: BallPhysics
@@ -75,4 +75,15 @@ export function watchRim(sim: BallPhysics, ball: number): Record<string, number>
     },
   })
   return last
+}
+
+/** Runs a bare world's schedule n steps of dt through runSchedule; returns the events drained after each. */
+export function stepWorld(w: BallWorld, n = 1, dt = 1 / 120): BallEvent[] {
+  const schedule = createSchedule(w.config)
+  const out: BallEvent[] = []
+  for (let i = 0; i < n; i++) {
+    runSchedule(w, schedule, dt)
+    out.push(...drainEvents(w))
+  }
+  return out
 }
