@@ -73,10 +73,7 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
   const eid = addBallEntity(w)
   w.Ball.radius[eid] = radius
   w.Ball.hero[eid] = hero ? 1 : 0
-  if (w.collide !== null) {
-    w.collide.mass[eid] = mass
-    if (radius > w.collide.maxRadius) w.collide.maxRadius = radius
-  }
+  if (w.collide !== null) w.collide.mass[eid] = mass
   const inside = holeAt(w, x, y)
   if (inside !== 0) {
     const slot = acquireRim(w, eid)

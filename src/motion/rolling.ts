@@ -103,10 +103,10 @@ function considerWalls(w: BallWorld, e: number): void {
     const isOpen = (open & edge) !== 0
     const target = isOpen ? face : toMax ? face - r : face + r
     let d = (target - o) / u
-    if (d < Q.s) {
-      if (isOpen) continue // already past an open edge: it has left
-      d = Q.s
-    }
+    // already past the face and moving on out: a closed wall is hit at once, an open edge lets it out at once
+    if (d < Q.s) d = Q.s
+    // a face the path reaches only beyond any distance a double can hold (u ≈ 0) is never reached
+    if (!(d < Infinity)) continue
     // walls come before holes at the same distance (they are met first by the footprint)
     if (d < Q.best || (d === Q.best && bestKind !== PathEvent.Stop)) {
       Q.best = d
@@ -183,16 +183,21 @@ export function planRolling(w: BallWorld, eid: number): void {
     }
   }
 
+  // an event no double can place in time (a distance beyond range, or a crawl that never gets there) is none
+  let t = NEVER
+  if (bestKind !== PathEvent.None) {
+    t = P.t0[eid]! + (bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel))
+    if (!(t < NEVER)) bestKind = PathEvent.None
+  }
   P.nextKind[eid] = bestKind
-  P.nextHole[eid] = bestHole
+  P.nextHole[eid] = bestKind === PathEvent.None ? 0 : bestHole
   P.nextEdge[eid] = bestKind === PathEvent.Wall || bestKind === PathEvent.Gutter ? bestEdge : 0
   if (bestKind === PathEvent.None) {
     P.nextS[eid] = 0
     P.nextT[eid] = NEVER
   } else {
     P.nextS[eid] = Q.best
-    const tau = bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel)
-    P.nextT[eid] = P.t0[eid]! + tau
+    P.nextT[eid] = t
   }
 }
 

@@ -5,6 +5,9 @@
 import { MAX_CLUSTER } from '../config/tolerances.js'
 import type { BallWorld } from './createWorld.js'
 
+/** Radius classes of the resting grid (a quarter octave each, from about 2⁻¹² to 2²⁰ px). */
+export const RADIUS_CLASSES = 128
+
 /** lastContact of a ball that has touched nothing yet: long before any simulated time */
 export const NO_CONTACT = -1e300
 
@@ -22,7 +25,14 @@ export interface CollisionState {
   restPrev: Uint32Array
   restHead: Uint32Array
   restCount: number
-  /** largest radius of any ball the grids have seen, px */
+  /** resting balls per radius class (restingGrid.ts), each ball's class, and the highest class in use */
+  restClassCount: Uint32Array
+  restClass: Uint8Array
+  restTopClass: number
+  /**
+   * An upper bound (within 19 %) on the radius of the resting balls now in the grid, px: resting balls are
+   * looked up by centre cell, so a lookup widens by it. It shrinks when the largest resting balls leave.
+   */
   maxRadius: number
   /** grid cell, px */
   cell: number
@@ -68,7 +78,10 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     restPrev: new Uint32Array(capacity),
     restHead: new Uint32Array(1 << 12),
     restCount: 0,
-    maxRadius: ballRadius,
+    restClassCount: new Uint32Array(RADIUS_CLASSES),
+    restClass: new Uint8Array(capacity),
+    restTopClass: -1,
+    maxRadius: 0,
     cell: 4 * ballRadius,
     sweepHead: new Int32Array(1 << 10),
     sweepStamp: new Uint32Array(1 << 10),
@@ -111,6 +124,7 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.restBucket = grown(C.restBucket, capacity, -1)
   C.restNext = grown(C.restNext, capacity)
   C.restPrev = grown(C.restPrev, capacity)
+  C.restClass = grown(C.restClass, capacity)
   C.seen = grown(C.seen, capacity)
 }
 

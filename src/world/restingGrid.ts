@@ -1,6 +1,43 @@
 // The resting grid (ball-ball contacts on): resting balls hashed by the grid cell of their centre, kept
 // across steps and updated when a ball comes to rest or wakes, so resting balls cost nothing until struck.
+import { RADIUS_CLASSES, type CollisionState } from './contactState.js'
 import type { BallWorld } from './createWorld.js'
+
+/** Radius classes: class k holds radii up to 2^((k − CLASS_OFFSET)/4) px. */
+const CLASS_OFFSET = 48
+
+/** The largest radius class k holds, px. */
+function classBound(k: number): number {
+  return 2 ** ((k - CLASS_OFFSET) / 4)
+}
+
+/** The class of radius r: the smallest whose bound is at least r. */
+function radiusClass(r: number): number {
+  let k = Math.ceil(4 * Math.log2(r)) + CLASS_OFFSET
+  if (k < 0) k = 0
+  while (k < RADIUS_CLASSES - 1 && classBound(k) < r) k++
+  return k < RADIUS_CLASSES ? k : RADIUS_CLASSES - 1
+}
+
+function countIn(C: CollisionState, eid: number, r: number): void {
+  const k = radiusClass(r)
+  C.restClass[eid] = k
+  C.restClassCount[k]!++
+  if (k > C.restTopClass) {
+    C.restTopClass = k
+    C.maxRadius = classBound(k)
+  }
+}
+
+function countOut(C: CollisionState, eid: number): void {
+  const k = C.restClass[eid]!
+  C.restClassCount[k]!--
+  if (k !== C.restTopClass || C.restClassCount[k] !== 0) return
+  let top = k - 1
+  while (top >= 0 && C.restClassCount[top] === 0) top--
+  C.restTopClass = top
+  C.maxRadius = top >= 0 ? classBound(top) : 0
+}
 
 /** Hash bucket of grid cell (ix, iy) in a table of mask + 1 buckets. */
 export function bucketOf(ix: number, iy: number, mask: number): number {
@@ -12,8 +49,7 @@ export function restingInsert(w: BallWorld, eid: number): void {
   const C = w.collide
   if (C === null || C.restBucket[eid]! >= 0) return
   if (C.restCount + 1 > 2 * C.restHead.length) rehashResting(w, C.restHead.length * 4)
-  const r = w.Ball.radius[eid]!
-  if (r > C.maxRadius) C.maxRadius = r
+  countIn(C, eid, w.Ball.radius[eid]!)
   const mask = C.restHead.length - 1
   const bucket = bucketOf(Math.floor(w.Ball.x[eid]! / C.cell), Math.floor(w.Ball.y[eid]! / C.cell), mask)
   const head = C.restHead[bucket]!
@@ -36,6 +72,7 @@ export function restingRemove(w: BallWorld, eid: number): void {
   if (prev !== 0) C.restNext[prev] = next
   else C.restHead[bucket] = next
   if (next !== 0) C.restPrev[next] = prev
+  countOut(C, eid)
   C.restBucket[eid] = -1
   C.restNext[eid] = 0
   C.restPrev[eid] = 0
@@ -55,5 +92,9 @@ function rehashResting(w: BallWorld, buckets: number): void {
     for (let e = old[b]!; e !== 0; e = C.restNext[e]!) ids[k++] = e
   }
   for (let i = 0; i < k; i++) C.restBucket[ids[i]!] = -1
+  // the same balls go back in: their radius classes are counted again
+  C.restClassCount.fill(0)
+  C.restTopClass = -1
+  C.maxRadius = 0
   for (let i = 0; i < k; i++) restingInsert(w, ids[i]!)
 }
