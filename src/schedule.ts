@@ -1,7 +1,7 @@
 // The step pipeline as data: an ordered list of named systems. One step runs the list once over every
 // moving ball (pass 0), then again for the balls that stopped at an event, until no ball has an event left
-// before the step's end or MAX_EVENT_PASSES is reached (a ball still behind then finishes next step, on the
-// same exact path). A game may read the list, reorder with care, or add its own systems; each added system
+// before the step's end or MAX_EVENT_PASSES is reached (the balls still behind then wait out the rest of the
+// step where they are: src/motion/pause.ts). A game may read the list, reorder with care, or add its own systems; each added system
 // runs in every pass and can tell passes apart by `world.pass`.
 import { bounceSystem } from '../systems/bounce.js'
 import { captureSystem } from '../systems/capture.js'
@@ -16,6 +16,7 @@ import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/n
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
 import type { BallPhysicsConfig } from './config/design.js'
 import { checkWorld, describe } from './check.js'
+import { waitOutStep } from './motion/pause.js'
 import type { BallWorld } from './world/createWorld.js'
 import type { ScheduleEntry } from './world/system.js'
 
@@ -74,6 +75,8 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
     if (world.marked.count === 0) break
   }
+  // out of passes: the balls still behind wait out the step (src/motion/pause.ts), none is left behind
+  if (world.pass === maxPasses && world.config.METHOD === 'exact') waitOutStep(world)
   world.time = world.tickEnd
 }
 

@@ -78,3 +78,84 @@ describe('the cost of a scene follows the balls in it now', () => {
     expect(C.maxRadius).toBe(0)
   })
 })
+
+describe('nothing left behind, events in order', () => {
+  // a 1e5 px/s ball in a 60 px box with restitution 1: about 1,700 wall hits a second, more than
+  // MAX_EVENT_PASSES (256) in a 0.25 s step
+  function box(passes = 256) {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0, MAX_EVENT_PASSES: passes })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 60, maxY: 60, restitution: 1 })
+    const b = sim.addBall({ x: 30, y: 30, vx: 1e5, vy: 0 })
+    return { sim, b }
+  }
+
+  it('a step that runs out of passes leaves no ball behind the clock: the ball waits inside the box', () => {
+    const { sim, b } = box()
+    let last = -Infinity
+    for (let k = 0; k < 8; k++) {
+      const t0 = sim.time
+      sim.step(0.25)
+      const events = sim.drainEvents()
+      expect(events.length).toBeGreaterThan(0)
+      for (const e of events) {
+        expect(e.time).toBeGreaterThanOrEqual(last) // in order across drains
+        expect(e.time).toBeGreaterThanOrEqual(t0) // in the stepped window
+        expect(e.time).toBeLessThanOrEqual(sim.time)
+        last = e.time
+      }
+      const s = sim.ballState(b)
+      expect(s.x).toBeGreaterThanOrEqual(11 - 1e-9)
+      expect(s.x).toBeLessThanOrEqual(49 + 1e-9)
+      expect(sim.world.Path.t0[b]).toBeLessThanOrEqual(sim.time) // its motion is not behind the clock
+      expect(sim.world.Path.nextT[b]).toBeGreaterThanOrEqual(sim.time)
+    }
+  })
+
+  it('setWalls with the same walls after such a step keeps the ball in the box; opening the edge lets it out with a gutter', () => {
+    const { sim, b } = box()
+    sim.step(0.25)
+    sim.drainEvents()
+    sim.setWalls({ minX: 0, minY: 0, maxX: 60, maxY: 60, restitution: 1 })
+    const s = sim.ballState(b)
+    expect(s.x).toBeGreaterThanOrEqual(11 - 1e-9)
+    expect(s.x).toBeLessThanOrEqual(49 + 1e-9)
+    sim.step(1 / 60)
+    expect(sim.ballState(b).x).toBeLessThanOrEqual(49 + 1e-9)
+    sim.drainEvents()
+    sim.setWalls({ minX: 0, minY: 0, maxX: 60, maxY: 60, restitution: 1, open: { left: true, right: true } })
+    sim.step(1 / 60)
+    expect(sim.drainEvents().map((e) => e.type)).toContain('gutter')
+    expect(sim.ballState(b).mode).toBe('out')
+    storesFinite(sim)
+  })
+
+  it('with enough passes the same scene never waits (the rule only applies when the passes run out)', () => {
+    const a = box(1e6)
+    const c = box(256)
+    a.sim.step(0.05) // about 85 wall hits: within both limits
+    c.sim.step(0.05)
+    expect(a.sim.ballState(a.b)).toEqual(c.sim.ballState(c.b))
+    expect(a.sim.drainEvents()).toEqual(c.sim.drainEvents())
+  })
+
+  it('with contacts on, a step out of passes makes the whole world wait at its last event: no overlap appears', () => {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0, BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, MAX_EVENT_PASSES: 2 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 200, maxY: 60, restitution: 1 })
+    const fast = sim.addBall({ x: 30, y: 30, vx: 5e4, vy: 0 })
+    const slow = sim.addBall({ x: 150, y: 30, vx: -20, vy: 0 })
+    let last = -Infinity
+    for (let k = 0; k < 20; k++) {
+      const t0 = sim.time
+      sim.step(1 / 30)
+      for (const e of sim.drainEvents()) {
+        expect(e.time).toBeGreaterThanOrEqual(Math.max(last, t0))
+        expect(e.time).toBeLessThanOrEqual(sim.time)
+        last = e.time
+      }
+      const A = sim.ballState(fast)
+      const B = sim.ballState(slow)
+      expect(Math.hypot(A.x - B.x, A.y - B.y)).toBeGreaterThanOrEqual(22 - 1e-6)
+      storesFinite(sim)
+    }
+  })
+})
