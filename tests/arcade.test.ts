@@ -159,3 +159,25 @@ describe('nothing left behind, events in order', () => {
     }
   })
 })
+
+describe('settling never merges a separating ball', () => {
+  it('a light striker rebounds off a heavy pile as the two-body law says (it once stopped dead, merged into the settling pile)', () => {
+    // two heavy balls at rest, touching; a light ball strikes the right one at 3,000 px/s. The heavy ball
+    // takes 0.006 px/s toward its neighbour and that slow contact settles the pile at the same instant,
+    // while the striker, rebounding, is still within the touch gap of it.
+    const e = 0.9
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0, BALL_RESTITUTION: e })
+    const h1 = sim.addBall({ x: 0, y: 0, vx: 0, vy: 0, mass: 1e3 })
+    const h2 = sim.addBall({ x: 22, y: 0, vx: 0, vy: 0, mass: 1e3 })
+    const s = sim.addBall({ x: 60, y: 0, vx: -3000, vy: 0, mass: 1e-3 })
+    sim.step(1 / 60)
+    const events = sim.drainEvents()
+    expect(events.filter((ev) => ev.type === 'collision').length).toBeGreaterThanOrEqual(2)
+    // two-body law: v' = (m_s − e·m_h)/(m_s + m_h)·v
+    const expected = ((1e-3 - e * 1e3) / (1e-3 + 1e3)) * -3000
+    expect(sim.ballState(s).vx).toBeCloseTo(expected, 6)
+    // the pile took the striker's momentum change and moves slowly left, together
+    const p = 1e-3 * (-3000 - expected)
+    expect(1e3 * (sim.ballState(h1).vx + sim.ballState(h2).vx)).toBeCloseTo(p, 9)
+  })
+})

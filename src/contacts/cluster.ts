@@ -1,8 +1,8 @@
 // The touching cluster of a settling contact: the balls touching the pair, and those touching them.
 import { BallMode } from '../../components/Ball.js'
-import { MAX_CLUSTER, TOUCH_GAP } from '../config/tolerances.js'
+import { APPROACH_EPSILON, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { AT, E, X, Y, evalBall, sampleForContact } from './evalMotion.js'
+import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
 import { capsuleCells } from './sweepGrid.js'
 
 /**
@@ -36,7 +36,7 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
       for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) {
         const c = C.entBall[e]!
         if (C.seen[c] === stamp) continue
-        if (touches(w, c, x, y, r, t)) {
+        if (touches(w, c, m, t)) {
           C.seen[c] = stamp
           list[n++] = c
         }
@@ -48,7 +48,7 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
       for (let c = C.restHead[C.cells[i]!]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) {
         if (C.seen[c] === stamp) continue
-        if (touches(w, c, x, y, r, t)) {
+        if (touches(w, c, m, t)) {
           C.seen[c] = stamp
           list[n++] = c
         }
@@ -58,15 +58,30 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
   C.clusterCount = n
 }
 
-function touches(w: BallWorld, c: number, x: number, y: number, r: number, t: number): boolean {
+/**
+ * True when ball c touches member m at time t (gap ≤ TOUCH_GAP) without moving away from it; c is then
+ * sampled into Ball at t. A ball separating from m (a striker rebounding off the cluster an instant ago,
+ * still within the touch gap) is not part of the cluster: merging it would stop it dead.
+ */
+function touches(w: BallWorld, c: number, m: number, t: number): boolean {
   const mode = w.Ball.mode[c]
   if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return false
+  const B = w.Ball
   E[AT] = t
   evalBall(w, c)
-  const dx = E[X] - x
-  const dy = E[Y] - y
-  const S = r + w.Ball.radius[c]! + TOUCH_GAP
-  if (dx * dx + dy * dy > S * S) return false
+  const dx = E[X] - B.x[m]!
+  const dy = E[Y] - B.y[m]!
+  const S = B.radius[m]! + B.radius[c]! + TOUCH_GAP
+  const d2 = dx * dx + dy * dy
+  if (d2 > S * S) return false
+  const dvx = E[VX] - B.vx[m]!
+  const dvy = E[VY] - B.vy[m]!
+  const d = Math.sqrt(d2)
+  if (d > 0) {
+    const vn = (dx * dvx + dy * dvy) / d
+    const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
+    if (vn > floor + APPROACH_EPSILON * (1 + Math.sqrt(dvx * dvx + dvy * dvy))) return false
+  }
   sampleForContact(w, c, t)
   return true
 }
