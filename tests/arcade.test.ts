@@ -181,3 +181,42 @@ describe('settling never merges a separating ball', () => {
     expect(1e3 * (sim.ballState(h1).vx + sim.ballState(h2).vx)).toBeCloseTo(p, 9)
   })
 })
+
+describe('creeping re-contacts are frame-rate independent', () => {
+  function contacts(hz: number, place: (sim: ReturnType<typeof createBallPhysics>) => void, seconds: number): string[] {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0 })
+    place(sim)
+    const out: string[] = []
+    for (let i = 0; i < hz * seconds; i++) {
+      sim.step(1 / hz)
+      for (const e of sim.drainEvents()) if (e.type === 'collision') out.push(`${e.ball}-${e.other}@${e.time}`)
+    }
+    return out
+  }
+
+  it('three balls, restitution 0: the 1–2 re-contact at 0.27536 s has the same bits at 30, 60, 120 and 240 Hz', () => {
+    const place = (sim: ReturnType<typeof createBallPhysics>) => {
+      sim.addBall({ x: 100, y: 100, vx: 599.3128917412832, vy: 0 })
+      sim.addBall({ x: 200, y: 102.09282931906637, vx: 0, vy: 0 })
+      sim.addBall({ x: 239.4290546416305, y: 124.99040329828858, vx: 0, vy: 0 })
+    }
+    const ref = contacts(30, place, 1)
+    expect(ref).toContain('1-2@0.2753624417927309')
+    for (const hz of [60, 120, 240]) expect(contacts(hz, place, 1), `${hz} Hz`).toEqual(ref)
+  })
+
+  it('random 50-ball scenes with restitution 0: the same contacts, bit for bit, at 30 and 240 Hz', () => {
+    for (let seed = 1; seed <= 12; seed++) {
+      const place = (sim: ReturnType<typeof createBallPhysics>) => {
+        let a = seed * 7919
+        const r = () => ((a = (a * 16807) % 2147483647) / 2147483647)
+        for (let i = 0; i < 50; i++) {
+          const x = (i % 10) * 40 + 20 + r() * 10
+          const y = Math.floor(i / 10) * 40 + 20 + r() * 10
+          sim.addBall({ x, y, vx: (r() - 0.5) * 600, vy: (r() - 0.5) * 600 })
+        }
+      }
+      expect(contacts(240, place, 0.5), `seed ${seed}`).toEqual(contacts(30, place, 0.5))
+    }
+  })
+})

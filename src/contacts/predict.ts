@@ -119,9 +119,11 @@ function searchAndPush(w: BallWorld, a: number, b: number, from: number, to: num
   searchContact(w, a, b, from, to)
   if (search[RESULT] === SearchResult.None) return
   const C = w.collide!
-  // a contact found behind the clock (balls put down overlapping) is handled now
-  const t = search[TIME] > C.now ? search[TIME] : C.now
   const kind = search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume
+  // a contact found behind the clock (balls put down overlapping) is handled now; a search to resume goes
+  // on from where it stopped, wherever the clock is (resuming from the clock made a creeping re-contact's
+  // time depend on where the step began)
+  const t = kind === HeapKind.Resume || search[TIME] > C.now ? search[TIME] : C.now
   heapPush(C, t, kind, a < b ? a : b, a < b ? b : a)
 }
 
