@@ -1,8 +1,6 @@
 // Ball: the physical state a game reads. Position and velocity are the ball's state at the end of the
-// last step (or at its last event, for a ball whose events ran past MAX_EVENT_PASSES).
-// Indexed by ball id. A ball is a lightweight entity: its id comes from the world's entity index (shared
-// with holes and walls), but it carries no bitECS components; `live` says which ids are balls
-// (src/world.ts).
+// last step. Indexed by entity id: a ball is a bitECS entity carrying this component (src/world/balls.ts);
+// `live` says which ids are balls.
 import { createStore } from './store.js'
 
 export const BallMode = {
@@ -12,9 +10,14 @@ export const BallMode = {
   Resting: 3,
   /** left the panel through an open edge of the walls */
   Out: 4,
+  /**
+   * put down (with ball-ball contacts on) where another ball is: it waits at its spot, out of the
+   * simulation, with the velocity it was given, until the spot is clear (systems/launcher.ts)
+   */
+  Held: 5,
 } as const
 export type BallModeCode = (typeof BallMode)[keyof typeof BallMode]
-export const BALL_MODE_NAMES = ['rolling', 'rimRoll', 'captured', 'resting', 'out'] as const
+export const BALL_MODE_NAMES = ['rolling', 'rimRoll', 'captured', 'resting', 'out', 'held'] as const
 export type BallModeName = (typeof BALL_MODE_NAMES)[number]
 
 export const BallSchema = {

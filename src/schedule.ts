@@ -9,6 +9,7 @@ import { collisionsSystem } from '../systems/collisions.js'
 import { cogGateSystem } from '../systems/cogGate.js'
 import { heroReferenceSystem } from '../systems/heroReference.js'
 import { integrationSystem } from '../systems/integration.js'
+import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { wallsSystem } from '../systems/walls.js'
@@ -22,11 +23,13 @@ import type { ScheduleEntry } from './world/system.js'
 
 export type { ScheduleEntry, System } from './world/system.js'
 /**
- * integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
+ * the launcher (held balls whose spots are clear; a no-op unless BALL_COLLISIONS is 'on' and a ball is
+ * held), integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
  * capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3), then the panel's walls
  * (a no-op in a world without walls), then ball-ball contacts (a no-op unless BALL_COLLISIONS is 'on').
  */
 export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
+  Object.freeze({ name: 'launcher', run: launcherSystem }),
   Object.freeze({ name: 'integration', run: integrationSystem }),
   Object.freeze({ name: 'heroReference', run: heroReferenceSystem }),
   Object.freeze({ name: 'skipOver', run: skipOverSystem }),
@@ -83,6 +86,6 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
 /** The default schedule with the v1 rule ahead of the six stages: for charting the v1 model (docs/physical.md). */
 export function v1Schedule(): ScheduleEntry[] {
   const s = DEFAULT_SCHEDULE.slice()
-  s.splice(1, 0, { name: 'v1Rule', run: v1RuleSystem })
+  s.splice(s.findIndex((e) => e.name === 'integration') + 1, 0, { name: 'v1Rule', run: v1RuleSystem })
   return s
 }

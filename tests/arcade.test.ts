@@ -1,6 +1,6 @@
 // Regressions from arcade load and abuse (the parts fixed so far): each pins one failure that was seen.
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics } from '../src/index'
+import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
 import { PathSchema, BallSchema } from '../src/ecs'
 
 function storesFinite(sim: ReturnType<typeof createBallPhysics>): void {
@@ -218,5 +218,87 @@ describe('creeping re-contacts are frame-rate independent', () => {
       }
       expect(contacts(240, place, 0.5), `seed ${seed}`).toEqual(contacts(30, place, 0.5))
     }
+  })
+})
+
+describe('a launcher firing many balls from one point', () => {
+  function burst(n: number) {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    const holes = addPanel(sim)
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: { bottom: true } })
+    let a = 12345
+    const r = () => ((a = (a * 16807) % 2147483647) / 2147483647)
+    const balls: number[] = []
+    for (let i = 0; i < n; i++) balls.push(sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.7 * r(), angle: (r() - 0.5) * 1.2 }))
+    return { sim, holes, balls }
+  }
+
+  function worstOverlap(sim: ReturnType<typeof createBallPhysics>): number {
+    const B = sim.world.Ball
+    const on = sim.balls().filter((b) => {
+      const m = sim.ballState(b).mode
+      return m === 'rolling' || m === 'rimRoll' || m === 'resting'
+    })
+    let worst = 0
+    for (let i = 0; i < on.length; i++) {
+      for (let j = i + 1; j < on.length; j++) {
+        const p = on[i]!
+        const q = on[j]!
+        const d = Math.hypot(B.x[p]! - B.x[q]!, B.y[p]! - B.y[q]!)
+        worst = Math.max(worst, B.radius[p]! + B.radius[q]! - d)
+      }
+    }
+    return worst
+  }
+
+  it('300 balls in one frame: the first goes, the rest are held and leave one after another; no overlap on the panel, no clump', () => {
+    const { sim, balls } = burst(300)
+    expect(sim.ballState(balls[0]!).mode).toBe('rolling')
+    expect(balls.slice(1).every((b) => sim.ballState(b).mode === 'held')).toBe(true)
+    const captures: { hole: number; time: number }[] = []
+    for (let i = 0; i < 60 * 8; i++) {
+      sim.step(1 / 60)
+      for (const e of sim.drainEvents()) if (e.type === 'capture') captures.push({ hole: e.hole!, time: e.time })
+      if (i >= 30 && i % 15 === 0) expect(worstOverlap(sim)).toBeLessThanOrEqual(1e-3)
+    }
+    storesFinite(sim)
+    const released = balls.filter((b) => sim.ballState(b).mode !== 'held').length
+    expect(released).toBeGreaterThan(30) // one after another, as each clears the spot
+    // no hole takes three balls within 50 ms of each other (they once went in as one clump)
+    const byHole = new Map<number, number[]>()
+    for (const c of captures) byHole.set(c.hole, [...(byHole.get(c.hole) ?? []), c.time])
+    for (const [hole, times] of byHole) {
+      times.sort((x, y) => x - y)
+      for (let k = 2; k < times.length; k++) expect(times[k]! - times[k - 2]!, `hole ${hole}`).toBeGreaterThanOrEqual(0.05)
+    }
+  })
+
+  it('10,000 balls from one point in one frame: every step does bounded work and returns; the panel stays free of overlaps', () => {
+    const { sim, balls } = burst(10_000)
+    expect(sim.world.held.count).toBe(9_999)
+    for (let i = 0; i < 60; i++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+    }
+    expect(worstOverlap(sim)).toBeLessThanOrEqual(1e-3)
+    expect(balls.filter((b) => sim.ballState(b).mode !== 'held').length).toBeGreaterThan(5)
+  })
+
+  it('a held ball removed while it waits leaves the queue; its id, reused, starts clean', () => {
+    const { sim, balls } = burst(3)
+    sim.removeBall(balls[1]!)
+    expect(sim.world.held.count).toBe(1)
+    const again = sim.addBall({ x: 50, y: 50, vx: 0, vy: 0 })
+    expect(again).toBe(balls[1])
+    expect(sim.ballState(again).mode).toBe('rolling')
+    for (let i = 0; i < 120; i++) sim.step(1 / 60)
+    expect(sim.world.held.count).toBe(0)
+  })
+
+  it('with contacts off nothing is held (balls pass through each other)', () => {
+    const sim = createBallPhysics()
+    const a = sim.addBall({ x: 100, y: 100, vx: 10, vy: 0 })
+    const b = sim.addBall({ x: 100, y: 100, vx: -10, vy: 0 })
+    expect([sim.ballState(a).mode, sim.ballState(b).mode]).toEqual(['rolling', 'rolling'])
   })
 })

@@ -263,7 +263,7 @@ describe("a game's own system in the schedule", () => {
     const schedule = createSchedule(w.config)
     const calls: { pass: number; time: number; tickEnd: number }[] = []
     const lips: { ball: number; hole: number; t: number; speed: number; r: number }[] = []
-    schedule.splice(1, 0, {
+    schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
       name: 'countLips',
       run: (world) => {
         calls.push({ pass: world.pass, time: world.time, tickEnd: world.tickEnd })

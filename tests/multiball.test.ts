@@ -29,7 +29,7 @@ describe('multi-ball', () => {
         }
       }
     }
-    const modes = { captured: 0, resting: 0, rolling: 0, rimRoll: 0, out: 0 }
+    const modes = { captured: 0, resting: 0, rolling: 0, rimRoll: 0, out: 0, held: 0 }
     for (const b of sim.balls()) modes[sim.ballState(b).mode]++
     expect(modes.captured + modes.resting).toBe(n)
     expect(ends.size).toBe(n)

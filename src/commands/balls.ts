@@ -12,6 +12,9 @@ import { addBallEntity, forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { holeAt } from '../world/holeTable.js'
 import { acquireRim, rimSlot } from '../world/rimSlots.js'
+import { setBallMode } from '../world/ballMode.js'
+import { pushId } from '../world/idLists.js'
+import { spotTaken } from '../contacts/spot.js'
 import { checkBall, checkHole, checkWorld, finite, flag, positive, readSpec, within } from './validate.js'
 
 export interface BallSpec {
@@ -74,6 +77,17 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
   w.Ball.radius[eid] = radius
   w.Ball.hero[eid] = hero ? 1 : 0
   if (w.collide !== null) w.collide.mass[eid] = mass
+  // with contacts on, a ball put down where another is waits there until its spot is clear (systems/launcher.ts)
+  if (w.collide !== null && spotTaken(w, eid, x, y, radius)) {
+    const B = w.Ball
+    B.x[eid] = x
+    B.y[eid] = y
+    B.vx[eid] = vx
+    B.vy[eid] = vy
+    setBallMode(w, eid, BallMode.Held)
+    pushId(w.held, eid)
+    return eid
+  }
   const inside = holeAt(w, x, y)
   if (inside !== 0) {
     const slot = acquireRim(w, eid)
@@ -140,6 +154,12 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
   const nvx = finite('vx', vx, MAX_SPEED)
   const nvy = finite('vy', vy, MAX_SPEED)
   const mode = w.Ball.mode[b]!
+  if (mode === BallMode.Held) {
+    // it leaves with this velocity when its spot is clear
+    w.Ball.vx[b] = nvx
+    w.Ball.vy[b] = nvy
+    return
+  }
   if (mode === BallMode.Captured || mode === BallMode.Out) {
     throw new RangeError(`ball ${b} is ${BALL_MODE_NAMES[mode]}: only rolling, rimRoll or resting balls can be moved`)
   }

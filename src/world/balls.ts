@@ -47,6 +47,7 @@ export function adoptBall(world: BallWorld, eid: number): void {
 /** onRemove(Ball): the simulation forgets the ball (see the top of this file). */
 export function forgetBall(world: BallWorld, eid: number): void {
   if (!isBall(world, eid)) return
+  if (world.Ball.mode[eid] === BallMode.Held) dropHeld(world, eid)
   removeMoving(world, eid)
   releaseRim(world, eid)
   if (world.collide !== null) {
@@ -70,4 +71,12 @@ export function isBall(world: BallWorld, eid: number): boolean {
 export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
   const live = world.Ball.live
   for (let eid = 1, n = Math.min(live.length, world.entityIndex.maxId + 1); eid < n; eid++) if (live[eid] === 1) fn(eid)
+}
+
+/** Takes a ball out of the queue of held balls (keeping the others in order). */
+function dropHeld(world: BallWorld, eid: number): void {
+  const q = world.held
+  let n = 0
+  for (let i = 0; i < q.count; i++) if (q.ids[i] !== eid) q.ids[n++] = q.ids[i]!
+  q.count = n
 }

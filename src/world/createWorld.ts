@@ -79,6 +79,8 @@ export interface BallWorldData {
    * nothing. Register a store by pushing it here.
    */
   ballStores: object[]
+  /** balls held at their spawn spot until it is clear (ball-ball contacts on), in the order they came */
+  held: IdList
 }
 
 export type BallWorld = World<BallWorldData>
@@ -131,6 +133,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     collide: config.BALL_COLLISIONS === 'on' ? createCollisionState(capacity, config.BALL_RADIUS) : null,
     stepping: false,
     ballStores: [],
+    held: createIdList(16),
   }
   return createWorld<BallWorldData>(data, entityIndex)
 }

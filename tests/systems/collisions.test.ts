@@ -202,10 +202,16 @@ describe('ball-ball contacts (opt-in)', () => {
       const sim = createBallPhysics({ ...ON, BALL_RESTITUTION: 0.8 })
       sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.6 })
       for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) sim.addHole({ x: 90 + 120 * i, y: 100 + 120 * j })
-      for (let i = 0; i < 40; i++) {
+      // put down apart (a ball put down on another is held until its spot is clear, at a step's start)
+      const placed: [number, number][] = []
+      while (placed.length < 40) {
         const a = r() * 2 * Math.PI
         const v = 100 + 500 * r()
-        sim.addBall({ x: 20 + 380 * r(), y: 20 + 440 * r(), vx: v * Math.cos(a), vy: v * Math.sin(a) })
+        const x = 20 + 380 * r()
+        const y = 20 + 440 * r()
+        if (placed.some(([px, py]) => Math.hypot(px - x, py - y) < 22)) continue
+        placed.push([x, y])
+        sim.addBall({ x, y, vx: v * Math.cos(a), vy: v * Math.sin(a) })
       }
       const ev = run(sim, 3, dt)
       const B = sim.world.Ball

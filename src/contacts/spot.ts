@@ -1,0 +1,35 @@
+// Is a spot on the panel free? A ball put down (ball-ball contacts on) where another ball is would start
+// inside it; such a ball is held until its spot is clear (systems/launcher.ts). Checked against every
+// moving ball (their stored state is at the world's time between steps) and, through the resting grid,
+// against the resting balls near the spot.
+import { BallMode } from '../../components/Ball.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { capsuleCells } from './sweepGrid.js'
+
+/** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
+export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
+  const C = w.collide
+  if (C === null) return false
+  const B = w.Ball
+  const balls = w.moving.dense
+  for (let i = 0, n = w.moving.count; i < n; i++) {
+    const b = balls[i]!
+    if (b === self) continue
+    const dx = B.x[b]! - x
+    const dy = B.y[b]! - y
+    const s = r + B.radius[b]!
+    if (dx * dx + dy * dy < s * s) return true
+  }
+  if (C.restCount === 0) return false
+  const k = capsuleCells(C, x, y, x, y, r + C.maxRadius, C.restHead.length - 1)
+  for (let i = 0; i < k; i++) {
+    for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) {
+      if (b === self || B.mode[b] !== BallMode.Resting) continue
+      const dx = B.x[b]! - x
+      const dy = B.y[b]! - y
+      const s = r + B.radius[b]!
+      if (dx * dx + dy * dy < s * s) return true
+    }
+  }
+  return false
+}
