@@ -348,9 +348,11 @@ export class Game {
       out[i] = d
       this.eventsSeen++
       this.eventCounts[e.type] = (this.eventCounts[e.type] ?? 0) + 1
-      if (e.type === 'capture' && player && holeIndex >= 0) {
+      // the player's throws and the multi-ball bursts score (the stress mode's recycled balls do not)
+      const scores = player || this.DemoBall.kind[e.ball] === Kind.Burst
+      if (e.type === 'capture' && scores && holeIndex >= 0) {
         this.score += this.sim.holeState(e.hole!).value
-        this.gameCaptures[holeIndex] = (this.gameCaptures[holeIndex] ?? 0) + 1
+        if (player) this.gameCaptures[holeIndex] = (this.gameCaptures[holeIndex] ?? 0) + 1
       }
     }
     // keep the newest few for the log (in stress mode thousands arrive per frame)

@@ -236,6 +236,13 @@ async function main(): Promise<void> {
   })
 
   const tuning = createTuning(el('gui'), el('tuning-status'), game)
+  // ball-ball contacts, beside the multi-ball buttons: the same key as the tuning panel's drop-down
+  const contactsBtn = el<HTMLButtonElement>('contacts')
+  const contactsOn = (): boolean => (game.pending ?? game.overrides).BALL_COLLISIONS === 'on'
+  button('contacts', () => {
+    tuning.set('BALL_COLLISIONS', contactsOn() ? 'off' : 'on')
+    contactsBtn.setAttribute('aria-pressed', String(contactsOn()))
+  })
 
   // ---- HUD ----
   const hud = {
@@ -335,6 +342,23 @@ async function main(): Promise<void> {
     },
     get liveBalls() {
       return game.live.length
+    },
+    /** the deepest overlap of two balls on the panel (rolling, on a rim or resting), px; 0 when none */
+    get worstOverlap() {
+      const B = game.sim.world.Ball
+      const on = game.live.filter((b) => B.mode[b] === 0 || B.mode[b] === 1 || B.mode[b] === 3)
+      let worst = 0
+      for (let i = 0; i < on.length; i++) {
+        for (let j = i + 1; j < on.length; j++) {
+          const p = on[i]!
+          const q = on[j]!
+          worst = Math.max(worst, B.radius[p]! + B.radius[q]! - Math.hypot(B.x[p]! - B.x[q]!, B.y[p]! - B.y[q]!))
+        }
+      }
+      return worst
+    },
+    get simTime() {
+      return game.sim.time
     },
     get playerInPlay() {
       return game.playerInPlay

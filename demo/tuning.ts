@@ -23,6 +23,8 @@ export interface Tuning {
   gui: GUI
   /** refreshes the status line (pending / applied) */
   update(): void
+  /** sets one key as the panel would (validated; pending until the next throw, burst or new game) */
+  set(key: Key, value: unknown): void
 }
 
 export function createTuning(container: HTMLElement, status: HTMLElement, game: Game): Tuning {
@@ -95,5 +97,5 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
   gui.add(actions, 'designValues').name('Reset to design values').domElement.dataset.key = 'designValues'
   gui.add(actions, 'applyNow').name('Apply now (new game)').domElement.dataset.key = 'applyNow'
   show()
-  return { gui, update: show }
+  return { gui, update: show, set: change }
 }

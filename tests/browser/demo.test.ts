@@ -43,6 +43,10 @@ interface DemoHook {
   input: { angle: number; power: number; charging: boolean }
   recent: { type: string; player: boolean; value: number; delta?: number; speed?: number }[]
   renderer: { type: string; software: boolean; antialias: boolean }
+  pending: Record<string, unknown> | null
+  config: Record<string, unknown>
+  simTime: number
+  worstOverlap: number
   toPage(x: number, y: number): { x: number; y: number }
   aim(angle: number): void
   charge(power: number): void
@@ -277,6 +281,25 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await page.click('#multi-100')
     await page.waitForFunction(() => (window.__demo.eventCounts.collision ?? 0) > 0, null, { timeout: 20_000 })
     await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
+    expect(problems).toEqual([])
+  })
+
+  it('the contacts toggle beside the multi-ball buttons: a 1,000-ball burst comes out with none inside another, and scores', async () => {
+    await page.click('#contacts')
+    expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('true')
+    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe('on')
+    const score0 = await page.evaluate(() => window.__demo.score)
+    await page.click('#multi-1000')
+    await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe('on')
+    const t0 = await page.evaluate(() => window.__demo.simTime)
+    await page.waitForFunction((t) => window.__demo.simTime > t + 0.5, t0, { timeout: 30_000 })
+    // in the page's own world, after 0.5 s of simulated time: no two balls on the panel overlap
+    expect(await page.evaluate(() => window.__demo.worstOverlap)).toBeLessThanOrEqual(1e-3)
+    await page.waitForFunction((s) => window.__demo.score > s, score0, { timeout: 30_000 })
+    // back to the design values for the tests after this one
+    await page.click('#contacts')
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
     await page.click('#clear-balls')
     expect(problems).toEqual([])
