@@ -58,12 +58,20 @@ describe('the cost of a scene follows the balls in it now', () => {
     const reach = C.maxRadius
     expect(reach).toBeGreaterThanOrEqual(11)
     expect(reach).toBeLessThan(11 * 1.19)
-    const big = sim.addBall({ x: 1e6, y: 0, vx: 0, vy: 0, radius: 1e4 })
+    const large = sim.addBall({ x: 1e5, y: 0, vx: 0, vy: 0, radius: 120 })
     sim.step(1 / 60)
-    expect(sim.ballState(big).mode).toBe('resting')
-    expect(C.maxRadius).toBeGreaterThanOrEqual(1e4)
-    sim.removeBall(big)
+    expect(sim.ballState(large).mode).toBe('resting')
+    expect(C.maxRadius).toBeGreaterThanOrEqual(120)
+    sim.removeBall(large)
     expect(C.maxRadius).toBe(reach)
+    // a ball wider than the grid's cells is kept beside the grid and never widens its lookups
+    const huge = sim.addBall({ x: 1e6, y: 0, vx: 0, vy: 0, radius: 1e4 })
+    sim.step(1 / 60)
+    expect(sim.ballState(huge).mode).toBe('resting')
+    expect(C.maxRadius).toBe(reach)
+    expect(C.bigRestCount).toBe(1)
+    sim.removeBall(huge)
+    expect(C.bigRestCount).toBe(0)
     sim.removeBall(small)
     expect(C.maxRadius).toBe(0)
   })
@@ -71,11 +79,48 @@ describe('the cost of a scene follows the balls in it now', () => {
   it('a large ball that wakes and rolls away takes its reach with it', () => {
     const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
     const C = sim.world.collide!
-    const big = sim.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: 500 })
+    const big = sim.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: 150 })
     sim.step(1 / 60)
-    expect(C.maxRadius).toBeGreaterThanOrEqual(500)
+    expect(C.maxRadius).toBeGreaterThanOrEqual(150)
     sim.setBallVelocity(big, 100, 0)
     expect(C.maxRadius).toBe(0)
+  })
+
+  it('a ball of the largest radius, resting or moving, meets the others exactly where the two-body geometry says', () => {
+    for (const moving of [false, true]) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 })
+      const R = 1e4
+      const huge = sim.addBall({ x: 0, y: 0, vx: moving ? 10 : 0, vy: 0, radius: R })
+      // a normal ball 100 px outside its rim, closing at 1,000 px/s (relative): contact after 0.1 s
+      const vHuge = moving ? 10 : 0
+      const b = sim.addBall({ x: R + 11 + 100, y: 0, vx: -1000 + vHuge, vy: 0 })
+      const events = []
+      for (let i = 0; i < 12; i++) {
+        sim.step(1 / 60)
+        events.push(...sim.drainEvents().filter((e) => e.type === 'collision'))
+        // before the contact it is paired with directly, never rasterised into the grids (10^5 cells)
+        if (i === 0 && moving) expect(sim.world.collide!.bigCount).toBeGreaterThanOrEqual(1)
+        if (i === 0 && !moving) expect(sim.world.collide!.bigRestCount).toBe(1)
+      }
+      expect(events.length, moving ? 'moving' : 'resting').toBeGreaterThanOrEqual(1)
+      expect(events[0]!.time).toBeCloseTo(0.1, 9)
+      expect([events[0]!.ball, events[0]!.other]).toEqual([huge, b])
+      expect(sim.ballState(b).vx).toBeGreaterThan(vHuge) // it bounced back off the heavy ball
+    }
+  })
+
+  it('a tiny BALL_RADIUS (small grid cells) with one ball of radius 20 meets it exactly', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0, BALL_RADIUS: 0.01 })
+    sim.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: 20 })
+    const b = sim.addBall({ x: 40, y: 0, vx: -100, vy: 0, radius: 0.01 })
+    sim.step(0.01)
+    // 500 cells wide: kept beside the resting grid (rasterised, one step once took 35 s)
+    expect(sim.world.collide!.bigRestCount).toBe(1)
+    sim.step(0.24)
+    const e = sim.drainEvents().filter((ev) => ev.type === 'collision')
+    expect(e).toHaveLength(1)
+    expect(e[0]!.time).toBeCloseTo((40 - 20.01) / 100, 9)
+    expect(sim.ballState(b).vx).toBeGreaterThan(0)
   })
 })
 

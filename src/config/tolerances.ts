@@ -47,3 +47,14 @@ export const MAX_GRID_CELLS = 1 << 22
 
 /** Full spot checks the launcher makes per step for held balls (each scans the moving balls). */
 export const MAX_SPOT_CHECKS = 64
+
+/**
+ * A moving ball whose swept capsule would cover more grid cells than this in a step (a very large or very
+ * fast ball) is not rasterised into the contact hash: it is paired with every moving ball near it directly,
+ * and every other prediction pairs with it directly. Bounds a prediction's work for a ball of any radius.
+ */
+export const MAX_CAPSULE_CELLS = 1024
+
+/** A resting ball wider than this many grid cells (radius / cell) is kept beside the resting grid, not in it. */
+export const MAX_RESTING_CELLS = 4
+

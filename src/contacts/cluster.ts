@@ -1,9 +1,9 @@
 // The touching cluster of a settling contact: the balls touching the pair, and those touching them.
 import { BallMode } from '../../components/Ball.js'
-import { APPROACH_EPSILON, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
+import { APPROACH_EPSILON, MAX_CAPSULE_CELLS, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
-import { capsuleCells } from './sweepGrid.js'
+import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 /**
  * Gathers into C.cluster the balls touching a or b (gap ≤ TOUCH_GAP at time t), and those touching
@@ -28,34 +28,47 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     const x = B.x[m]!
     const y = B.y[m]!
     const r = B.radius[m]!
-    const sMask = C.sweepHead.length - 1
-    let k = capsuleCells(C, x, y, x, y, r, sMask)
-    for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
-      const bucket = C.cells[i]!
-      if (C.sweepStamp[bucket] !== C.stamp) continue
-      for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) {
-        const c = C.entBall[e]!
-        if (C.seen[c] === stamp) continue
-        if (touches(w, c, m, t)) {
-          C.seen[c] = stamp
-          list[n++] = c
+    // moving balls: through the hash (or all of them, for a member too wide for it), then the big ones
+    if (capsuleCellEstimate(C, x, y, x, y, r) > MAX_CAPSULE_CELLS) {
+      const balls = w.moving.dense
+      for (let i = 0, k = w.moving.count; i < k && n < MAX_CLUSTER; i++) n = consider(w, list, n, balls[i]!, m, t, stamp)
+    } else {
+      const sMask = C.sweepHead.length - 1
+      const k = capsuleCells(C, x, y, x, y, r, sMask)
+      for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
+        const bucket = C.cells[i]!
+        if (C.sweepStamp[bucket] !== C.stamp) continue
+        for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) n = consider(w, list, n, C.entBall[e]!, m, t, stamp)
+      }
+    }
+    for (let i = 0; i < C.bigCount && n < MAX_CLUSTER; i++) n = consider(w, list, n, C.big[i]!, m, t, stamp)
+    // resting balls: through the grid (or every bucket, when that is cheaper), then those beside it
+    if (C.restCount > 0) {
+      const rMask = C.restHead.length - 1
+      const reach = r + C.maxRadius
+      if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
+        for (let i = 0; i <= rMask && n < MAX_CLUSTER; i++) {
+          for (let c = C.restHead[i]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) n = consider(w, list, n, c, m, t, stamp)
+        }
+      } else {
+        const k = capsuleCells(C, x, y, x, y, reach, rMask)
+        for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
+          for (let c = C.restHead[C.cells[i]!]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) n = consider(w, list, n, c, m, t, stamp)
         }
       }
     }
-    if (C.restCount === 0) continue
-    const rMask = C.restHead.length - 1
-    k = capsuleCells(C, x, y, x, y, r + C.maxRadius, rMask)
-    for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
-      for (let c = C.restHead[C.cells[i]!]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) {
-        if (C.seen[c] === stamp) continue
-        if (touches(w, c, m, t)) {
-          C.seen[c] = stamp
-          list[n++] = c
-        }
-      }
-    }
+    for (let i = 0; i < C.bigRestCount && n < MAX_CLUSTER; i++) n = consider(w, list, n, C.bigRest[i]!, m, t, stamp)
   }
   C.clusterCount = n
+}
+
+/** Adds ball c to the cluster when it touches member m (and is not in it yet); returns the new count. */
+function consider(w: BallWorld, list: Uint32Array, n: number, c: number, m: number, t: number, stamp: number): number {
+  const C = w.collide!
+  if (C.seen[c] === stamp || !touches(w, c, m, t)) return n
+  C.seen[c] = stamp
+  list[n] = c
+  return n + 1
 }
 
 /**

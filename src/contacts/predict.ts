@@ -1,13 +1,13 @@
 // Contact prediction: a ball's contacts with every ball near its path over the rest of the step, and its
 // own next event, pushed into the event heap.
 import { BallMode } from '../../components/Ball.js'
-import { GAP_TOLERANCE } from '../config/tolerances.js'
-import { grown } from '../world/contactState.js'
+import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'
+import { appendId, grown } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { HeapKind, heapPush } from './eventHeap.js'
-import { motionEnd, motionStart } from './evalMotion.js'
+import { AT, E, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 import { RESULT, SearchResult, TIME, search, searchContact } from './search.js'
-import { CR, X1, X2, Y1, Y2, cap, capsuleCells, sweptCapsule } from './sweepGrid.js'
+import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, sweptCapsule } from './sweepGrid.js'
 
 /**
  * Predicts ball `a`'s contacts with every ball near its path over [C.now, tickEnd] and pushes them, and its
@@ -39,9 +39,12 @@ export function predictBall(w: BallWorld, a: number): void {
   const stamp = C.seenStamp
   C.seen[a] = stamp
 
-  // moving balls' capsules
+  if (mode !== BallMode.Resting) C.predicted[a] = C.stamp
+
+  // moving balls' capsules: through the hash, or, for a ball too big or fast for it, directly
+  const big = capsuleCellEstimate(C, x1, y1, x2, y2, rho) > MAX_CAPSULE_CELLS
   const sMask = C.sweepHead.length - 1
-  let n = capsuleCells(C, x1, y1, x2, y2, rho, sMask)
+  let n = big ? 0 : capsuleCells(C, x1, y1, x2, y2, rho, sMask)
   for (let k = 0; k < n; k++) {
     const bucket = C.cells[k]!
     if (C.sweepStamp[bucket] !== C.stamp) continue
@@ -49,6 +52,29 @@ export function predictBall(w: BallWorld, a: number): void {
       const b = C.entBall[e]!
       if (C.seen[b] === stamp) continue
       // stale entries of balls that have since stopped: those are found through the resting grid
+      const mb = w.Ball.mode[b]
+      if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
+      C.seen[b] = stamp
+      tryPair(w, a, b, startA, endA, tEnd)
+    }
+  }
+  if (big) {
+    // every moving ball predicted before it this step that can reach its capsule (the others pair with
+    // it when they are predicted, through the big list)
+    const balls = w.moving.dense
+    const span = tEnd - now
+    for (let i = 0, m = w.moving.count; i < m; i++) {
+      const b = balls[i]!
+      if (C.seen[b] === stamp || C.predicted[b] !== C.stamp) continue
+      C.seen[b] = stamp
+      if (!mayReach(w, b, now, span, x1, y1, x2, y2, rho)) continue
+      tryPair(w, a, b, startA, endA, tEnd)
+    }
+    if (mode !== BallMode.Resting) C.big = appendId(C.big, C.bigCount++, a)
+  } else {
+    for (let i = 0; i < C.bigCount; i++) {
+      const b = C.big[i]!
+      if (C.seen[b] === stamp) continue
       const mb = w.Ball.mode[b]
       if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
       C.seen[b] = stamp
@@ -72,20 +98,59 @@ export function predictBall(w: BallWorld, a: number): void {
       C.sweepHead[bucket] = e
     }
   }
-  // resting balls, by centre cell: widen by the largest radius
-  if (mode !== BallMode.Resting && C.restCount > 0) {
+  if (mode === BallMode.Resting) return
+  // resting balls, by centre cell (widened by the largest radius in the grid); all of them when that is
+  // cheaper than the cells; then those too wide for the grid
+  if (C.restCount > 0) {
     const rMask = C.restHead.length - 1
-    n = capsuleCells(C, x1, y1, x2, y2, rho + C.maxRadius, rMask)
-    for (let k = 0; k < n; k++) {
-      for (let b = C.restHead[C.cells[k]!]!; b !== 0; b = C.restNext[b]!) {
-        if (C.seen[b] === stamp) continue
-        C.seen[b] = stamp
-        // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
-        if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > (rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE) ** 2) continue
-        tryPair(w, a, b, startA, endA, tEnd)
+    const reach = rho + C.maxRadius
+    if (capsuleCellEstimate(C, x1, y1, x2, y2, reach) > C.restHead.length) {
+      for (let k = 0; k <= rMask; k++) {
+        for (let b = C.restHead[k]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
+      }
+    } else {
+      n = capsuleCells(C, x1, y1, x2, y2, reach, rMask)
+      for (let k = 0; k < n; k++) {
+        for (let b = C.restHead[C.cells[k]!]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
       }
     }
   }
+  for (let i = 0; i < C.bigRestCount; i++) restingCandidate(w, a, C.bigRest[i]!, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
+}
+
+/** A resting ball b near a's capsule: tried once per prediction, after a distance test. */
+function restingCandidate(
+  w: BallWorld,
+  a: number,
+  b: number,
+  stamp: number,
+  x1: number,
+  y1: number,
+  x2: number,
+  y2: number,
+  rho: number,
+  startA: number,
+  endA: number,
+  tEnd: number,
+): void {
+  const C = w.collide!
+  if (C.seen[b] === stamp) return
+  C.seen[b] = stamp
+  // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
+  if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > (rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE) ** 2) return
+  tryPair(w, a, b, startA, endA, tEnd)
+}
+
+/**
+ * Whether moving ball b can come within reach of the capsule (x1, y1)–(x2, y2), radius rho, within `span`
+ * seconds of `now`: it moves no farther than its present speed times the span (its speed never grows).
+ */
+function mayReach(w: BallWorld, b: number, now: number, span: number, x1: number, y1: number, x2: number, y2: number, rho: number): boolean {
+  E[AT] = now
+  evalBall(w, b)
+  const travel = Math.sqrt(E[VX] * E[VX] + E[VY] * E[VY]) * span
+  const r = rho + w.Ball.radius[b]! + travel + 2 * GAP_TOLERANCE
+  return segmentDistance2(E[X], E[Y], x1, y1, x2, y2) <= r * r
 }
 
 /** Squared distance from (px, py) to the segment (x1, y1)–(x2, y2). */

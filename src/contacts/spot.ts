@@ -4,7 +4,7 @@
 // against the resting balls near the spot.
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { capsuleCells } from './sweepGrid.js'
+import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
 export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
@@ -20,16 +20,24 @@ export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: n
     const s = r + B.radius[b]!
     if (dx * dx + dy * dy < s * s) return true
   }
+  const near = (b: number): boolean => {
+    if (b === self || B.mode[b] !== BallMode.Resting) return false
+    const dx = B.x[b]! - x
+    const dy = B.y[b]! - y
+    const s = r + B.radius[b]!
+    return dx * dx + dy * dy < s * s
+  }
+  for (let i = 0; i < C.bigRestCount; i++) if (near(C.bigRest[i]!)) return true
   if (C.restCount === 0) return false
-  const k = capsuleCells(C, x, y, x, y, r + C.maxRadius, C.restHead.length - 1)
+  const rMask = C.restHead.length - 1
+  const reach = r + C.maxRadius
+  if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
+    for (let i = 0; i <= rMask; i++) for (let b = C.restHead[i]!; b !== 0; b = C.restNext[b]!) if (near(b)) return true
+    return false
+  }
+  const k = capsuleCells(C, x, y, x, y, reach, rMask)
   for (let i = 0; i < k; i++) {
-    for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) {
-      if (b === self || B.mode[b] !== BallMode.Resting) continue
-      const dx = B.x[b]! - x
-      const dy = B.y[b]! - y
-      const s = r + B.radius[b]!
-      if (dx * dx + dy * dy < s * s) return true
-    }
+    for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) if (near(b)) return true
   }
   return false
 }

@@ -54,6 +54,7 @@ export function beginCollisionStep(w: BallWorld): void {
   const C = w.collide!
   C.heapCount = 0
   C.entCount = 0
+  C.bigCount = 0
   let size = C.sweepHead.length
   while (size < 4 * w.moving.count) size *= 2
   if (size !== C.sweepHead.length) {
@@ -95,4 +96,13 @@ export function sweptCapsule(w: BallWorld, eid: number, from: number, to: number
   cap[X2] = E[X]
   cap[Y2] = E[Y]
   cap[CR] = r
+}
+
+/** About how many grid cells the capsule from (x1, y1) to (x2, y2) with radius rho covers (an upper estimate). */
+export function capsuleCellEstimate(C: CollisionState, x1: number, y1: number, x2: number, y2: number, rho: number): number {
+  const c = C.cell
+  const dx = x2 - x1
+  const dy = y2 - y1
+  const across = (2 * rho) / c + 2
+  return (Math.sqrt(dx * dx + dy * dy) / c + across) * across
 }

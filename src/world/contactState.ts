@@ -5,6 +5,9 @@
 import { MAX_CLUSTER } from '../config/tolerances.js'
 import type { BallWorld } from './createWorld.js'
 
+/** restBucket of a resting ball kept beside the grid (too wide for it) */
+export const BESIDE_GRID = -2
+
 /** Radius classes of the resting grid (a quarter octave each, from about 2⁻¹² to 2²⁰ px). */
 export const RADIUS_CLASSES = 128
 
@@ -25,6 +28,14 @@ export interface CollisionState {
   restPrev: Uint32Array
   restHead: Uint32Array
   restCount: number
+  /** resting balls too wide for the grid (MAX_RESTING_CELLS), beside it; their restBucket is BESIDE_GRID */
+  bigRest: Uint32Array
+  bigRestCount: number
+  /** moving balls too big or too fast for the swept-capsule hash this step (MAX_CAPSULE_CELLS) */
+  big: Uint32Array
+  bigCount: number
+  /** the sweep stamp at which each ball was last predicted (it has been predicted this step when equal) */
+  predicted: Uint32Array
   /** resting balls per radius class (restingGrid.ts), each ball's class, and the highest class in use */
   restClassCount: Uint32Array
   restClass: Uint8Array
@@ -78,6 +89,11 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     restPrev: new Uint32Array(capacity),
     restHead: new Uint32Array(1 << 12),
     restCount: 0,
+    bigRest: new Uint32Array(16),
+    bigRestCount: 0,
+    big: new Uint32Array(16),
+    bigCount: 0,
+    predicted: new Uint32Array(capacity),
     restClassCount: new Uint32Array(RADIUS_CLASSES),
     restClass: new Uint8Array(capacity),
     restTopClass: -1,
@@ -125,6 +141,7 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.restNext = grown(C.restNext, capacity)
   C.restPrev = grown(C.restPrev, capacity)
   C.restClass = grown(C.restClass, capacity)
+  C.predicted = grown(C.predicted, capacity)
   C.seen = grown(C.seen, capacity)
 }
 
@@ -132,4 +149,11 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
 export function bumpVersion(w: BallWorld, eid: number): void {
   const C = w.collide!
   C.ver[eid] = (C.ver[eid]! + 1) >>> 0
+}
+
+/** Appends an id to one of the state's id arrays (grown by doubling); returns the array (it may be new). */
+export function appendId(list: Uint32Array, count: number, eid: number): Uint32Array {
+  const out = count === list.length ? grown(list, count * 2) : list
+  out[count] = eid
+  return out
 }

@@ -1,6 +1,7 @@
 // The resting grid (ball-ball contacts on): resting balls hashed by the grid cell of their centre, kept
 // across steps and updated when a ball comes to rest or wakes, so resting balls cost nothing until struck.
-import { RADIUS_CLASSES, type CollisionState } from './contactState.js'
+import { MAX_RESTING_CELLS } from '../config/tolerances.js'
+import { BESIDE_GRID, RADIUS_CLASSES, appendId, type CollisionState } from './contactState.js'
 import type { BallWorld } from './createWorld.js'
 
 /** Radius classes: class k holds radii up to 2^((k − CLASS_OFFSET)/4) px. */
@@ -47,7 +48,13 @@ export function bucketOf(ix: number, iy: number, mask: number): number {
 /** Puts a resting ball into the resting grid (no-op if it is there). */
 export function restingInsert(w: BallWorld, eid: number): void {
   const C = w.collide
-  if (C === null || C.restBucket[eid]! >= 0) return
+  if (C === null || C.restBucket[eid] !== -1) return
+  if (w.Ball.radius[eid]! > MAX_RESTING_CELLS * C.cell) {
+    // too wide for the grid: it would widen every lookup; kept beside it and paired with directly
+    C.bigRest = appendId(C.bigRest, C.bigRestCount++, eid)
+    C.restBucket[eid] = BESIDE_GRID
+    return
+  }
   if (C.restCount + 1 > 2 * C.restHead.length) rehashResting(w, C.restHead.length * 4)
   countIn(C, eid, w.Ball.radius[eid]!)
   const mask = C.restHead.length - 1
@@ -66,6 +73,13 @@ export function restingRemove(w: BallWorld, eid: number): void {
   const C = w.collide
   if (C === null) return
   const bucket = C.restBucket[eid]!
+  if (bucket === BESIDE_GRID) {
+    let n = 0
+    for (let i = 0; i < C.bigRestCount; i++) if (C.bigRest[i] !== eid) C.bigRest[n++] = C.bigRest[i]!
+    C.bigRestCount = n
+    C.restBucket[eid] = -1
+    return
+  }
   if (bucket < 0) return
   const prev = C.restPrev[eid]!
   const next = C.restNext[eid]!
