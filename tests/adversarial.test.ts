@@ -1,0 +1,616 @@
+// Adversarial property suite: random sequences of API calls (fast-check, seeded) on a createBallPhysics world
+// (METHOD 'exact'; BALL_COLLISIONS 'off' | 'on' × BALL_RESTITUTION 0, 0.5, 1 × ROLLING_DECEL 0, 300), with
+// extreme but valid input: radii 1e-3…200 px and now and then up to MAX_RADIUS, masses 1e-9…1e9, speeds up to
+// 1e5 px/s, balls put down on one another, overlapping one, inside a lip circle or aimed at a hole (rim shots),
+// bursts of up to 30 balls at one point, holes added and removed, walls of every shape (the panel, 1e-6 px
+// across, narrower than a ball, open edges) set and cleared, velocities set, steps of 1e-9 s to 10 s. Each
+// sequence ends with 40 steps of 1/60 s. After every call the runner checks the property's invariants:
+//   finite   every element of every Ball and Path store of every live ball is finite; every mode is named
+//   events   drained events never go back in time, and each lies in the window [time before, time after]
+//            of the call that reported it
+//   energy   contacts on: Σ ½·m·v² does not rise across a step that reports collisions and no wall event
+//   time     each step returns within STEP_BUDGET_MS (and a whole run within RUN_BUDGET_MS)
+//   overlap  contacts on, 0.5 s after the last ball was put down: no two balls on the panel (rolling, rimRoll,
+//            resting) overlap by more than 1e-3 px
+// A failure throws with the API calls made so far written as code, so fast-check's shrunk counterexample
+// reads as a repro.
+//
+// A step runs under a watchdog: a system appended to the schedule throws once the step has run longer than
+// STEP_BUDGET_MS, so a runaway step ends (as a failure of 'time', or as a discarded run of the other
+// properties) instead of hanging vitest. It catches work spread over event passes, which is what every
+// runaway step found so far is; a loop inside one system would not be caught.
+import fc from 'fast-check'
+import { describe, expect, it } from 'vitest'
+import { createBallPhysics, type BallEvent, type BallPhysics } from '../src/index'
+import { BALL_MODE_NAMES, BallSchema, PathSchema } from '../src/ecs'
+
+const STEP_BUDGET_MS = 2000
+/** a whole run's stepping (every step under the budget, but a world that grinds at the pass cap every step) */
+const RUN_BUDGET_MS = 5000
+const SETTLE_STEPS = 40 // 0.67 s at 60 Hz after the last call: past the 0.5 s the overlap check waits for
+const SEED = 20_240_517
+
+// ---------------------------------------------------------------- operations
+
+type Place =
+  | { p: 'free' }
+  | { p: 'stack'; k: number } // on the centre of a live ball
+  | { p: 'overlap'; k: number; f: number; a: number } // centre distance f/2·(r1 + r2) from a live ball
+  | { p: 'inHole'; k: number; f: number; a: number } // inside a hole's lip circle
+  // d px outside a hole's lip, aimed off·R beside its centre; `lip`: the speed it should cross the lip at
+  | { p: 'aim'; k: number; d: number; off: number; a: number; lip?: number }
+
+type Op =
+  | { t: 'addBall'; x: number; y: number; vx: number; vy: number; radius?: number; mass?: number; place: Place }
+  | { t: 'throw'; x: number; y: number; power: number; angle: number; radius?: number; mass?: number; place: Place }
+  | { t: 'burst'; n: number; x: number; y: number; spread: number; speed: number; radius?: number; mass?: number; seed: number; aim?: Place }
+  | { t: 'addHole'; x: number; y: number; radius?: number }
+  | { t: 'removeHole'; k: number }
+  | { t: 'removeBall'; k: number }
+  | { t: 'setVel'; k: number; vx: number; vy: number }
+  | { t: 'walls'; minX: number; minY: number; w: number; h: number; e?: number; open?: Record<string, boolean> }
+  | { t: 'clearWalls' }
+  | { t: 'step'; dt: number }
+
+interface Cfg {
+  contacts: 'off' | 'on'
+  e: number
+  decel: number
+}
+
+// ---------------------------------------------------------------- generators
+
+interface Limits {
+  /** radius drawn log-uniform in this range (or the default), px */
+  radius: [number, number]
+  /** now and then a radius from 200 up to MAX_RADIUS = 1e4 */
+  huge: boolean
+  /** mass drawn log-uniform in this range (or the default (r/11)³) */
+  mass: [number, number]
+  /** walls 1e-6, 1 or 5 px across: narrower than a ball */
+  narrowWalls: boolean
+  holes: boolean
+  /** most balls one burst (n balls put down at once near one point) adds */
+  burst: number
+  /** walls at all (setWalls, clearWalls) */
+  walls: boolean
+}
+
+const FULL: Limits = { radius: [1e-3, 200], huge: true, mass: [1e-9, 1e9], narrowWalls: true, holes: true, burst: 30, walls: true }
+
+const unit = fc.integer({ min: 0, max: 1_000_000 }).map((i) => i / 1_000_000)
+const uniform = (lo: number, hi: number) => unit.map((u) => lo + (hi - lo) * u)
+const logUniform = (lo: number, hi: number) =>
+  fc.integer({ min: Math.round(Math.log10(lo) * 1000), max: Math.round(Math.log10(hi) * 1000) }).map((k) => Math.min(hi, Math.max(lo, 10 ** (k / 1000))))
+const signed = (a: fc.Arbitrary<number>) => fc.tuple(a, fc.boolean()).map(([v, s]) => (s ? -v : v))
+const coordinate = (panel: number) =>
+  fc.oneof(
+    { weight: 12, arbitrary: uniform(-20, panel + 20) },
+    { weight: 2, arbitrary: fc.integer({ min: 0, max: Math.round(panel / 10) }).map((i) => i * 10) },
+    { weight: 1, arbitrary: fc.double({ min: -20, max: panel, noNaN: true }) }, // denormals, -0, tiny values
+    { weight: 1, arbitrary: signed(logUniform(1e3, 1e9)) },
+  )
+const speed = fc.oneof(
+  { weight: 1, arbitrary: fc.constant(0) },
+  { weight: 8, arbitrary: logUniform(1e-3, 1e5) },
+  { weight: 1, arbitrary: fc.constantFrom(1e5, 1e-300, 5e-324) },
+)
+const velocity = fc.tuple(speed, uniform(-Math.PI, Math.PI), fc.boolean()).map(([s, a, axis]) => {
+  const q = axis ? Math.round(a / (Math.PI / 2)) * (Math.PI / 2) : a
+  return axis ? { vx: Math.round(Math.sin(q)) * s, vy: -Math.round(Math.cos(q)) * s } : { vx: s * Math.sin(q), vy: -s * Math.cos(q) }
+})
+const aimArb = fc.oneof(
+  fc.record({ p: fc.constant('aim' as const), k: fc.nat(50), d: uniform(0, 200), off: uniform(-1.3, 1.3), a: uniform(0, 6.3) }),
+  // rim shots: the default ball rolls on the rim for δ ≈ 0.58…0.68·R at a lip speed ≈ 467…498 px/s
+  fc.record({ p: fc.constant('aim' as const), k: fc.nat(50), d: uniform(0, 200), off: signed(uniform(0.57, 0.69)), a: uniform(0, 6.3), lip: uniform(460, 505) }),
+)
+const place: fc.Arbitrary<Place> = fc.oneof(
+  { weight: 4, arbitrary: fc.constant<Place>({ p: 'free' }) },
+  { weight: 2, arbitrary: fc.nat(50).map((k): Place => ({ p: 'stack', k })) },
+  { weight: 2, arbitrary: fc.record({ p: fc.constant('overlap' as const), k: fc.nat(50), f: uniform(0, 1.99), a: uniform(0, 6.3) }) },
+  { weight: 2, arbitrary: fc.record({ p: fc.constant('inHole' as const), k: fc.nat(50), f: unit, a: uniform(0, 6.3) }) },
+  { weight: 3, arbitrary: aimArb },
+)
+const dt = fc.constantFrom(1e-9, 1 / 240, 1 / 60, 1 / 60, 1 / 60, 0.1, 0.25, 10)
+const openEdges = fc.record({ left: fc.boolean(), top: fc.boolean(), right: fc.boolean(), bottom: fc.boolean() }, { requiredKeys: [] })
+const PANEL_HOLES = [50, 130, 210, 290, 370].flatMap((x) => [130, 190, 250, 310, 370].map((y) => ({ x, y })))
+
+function opArbs(L: Limits) {
+  const x = coordinate(420)
+  const y = coordinate(480)
+  const radius = fc.oneof(
+    { weight: 4, arbitrary: fc.constant(undefined) },
+    { weight: 5, arbitrary: logUniform(L.radius[0], L.radius[1]) },
+    { weight: L.huge ? 1 : 0, arbitrary: fc.oneof(logUniform(200, 1e4), fc.constant(1e4)) },
+  )
+  const mass = fc.oneof(
+    { weight: 3, arbitrary: fc.constant(undefined) },
+    { weight: 3, arbitrary: logUniform(L.mass[0], L.mass[1]) },
+    { weight: 1, arbitrary: fc.constantFrom(L.mass[0], L.mass[1]) },
+  )
+  const addBall = fc.record({ x, y, v: velocity, radius, mass, place }).map(({ v, ...o }): Op => ({ t: 'addBall', ...o, vx: v.vx, vy: v.vy }))
+  const launch = fc.oneof({ weight: 2, arbitrary: fc.constant({ x: 210, y: 450 }) }, { weight: 3, arbitrary: fc.record({ x, y }) })
+  const thrown = fc
+    .record({ at: launch, power: fc.oneof(unit, fc.constantFrom(0, 1)), angle: uniform(-2 * Math.PI, 2 * Math.PI), radius, mass, place })
+    .map(({ at, ...o }): Op => ({ t: 'throw', ...at, ...o }))
+  const burst = fc.record({
+    t: fc.constant('burst' as const),
+    n: fc.integer({ min: 2, max: L.burst }),
+    x,
+    y,
+    spread: fc.constantFrom(0, 0, 1, 22, 60, 400),
+    speed: fc.constantFrom(0, 50, 300, 1000, 5000),
+    radius,
+    mass,
+    seed: fc.nat(1000),
+    aim: fc.option(aimArb, { nil: undefined }),
+  })
+  const holeAt = fc.oneof({ weight: 2, arbitrary: fc.constantFrom(...PANEL_HOLES) }, { weight: 1, arbitrary: fc.record({ x, y }) })
+  const addHole = fc
+    .record({ at: holeAt, radius: fc.oneof(fc.constant(undefined), uniform(1, 60), fc.constantFrom(0.01, 500)) })
+    .map(({ at, radius: r }): Op => ({ t: 'addHole', ...at, radius: r }))
+  const sizes = L.narrowWalls ? fc.constantFrom(1e-6, 1, 5, 21, 60, 420) : fc.constantFrom(60, 200, 420)
+  const walls = fc.oneof(
+    { weight: 3, arbitrary: fc.record({ t: fc.constant('walls' as const), minX: fc.constant(0), minY: fc.constant(0), w: fc.constant(420), h: fc.constant(480), e: fc.constantFrom(undefined, 0, 0.5, 1), open: openEdges }) },
+    { weight: 1, arbitrary: fc.record({ t: fc.constant('walls' as const), minX: x, minY: y, w: sizes, h: sizes, e: fc.constantFrom(undefined, 0, 0.5, 1), open: openEdges }) },
+  )
+  const op: fc.Arbitrary<Op> = fc.oneof(
+    { weight: 5, arbitrary: addBall },
+    { weight: 3, arbitrary: thrown },
+    { weight: 2, arbitrary: burst },
+    { weight: L.holes ? 3 : 0, arbitrary: addHole },
+    { weight: L.holes ? 1 : 0, arbitrary: fc.record({ t: fc.constant('removeHole' as const), k: fc.nat(50) }) },
+    { weight: 1, arbitrary: fc.record({ t: fc.constant('removeBall' as const), k: fc.nat(50) }) },
+    { weight: 2, arbitrary: fc.record({ k: fc.nat(50), v: velocity }).map(({ k, v }): Op => ({ t: 'setVel', k, vx: v.vx, vy: v.vy })) },
+    { weight: L.walls ? 2 : 0, arbitrary: walls },
+    { weight: L.walls ? 1 : 0, arbitrary: fc.constant<Op>({ t: 'clearWalls' }) },
+    { weight: 8, arbitrary: fc.record({ t: fc.constant('step' as const), dt }) },
+  )
+  // a scene to start from, drawn too: the panel's walls (closed, or open at the bottom), its 25 holes, a burst
+  const prelude = fc
+    .record({
+      walls: L.walls ? fc.constantFrom(undefined, { bottom: false }, { bottom: true }) : fc.constant(undefined),
+      e: fc.constantFrom(0, 0.5, 1),
+      holes: L.holes ? fc.boolean() : fc.constant(false),
+      burst: fc.option(burst, { nil: undefined }),
+    })
+    .map(({ walls: open, e, holes, burst: b }): Op[] => [
+      ...(open ? [{ t: 'walls' as const, minX: 0, minY: 0, w: 420, h: 480, e, open }] : []),
+      ...(holes ? PANEL_HOLES.map((h): Op => ({ t: 'addHole', ...h })) : []),
+      ...(b ? [b] : []),
+    ])
+  return { op, prelude }
+}
+
+const cfgArb = (contacts: readonly ('off' | 'on')[]) =>
+  fc.record({ contacts: fc.constantFrom(...contacts), e: fc.constantFrom(0, 0.5, 1), decel: fc.constantFrom(0, 300) })
+const scenario = (L: Limits, contacts: readonly ('off' | 'on')[] = ['off', 'on']): fc.Arbitrary<[Cfg, Op[]]> => {
+  const { op, prelude } = opArbs(L)
+  return fc
+    .tuple(cfgArb(contacts), prelude, fc.array(op, { minLength: 1, maxLength: 25, size: 'max' }))
+    .map(([cfg, pre, ops]): [Cfg, Op[]] => [cfg, [...pre, ...ops]])
+}
+
+// ---------------------------------------------------------------- the runner
+
+type Check = 'finite' | 'events' | 'energy' | 'overlap' | 'time'
+
+class Violation extends Error {}
+/** a step or a run went over its wall-clock budget (a failure of 'time'; the other checks discard the run) */
+class OverBudget extends Error {}
+
+/** the slowest step seen per property, for the report */
+const worst: Record<string, number> = {}
+/** what the runs of a property exercised: runs, steps, most balls at once, energy or overlap checks made, events by type */
+const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; events: Record<string, number> }> = {}
+
+const PANEL_MODES = new Set(['rolling', 'rimRoll', 'resting'])
+const clampCoord = (v: number) => Math.max(-1e9, Math.min(1e9, v))
+const lit = (v: unknown) => JSON.stringify(v).replace(/"(\w+)":/g, '$1: ').replace(/,/g, ', ')
+
+function kinetic(sim: BallPhysics): number {
+  const B = sim.world.Ball
+  const m = sim.world.collide!.mass
+  let ke = 0
+  for (const b of sim.balls()) ke += 0.5 * m[b]! * (B.vx[b]! * B.vx[b]! + B.vy[b]! * B.vy[b]!)
+  return ke
+}
+
+function worstOverlap(sim: BallPhysics): { depth: number; a: number; b: number } {
+  const B = sim.world.Ball
+  const on = sim.balls().filter((b) => PANEL_MODES.has(BALL_MODE_NAMES[B.mode[b]!]!))
+  const out = { depth: 0, a: 0, b: 0 }
+  for (let i = 0; i < on.length; i++) {
+    for (let j = i + 1; j < on.length; j++) {
+      const p = on[i]!
+      const q = on[j]!
+      const depth = B.radius[p]! + B.radius[q]! - Math.hypot(B.x[p]! - B.x[q]!, B.y[p]! - B.y[q]!)
+      if (depth > out.depth) Object.assign(out, { depth, a: p, b: q })
+    }
+  }
+  return out
+}
+
+/** Applies `ops` (then SETTLE_STEPS steps of 1/60 s) and checks `checks` after every call; throws on a violation. */
+function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonly Check[]): void {
+  const on = (c: Check) => checks.includes(c)
+  const overrides = { METHOD: 'exact', BALL_COLLISIONS: cfg.contacts, BALL_RESTITUTION: cfg.e, ROLLING_DECEL: cfg.decel } as const
+  const sim = createBallPhysics(overrides)
+  const calls: string[] = []
+  const log = (s: string) => {
+    const last = calls.length - 1
+    const m = last >= 0 ? /^(?:for \(let i = 0; i < (\d+); i\+\+\) )?(sim\.step\(.*\))$/.exec(calls[last]!) : null
+    if (m && s === m[2]) calls[last] = `for (let i = 0; i < ${Number(m[1] ?? 1) + 1}; i++) ${s}`
+    else calls.push(s)
+  }
+  const repro = () => `const sim = createBallPhysics(${lit(overrides)})\n${calls.join('\n')}`
+  let stepStart = 0
+  sim.schedule.push({
+    name: 'watchdog',
+    run: () => {
+      const ms = performance.now() - stepStart
+      if (ms > STEP_BUDGET_MS) throw new OverBudget(`step still running after ${ms.toFixed(0)} ms (pass ${sim.world.pass})`)
+    },
+  })
+  const all: Op[] = [...ops, ...Array.from({ length: SETTLE_STEPS }, (): Op => ({ t: 'step', dt: 1 / 60 }))]
+  let lastEvent = -Infinity
+  let lastSpawn = 0
+  let stepping = 0
+  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, events: {} })
+  stats.runs++
+  const ball = (k: number) => {
+    const bs = sim.balls()
+    return bs.length === 0 ? 0 : bs[k % bs.length]!
+  }
+  /** where a spawn goes, and for an aimed one the direction it goes in */
+  const spot = (op: { x: number; y: number; radius?: number; place: Place }): { x: number; y: number; dir?: { ux: number; uy: number }; speed?: number } => {
+    const pl = op.place
+    if (pl.p === 'free') return { x: op.x, y: op.y }
+    if (pl.p === 'aim') {
+      const hs = sim.holes()
+      if (hs.length === 0) return { x: op.x, y: op.y }
+      const h = sim.holeState(hs[pl.k % hs.length]!)
+      const d = h.radius + (op.radius ?? sim.config.BALL_RADIUS) + pl.d
+      const x = clampCoord(h.x + Math.cos(pl.a) * d)
+      const y = clampCoord(h.y + Math.sin(pl.a) * d)
+      // toward the point off·R to the side of the centre
+      const tx = h.x - Math.sin(pl.a) * pl.off * h.radius - x
+      const ty = h.y + Math.cos(pl.a) * pl.off * h.radius - y
+      const len = Math.hypot(tx, ty)
+      if (!(len > 0)) return { x, y }
+      const dir = { ux: tx / len, uy: ty / len }
+      if (pl.lip === undefined) return { x, y, dir }
+      // the start speed that crosses the lip at `lip` px/s after rolling to it at ROLLING_DECEL
+      const cx = h.x - x
+      const cy = h.y - y
+      const delta = Math.abs(cx * dir.uy - cy * dir.ux)
+      const toLip = Math.max(0, cx * dir.ux + cy * dir.uy - Math.sqrt(Math.max(0, h.radius * h.radius - delta * delta)))
+      return { x, y, dir, speed: Math.sqrt(pl.lip * pl.lip + 2 * sim.config.ROLLING_DECEL * toLip) }
+    }
+    if (pl.p === 'inHole') {
+      const hs = sim.holes()
+      if (hs.length === 0) return { x: op.x, y: op.y }
+      const h = sim.holeState(hs[pl.k % hs.length]!)
+      const d = pl.f * h.radius * 0.999
+      return { x: clampCoord(h.x + Math.cos(pl.a) * d), y: clampCoord(h.y + Math.sin(pl.a) * d) }
+    }
+    const b = ball(pl.k)
+    if (b === 0) return { x: op.x, y: op.y }
+    const s = sim.ballState(b)
+    if (pl.p === 'stack') return { x: s.x, y: s.y }
+    const d = ((s.radius + (op.radius ?? sim.config.BALL_RADIUS)) * pl.f) / 2
+    return { x: clampCoord(s.x + Math.cos(pl.a) * d), y: clampCoord(s.y + Math.sin(pl.a) * d) }
+  }
+  const fail = (what: string) => {
+    throw new Violation(`${what}\n--- repro (the failing call is the last one):\n${repro()}`)
+  }
+
+  for (const op of all) {
+    const t0 = sim.time
+    const ke0 = on('energy') && op.t === 'step' && cfg.contacts === 'on' ? kinetic(sim) : 0
+    switch (op.t) {
+      case 'addBall':
+      case 'throw': {
+        const p = spot(op)
+        const opt = { ...(op.radius === undefined ? {} : { radius: op.radius }), ...(op.mass === undefined ? {} : { mass: op.mass }) }
+        if (op.t === 'addBall') {
+          const s = p.speed ?? Math.max(Math.hypot(op.vx, op.vy), p.dir ? 50 : 0) // an aimed shot keeps its speed (at least 50 px/s)
+          const spec = p.dir ? { x: p.x, y: p.y, vx: s * p.dir.ux, vy: s * p.dir.uy, ...opt } : { x: p.x, y: p.y, vx: op.vx, vy: op.vy, ...opt }
+          log(`sim.addBall(${lit(spec)}) // ${sim.addBall(spec)}`)
+        } else {
+          const angle = p.dir ? Math.atan2(p.dir.ux, -p.dir.uy) : op.angle
+          const spec = { x: p.x, y: p.y, power: op.power, angle, ...opt }
+          log(`sim.throwBall(${lit(spec)}) // ${sim.throwBall(spec)}`)
+        }
+        lastSpawn = sim.time
+        break
+      }
+      case 'burst': {
+        let a = op.seed * 7919 + 1
+        const r = () => (a = (a * 16807) % 2147483647) / 2147483647
+        // an aimed burst is a volley: every ball in the same direction, at least 50 px/s
+        const at = op.aim ? spot({ x: op.x, y: op.y, ...(op.radius === undefined ? {} : { radius: op.radius }), place: op.aim }) : { x: op.x, y: op.y }
+        const v = at.speed ?? (at.dir ? Math.max(op.speed, 50) : op.speed)
+        for (let j = 0; j < op.n; j++) {
+          const g = r() * 2 * Math.PI
+          const spec = {
+            x: clampCoord(at.x + (r() - 0.5) * op.spread),
+            y: clampCoord(at.y + (r() - 0.5) * op.spread),
+            vx: at.dir ? v * at.dir.ux : v * Math.sin(g),
+            vy: at.dir ? v * at.dir.uy : -v * Math.cos(g),
+            ...(op.radius === undefined ? {} : { radius: op.radius }),
+            ...(op.mass === undefined ? {} : { mass: op.mass }),
+          }
+          log(`sim.addBall(${lit(spec)}) // ${sim.addBall(spec)}`)
+        }
+        lastSpawn = sim.time
+        break
+      }
+      case 'addHole': {
+        const r = op.radius ?? sim.config.HOLE_RADIUS
+        const clash = sim.holes().some((h) => {
+          const s = sim.holeState(h)
+          return Math.hypot(s.x - op.x, s.y - op.y) < s.radius + r + 1e-6
+        })
+        if (clash) break
+        const spec = { x: op.x, y: op.y, ...(op.radius === undefined ? {} : { radius: op.radius }) }
+        log(`sim.addHole(${lit(spec)}) // ${sim.addHole(spec)}`)
+        break
+      }
+      case 'removeHole': {
+        const hs = sim.holes()
+        if (hs.length === 0) break
+        const h = hs[op.k % hs.length]!
+        sim.removeHole(h)
+        log(`sim.removeHole(${h})`)
+        break
+      }
+      case 'removeBall': {
+        const b = ball(op.k)
+        if (b === 0) break
+        sim.removeBall(b)
+        log(`sim.removeBall(${b})`)
+        break
+      }
+      case 'setVel': {
+        const b = ball(op.k)
+        if (b === 0) break
+        const mode = sim.ballState(b).mode
+        if (mode === 'captured' || mode === 'out') break
+        sim.setBallVelocity(b, op.vx, op.vy)
+        log(`sim.setBallVelocity(${b}, ${op.vx}, ${op.vy})`)
+        break
+      }
+      case 'walls': {
+        const maxX = clampCoord(op.minX + op.w)
+        const maxY = clampCoord(op.minY + op.h)
+        const spec = {
+          minX: op.minX,
+          minY: op.minY,
+          maxX: maxX > op.minX ? maxX : op.minX + 1,
+          maxY: maxY > op.minY ? maxY : op.minY + 1,
+          ...(op.e === undefined ? {} : { restitution: op.e }),
+          ...(op.open === undefined ? {} : { open: op.open }),
+        }
+        sim.setWalls(spec)
+        log(`sim.setWalls(${lit(spec)})`)
+        break
+      }
+      case 'clearWalls':
+        sim.clearWalls()
+        log('sim.clearWalls()')
+        break
+      case 'step': {
+        log(`sim.step(${op.dt})`)
+        stepStart = performance.now()
+        try {
+          sim.step(op.dt)
+        } catch (err) {
+          if (err instanceof OverBudget && on('time')) fail(`slow step: ${err.message}`)
+          throw err
+        }
+        const ms = performance.now() - stepStart
+        stepping += ms
+        worst[name] = Math.max(worst[name] ?? 0, ms)
+        if (ms > STEP_BUDGET_MS || stepping > RUN_BUDGET_MS) {
+          const what = ms > STEP_BUDGET_MS ? `step took ${ms.toFixed(0)} ms` : `steps took ${stepping.toFixed(0)} ms in all`
+          if (on('time')) fail(`slow: ${what}`)
+          throw new OverBudget(what)
+        }
+        break
+      }
+    }
+    const t1 = sim.time
+    const events: BallEvent[] = sim.drainEvents()
+    if (op.t === 'step') stats.steps++
+    stats.balls = Math.max(stats.balls, sim.balls().length)
+    for (const e of events) stats.events[e.type] = (stats.events[e.type] ?? 0) + 1
+    if (on('events')) {
+      for (const e of events) {
+        if (!(e.time >= lastEvent)) fail(`event order: ${lit(e)} drained after an event at ${lastEvent}`)
+        if (!(e.time >= t0 && e.time <= t1)) fail(`event window: ${lit(e)} outside the call's window [${t0}, ${t1}]`)
+        lastEvent = e.time
+      }
+    }
+    if (on('finite')) {
+      const w = sim.world
+      for (const b of sim.balls()) {
+        for (const [store, schema, label] of [[w.Ball, BallSchema, 'Ball'], [w.Path, PathSchema, 'Path']] as const) {
+          for (const key of Object.keys(schema)) {
+            const v = (store as unknown as Record<string, ArrayLike<number>>)[key]![b]!
+            if (!Number.isFinite(v)) fail(`non-finite store: ${label}.${key}[${b}] = ${v}`)
+          }
+        }
+        const m = w.Ball.mode[b]!
+        if (BALL_MODE_NAMES[m] === undefined) fail(`bad mode: Ball.mode[${b}] = ${m}`)
+      }
+    }
+    if (on('energy') && op.t === 'step' && cfg.contacts === 'on' && events.some((e) => e.type === 'collision') && !events.some((e) => e.type === 'wall')) {
+      const ke1 = kinetic(sim)
+      stats.checked++
+      if (ke1 > ke0 * (1 + 1e-9) + 1e-9) fail(`energy rise: kinetic energy ${ke0} -> ${ke1} over a step with collisions and no wall event`)
+    }
+    if (on('overlap') && cfg.contacts === 'on' && sim.time - lastSpawn >= 0.5) {
+      const o = worstOverlap(sim)
+      stats.checked++
+      if (o.depth > 1e-3) fail(`overlap: balls ${o.a} and ${o.b} overlap by ${o.depth} px at t = ${sim.time} (last spawn at ${lastSpawn})`)
+    }
+  }
+}
+
+/** A property over `arb`: checks `checks`; a run over budget fails 'time' and is discarded by the others. */
+function property(name: string, arb: fc.Arbitrary<[Cfg, Op[]]>, checks: readonly Check[], numRuns: number, seed: number): void {
+  fc.assert(
+    fc.property(arb, ([cfg, ops]) => {
+      try {
+        runScenario(name, cfg, ops, checks)
+      } catch (err) {
+        if (err instanceof OverBudget) {
+          seen[name]!.discarded++
+          fc.pre(false)
+        }
+        throw err
+      }
+    }),
+    { seed, numRuns, interruptAfterTimeLimit: 120_000, markInterruptAsFailure: true },
+  )
+  console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
+}
+
+// ---------------------------------------------------------------- the properties
+
+/** no radius above 200 px or below 2 px (a smaller ball's default mass (r/11)³ is below 0.006), given masses
+ * within 1e-3…1e3 (with default masses up to 6,000: ratios up to about 1e7 instead of 1e18), no walls
+ * narrower than a ball: what the runaway steps need */
+const NO_RUNAWAY: Limits = { radius: [2, 200], huge: false, mass: [1e-3, 1e3], narrowWalls: false, holes: true, burst: 30, walls: true }
+/** as NO_RUNAWAY, and no holes: no rim rolls */
+const NO_RUNAWAY_NO_HOLES: Limits = { ...NO_RUNAWAY, holes: false }
+/** full ranges without walls: a step with a wall event is not checked for energy, and with walls most steps have one */
+const FULL_NO_WALLS: Limits = { ...FULL, walls: false }
+
+describe('adversarial API sequences (fast-check, seeded)', () => {
+  it('every element of every Ball and Path store of every live ball stays finite; every mode is a BALL_MODE_NAMES mode', () => {
+    property('finite', scenario(FULL), ['finite'], 100, SEED + 1)
+  }, 120_000)
+
+  it('drained events never go back in time, and each lies in the window of the call that reported it', () => {
+    property('events', scenario(FULL), ['events'], 100, SEED + 2)
+  }, 120_000)
+
+  it('contacts on: kinetic energy does not rise across a step with collisions and no wall event', () => {
+    property('energy', scenario(FULL, ['on']), ['energy'], 60, SEED + 3)
+  }, 120_000)
+
+  it('contacts on, no walls: kinetic energy does not rise across a step with collisions', () => {
+    property('energy (no walls)', scenario(FULL_NO_WALLS, ['on']), ['energy'], 120, SEED + 8)
+  }, 120_000)
+
+  // fails: contacts on, a step's cost grows with the square of its events (a ball wider than the walls, a crowd with mass ratios ≥ 1e4) and a squeezed light ball holds every step at the pass cap; see 'shrunk counterexamples'
+  it.skip('every step returns within 2 s, and a run of 65 steps within 5 s (full ranges)', () => {
+    property('time', scenario(FULL), ['time'], 60, SEED + 4)
+  }, 300_000)
+
+  // narrowed (NO_RUNAWAY: radii 2…200 px, given masses 1e-3…1e3, no walls narrower than a ball) so that the
+  // failures above do not hide everything else
+  it('every step returns within 2 s, and a run of 65 steps within 5 s (radii 2…200 px, masses 1e-3…1e3, no walls narrower than a ball)', () => {
+    property('time (narrowed)', scenario(NO_RUNAWAY), ['time'], 80, SEED + 5)
+  }, 120_000)
+
+  // fails: a rim roll starts with the centre moved out from the contact circle (R − r/2) to the lip circle (R), into a ball touching it; with e = 0 the two stay overlapped
+  it.skip('contacts on: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px (radii 2…200 px, masses 1e-3…1e3)', () => {
+    property('overlap', scenario(NO_RUNAWAY, ['on']), ['overlap'], 60, SEED + 6)
+  }, 300_000)
+
+  // narrowed further (no holes, so no rim rolls) so that the failure above does not hide others
+  it('contacts on, no holes: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
+    property('overlap (no holes)', scenario(NO_RUNAWAY_NO_HOLES, ['on']), ['overlap'], 100, SEED + 7)
+  }, 120_000)
+})
+
+// ---------------------------------------------------------------- shrunk counterexamples
+
+/** A step function for `sim` under a watchdog (a runaway step is cut at 5 × STEP_BUDGET_MS); returns its wall-clock ms. */
+function guarded(sim: BallPhysics): (dt: number) => number {
+  let start = 0
+  sim.schedule.push({
+    name: 'watchdog',
+    run: () => {
+      if (performance.now() - start > 5 * STEP_BUDGET_MS) throw new Error(`step still running after ${5 * STEP_BUDGET_MS} ms`)
+    },
+  })
+  return (dt) => {
+    start = performance.now()
+    sim.step(dt)
+    return performance.now() - start
+  }
+}
+
+describe('shrunk counterexamples of the failing properties', () => {
+  // fails: one step of 1/60 s takes about 4.4 s (1,024 wall events at one instant; each event pass walks every swept-capsule entry the step made before it); one such ball alone takes 0.9–1.5 s per step
+  it.skip('contacts on: three balls of radius 640, each wider than the walls, step in under 2 s', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 4800, restitution: 1 })
+    for (let i = 0; i < 3; i++) sim.addBall({ x: 210, y: 700 + 1300 * i, vx: 100, vy: 0, radius: 640 })
+    expect(guarded(sim)(1 / 60)).toBeLessThan(STEP_BUDGET_MS)
+  }, 60_000)
+
+  // fails: steps of 0.15, 0.25, 0.6, 1.4, 2.7, 7.4, 12.6, 16.5 s (2,782 … 37,365 events per step: light balls pumped fast by heavy ones; the cost per event grows with the events already handled in the step)
+  it.skip('contacts on: 300 balls of masses 100 and 0.01 in the panel at 5,000 px/s step in under 2 s', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    let seed = 12345
+    const rnd = () => (seed = (seed * 16807) % 2147483647) / 2147483647
+    for (let i = 0; i < 300; i++) {
+      const a = rnd() * 2 * Math.PI
+      sim.addBall({ x: 11 + rnd() * 398, y: 11 + rnd() * 458, vx: 5000 * Math.sin(a), vy: -5000 * Math.cos(a), mass: rnd() < 0.5 ? 100 : 0.01 })
+    }
+    const step = guarded(sim)
+    for (let i = 0; i < 8; i++) expect(step(1 / 60)).toBeLessThan(STEP_BUDGET_MS)
+  }, 120_000)
+
+  // fails: about 3.7 s per step (38,656 wall events, all at one instant: MAX_EVENT_PASSES × (moving + 1) passes)
+  it.skip('contacts on: 150 balls in walls 5 px wide step in under 2 s', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 5, maxY: 4800, restitution: 1 })
+    for (let i = 0; i < 150; i++) sim.addBall({ x: 2.5, y: 20 + 30 * i, vx: 100, vy: 0 })
+    expect(guarded(sim)(1 / 60)).toBeLessThan(STEP_BUDGET_MS)
+  }, 60_000)
+
+  // fails: the bystander stops at x ≈ 124.5: every step from t ≈ 0.25 s runs out of passes (1,024 contacts and wall hits of the tiny ball) and the whole world waits
+  it.skip('contacts on: a tiny ball pressed against a wall by a default ball does not stop a ball far away', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    sim.addBall({ x: 20, y: 240, vx: 0, vy: 0, radius: 0.001 }) // default mass (0.001/11)³ ≈ 7.5e-13
+    sim.addBall({ x: 60, y: 240, vx: -200, vy: 0 })
+    const bystander = sim.addBall({ x: 100, y: 50, vx: 100, vy: 0 })
+    const step = guarded(sim)
+    for (let i = 0; i < 120; i++) step(1 / 60)
+    expect(sim.ballState(bystander).x).toBeCloseTo(300, 3) // 2 s at 100 px/s, nothing in its way
+  }, 60_000)
+
+  // fails: steps of up to about 2.9 s, and the bystander moves 28 px of its 200
+  it.skip('contacts on: a light ball between two heavy ones approaching each other: steps under 2 s, the world goes on', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.addBall({ x: 0, y: 0, vx: 100, vy: 0, mass: 1e9 })
+    sim.addBall({ x: 50, y: 0, vx: 0, vy: 0, mass: 1e-9 })
+    sim.addBall({ x: 100, y: 0, vx: -100, vy: 0, mass: 1e9 })
+    const bystander = sim.addBall({ x: 0, y: 300, vx: 100, vy: 0 })
+    const step = guarded(sim)
+    let worstMs = 0
+    for (let i = 0; i < 120; i++) worstMs = Math.max(worstMs, step(1 / 60))
+    expect(worstMs).toBeLessThan(STEP_BUDGET_MS)
+    expect(sim.ballState(bystander).x).toBeCloseTo(200, 3)
+  }, 600_000)
+
+  // fails: at t = 0.384432 ball 2 starts a rim roll and a collision with ball 3 at the same instant; from then on they overlap by 1.2058 px and roll together
+  it.skip('contacts on: a ball starting a rim roll does not end up inside the ball touching it', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.addHole({ x: 290, y: 310 })
+    const a = sim.throwBall({ x: 210, y: 450, power: 0, angle: 0.6, radius: 5 })
+    const b = sim.throwBall({ x: 210, y: 450, power: 0.633, angle: 0.6 }) // held until a clears the spot, then catches it up
+    for (let i = 0; i < 31; i++) sim.step(1 / 60)
+    const A = sim.ballState(a)
+    const B = sim.ballState(b)
+    expect(Math.hypot(A.x - B.x, A.y - B.y)).toBeGreaterThanOrEqual(5 + 11 - 1e-3)
+  })
+})
