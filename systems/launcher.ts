@@ -10,13 +10,10 @@
 // without one. The rest wait for later steps.
 // Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact.
 import { BallMode } from '../components/Ball.js'
-import { RimMode } from '../components/RimContact.js'
 import { MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
 import { spotTaken } from '../src/contacts/spot.js'
-import { launchBall } from '../src/motion/ballFate.js'
+import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
-import { holeAt } from '../src/world/holeTable.js'
-import { acquireRim } from '../src/world/rimSlots.js'
 
 export function launcherSystem(w: BallWorld): void {
   if (w.pass !== 0 || w.held.count === 0) return
@@ -43,7 +40,7 @@ export function launcherSystem(w: BallWorld): void {
       last = eid
       continue
     }
-    release(w, eid)
+    placeBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!)
   }
   q.count = kept
 }
@@ -54,18 +51,4 @@ function overlaps(w: BallWorld, a: number, b: number): boolean {
   const dy = B.y[a]! - B.y[b]!
   const s = B.radius[a]! + B.radius[b]!
   return dx * dx + dy * dy < s * s
-}
-
-/** Launches a held ball from its spot now, as addBall would have (in transit if inside a lip circle). */
-function release(w: BallWorld, eid: number): void {
-  const B = w.Ball
-  const x = B.x[eid]!
-  const y = B.y[eid]!
-  const inside = holeAt(w, x, y)
-  if (inside !== 0) {
-    const slot = acquireRim(w, eid)
-    w.RimContact.hole[slot] = inside
-    w.RimContact.mode[slot] = RimMode.Transit
-  }
-  launchBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!, w.time)
 }

@@ -5,13 +5,12 @@ import { removeEntity } from 'bitecs'
 import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../../components/Ball.js'
 import { RimMode } from '../../components/RimContact.js'
 import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED } from '../config/limits.js'
-import { launchBall } from '../motion/ballFate.js'
+import { launchBall, placeBall } from '../motion/ballFate.js'
 import { sampleRimRoll } from '../motion/rimRoll.js'
 import { sampleRolling } from '../motion/rolling.js'
 import { addBallEntity, forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { holeAt } from '../world/holeTable.js'
-import { acquireRim, rimSlot } from '../world/rimSlots.js'
+import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
 import { spotTaken } from '../contacts/spot.js'
@@ -88,13 +87,7 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
     pushId(w.held, eid)
     return eid
   }
-  const inside = holeAt(w, x, y)
-  if (inside !== 0) {
-    const slot = acquireRim(w, eid)
-    w.RimContact.hole[slot] = inside
-    w.RimContact.mode[slot] = RimMode.Transit
-  }
-  launchBall(w, eid, x, y, vx, vy, w.time)
+  placeBall(w, eid, x, y, vx, vy)
   return eid
 }
 

@@ -20,24 +20,27 @@ export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: n
     const s = r + B.radius[b]!
     if (dx * dx + dy * dy < s * s) return true
   }
-  const near = (b: number): boolean => {
-    if (b === self || B.mode[b] !== BallMode.Resting) return false
-    const dx = B.x[b]! - x
-    const dy = B.y[b]! - y
-    const s = r + B.radius[b]!
-    return dx * dx + dy * dy < s * s
-  }
-  for (let i = 0; i < C.bigRestCount; i++) if (near(C.bigRest[i]!)) return true
+  for (let i = 0; i < C.bigRestCount; i++) if (near(w, C.bigRest[i]!, self, x, y, r)) return true
   if (C.restCount === 0) return false
   const rMask = C.restHead.length - 1
   const reach = r + C.maxRadius
   if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
-    for (let i = 0; i <= rMask; i++) for (let b = C.restHead[i]!; b !== 0; b = C.restNext[b]!) if (near(b)) return true
+    for (let i = 0; i <= rMask; i++) for (let b = C.restHead[i]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r)) return true
     return false
   }
   const k = capsuleCells(C, x, y, x, y, reach, rMask)
   for (let i = 0; i < k; i++) {
-    for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) if (near(b)) return true
+    for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r)) return true
   }
   return false
+}
+
+/** A resting ball b other than `self` overlapping the circle (x, y, r). */
+function near(w: BallWorld, b: number, self: number, x: number, y: number, r: number): boolean {
+  const B = w.Ball
+  if (b === self || B.mode[b] !== BallMode.Resting) return false
+  const dx = B.x[b]! - x
+  const dy = B.y[b]! - y
+  const s = r + B.radius[b]!
+  return dx * dx + dy * dy < s * s
 }

@@ -1,9 +1,11 @@
 // The transitions that end or restart a ball's motion: capture, rest, launch, and the hole events they emit.
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
+import { RimMode } from '../../components/RimContact.js'
+import { holeAt } from '../world/holeTable.js'
 import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from '../events.js'
 import { addMoving, removeMoving } from '../world/idLists.js'
-import { releaseRim } from '../world/rimSlots.js'
+import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { NEVER } from '../config/tolerances.js'
@@ -67,4 +69,18 @@ export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: 
   startPath(w, eid, x, y, vx, vy, t)
   planRolling(w, eid)
   addMoving(w, eid)
+}
+
+/**
+ * Puts a new ball on the panel at (x, y), moving, now. A ball put down inside a lip circle is in transit
+ * through that hole: no decision is made for it there, and if it stops before leaving, it falls in.
+ */
+export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number): void {
+  const inside = holeAt(w, x, y)
+  if (inside !== 0) {
+    const slot = acquireRim(w, eid)
+    w.RimContact.hole[slot] = inside
+    w.RimContact.mode[slot] = RimMode.Transit
+  }
+  launchBall(w, eid, x, y, vx, vy, w.time)
 }
