@@ -7,6 +7,7 @@ import { bounceSystem } from '../systems/bounce.js'
 import { captureSystem } from '../systems/capture.js'
 import { collisionsSystem } from '../systems/collisions.js'
 import { cogGateSystem } from '../systems/cogGate.js'
+import { fixedContactsSystem } from '../systems/fixedContacts.js'
 import { heroReferenceSystem } from '../systems/heroReference.js'
 import { integrationSystem } from '../systems/integration.js'
 import { launcherSystem } from '../systems/launcher.js'
@@ -23,13 +24,14 @@ import type { ScheduleEntry } from './world/system.js'
 
 export type { ScheduleEntry, System } from './world/system.js'
 /**
- * the launcher (held balls whose spots are clear; a no-op unless BALL_COLLISIONS is 'on' and a ball is
- * held), integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
+ * the launcher (held balls whose spots are clear; a no-op unless contacts are on and a ball is held), the
+ * fixed-tick contact solve (a no-op unless BALL_COLLISIONS is 'fixed' and a contact tick starts the pass), integration, the hero ball's reference (only balls flagged hero; docs/physical.md), skip-over (Stage 5),
  * capture (Stage 1), COG gate (Stage 6), bounce (Stages 2, 4), rim-roll (Stage 3), then the panel's walls
  * (a no-op in a world without walls), then ball-ball contacts (a no-op unless BALL_COLLISIONS is 'on').
  */
 export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'launcher', run: launcherSystem }),
+  Object.freeze({ name: 'fixedContacts', run: fixedContactsSystem }),
   Object.freeze({ name: 'integration', run: integrationSystem }),
   Object.freeze({ name: 'heroReference', run: heroReferenceSystem }),
   Object.freeze({ name: 'skipOver', run: skipOverSystem }),
@@ -71,7 +73,31 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
 }
 
 function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
-  world.tickEnd = world.time + dt
+  const end = world.time + dt
+  const F = world.fixed
+  if (F === null) {
+    runWindow(world, schedule, end)
+    return
+  }
+  // fixed-tick contacts: the step is split at the contact ticks k·CONTACT_TICK (the same instants at every
+  // frame rate); the window that starts at a tick solves the contacts in its first pass
+  for (;;) {
+    const tick = F.nextTick * F.tick
+    if (tick <= world.time) {
+      F.due = true
+      F.nextTick++
+      continue
+    }
+    const stop = tick < end ? tick : end
+    runWindow(world, schedule, stop)
+    F.due = false
+    if (stop === end) return
+  }
+}
+
+/** Runs the passes from the world's time to tEnd. */
+function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {
+  world.tickEnd = tEnd
   // with ball-ball contacts a pass handles one event, so the bound is per moving ball
   const maxPasses = world.collide === null ? world.config.MAX_EVENT_PASSES : world.config.MAX_EVENT_PASSES * (world.moving.count + 1)
   for (world.pass = 0; world.pass < maxPasses; world.pass++) {

@@ -27,7 +27,7 @@ export interface BallSpec {
   hero?: boolean
   /**
    * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
-   * (same density). Used only when config.BALL_COLLISIONS is 'on'.
+   * (same density). Used only when config.BALL_COLLISIONS is 'on' or 'fixed'.
    */
   mass?: number
 }
@@ -76,8 +76,9 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
   w.Ball.radius[eid] = radius
   w.Ball.hero[eid] = hero ? 1 : 0
   if (w.collide !== null) w.collide.mass[eid] = mass
+  if (w.fixed !== null) w.fixed.mass[eid] = mass
   // with contacts on, a ball put down where another is waits there until its spot is clear (systems/launcher.ts)
-  if (w.collide !== null && spotTaken(w, eid, x, y, radius)) {
+  if ((w.collide !== null || w.fixed !== null) && spotTaken(w, eid, x, y, radius)) {
     const B = w.Ball
     B.x[eid] = x
     B.y[eid] = y

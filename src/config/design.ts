@@ -9,8 +9,11 @@ import { CONSISTENCY_TOLERANCE } from './tolerances.js'
 export const METHODS = ['exact', 'naive', 'v1'] as const
 export type SimulationMethod = (typeof METHODS)[number]
 
-/** Ball-ball contacts: off (the default: balls pass through each other) or on (src/collide.ts). */
-export const COLLISION_MODES = ['off', 'on'] as const
+/**
+ * Ball-ball contacts: off (the default: balls pass through each other), on (exact: each contact at its
+ * instant, systems/collisions.ts) or fixed (solved at fixed ticks of CONTACT_TICK, systems/fixedContacts.ts).
+ */
+export const COLLISION_MODES = ['off', 'on', 'fixed'] as const
 export type CollisionMode = (typeof COLLISION_MODES)[number]
 
 export interface BallPhysicsConfig {
@@ -57,8 +60,15 @@ export interface BallPhysicsConfig {
   METHOD: SimulationMethod
   /** Sub-steps per step for the tick-sampled methods ('naive', 'v1'); 'exact' ignores it. */
   SUBSTEPS: number
-  /** Ball-ball contacts: 'off' (default; model no more than a scene needs) or 'on' (needs METHOD 'exact'). */
+  /**
+   * Ball-ball contacts: 'off' (default; model no more than a scene needs), 'on' (exact, event-driven) or
+   * 'fixed' (solved every CONTACT_TICK; for dense scenes). Both need METHOD 'exact' (README: which to pick).
+   */
   BALL_COLLISIONS: CollisionMode
+  /** With BALL_COLLISIONS 'fixed': the contact tick, s; contacts are solved at k·CONTACT_TICK. */
+  CONTACT_TICK: number
+  /** With BALL_COLLISIONS 'fixed': most sweeps per tick of the velocity solve and of the overlap projection. */
+  CONTACT_ITERATIONS: number
   /** e between two balls, normal coefficient of restitution, [0, 1]. */
   BALL_RESTITUTION: number
   /**
@@ -109,6 +119,8 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   METHOD: 'exact',
   SUBSTEPS: 1,
   BALL_COLLISIONS: 'off',
+  CONTACT_TICK: 1 / 240,
+  CONTACT_ITERATIONS: 4,
   BALL_RESTITUTION: 0.9,
   BALL_SETTLE_SPEED: 1,
 })
@@ -153,6 +165,8 @@ export const CONFIG_RANGES: Readonly<Record<NumericKey, Readonly<Range>>> = Obje
   MAX_STEP: { min: 0, max: 10, minOpen: true },
   MAX_EVENT_PASSES: { min: 1, max: 1e6, integer: true },
   SUBSTEPS: { min: 1, max: 64, integer: true },
+  CONTACT_TICK: { min: 1e-4, max: 0.1 },
+  CONTACT_ITERATIONS: { min: 1, max: 64, integer: true },
   BALL_RESTITUTION: { min: 0, max: 1 },
   BALL_SETTLE_SPEED: { min: 0, max: 1e6 },
 })
@@ -212,8 +226,8 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
     }
     out[key as NumericKey] = checkKey(key as NumericKey, value)
   }
-  if (out.BALL_COLLISIONS === 'on' && out.METHOD !== 'exact') {
-    throw new RangeError(`config.BALL_COLLISIONS 'on' needs config.METHOD 'exact', got '${out.METHOD}'`)
+  if (out.BALL_COLLISIONS !== 'off' && out.METHOD !== 'exact') {
+    throw new RangeError(`config.BALL_COLLISIONS '${out.BALL_COLLISIONS}' needs config.METHOD 'exact', got '${out.METHOD}'`)
   }
   if (out.MAX_VY < out.MIN_VY) {
     throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)

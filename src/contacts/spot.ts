@@ -9,7 +9,7 @@ import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
 export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
   const C = w.collide
-  if (C === null) return false
+  if (C === null) return w.fixed !== null && takenFixed(w, self, x, y, r)
   const B = w.Ball
   const balls = w.moving.dense
   for (let i = 0, n = w.moving.count; i < n; i++) {
@@ -43,4 +43,20 @@ function near(w: BallWorld, b: number, self: number, x: number, y: number, r: nu
   const dy = B.y[b]! - y
   const s = r + B.radius[b]!
   return dx * dx + dy * dy < s * s
+}
+
+/** With the fixed-tick method (no resting grid): every ball on the panel, in id order. */
+function takenFixed(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
+  const B = w.Ball
+  const top = Math.min(B.live.length, w.entityIndex.maxId + 1)
+  for (let b = 1; b < top; b++) {
+    if (b === self || B.live[b] !== 1) continue
+    const m = B.mode[b]
+    if (m !== BallMode.Rolling && m !== BallMode.RimRoll && m !== BallMode.Resting) continue
+    const dx = B.x[b]! - x
+    const dy = B.y[b]! - y
+    const s = r + B.radius[b]!
+    if (dx * dx + dy * dy < s * s) return true
+  }
+  return false
 }

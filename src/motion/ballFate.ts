@@ -72,15 +72,15 @@ export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: 
 }
 
 /**
- * Puts a new ball on the panel at (x, y), moving, now. A ball put down inside a lip circle is in transit
- * through that hole: no decision is made for it there, and if it stops before leaving, it falls in.
+ * Puts a ball on the panel at (x, y), moving, at time t (default now). A ball put down inside a lip circle
+ * is in transit through that hole: no decision is made for it there, and if it stops before leaving, it falls in.
  */
-export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number): void {
+export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t = w.time): void {
   const inside = holeAt(w, x, y)
   if (inside !== 0) {
     const slot = acquireRim(w, eid)
     w.RimContact.hole[slot] = inside
     w.RimContact.mode[slot] = RimMode.Transit
   }
-  launchBall(w, eid, x, y, vx, vy, w.time)
+  launchBall(w, eid, x, y, vx, vy, t)
 }

@@ -41,6 +41,7 @@ export function adoptBall(world: BallWorld, eid: number): void {
     C.partner[eid] = 0
     C.lastContact[eid] = NO_CONTACT
   }
+  if (world.fixed !== null) world.fixed.mass[eid] = 1
   for (let i = 0; i < world.ballStores.length; i++) clearSlot(world.ballStores[i]!, eid)
 }
 

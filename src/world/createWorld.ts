@@ -20,6 +20,7 @@ import { createWallsStore, type WallsStore } from '../../components/Walls.js'
 import type { BallPhysicsConfig } from '../config/design.js'
 import { createEventBuffer, type EventBuffer } from '../events.js'
 import { createCollisionState, growCollisionState, type CollisionState } from './contactState.js'
+import { createFixedState, growFixedMass, type FixedContactState } from './fixedState.js'
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { createHoleTable, type HoleTable } from './holeTable.js'
@@ -71,6 +72,8 @@ export interface BallWorldData {
   events: EventBuffer
   /** ball-ball contact state when config.BALL_COLLISIONS is 'on', else null */
   collide: CollisionState | null
+  /** fixed-tick contact state when config.BALL_COLLISIONS is 'fixed', else null */
+  fixed: FixedContactState | null
   /** true while runSchedule runs (a nested step is refused) */
   stepping: boolean
   /**
@@ -131,6 +134,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     todo: createIdList(),
     events: createEventBuffer(),
     collide: config.BALL_COLLISIONS === 'on' ? createCollisionState(capacity, config.BALL_RADIUS) : null,
+    fixed: config.BALL_COLLISIONS === 'fixed' ? createFixedState(capacity, config) : null,
     stepping: false,
     ballStores: [],
     held: createIdList(16),
@@ -154,5 +158,6 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse
   if (world.collide !== null) growCollisionState(world.collide, cap)
+  if (world.fixed !== null) growFixedMass(world.fixed, cap)
   world.capacity = cap
 }

@@ -92,8 +92,9 @@ describe('ball-ball contacts (opt-in)', () => {
   })
 
   it('config: BALL_COLLISIONS names its choices, and needs the exact method', () => {
-    expect(() => createBallPhysics({ BALL_COLLISIONS: 'yes' as never })).toThrow(/BALL_COLLISIONS must be one of 'off', 'on', got 'yes'/)
+    expect(() => createBallPhysics({ BALL_COLLISIONS: 'yes' as never })).toThrow(/BALL_COLLISIONS must be one of 'off', 'on', 'fixed', got 'yes'/)
     expect(() => createBallPhysics({ BALL_COLLISIONS: 'on', METHOD: 'naive' })).toThrow(/needs config\.METHOD 'exact'/)
+    expect(() => createBallPhysics({ BALL_COLLISIONS: 'fixed', METHOD: 'v1' })).toThrow(/BALL_COLLISIONS 'fixed' needs config\.METHOD 'exact', got 'v1'/)
     expect(() => createBallPhysics({ ...ON, BALL_RESTITUTION: 1.5 })).toThrow(/BALL_RESTITUTION must be in \[0, 1\]/)
   })
 

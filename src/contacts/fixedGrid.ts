@@ -1,0 +1,251 @@
+// The fixed-tick method's broadphase (config.BALL_COLLISIONS = 'fixed'): at a contact tick, the balls on
+// the panel (rolling, on a rim or resting; not held, captured or out) are gathered in ascending id order
+// and paired when they are close enough to touch within one tick: centre distance below the sum of their
+// reaches, a reach being the radius plus the distance the ball covers in a tick. So no pair can pass
+// through each other between two ticks (the swept test), whatever the speed.
+// A uniform grid holds the balls whose reach is at most half a cell; the cell is twice the largest reach,
+// or four times the mean reach when the largest is more than four times the mean (then the wider or
+// faster balls are "big": each scans the grid rows within its reach, and the big balls are paired with
+// each other directly). Work per tick: O(balls on the panel + grid cells (at most 4 per small ball) +
+// pairs + big·(balls in reach, at most all) + big²).
+import { BallMode } from '../../components/Ball.js'
+import { WallEdge } from '../../components/Walls.js'
+import { TOUCH_GAP } from '../config/tolerances.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
+
+function onPanel(mode: number): boolean {
+  return mode === BallMode.Rolling || mode === BallMode.RimRoll || mode === BallMode.Resting
+}
+
+/** Gathers the candidates of a tick and their reaches; sets the grid cell and the near-wall list. */
+export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
+  const B = w.Ball
+  const live = B.live
+  const mode = B.mode
+  const top = Math.min(live.length, w.entityIndex.maxId + 1)
+  let n = 0
+  for (let eid = 1; eid < top; eid++) if (live[eid] === 1 && onPanel(mode[eid]!)) n++
+  reserveCandidates(F, n)
+  const tick = F.tick
+  let k = 0
+  let sum = 0
+  let max = 0
+  for (let eid = 1; eid < top; eid++) {
+    if (live[eid] !== 1 || !onPanel(mode[eid]!)) continue
+    const r = B.radius[eid]!
+    const vx = mode[eid] === BallMode.Resting ? 0 : B.vx[eid]!
+    const vy = mode[eid] === BallMode.Resting ? 0 : B.vy[eid]!
+    F.id[k] = eid
+    F.x[k] = B.x[eid]!
+    F.y[k] = B.y[eid]!
+    F.r[k] = r
+    F.vx[k] = vx
+    F.vy[k] = vy
+    F.im[k] = 1 / F.mass[eid]!
+    const reach = r + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
+    F.reach[k] = reach
+    F.changed[k] = 0
+    F.pinned[k] = 0
+    sum += reach
+    if (reach > max) max = reach
+    k++
+  }
+  F.n = n
+  F.cell = n === 0 ? 1 : max <= (4 * sum) / n ? 2 * max : (4 * sum) / n
+  markWalls(w, F)
+}
+
+/** Pins the candidates touching a closed wall and lists those that can reach one within the tick. */
+function markWalls(w: BallWorld, F: FixedContactState): void {
+  F.nearWallCount = 0
+  if (w.walls === 0) return
+  const W = w.Walls
+  const e = w.walls
+  const open = W.open[e]!
+  const minX = W.minX[e]!
+  const maxX = W.maxX[e]!
+  const minY = W.minY[e]!
+  const maxY = W.maxY[e]!
+  for (let i = 0; i < F.n; i++) {
+    const x = F.x[i]!
+    const y = F.y[i]!
+    const r = F.r[i]!
+    const reach = F.reach[i]!
+    let pin = 0
+    let near = false
+    if ((open & WallEdge.Left) === 0) {
+      if (x - r - minX <= TOUCH_GAP) pin |= WallEdge.Left
+      if (x - reach - minX <= 0) near = true
+    }
+    if ((open & WallEdge.Right) === 0) {
+      if (maxX - x - r <= TOUCH_GAP) pin |= WallEdge.Right
+      if (maxX - x - reach <= 0) near = true
+    }
+    if ((open & WallEdge.Top) === 0) {
+      if (y - r - minY <= TOUCH_GAP) pin |= WallEdge.Top
+      if (y - reach - minY <= 0) near = true
+    }
+    if ((open & WallEdge.Bottom) === 0) {
+      if (maxY - y - r <= TOUCH_GAP) pin |= WallEdge.Bottom
+      if (maxY - y - reach <= 0) near = true
+    }
+    F.pinned[i] = pin
+    if (near) F.nearWall[F.nearWallCount++] = i
+  }
+}
+
+function close(F: FixedContactState, i: number, j: number): boolean {
+  const dx = F.x[j]! - F.x[i]!
+  const dy = F.y[j]! - F.y[i]!
+  const s = F.reach[i]! + F.reach[j]!
+  return dx * dx + dy * dy < s * s
+}
+
+/**
+ * Pairs every two candidates that can touch within the tick. The small candidates are counting-sorted
+ * into a dense grid over their bounding box (at most 4n + 64 cells: the cell grows for a sparse scene),
+ * each cell is paired with itself and four neighbours ahead of it, and the big candidates scan the cells
+ * in their reach. Deterministic order: cells in row order, candidates by index within a cell.
+ */
+export function findPairs(F: FixedContactState): void {
+  const n = F.n
+  const half = F.cell / 2
+  F.pairCount = 0
+  F.bigCount = 0
+  let minX = Infinity
+  let minY = Infinity
+  let maxX = -Infinity
+  let maxY = -Infinity
+  let small = 0
+  for (let i = 0; i < n; i++) {
+    if (F.reach[i]! > half) {
+      F.big[F.bigCount++] = i
+      continue
+    }
+    small++
+    const x = F.x[i]!
+    const y = F.y[i]!
+    if (x < minX) minX = x
+    if (x > maxX) maxX = x
+    if (y < minY) minY = y
+    if (y > maxY) maxY = y
+  }
+  let cell = F.cell
+  let cols = 1
+  let rows = 1
+  if (small > 0) {
+    // about one ball a cell at least (fewer, emptier cells cost more than the tests they save)
+    const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / small)
+    if (even > 2 * cell) cell = even / 2
+    cols = Math.floor((maxX - minX) / cell) + 1
+    rows = Math.floor((maxY - minY) / cell) + 1
+    const most = 4 * small + 64
+    if (cols * rows > most) {
+      // a sparse scene: coarser cells (still at least twice every small reach)
+      cell *= Math.sqrt((cols * rows) / most) * 1.001
+      cols = Math.min(Math.floor((maxX - minX) / cell) + 1, most)
+      rows = Math.min(Math.floor((maxY - minY) / cell) + 1, Math.floor(most / cols))
+    }
+  }
+  const cells = cols * rows
+  const start = reserveCells(F, cells)
+  start.fill(0, 0, cells + 1)
+  for (let i = 0; i < n; i++) {
+    if (F.reach[i]! > half) continue
+    const c = cellOf(F.x[i]! - minX, F.y[i]! - minY, cell, cols, rows)
+    F.next[i] = c
+    start[c + 1]!++
+  }
+  for (let c = 0; c < cells; c++) start[c + 1]! += start[c]!
+  // counting sort, stable: candidates by cell, by index within a cell; their data copied in that order
+  const sx = F.sx
+  const sy = F.sy
+  const sr = F.sr
+  const si = F.si
+  for (let i = 0; i < n; i++) {
+    if (F.reach[i]! > half) continue
+    const k = F.fill[F.next[i]!]!++ + start[F.next[i]!]!
+    sx[k] = F.x[i]!
+    sy[k] = F.y[i]!
+    sr[k] = F.reach[i]!
+    si[k] = i
+  }
+  F.fill.fill(0, 0, cells)
+  // each sorted entry against the rest of its cell and the next cell in its row (one run of entries),
+  // then the three cells below (another)
+  for (let p = 0; p < small; p++) {
+    const c = F.next[si[p]!]!
+    const gy = Math.floor(c / cols)
+    const gx = c - gy * cols
+    scan(F, p, p + 1, start[gx + 1 < cols ? c + 2 : c + 1]!)
+    if (gy + 1 < rows) {
+      const d = c + cols
+      scan(F, p, start[gx > 0 ? d - 1 : d]!, start[gx + 1 < cols ? d + 2 : d + 1]!)
+    }
+  }
+  for (let k = 0; k < F.bigCount; k++) {
+    const i = F.big[k]!
+    pairBig(F, i, small, minX, minY, cell, cols, rows)
+    for (let m = k + 1; m < F.bigCount; m++) {
+      const j = F.big[m]!
+      if (close(F, i, j)) pushPair(F, i, j)
+    }
+  }
+}
+
+function cellOf(dx: number, dy: number, cell: number, cols: number, rows: number): number {
+  let gx = Math.floor(dx / cell)
+  let gy = Math.floor(dy / cell)
+  if (gx >= cols) gx = cols - 1
+  if (gy >= rows) gy = rows - 1
+  return gy * cols + gx
+}
+
+/** Pairs sorted entry p with those of the sorted entries [from, to) within reach. */
+function scan(F: FixedContactState, p: number, from: number, to: number): void {
+  const sx = F.sx
+  const sy = F.sy
+  const sr = F.sr
+  const x = sx[p]!
+  const y = sy[p]!
+  const r = sr[p]!
+  for (let q = from; q < to; q++) {
+    const dx = sx[q]! - x
+    const dy = sy[q]! - y
+    const s = r + sr[q]!
+    if (dx * dx + dy * dy >= s * s) continue
+    const i = F.si[p]!
+    const j = F.si[q]!
+    pushPair(F, i < j ? i : j, i < j ? j : i)
+  }
+}
+
+/** Pairs big candidate i with the small candidates within its reach. */
+function pairBig(F: FixedContactState, i: number, small: number, minX: number, minY: number, cell: number, cols: number, rows: number): void {
+  if (small === 0) return
+  const R = F.reach[i]! + F.cell / 2
+  const x0 = Math.max(0, Math.floor((F.x[i]! - R - minX) / cell))
+  const x1 = Math.min(cols - 1, Math.floor((F.x[i]! + R - minX) / cell))
+  const y0 = Math.max(0, Math.floor((F.y[i]! - R - minY) / cell))
+  const y1 = Math.min(rows - 1, Math.floor((F.y[i]! + R - minY) / cell))
+  if (x1 < x0 || y1 < y0) return
+  const start = F.start
+  for (let gy = y0; gy <= y1; gy++) {
+    for (let q = start[gy * cols + x0]!, e = start[gy * cols + x1 + 1]!; q < e; q++) {
+      const j = F.si[q]!
+      if (close(F, i, j)) pushPair(F, i < j ? i : j, i < j ? j : i)
+    }
+  }
+}
+
+/** The cell-start array for `cells` cells (and the per-cell fill counters). */
+function reserveCells(F: FixedContactState, cells: number): Int32Array {
+  if (F.start.length < cells + 2) {
+    let len = F.start.length
+    while (len < cells + 2) len *= 2
+    F.start = new Int32Array(len)
+    F.fill = new Int32Array(len)
+  }
+  return F.start
+}

@@ -1,0 +1,266 @@
+// The fixed-tick method's contact solve (config.BALL_COLLISIONS = 'fixed'), at one contact tick, over the
+// pairs of src/contacts/fixedGrid.ts:
+//   velocities: up to CONTACT_ITERATIONS sweeps over the pairs (then the closed walls) in a fixed order.
+//     A pair that approaches and would touch within the tick takes the two-body impulse
+//     j = (1 + e)·w / (1/m_a + 1/m_b) (e = BALL_RESTITUTION, or 0 below BALL_SETTLE_SPEED): every impulse is
+//     a two-body contact, so momentum is kept and kinetic energy never rises, sweep by sweep. "Would touch
+//     within the tick" is the swept test on straight lines at the present velocities, and the impulse acts
+//     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
+//     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
+//   positions: up to CONTACT_ITERATIONS sweeps that move every overlapping pair apart along the normal,
+//     shared by inverse mass (a ball against a wall it would be pushed into does not move), and keep balls
+//     inside the closed walls. Only positions change: the projection adds no kinetic energy.
+// A ball pressed against a closed wall, pushed toward it, keeps its place in the projection (the wall
+// holds it), so a heavy ball cannot drive a light one through the wall.
+// Then every ball the solve changed starts a fresh path from its new state at the tick (a ball on a rim or
+// in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
+// if it leaves at BALL_SETTLE_SPEED or more.
+import { BallMode } from '../../components/Ball.js'
+import { WallEdge } from '../../components/Walls.js'
+import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
+import { launchBall, placeBall } from '../motion/ballFate.js'
+import type { BallWorld } from '../world/createWorld.js'
+import type { FixedContactState } from '../world/fixedState.js'
+import { holeAt } from '../world/holeTable.js'
+import { strikeLeavesRim } from './law.js'
+
+/** The walls box of this tick (closed edges only matter), read once. */
+const box = { minX: 0, maxX: 0, minY: 0, maxY: 0, open: 15, e: 0 }
+
+function readBox(w: BallWorld): void {
+  if (w.walls === 0) {
+    box.open = 15
+    return
+  }
+  const W = w.Walls
+  const e = w.walls
+  box.minX = W.minX[e]!
+  box.maxX = W.maxX[e]!
+  box.minY = W.minY[e]!
+  box.maxY = W.maxY[e]!
+  box.open = W.open[e]!
+  box.e = W.restitution[e]!
+}
+
+/** Normal of pair p (a→b) into nrm; returns the gap (negative: overlap). */
+const nrm = { x: 1, y: 0 }
+function normal(F: FixedContactState, a: number, b: number): number {
+  const dx = F.x[b]! - F.x[a]!
+  const dy = F.y[b]! - F.y[a]!
+  const d = Math.sqrt(dx * dx + dy * dy)
+  if (d > 0) {
+    nrm.x = dx / d
+    nrm.y = dy / d
+  } else {
+    // coincident centres: apart along the relative velocity, else along +x (the lower index to the left)
+    const rx = F.vx[a]! - F.vx[b]!
+    const ry = F.vy[a]! - F.vy[b]!
+    const s = Math.sqrt(rx * rx + ry * ry)
+    nrm.x = s > 0 ? rx / s : 1
+    nrm.y = s > 0 ? ry / s : 0
+  }
+  return d - F.r[a]! - F.r[b]!
+}
+
+/** True when a push along (dx, dy) would drive candidate i into a closed wall it touches. */
+function intoWall(F: FixedContactState, i: number, dx: number, dy: number): boolean {
+  const p = F.pinned[i]!
+  if (p === 0) return false
+  return (
+    ((p & WallEdge.Left) !== 0 && dx < 0) ||
+    ((p & WallEdge.Right) !== 0 && dx > 0) ||
+    ((p & WallEdge.Top) !== 0 && dy < 0) ||
+    ((p & WallEdge.Bottom) !== 0 && dy > 0)
+  )
+}
+
+export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number): void {
+  const e = w.config.BALL_RESTITUTION
+  const settle = w.config.BALL_SETTLE_SPEED
+  for (let it = 0; it < iterations; it++) {
+    let moved = false
+    for (let p = 0; p < F.pairCount; p++) {
+      const a = F.pairA[p]!
+      const b = F.pairB[p]!
+      if (!meetsWithinTick(F, a, b)) continue
+      const nx = nrm.x
+      const ny = nrm.y
+      const approach = -((F.vx[b]! - F.vx[a]!) * nx + (F.vy[b]! - F.vy[a]!) * ny)
+      if (!(approach > 0)) continue
+      const ima = F.im[a]!
+      const imb = F.im[b]!
+      const j = ((1 + (approach < settle ? 0 : e)) * approach) / (ima + imb)
+      F.vx[a] = F.vx[a]! - j * ima * nx
+      F.vy[a] = F.vy[a]! - j * ima * ny
+      F.vx[b] = F.vx[b]! + j * imb * nx
+      F.vy[b] = F.vy[b]! + j * imb * ny
+      F.changed[a]! |= 1
+      F.changed[b]! |= 1
+      moved = true
+      if (F.pairHit[p] === 0 && approach >= settle) {
+        F.pairHit[p] = 1
+        F.contacts++
+        const ia = F.id[a]!
+        const ib = F.id[b]!
+        pushCollisionEvent(w.events, ia < ib ? ia : ib, ia < ib ? ib : ia, t, approach, j)
+      }
+    }
+    if (wallVelocities(w, F, t, settle)) moved = true
+    if (!moved) break
+  }
+}
+
+/**
+ * True when candidates a and b touch now or will within the tick on straight lines at their present
+ * velocities (the swept test); the contact normal, a→b at that first touch, is left in nrm.
+ */
+function meetsWithinTick(F: FixedContactState, a: number, b: number): boolean {
+  const dx = F.x[b]! - F.x[a]!
+  const dy = F.y[b]! - F.y[a]!
+  const S = F.r[a]! + F.r[b]!
+  const c = dx * dx + dy * dy - S * S
+  if (c <= 0) {
+    normal(F, a, b)
+    return true
+  }
+  const ux = F.vx[b]! - F.vx[a]!
+  const uy = F.vy[b]! - F.vy[a]!
+  const half = dx * ux + dy * uy
+  if (half >= 0) return false
+  const disc = half * half - (ux * ux + uy * uy) * c
+  if (disc < 0) return false
+  // first root of |d + u·τ| = S, in the form that keeps its digits when the pair barely approaches
+  const tau = c / (-half + Math.sqrt(disc))
+  if (tau > F.tick) return false
+  nrm.x = (dx + ux * tau) / S
+  nrm.y = (dy + uy * tau) / S
+  return true
+}
+
+/** A closed wall reflects the normal velocity of a candidate that would reach it within the tick. */
+function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: number): boolean {
+  if (F.nearWallCount === 0) return false
+  let moved = false
+  const tick = F.tick
+  const open = box.open
+  for (let k = 0; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    const x = F.x[i]!
+    const y = F.y[i]!
+    const r = F.r[i]!
+    let vx = F.vx[i]!
+    let vy = F.vy[i]!
+    let hit = false
+    if ((open & WallEdge.Left) === 0 && vx < 0 && x - r - box.minX <= -vx * tick) {
+      vx = bounce(vx, settle)
+      hit = true
+    } else if ((open & WallEdge.Right) === 0 && vx > 0 && box.maxX - x - r <= vx * tick) {
+      vx = bounce(vx, settle)
+      hit = true
+    }
+    if ((open & WallEdge.Top) === 0 && vy < 0 && y - r - box.minY <= -vy * tick) {
+      vy = bounce(vy, settle)
+      hit = true
+    } else if ((open & WallEdge.Bottom) === 0 && vy > 0 && box.maxY - y - r <= vy * tick) {
+      vy = bounce(vy, settle)
+      hit = true
+    }
+    if (!hit) continue
+    if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) pushEvent(w.events, EventType.Wall, F.id[i]!, 0, t, false, 0, 0)
+    F.vx[i] = vx
+    F.vy[i] = vy
+    F.changed[i]! |= 1
+    moved = true
+  }
+  return moved
+}
+
+function bounce(vn: number, settle: number): number {
+  return Math.abs(vn) < settle ? 0 : -box.e * vn
+}
+
+export function solvePositions(F: FixedContactState, iterations: number): void {
+  for (let it = 0; it < iterations; it++) {
+    let worst = 0
+    for (let p = 0; p < F.pairCount; p++) {
+      const a = F.pairA[p]!
+      const b = F.pairB[p]!
+      const gap = normal(F, a, b)
+      if (!(gap < 0)) continue
+      const nx = nrm.x
+      const ny = nrm.y
+      if (-gap > worst) worst = -gap
+      let ima = intoWall(F, a, -nx, -ny) ? 0 : F.im[a]!
+      let imb = intoWall(F, b, nx, ny) ? 0 : F.im[b]!
+      if (ima + imb === 0) {
+        ima = F.im[a]!
+        imb = F.im[b]!
+      }
+      const sa = ima / (ima + imb)
+      const sb = 1 - sa
+      F.x[a] = F.x[a]! + gap * sa * nx
+      F.y[a] = F.y[a]! + gap * sa * ny
+      F.x[b] = F.x[b]! - gap * sb * nx
+      F.y[b] = F.y[b]! - gap * sb * ny
+      F.changed[a]! |= 2
+      F.changed[b]! |= 2
+      keepInside(F, a)
+      keepInside(F, b)
+    }
+    if (worst === 0) break
+  }
+}
+
+/** Keeps a moved candidate inside the closed walls (no further out than it was); pins it where it stops. */
+function keepInside(F: FixedContactState, i: number): void {
+  const open = box.open
+  if (open === 15) return
+  const r = F.r[i]!
+  if ((open & WallEdge.Left) === 0 && F.x[i]! - r < box.minX) {
+    F.x[i] = box.minX + r
+    F.pinned[i]! |= WallEdge.Left
+  }
+  if ((open & WallEdge.Right) === 0 && F.x[i]! + r > box.maxX) {
+    F.x[i] = (open & WallEdge.Left) === 0 && box.maxX - box.minX < 2 * r ? (box.minX + box.maxX) / 2 : box.maxX - r
+    F.pinned[i]! |= WallEdge.Right
+  }
+  if ((open & WallEdge.Top) === 0 && F.y[i]! - r < box.minY) {
+    F.y[i] = box.minY + r
+    F.pinned[i]! |= WallEdge.Top
+  }
+  if ((open & WallEdge.Bottom) === 0 && F.y[i]! + r > box.maxY) {
+    F.y[i] = (open & WallEdge.Top) === 0 && box.maxY - box.minY < 2 * r ? (box.minY + box.maxY) / 2 : box.maxY - r
+    F.pinned[i]! |= WallEdge.Bottom
+  }
+}
+
+/** Gives every changed ball a fresh path from its state at the tick t (see the top of this file). */
+export function applyChanges(w: BallWorld, F: FixedContactState, t: number): void {
+  const B = w.Ball
+  const settle = w.config.BALL_SETTLE_SPEED
+  for (let i = 0; i < F.n; i++) {
+    const c = F.changed[i]!
+    if (c === 0) continue
+    const eid = F.id[i]!
+    const x = F.x[i]!
+    const y = F.y[i]!
+    const vx = F.vx[i]!
+    const vy = F.vy[i]!
+    if (B.mode[eid] === BallMode.Resting) {
+      if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid, x, y, vx, vy, t)
+      else if ((c & 2) !== 0) {
+        B.x[eid] = x
+        B.y[eid] = y
+        // pushed over a hole, it falls in (in transit there, it stops inside the lip circle)
+        if (holeAt(w, x, y) !== 0) placeBall(w, eid, x, y, 0, 0, t)
+      }
+      continue
+    }
+    strikeLeavesRim(w, eid)
+    launchBall(w, eid, x, y, vx, vy, t)
+  }
+}
+
+export function prepareSolve(w: BallWorld): void {
+  readBox(w)
+}

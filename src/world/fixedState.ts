@@ -1,0 +1,151 @@
+// State of the fixed-tick contact method (config.BALL_COLLISIONS = 'fixed'): each ball's mass, the contact
+// clock, and the per-tick working arrays of src/contacts/fixedGrid.ts and fixedSolve.ts, packed by
+// candidate (the balls on the panel at one contact tick) and grown by doubling, so a tick allocates nothing
+// once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
+import type { BallPhysicsConfig } from '../config/design.js'
+
+export interface FixedContactState {
+  /** mass of each ball (by entity id), in units of a default ball */
+  mass: Float64Array
+  /** contact tick, s (config.CONTACT_TICK); contacts are solved at the times k·tick, k = 1, 2, … */
+  tick: number
+  /** k of the next contact tick */
+  nextTick: number
+  /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
+  due: boolean
+  /** the time of the tick being solved, s */
+  now: number
+  // candidates of the tick being solved, in ascending id order
+  n: number
+  id: Uint32Array
+  x: Float64Array
+  y: Float64Array
+  r: Float64Array
+  vx: Float64Array
+  vy: Float64Array
+  /** inverse mass */
+  im: Float64Array
+  /** radius plus the distance the ball can cover in one tick, px */
+  reach: Float64Array
+  /** grid cell of a small candidate */
+  next: Int32Array
+  /** what the solve changed: 1 velocity, 2 position */
+  changed: Uint8Array
+  /** closed walls the candidate touches, a WallEdge bit mask (it cannot be pushed further into them) */
+  pinned: Uint8Array
+  /** grid: first sorted entry of each cell (cells + 1 entries), and fill counters */
+  start: Int32Array
+  fill: Int32Array
+  /** the small candidates sorted by cell: position, reach and candidate index */
+  sx: Float64Array
+  sy: Float64Array
+  sr: Float64Array
+  si: Int32Array
+  /** candidates too wide or too fast for the grid this tick, paired through cell ranges or directly */
+  big: Int32Array
+  bigCount: number
+  /** candidates near a closed wall this tick */
+  nearWall: Int32Array
+  nearWallCount: number
+  /** candidate pairs close enough to touch within the tick; normal a→b; whether an event was emitted */
+  pairA: Int32Array
+  pairB: Int32Array
+  pairHit: Uint8Array
+  pairCount: number
+  /** grid cell of this tick, px */
+  cell: number
+  /** contacts reported (impulses with approach of at least BALL_SETTLE_SPEED), and ticks solved */
+  contacts: number
+  ticks: number
+}
+
+export function createFixedState(capacity: number, config: Readonly<BallPhysicsConfig>): FixedContactState {
+  const n = 64
+  return {
+    mass: new Float64Array(capacity).fill(1),
+    tick: config.CONTACT_TICK,
+    nextTick: 1,
+    due: false,
+    now: 0,
+    n: 0,
+    id: new Uint32Array(n),
+    x: new Float64Array(n),
+    y: new Float64Array(n),
+    r: new Float64Array(n),
+    vx: new Float64Array(n),
+    vy: new Float64Array(n),
+    im: new Float64Array(n),
+    reach: new Float64Array(n),
+    next: new Int32Array(n),
+    changed: new Uint8Array(n),
+    pinned: new Uint8Array(n),
+    start: new Int32Array(4 * n),
+    fill: new Int32Array(4 * n),
+    sx: new Float64Array(n),
+    sy: new Float64Array(n),
+    sr: new Float64Array(n),
+    si: new Int32Array(n),
+    big: new Int32Array(n),
+    bigCount: 0,
+    nearWall: new Int32Array(n),
+    nearWallCount: 0,
+    pairA: new Int32Array(n),
+    pairB: new Int32Array(n),
+    pairHit: new Uint8Array(n),
+    pairCount: 0,
+    cell: 4 * config.BALL_RADIUS,
+    contacts: 0,
+    ticks: 0,
+  }
+}
+
+/** Grows the per-ball mass store so that ball id cap − 1 fits. */
+export function growFixedMass(F: FixedContactState, cap: number): void {
+  if (F.mass.length >= cap) return
+  const m = new Float64Array(cap).fill(1)
+  m.set(F.mass)
+  F.mass = m
+}
+
+/** Makes room for n candidates. */
+export function reserveCandidates(F: FixedContactState, n: number): void {
+  if (F.id.length < n) {
+    let len = F.id.length
+    while (len < n) len *= 2
+    F.id = new Uint32Array(len)
+    F.x = new Float64Array(len)
+    F.y = new Float64Array(len)
+    F.r = new Float64Array(len)
+    F.vx = new Float64Array(len)
+    F.vy = new Float64Array(len)
+    F.im = new Float64Array(len)
+    F.reach = new Float64Array(len)
+    F.sx = new Float64Array(len)
+    F.sy = new Float64Array(len)
+    F.sr = new Float64Array(len)
+    F.si = new Int32Array(len)
+    F.next = new Int32Array(len)
+    F.changed = new Uint8Array(len)
+    F.pinned = new Uint8Array(len)
+    F.big = new Int32Array(len)
+    F.nearWall = new Int32Array(len)
+  }
+}
+
+/** Appends the pair (a, b) of candidate indices. */
+export function pushPair(F: FixedContactState, a: number, b: number): void {
+  if (F.pairCount === F.pairA.length) {
+    const len = 2 * F.pairA.length
+    const pa = new Int32Array(len)
+    const pb = new Int32Array(len)
+    pa.set(F.pairA)
+    pb.set(F.pairB)
+    F.pairA = pa
+    F.pairB = pb
+    F.pairHit = new Uint8Array(len)
+  }
+  F.pairA[F.pairCount] = a
+  F.pairB[F.pairCount] = b
+  F.pairHit[F.pairCount] = 0
+  F.pairCount++
+}

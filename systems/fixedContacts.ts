@@ -1,0 +1,29 @@
+// Ball-ball contacts by the fixed-tick method (not a design stage; opt-in with config.BALL_COLLISIONS =
+// 'fixed'). Contacts are solved at the times k·CONTACT_TICK of the world's clock, whatever the frame rate:
+// the step is split at those times, and at the first pass after each one this system pairs the balls that
+// can touch within a tick (src/contacts/fixedGrid.ts), solves their velocities and separates overlaps
+// (src/contacts/fixedSolve.ts). Between ticks the balls follow their closed-form paths through the holes
+// and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
+// timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
+// Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
+import { findPairs, gatherCandidates } from '../src/contacts/fixedGrid.js'
+import { applyChanges, prepareSolve, solvePositions, solveVelocities } from '../src/contacts/fixedSolve.js'
+import type { BallWorld } from '../src/world/createWorld.js'
+
+export function fixedContactsSystem(w: BallWorld): void {
+  const F = w.fixed
+  if (F === null || !F.due || w.pass !== 0) return
+  F.due = false
+  const t = w.time
+  F.now = t
+  F.ticks++
+  gatherCandidates(w, F)
+  if (F.n < 2) return
+  findPairs(F)
+  if (F.pairCount === 0) return
+  prepareSolve(w)
+  const iterations = w.config.CONTACT_ITERATIONS
+  solveVelocities(w, F, t, iterations)
+  solvePositions(F, iterations)
+  applyChanges(w, F, t)
+}

@@ -1,0 +1,262 @@
+// The fixed-tick contact method (BALL_COLLISIONS 'fixed'): contacts solved at k·CONTACT_TICK.
+import fc from 'fast-check'
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
+import { EXACT, rng } from '../helpers'
+
+const FIXED: ConfigOverrides = { BALL_COLLISIONS: 'fixed' }
+const TICK = 1 / 240
+
+function run(sim: BallPhysics, seconds: number, dt: number): BallEvent[] {
+  const out: BallEvent[] = []
+  const n = Math.round(seconds / dt)
+  for (let i = 0; i < n; i++) {
+    sim.step(dt)
+    out.push(...sim.drainEvents())
+  }
+  return out
+}
+
+function onPanel(sim: BallPhysics): number[] {
+  return sim.balls().filter((b) => {
+    const m = sim.ballState(b).mode
+    return m === 'rolling' || m === 'resting' || m === 'rimRoll'
+  })
+}
+
+/** Deepest overlap of two balls on the panel, px (0: none). */
+function worstOverlap(sim: BallPhysics): number {
+  const B = sim.world.Ball
+  const ids = onPanel(sim)
+  let worst = 0
+  for (let i = 0; i < ids.length; i++) {
+    for (let j = i + 1; j < ids.length; j++) {
+      const a = ids[i]!
+      const b = ids[j]!
+      const o = B.radius[a]! + B.radius[b]! - Math.hypot(B.x[a]! - B.x[b]!, B.y[a]! - B.y[b]!)
+      if (o > worst) worst = o
+    }
+  }
+  return worst
+}
+
+function kinetic(sim: BallPhysics): number {
+  const B = sim.world.Ball
+  const F = sim.world.fixed!
+  let k = 0
+  for (const b of sim.balls()) k += 0.5 * F.mass[b]! * (B.vx[b]! ** 2 + B.vy[b]! ** 2)
+  return k
+}
+
+describe('fixed-tick contacts', () => {
+  it('head-on, equal masses, e = 1: velocities exchanged at a contact tick no later than the touch', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    const b = sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+    const touch = (100 - 22) / 500
+    const ev = run(sim, 0.5, 1 / 60).filter((e) => e.type === 'collision')
+    expect(ev).toHaveLength(1)
+    const t = ev[0]!.time
+    expect(Number.isInteger(Math.round(t / TICK))).toBe(true)
+    expect(t).toBe(Math.round(t / TICK) * TICK)
+    expect(t).toBeLessThanOrEqual(touch)
+    expect(touch - t).toBeLessThan(TICK)
+    expect(sim.ballState(a).vx).toBeCloseTo(-200, 9)
+    expect(sim.ballState(b).vx).toBeCloseTo(300, 9)
+  })
+
+  it('unequal masses and restitution: the two-body law, momentum to 1e-9', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 0.5, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 400, vy: 0, mass: 3 })
+    const b = sim.addBall({ x: 60, y: 0, vx: 0, vy: 0, mass: 1 })
+    run(sim, 0.3, 1 / 60)
+    const va = sim.ballState(a).vx
+    const vb = sim.ballState(b).vx
+    expect(Math.abs(3 * va + vb - 1200) / 1200).toBeLessThan(EXACT)
+    expect(vb - va).toBeCloseTo(0.5 * 400, 9)
+  })
+
+  it('swept: a contact iff the straight-line touch falls within the next tick; near misses pass (fast-check)', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: 50, max: 1e5, noNaN: true }),
+        fc.double({ min: 0, max: 30, noNaN: true }),
+        fc.constantFrom(1 / 30, 1 / 60, 0.1),
+        (speed, offset, dt) => {
+          const sim = createBallPhysics({ ...FIXED, ROLLING_DECEL: 0, BALL_RESTITUTION: 1 })
+          sim.addBall({ x: 0, y: 0, vx: speed, vy: 0 })
+          sim.addBall({ x: 30 + speed * 0.2, y: offset, vx: 0, vy: 0 })
+          const ev = run(sim, 0.5, dt).filter((e) => e.type === 'collision')
+          expect(ev.length, `speed ${speed} offset ${offset} dt ${dt}`).toBe(offset < 22 ? 1 : 0)
+        },
+      ),
+      { numRuns: 300, seed: 7 },
+    )
+  })
+
+  it('a 1e5 px/s ball crossing a row of 40 resting balls in 0.1 s steps strikes the first, not through it', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1 })
+    const row: number[] = []
+    for (let i = 0; i < 40; i++) row.push(sim.addBall({ x: 500 + 23 * i, y: 0, vx: 0, vy: 0 }))
+    const fast = sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0 })
+    sim.step(0.1)
+    const ev = sim.drainEvents().filter((e) => e.type === 'collision')
+    expect(ev[0]).toMatchObject({ ball: row[0], other: fast })
+    // the striker never got past the first ball of the row
+    expect(sim.ballState(fast).x).toBeLessThan(sim.ballState(row[0]!).x)
+  })
+
+  it('the same scene at 30, 60, 120 and 240 Hz gives bit-identical contacts and final states', () => {
+    const scene = (dt: number) => {
+      const r = rng(21)
+      const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 0.8 })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.6 })
+      for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) sim.addHole({ x: 90 + 120 * i, y: 100 + 120 * j })
+      const placed: [number, number][] = []
+      while (placed.length < 60) {
+        const a = r() * 2 * Math.PI
+        const v = 100 + 500 * r()
+        const x = 20 + 380 * r()
+        const y = 20 + 440 * r()
+        if (placed.some(([px, py]) => Math.hypot(px - x, py - y) < 22)) continue
+        placed.push([x, y])
+        sim.addBall({ x, y, vx: v * Math.cos(a), vy: v * Math.sin(a) })
+      }
+      const ev = run(sim, 3, dt)
+      const B = sim.world.Ball
+      return {
+        contacts: ev.filter((e) => e.type === 'collision').map((e) => `${e.ball}-${e.other}@${e.time}`),
+        state: sim.balls().map((b) => [B.x[b], B.y[b], B.vx[b], B.vy[b], B.mode[b]]),
+      }
+    }
+    const base = scene(1 / 60)
+    expect(base.contacts.length).toBeGreaterThan(20)
+    for (const dt of [1 / 30, 1 / 120, 1 / 240]) {
+      const other = scene(dt)
+      expect(other.contacts).toEqual(base.contacts)
+      expect(other.state).toEqual(base.state)
+    }
+  })
+
+  it('random scenes in a box: kinetic energy never rises from step to step, momentum is kept without walls (fast-check)', () => {
+    fc.assert(
+      fc.property(fc.integer({ min: 1, max: 1e6 }), fc.double({ min: 0, max: 1, noNaN: true }), fc.boolean(), (seed, e, walls) => {
+        const r = rng(seed)
+        const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_SETTLE_SPEED: 0 })
+        if (walls) sim.setWalls({ minX: 0, minY: 0, maxX: 300, maxY: 300, restitution: 1 })
+        for (let i = 0; i < 40; i++) {
+          sim.addBall({ x: 15 + 270 * r(), y: 15 + 270 * r(), vx: 900 * (r() - 0.5), vy: 900 * (r() - 0.5), radius: 5 + 10 * r(), mass: 0.1 + 5 * r() })
+        }
+        const momentum = () => {
+          const B = sim.world.Ball
+          const F = sim.world.fixed!
+          let px = 0
+          let py = 0
+          for (const b of sim.balls()) {
+            px += F.mass[b]! * B.vx[b]!
+            py += F.mass[b]! * B.vy[b]!
+          }
+          return [px, py] as const
+        }
+        let k = kinetic(sim)
+        const p0 = momentum()
+        for (let s = 0; s < 30; s++) {
+          sim.step(1 / 60)
+          sim.drainEvents()
+          const k2 = kinetic(sim)
+          expect(k2).toBeLessThanOrEqual(k * (1 + 1e-12) + 1e-9)
+          k = k2
+        }
+        if (!walls) {
+          const p = momentum()
+          const scale = Math.max(1, Math.hypot(p0[0], p0[1]), k)
+          expect(Math.abs(p[0] - p0[0]) / scale).toBeLessThan(1e-9)
+          expect(Math.abs(p[1] - p0[1]) / scale).toBeLessThan(1e-9)
+        }
+      }),
+      { numRuns: 40, seed: 3 },
+    )
+  })
+
+  it('balls made to overlap are pushed apart within a few ticks, adding no kinetic energy', () => {
+    const sim = createBallPhysics({ ...FIXED, ROLLING_DECEL: 0 })
+    const B = sim.world.Ball
+    const ids: number[] = []
+    for (let i = 0; i < 20; i++) ids.push(sim.addBall({ x: 100 + 30 * i, y: 100, vx: 0, vy: 0 }))
+    // the game moves balls by hand onto one another (at rest: no kinetic energy to gain)
+    for (let i = 0; i < 20; i++) B.x[ids[i]!] = 100 + 12 * i
+    expect(worstOverlap(sim)).toBeGreaterThan(9)
+    for (let s = 0; s < 6; s++) sim.step(1 / 60)
+    expect(worstOverlap(sim)).toBeLessThanOrEqual(1e-3)
+    expect(kinetic(sim)).toBe(0)
+  })
+
+  it('two identical runs give bit-identical state', () => {
+    const once = () => {
+      const r = rng(8)
+      const sim = createBallPhysics(FIXED)
+      sim.setWalls({ minX: 0, minY: 0, maxX: 300, maxY: 300, restitution: 0.7 })
+      for (let i = 0; i < 150; i++) sim.addBall({ x: 15 + 270 * r(), y: 15 + 270 * r(), vx: 800 * (r() - 0.5), vy: 800 * (r() - 0.5) })
+      run(sim, 2, 1 / 60)
+      const B = sim.world.Ball
+      return sim.balls().flatMap((b) => [B.x[b], B.y[b], B.vx[b], B.vy[b]])
+    }
+    expect(once()).toEqual(once())
+  })
+})
+
+describe('fixed-tick contacts under arcade load', () => {
+  it('1,000 balls from the launch point in one frame: held and released, no overlap after 0.5 s, no clump at a hole', () => {
+    const sim = createBallPhysics(FIXED)
+    addPanel(sim)
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: { bottom: true } })
+    const r = rng(99)
+    for (let i = 0; i < 1000; i++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.7 * r(), angle: (r() - 0.5) * 1.2 })
+    const captures = new Map<number, number[]>()
+    for (let i = 0; i < 60 * 6; i++) {
+      sim.step(1 / 60)
+      for (const e of sim.drainEvents()) if (e.type === 'capture') captures.set(e.hole!, [...(captures.get(e.hole!) ?? []), e.time])
+      if (i >= 30 && i % 30 === 0) expect(worstOverlap(sim)).toBeLessThanOrEqual(1e-3)
+    }
+    let captured = 0
+    for (const [hole, times] of captures) {
+      captured += times.length
+      for (let k = 2; k < times.length; k++) expect(times[k]! - times[k - 2]!, `hole ${hole}`).toBeGreaterThanOrEqual(0.05)
+    }
+    expect(captured).toBeGreaterThan(20)
+  })
+
+  it('a pile pressed into a corner by a stream of fast balls, e = 0 and e = 1: bounded steps, overlaps resolved', () => {
+    for (const e of [0, 1]) {
+      const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: e })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: e })
+      for (let i = 0; i < 17; i++) for (let j = 0; j < 17; j++) sim.addBall({ x: 12 + 22.5 * i, y: 12 + 22.5 * j, vx: 0, vy: 0 })
+      let worstMs = 0
+      for (let s = 0; s < 120; s++) {
+        if (s % 4 === 0) sim.addBall({ x: 388, y: 388, vx: -900, vy: -900 })
+        const t0 = performance.now()
+        sim.step(1 / 60)
+        worstMs = Math.max(worstMs, performance.now() - t0)
+        sim.drainEvents()
+      }
+      for (let s = 0; s < 30; s++) sim.step(1 / 60)
+      expect(worstOverlap(sim), `e = ${e}`).toBeLessThanOrEqual(1e-3)
+      expect(worstMs, `e = ${e}`).toBeLessThan(250)
+    }
+  })
+
+  it('a light ball pinned against a wall by a heavy one: steps return, the light ball stays inside, no overlap after 0.5 s', () => {
+    const sim = createBallPhysics({ ...FIXED, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400 })
+    const light = sim.addBall({ x: 389, y: 200, vx: 0, vy: 0, mass: 1e-9 })
+    const heavy = sim.addBall({ x: 100, y: 200, vx: 1000, vy: 0 })
+    for (let s = 0; s < 60; s++) {
+      const t0 = performance.now()
+      sim.step(1 / 60)
+      expect(performance.now() - t0).toBeLessThan(200)
+    }
+    expect(sim.ballState(light).x).toBeLessThanOrEqual(389 + 1e-9)
+    expect(worstOverlap(sim)).toBeLessThanOrEqual(1e-3)
+    expect(Number.isFinite(sim.ballState(heavy).vx)).toBe(true)
+  })
+})
