@@ -83,3 +83,53 @@ export function peersFigure(rows: readonly PeerRow[], steps: number, rounds: num
     ],
   }
 }
+
+export interface ContactRow {
+  scene: 'gas' | 'panel'
+  balls: number
+  /** ns per ball-step */
+  off: number
+  exact: number
+  fixed: number
+  rapier: number
+  matter: number
+  planck: number
+  worstMs: { exact: number; fixed: number; rapier: number; matter: number; planck: number }
+  contactsPerStep: { exact: number; fixed: number }
+  usPerContact: { exact: number; fixed: number }
+}
+
+const CONTACT_ENGINES = [
+  ['ours, fixed tick', 'fixed'],
+  ['ours, exact', 'exact'],
+  ['rapier2d-compat', 'rapier'],
+  ['matter-js', 'matter'],
+  ['planck', 'planck'],
+] as const
+
+/** ns per ball-step with ball-ball contacts on, per engine, one bar per scene (log scale). */
+export function contactsFigure(rows: readonly ContactRow[], steps: number, rounds: number): TopLevelSpec {
+  const scenes = rows.map((r) => `${r.scene}, ${r.balls.toLocaleString('en-US')} balls`)
+  const data = rows.flatMap((r, i) => CONTACT_ENGINES.map(([engine, key]) => ({ engine, scene: scenes[i]!, ns: r[key] })))
+  const top = 10 ** Math.ceil(Math.log10(Math.max(...data.map((d) => d.ns)) * 1.5))
+  return {
+    $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
+    title: {
+      text: 'Ball-ball contacts on: cost per ball-step against general 2D engines',
+      subtitle: `same scenes, dt = 1/120 s, CONTACT_TICK 1/240 s, median step of ${steps}, median of ${rounds} rounds, one run on a 2-core machine`,
+    },
+    width: 620,
+    height: 320,
+    data: { values: data },
+    encoding: {
+      x: { field: 'engine', type: 'nominal', sort: CONTACT_ENGINES.map((e) => e[0]), title: null, axis: { labelAngle: 0 } },
+      xOffset: { field: 'scene', type: 'nominal', sort: scenes },
+      y: { field: 'ns', type: 'quantitative', stack: null, scale: { type: 'log', domain: [10, top] }, title: 'ns per ball-step (log scale)' },
+      color: { field: 'scene', type: 'nominal', title: null, sort: scenes, legend: { orient: 'top-left', labelLimit: 300 } },
+    },
+    layer: [
+      { mark: { type: 'bar' } },
+      { mark: { type: 'text', dy: -6, fontSize: 8 }, encoding: { text: { field: 'ns', type: 'quantitative', format: '.3~r' } } },
+    ],
+  }
+}

@@ -24,6 +24,6 @@ export function fixedContactsSystem(w: BallWorld): void {
   prepareSolve(w)
   const iterations = w.config.CONTACT_ITERATIONS
   solveVelocities(w, F, t, iterations)
-  solvePositions(F, iterations)
+  solvePositions(F)
   applyChanges(w, F, t)
 }

@@ -164,6 +164,8 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
     sampleRolling(w, b, w.time)
   }
   launchBall(w, b, w.Ball.x[b]!, w.Ball.y[b]!, nvx, nvy, w.time)
+  // fixed-tick contacts: the new path up to the next tick is checked at the next step's start
+  if (w.fixed !== null) w.fixed.due = true
 }
 
 /**

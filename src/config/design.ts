@@ -119,8 +119,8 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   METHOD: 'exact',
   SUBSTEPS: 1,
   BALL_COLLISIONS: 'off',
-  CONTACT_TICK: 1 / 240,
-  CONTACT_ITERATIONS: 4,
+  CONTACT_TICK: 1 / 120,
+  CONTACT_ITERATIONS: 8,
   BALL_RESTITUTION: 0.9,
   BALL_SETTLE_SPEED: 1,
 })

@@ -58,3 +58,11 @@ export const MAX_CAPSULE_CELLS = 1024
 /** A resting ball wider than this many grid cells (radius / cell) is kept beside the resting grid, not in it. */
 export const MAX_RESTING_CELLS = 4
 
+
+/**
+ * Fixed-tick contacts: the overlap projection sweeps over the pairs until no overlap is deeper than
+ * PROJECTION_SLOP px, at most MAX_PROJECTION_SWEEPS times a tick (a jammed pile needs many: each sweep moves
+ * a push one ball further through it). Bounds a tick's projection at MAX_PROJECTION_SWEEPS × pairs.
+ */
+export const MAX_PROJECTION_SWEEPS = 64
+export const PROJECTION_SLOP = 1e-4

@@ -10,35 +10,50 @@
 // pairs + big·(balls in reach, at most all) + big²).
 import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
-import { TOUCH_GAP } from '../config/tolerances.js'
+import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
+import { pushCandidate, pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
+import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 function onPanel(mode: number): boolean {
   return mode === BallMode.Rolling || mode === BallMode.RimRoll || mode === BallMode.Resting
 }
 
-/** Gathers the candidates of a tick and their reaches; sets the grid cell and the near-wall list. */
+/**
+ * Gathers the candidates of a tick: the moving balls in id order, then the resting balls within reach of
+ * one of them (or of a resting ball the last tick's projection moved), in id order, found through the
+ * resting grid. Sets their reaches, the grid cell and the near-wall list.
+ */
 export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
   const B = w.Ball
   const live = B.live
   const mode = B.mode
   const top = Math.min(live.length, w.entityIndex.maxId + 1)
-  let n = 0
-  for (let eid = 1; eid < top; eid++) if (live[eid] === 1 && onPanel(mode[eid]!)) n++
+  F.n = 0
+  for (let eid = 1; eid < top; eid++) {
+    if (live[eid] === 1 && (mode[eid] === BallMode.Rolling || mode[eid] === BallMode.RimRoll)) pushCandidate(F, eid)
+  }
+  F.restFrom = F.n
+  gatherResting(w, F)
+  const n = F.n
   reserveCandidates(F, n)
   const tick = F.tick
-  let k = 0
   let sum = 0
   let max = 0
-  for (let eid = 1; eid < top; eid++) {
-    if (live[eid] !== 1 || !onPanel(mode[eid]!)) continue
+  let minX = Infinity
+  let minY = Infinity
+  let maxX = -Infinity
+  let maxY = -Infinity
+  for (let k = 0; k < n; k++) {
+    const eid = F.id[k]!
     const r = B.radius[eid]!
-    const vx = mode[eid] === BallMode.Resting ? 0 : B.vx[eid]!
-    const vy = mode[eid] === BallMode.Resting ? 0 : B.vy[eid]!
-    F.id[k] = eid
-    F.x[k] = B.x[eid]!
-    F.y[k] = B.y[eid]!
+    const resting = k >= F.restFrom
+    const vx = resting ? 0 : B.vx[eid]!
+    const vy = resting ? 0 : B.vy[eid]!
+    const x = B.x[eid]!
+    const y = B.y[eid]!
+    F.x[k] = x
+    F.y[k] = y
     F.r[k] = r
     F.vx[k] = vx
     F.vy[k] = vy
@@ -49,17 +64,97 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
     F.pinned[k] = 0
     sum += reach
     if (reach > max) max = reach
-    k++
+    if (x < minX) minX = x
+    if (x > maxX) maxX = x
+    if (y < minY) minY = y
+    if (y > maxY) maxY = y
   }
-  F.n = n
   F.cell = n === 0 ? 1 : max <= (4 * sum) / n ? 2 * max : (4 * sum) / n
-  markWalls(w, F)
+  F.minX = minX
+  F.minY = minY
+  F.maxX = maxX
+  F.maxY = maxY
+  F.nearWallCount = 0
+  if (w.walls !== 0) markWalls(w, F)
+}
+
+/** Appends the resting balls within reach of the seeds (moving candidates, touched resting balls), sorted by id. */
+function gatherResting(w: BallWorld, F: FixedContactState): void {
+  const C = F.rest
+  if (C.restCount === 0 && C.bigRestCount === 0) {
+    F.touchedCount = 0
+    return
+  }
+  const B = w.Ball
+  if (++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  const moving = F.n
+  for (let k = 0; k < moving; k++) {
+    const eid = F.id[k]!
+    const vx = B.vx[eid]!
+    const vy = B.vy[eid]!
+    seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP)
+  }
+  for (let k = 0; k < F.touchedCount; k++) {
+    const eid = F.touched[k]!
+    if (B.live[eid] === 1 && B.mode[eid] === BallMode.Resting) seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + TOUCH_GAP)
+  }
+  F.touchedCount = 0
+  // and every resting ball that overlaps a resting candidate, transitively: the projection sees the whole
+  // overlapping cluster at once (a push crosses a jammed pile in one tick, not one ball a tick)
+  for (let k = moving; k < F.n; k++) {
+    const eid = F.id[k]!
+    seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! - PROJECTION_SLOP)
+  }
+  // ids in ascending order, whatever order the grid gave them in (the same candidates in the same order
+  // at every frame rate)
+  const ids = F.id
+  if (F.n - moving > 64) {
+    ids.subarray(moving, F.n).sort()
+    return
+  }
+  for (let i = moving + 1; i < F.n; i++) {
+    const v = ids[i]!
+    let j = i - 1
+    while (j >= moving && ids[j]! > v) {
+      ids[j + 1] = ids[j]!
+      j--
+    }
+    ids[j + 1] = v
+  }
+}
+
+/** Adds the resting balls the circle (x, y, reach) reaches, once each (the seen stamp). */
+function seedResting(w: BallWorld, F: FixedContactState, x: number, y: number, reach: number): void {
+  const C = F.rest
+  for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!, x, y, reach)
+  if (C.restCount === 0) return
+  const mask = C.restHead.length - 1
+  const rho = reach + C.maxRadius
+  if (capsuleCellEstimate(C, x, y, x, y, rho) > C.restHead.length) {
+    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
+    return
+  }
+  const k = capsuleCells(C, x, y, x, y, rho, mask)
+  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
+}
+
+function addResting(w: BallWorld, F: FixedContactState, e: number, x: number, y: number, reach: number): void {
+  const C = F.rest
+  if (C.seen[e] === C.seenStamp) return
+  const B = w.Ball
+  const dx = B.x[e]! - x
+  const dy = B.y[e]! - y
+  const s = reach + B.radius[e]! + TOUCH_GAP
+  if (dx * dx + dy * dy >= s * s) return
+  C.seen[e] = C.seenStamp
+  pushCandidate(F, e)
 }
 
 /** Pins the candidates touching a closed wall and lists those that can reach one within the tick. */
 function markWalls(w: BallWorld, F: FixedContactState): void {
-  F.nearWallCount = 0
-  if (w.walls === 0) return
   const W = w.Walls
   const e = w.walls
   const open = W.open[e]!
@@ -113,31 +208,23 @@ export function findPairs(F: FixedContactState): void {
   const half = F.cell / 2
   F.pairCount = 0
   F.bigCount = 0
-  let minX = Infinity
-  let minY = Infinity
-  let maxX = -Infinity
-  let maxY = -Infinity
+  // the bounding box of every candidate (the big ones included: a box a little larger at most)
+  const minX = F.minX
+  const minY = F.minY
+  const maxX = F.maxX
+  const maxY = F.maxY
   let small = 0
   for (let i = 0; i < n; i++) {
-    if (F.reach[i]! > half) {
-      F.big[F.bigCount++] = i
-      continue
-    }
-    small++
-    const x = F.x[i]!
-    const y = F.y[i]!
-    if (x < minX) minX = x
-    if (x > maxX) maxX = x
-    if (y < minY) minY = y
-    if (y > maxY) maxY = y
+    if (F.reach[i]! > half) F.big[F.bigCount++] = i
+    else small++
   }
   let cell = F.cell
   let cols = 1
   let rows = 1
   if (small > 0) {
-    // about one ball a cell at least (fewer, emptier cells cost more than the tests they save)
+    // about one ball a cell at least (more, emptier cells cost more in the sort than the tests they save)
     const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / small)
-    if (even > 2 * cell) cell = even / 2
+    if (even > cell) cell = even
     cols = Math.floor((maxX - minX) / cell) + 1
     rows = Math.floor((maxY - minY) / cell) + 1
     const most = 4 * small + 64

@@ -7,9 +7,9 @@
 //     within the tick" is the swept test on straight lines at the present velocities, and the impulse acts
 //     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
-//   positions: up to CONTACT_ITERATIONS sweeps that move every overlapping pair apart along the normal,
-//     shared by inverse mass (a ball against a wall it would be pushed into does not move), and keep balls
-//     inside the closed walls. Only positions change: the projection adds no kinetic energy.
+//   positions: sweeps that move every overlapping pair apart along the normal, shared by inverse mass, and
+//     keep balls inside the closed walls, until no overlap is deeper than PROJECTION_SLOP (at most
+//     MAX_PROJECTION_SWEEPS). Only positions change: the projection adds no kinetic energy.
 // A ball pressed against a closed wall, pushed toward it, keeps its place in the projection (the wall
 // holds it), so a heavy ball cannot drive a light one through the wall.
 // Then every ball the solve changed starts a fresh path from its new state at the tick (a ball on a rim or
@@ -20,8 +20,10 @@ import { WallEdge } from '../../components/Walls.js'
 import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import type { BallWorld } from '../world/createWorld.js'
-import type { FixedContactState } from '../world/fixedState.js'
+import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
+import { MAX_PROJECTION_SWEEPS, PROJECTION_SLOP } from '../config/tolerances.js'
+import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { strikeLeavesRim } from './law.js'
 
 /** The walls box of this tick (closed edges only matter), read once. */
@@ -179,8 +181,8 @@ function bounce(vn: number, settle: number): number {
   return Math.abs(vn) < settle ? 0 : -box.e * vn
 }
 
-export function solvePositions(F: FixedContactState, iterations: number): void {
-  for (let it = 0; it < iterations; it++) {
+export function solvePositions(F: FixedContactState): void {
+  for (let it = 0; it < MAX_PROJECTION_SWEEPS; it++) {
     let worst = 0
     for (let p = 0; p < F.pairCount; p++) {
       const a = F.pairA[p]!
@@ -207,7 +209,7 @@ export function solvePositions(F: FixedContactState, iterations: number): void {
       keepInside(F, a)
       keepInside(F, b)
     }
-    if (worst === 0) break
+    if (worst <= PROJECTION_SLOP) break
   }
 }
 
@@ -242,23 +244,32 @@ export function applyChanges(w: BallWorld, F: FixedContactState, t: number): voi
     const c = F.changed[i]!
     if (c === 0) continue
     const eid = F.id[i]!
+    if ((c & 2) !== 0) touchBall(F, eid)
     const x = F.x[i]!
     const y = F.y[i]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
     if (B.mode[eid] === BallMode.Resting) {
       if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid, x, y, vx, vy, t)
-      else if ((c & 2) !== 0) {
-        B.x[eid] = x
-        B.y[eid] = y
-        // pushed over a hole, it falls in (in transit there, it stops inside the lip circle)
-        if (holeAt(w, x, y) !== 0) placeBall(w, eid, x, y, 0, 0, t)
-      }
+      else if ((c & 2) !== 0) moveResting(w, F, eid, x, y, t)
       continue
     }
     strikeLeavesRim(w, eid)
     launchBall(w, eid, x, y, vx, vy, t)
   }
+}
+
+/** A resting ball the projection moved: it stays at rest there. */
+function moveResting(w: BallWorld, F: FixedContactState, eid: number, x: number, y: number, t: number): void {
+  restingRemove(w, eid)
+  w.Ball.x[eid] = x
+  w.Ball.y[eid] = y
+  // pushed over a hole, it falls in (in transit there, it stops inside the lip circle)
+  if (holeAt(w, x, y) !== 0) {
+    placeBall(w, eid, x, y, 0, 0, t)
+    return
+  }
+  restingInsert(w, eid)
 }
 
 export function prepareSolve(w: BallWorld): void {

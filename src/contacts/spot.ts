@@ -1,15 +1,16 @@
-// Is a spot on the panel free? A ball put down (ball-ball contacts on) where another ball is would start
+// Is a spot on the panel free? A ball put down (ball-ball contacts 'on' or 'fixed') where another ball is would start
 // inside it; such a ball is held until its spot is clear (systems/launcher.ts). Checked against every
 // moving ball (their stored state is at the world's time between steps) and, through the resting grid,
 // against the resting balls near the spot.
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
+import { restingState } from '../world/restingGrid.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
 export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
-  const C = w.collide
-  if (C === null) return w.fixed !== null && takenFixed(w, self, x, y, r)
+  const C = restingState(w)
+  if (C === null) return false
   const B = w.Ball
   const balls = w.moving.dense
   for (let i = 0, n = w.moving.count; i < n; i++) {
@@ -45,18 +46,3 @@ function near(w: BallWorld, b: number, self: number, x: number, y: number, r: nu
   return dx * dx + dy * dy < s * s
 }
 
-/** With the fixed-tick method (no resting grid): every ball on the panel, in id order. */
-function takenFixed(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
-  const B = w.Ball
-  const top = Math.min(B.live.length, w.entityIndex.maxId + 1)
-  for (let b = 1; b < top; b++) {
-    if (b === self || B.live[b] !== 1) continue
-    const m = B.mode[b]
-    if (m !== BallMode.Rolling && m !== BallMode.RimRoll && m !== BallMode.Resting) continue
-    const dx = B.x[b]! - x
-    const dy = B.y[b]! - y
-    const s = r + B.radius[b]!
-    if (dx * dx + dy * dy < s * s) return true
-  }
-  return false
-}

@@ -11,6 +11,7 @@ import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { NEVER } from '../config/tolerances.js'
 import { startPath, planRolling } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
+import { touchBall } from '../world/fixedState.js'
 
 /** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
 export function emitHoleEvent(
@@ -44,7 +45,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
   w.Path.nextKind[eid] = PathEvent.None
   releaseRim(w, eid)
   removeMoving(w, eid)
-  if (w.collide !== null) restingRemove(w, eid)
+  restingRemove(w, eid)
 }
 
 /** The ball stops on the panel, outside every hole, at time t. */
@@ -59,12 +60,14 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
   w.Path.nextKind[eid] = PathEvent.None
   removeMoving(w, eid)
   // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid
-  if (w.collide !== null) restingInsert(w, eid)
+  restingInsert(w, eid)
+  // fixed-tick contacts: it may have stopped inside another (between ticks); the next tick looks
+  if (w.fixed !== null) touchBall(w.fixed, eid)
 }
 
 /** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
 export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
-  if (w.collide !== null) restingRemove(w, eid)
+  restingRemove(w, eid)
   setBallMode(w, eid, BallMode.Rolling)
   startPath(w, eid, x, y, vx, vy, t)
   planRolling(w, eid)
@@ -83,4 +86,6 @@ export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: n
     w.RimContact.mode[slot] = RimMode.Transit
   }
   launchBall(w, eid, x, y, vx, vy, t)
+  // fixed-tick contacts: the new ball's path up to the next tick is checked now (a solve at this instant)
+  if (w.fixed !== null) w.fixed.due = true
 }

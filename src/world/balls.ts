@@ -51,10 +51,8 @@ export function forgetBall(world: BallWorld, eid: number): void {
   if (world.Ball.mode[eid] === BallMode.Held) dropHeld(world, eid)
   removeMoving(world, eid)
   releaseRim(world, eid)
-  if (world.collide !== null) {
-    restingRemove(world, eid)
-    bumpVersion(world, eid)
-  }
+  restingRemove(world, eid)
+  if (world.collide !== null) bumpVersion(world, eid)
   cutEvents(world.events, eid)
   clearSlot(world.Ball, eid)
   clearSlot(world.Path, eid)

@@ -158,6 +158,9 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse
   if (world.collide !== null) growCollisionState(world.collide, cap)
-  if (world.fixed !== null) growFixedMass(world.fixed, cap)
+  if (world.fixed !== null) {
+    growFixedMass(world.fixed, cap)
+    growCollisionState(world.fixed.rest, cap)
+  }
   world.capacity = cap
 }

@@ -3,10 +3,21 @@
 // candidate (the balls on the panel at one contact tick) and grown by doubling, so a tick allocates nothing
 // once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
 import type { BallPhysicsConfig } from '../config/design.js'
+import { createCollisionState, type CollisionState } from './contactState.js'
 
 export interface FixedContactState {
   /** mass of each ball (by entity id), in units of a default ball */
   mass: Float64Array
+  /**
+   * the resting grid (src/world/restingGrid.ts; only its resting-grid fields are used): resting balls are
+   * candidates of a tick only when a moving ball can reach them, so a pile at rest costs nothing
+   */
+  rest: CollisionState
+  /** balls moved by the last tick's projection or come to rest since: next tick, they and the resting balls they touch are candidates */
+  touched: Uint32Array
+  touchedCount: number
+  /** candidates of a tick that rest (sorted by id before the solve) start at this index */
+  restFrom: number
   /** contact tick, s (config.CONTACT_TICK); contacts are solved at the times k·tick, k = 1, 2, … */
   tick: number
   /** k of the next contact tick */
@@ -52,8 +63,12 @@ export interface FixedContactState {
   pairB: Int32Array
   pairHit: Uint8Array
   pairCount: number
-  /** grid cell of this tick, px */
+  /** grid cell of this tick, px, and the candidates' bounding box */
   cell: number
+  minX: number
+  minY: number
+  maxX: number
+  maxY: number
   /** contacts reported (impulses with approach of at least BALL_SETTLE_SPEED), and ticks solved */
   contacts: number
   ticks: number
@@ -63,6 +78,10 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
   const n = 64
   return {
     mass: new Float64Array(capacity).fill(1),
+    rest: createCollisionState(capacity, config.BALL_RADIUS),
+    touched: new Uint32Array(16),
+    touchedCount: 0,
+    restFrom: 0,
     tick: config.CONTACT_TICK,
     nextTick: 1,
     due: false,
@@ -94,6 +113,10 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     pairHit: new Uint8Array(n),
     pairCount: 0,
     cell: 4 * config.BALL_RADIUS,
+    minX: 0,
+    minY: 0,
+    maxX: 0,
+    maxY: 0,
     contacts: 0,
     ticks: 0,
   }
@@ -107,12 +130,21 @@ export function growFixedMass(F: FixedContactState, cap: number): void {
   F.mass = m
 }
 
-/** Makes room for n candidates. */
+/** Appends ball eid to the candidate ids (F.n counts them); the other candidate arrays follow in reserveCandidates. */
+export function pushCandidate(F: FixedContactState, eid: number): void {
+  if (F.n === F.id.length) {
+    const id = new Uint32Array(2 * F.id.length)
+    id.set(F.id)
+    F.id = id
+  }
+  F.id[F.n++] = eid
+}
+
+/** Makes room in every per-candidate array (but the ids, which keep their contents) for n candidates. */
 export function reserveCandidates(F: FixedContactState, n: number): void {
-  if (F.id.length < n) {
-    let len = F.id.length
+  if (F.x.length < n) {
+    let len = F.x.length
     while (len < n) len *= 2
-    F.id = new Uint32Array(len)
     F.x = new Float64Array(len)
     F.y = new Float64Array(len)
     F.r = new Float64Array(len)
@@ -148,4 +180,17 @@ export function pushPair(F: FixedContactState, a: number, b: number): void {
   F.pairB[F.pairCount] = b
   F.pairHit[F.pairCount] = 0
   F.pairCount++
+}
+
+/**
+ * Ball eid is a candidate next tick, with the resting balls it touches, even if it rests by then: a ball
+ * the projection moved, or one that came to rest (it may have stopped inside another).
+ */
+export function touchBall(F: FixedContactState, eid: number): void {
+  if (F.touchedCount === F.touched.length) {
+    const next = new Uint32Array(2 * F.touched.length)
+    next.set(F.touched)
+    F.touched = next
+  }
+  F.touched[F.touchedCount++] = eid
 }

@@ -1,4 +1,4 @@
-// The resting grid (ball-ball contacts on): resting balls hashed by the grid cell of their centre, kept
+// The resting grid (ball-ball contacts 'on' or 'fixed'): resting balls hashed by the grid cell of their centre, kept
 // across steps and updated when a ball comes to rest or wakes, so resting balls cost nothing until struck.
 import { MAX_RESTING_CELLS } from '../config/tolerances.js'
 import { BESIDE_GRID, RADIUS_CLASSES, appendId, type CollisionState } from './contactState.js'
@@ -45,9 +45,14 @@ export function bucketOf(ix: number, iy: number, mask: number): number {
   return (Math.imul(ix, 73856093) ^ Math.imul(iy, 19349663)) & mask
 }
 
+/** The world's resting grid: the exact method's, or the fixed-tick method's; null with contacts off. */
+export function restingState(w: BallWorld): CollisionState | null {
+  return w.collide ?? (w.fixed === null ? null : w.fixed.rest)
+}
+
 /** Puts a resting ball into the resting grid (no-op if it is there). */
 export function restingInsert(w: BallWorld, eid: number): void {
-  const C = w.collide
+  const C = restingState(w)
   if (C === null || C.restBucket[eid] !== -1) return
   if (w.Ball.radius[eid]! > MAX_RESTING_CELLS * C.cell) {
     // too wide for the grid: it would widen every lookup; kept beside it and paired with directly
@@ -70,7 +75,7 @@ export function restingInsert(w: BallWorld, eid: number): void {
 
 /** Takes a ball out of the resting grid (no-op if it is not there). */
 export function restingRemove(w: BallWorld, eid: number): void {
-  const C = w.collide
+  const C = restingState(w)
   if (C === null) return
   const bucket = C.restBucket[eid]!
   if (bucket === BESIDE_GRID) {
@@ -94,7 +99,7 @@ export function restingRemove(w: BallWorld, eid: number): void {
 }
 
 function rehashResting(w: BallWorld, buckets: number): void {
-  const C = w.collide!
+  const C = restingState(w)!
   const old = C.restHead
   C.restHead = new Uint32Array(buckets)
   const count = C.restCount

@@ -1,0 +1,309 @@
+// Ball-ball contacts under load, side by side in one run: this module's two contact methods (exact
+// event-driven 'on', fixed-tick 'fixed') against rapier2d-compat, matter-js and planck, on two scenes:
+//   gas:   a walled square, balls at area fraction 0.2, restitution 0.9 (balls and walls), no holes, no
+//          rolling deceleration, 150–350 px/s in random directions;
+//   panel: the multi-ball panel: tiles of the default 5 × 5 panel side by side in one walled field (bottom
+//          open), 40 balls a tile thrown up the panel at once from a launch band (powers 0.2–0.9, aims
+//          ±0.4 rad), the design's deceleration; the peers' holes are sensors that take a ball slower than
+//          V_MAX, their deceleration is linear damping.
+// Every ball is put down apart from the others (no engine starts by pushing overlaps apart). Each engine
+// steps at dt = 1/120 s under tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene,
+// median of ROUNDS rounds with the engines interleaved. Printed as ns per ball-step and as the ratio
+// peer / ours. Cost per contact = (step with contacts − the same step with contacts off) / contacts per
+// step, for this module's methods. Writes docs/results/contacts.json and docs/figures/contacts.svg.
+//
+//   npm run bench:contacts          (1,000 and 10,000 balls)
+import RAPIER from '@dimforge/rapier2d-compat'
+import Matter from 'matter-js'
+import * as planck from 'planck'
+import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
+import { contactsFigure, type ContactRow } from './charts'
+import { DT, argValue, collectGarbage, median, writeFigure, writeResult } from './lib'
+import { Bench } from 'tinybench'
+
+const R = 11
+const HOLE_R = 18
+const V_MAX = 600
+const PX = 100
+const MEASURED_STEPS = 120
+const ROUNDS = 3
+
+interface Scene {
+  name: 'gas' | 'panel'
+  width: number
+  height: number
+  /** open bottom edge */
+  open: boolean
+  restitution: number
+  decel: number
+  balls: { x: number; y: number; vx: number; vy: number }[]
+  holes: { x: number; y: number }[]
+}
+
+function random(seed: number): () => number {
+  let s = seed
+  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+}
+
+function gas(n: number): Scene {
+  const r = random(12345)
+  const side = Math.sqrt((n * Math.PI * R * R) / 0.2)
+  const k = Math.ceil(Math.sqrt(n))
+  const pitch = side / k
+  const balls: Scene['balls'] = []
+  for (let i = 0; i < n; i++) {
+    const a = r() * 2 * Math.PI
+    const v = 150 + 200 * r()
+    const jitter = pitch - 2 * R - 0.01
+    balls.push({ x: pitch * ((i % k) + 0.5) + (r() - 0.5) * jitter, y: pitch * (Math.floor(i / k) + 0.5) + (r() - 0.5) * jitter, vx: v * Math.cos(a), vy: v * Math.sin(a) })
+  }
+  return { name: 'gas', width: side, height: side, open: false, restitution: 0.9, decel: 0, balls, holes: [] }
+}
+
+function panel(n: number): Scene {
+  const r = random(777)
+  const perTile = 40
+  const tiles = Math.ceil(n / perTile)
+  const cols = Math.ceil(Math.sqrt(tiles))
+  const rows = Math.ceil(tiles / cols)
+  const W = DEFAULT_PANEL.width
+  const H = DEFAULT_PANEL.height
+  const holes: Scene['holes'] = []
+  for (let ty = 0; ty < rows; ty++) for (let tx = 0; tx < cols; tx++) for (const h of DEFAULT_PANEL.holes) holes.push({ x: h.x + tx * W, y: h.y + ty * H })
+  const balls: Scene['balls'] = []
+  // launch band: 10 columns × 4 rows a tile, 40 px apart, jittered, below the lowest row of holes
+  for (let i = 0; i < n; i++) {
+    const t = Math.floor(i / perTile)
+    const j = i % perTile
+    const x = (t % cols) * W + 30 + 40 * (j % 10) + (r() - 0.5) * 16
+    const y = Math.floor(t / cols) * H + H - 150 + 40 * Math.floor(j / 10) + (r() - 0.5) * 16
+    const speed = 175 + (0.2 + 0.7 * r()) * (700 - 175)
+    const angle = (r() - 0.5) * 0.8
+    balls.push({ x, y, vx: speed * Math.sin(angle), vy: -speed * Math.cos(angle) })
+  }
+  return { name: 'panel', width: cols * W, height: rows * H, open: true, restitution: 0.9, decel: 300, balls, holes }
+}
+
+type Stepper = { step: () => void; contacts: () => number }
+
+function ours(sc: Scene, mode: 'off' | 'on' | 'fixed'): Stepper {
+  const sim: BallPhysics = createBallPhysics(
+    { ROLLING_DECEL: sc.decel, BALL_COLLISIONS: mode, BALL_RESTITUTION: sc.restitution },
+    { capacity: sc.balls.length + sc.holes.length + 64 },
+  )
+  sim.setWalls({ minX: 0, minY: 0, maxX: sc.width, maxY: sc.height, restitution: sc.restitution, open: { bottom: sc.open } })
+  for (const h of sc.holes) sim.addHole(h)
+  for (const b of sc.balls) sim.addBall(b)
+  const w = sim.world
+  return {
+    step: () => {
+      sim.step(DT)
+      w.events.count = 0
+    },
+    contacts: () => w.collide?.contacts ?? w.fixed?.contacts ?? 0,
+  }
+}
+
+/** Linear damping that matches the deceleration at the scene's typical speed (400 px/s). */
+const damping = (sc: Scene) => sc.decel / 400
+
+function matter(sc: Scene): Stepper {
+  const engine = Matter.Engine.create({ gravity: { x: 0, y: 0, scale: 0 } })
+  const bodies = sc.balls.map((b) => {
+    const body = Matter.Bodies.circle(b.x, b.y, R, { frictionAir: damping(sc) * DT, friction: 0, frictionStatic: 0, restitution: sc.restitution, inertia: Infinity })
+    Matter.Body.setVelocity(body, { x: b.vx / 60, y: b.vy / 60 })
+    return body
+  })
+  const T = 50
+  const wall = (x: number, y: number, w: number, h: number) => Matter.Bodies.rectangle(x, y, w, h, { isStatic: true, restitution: sc.restitution, friction: 0 })
+  const walls = [wall(sc.width / 2, -T / 2, sc.width + 2 * T, T), wall(-T / 2, sc.height / 2, T, sc.height), wall(sc.width + T / 2, sc.height / 2, T, sc.height)]
+  if (!sc.open) walls.push(wall(sc.width / 2, sc.height + T / 2, sc.width + 2 * T, T))
+  const holes = sc.holes.map((h) => Matter.Bodies.circle(h.x, h.y, HOLE_R, { isStatic: true, isSensor: true }))
+  Matter.Composite.add(engine.world, [...bodies, ...walls, ...holes])
+  const captured: Matter.Body[] = []
+  Matter.Events.on(engine, 'collisionStart', (e) => {
+    for (const p of e.pairs) {
+      const ball = p.bodyA.isSensor ? p.bodyB : p.bodyB.isSensor ? p.bodyA : undefined
+      if (ball && ball.speed * 60 < V_MAX) captured.push(ball)
+    }
+  })
+  return {
+    step: () => {
+      Matter.Engine.update(engine, DT * 1000)
+      while (captured.length > 0) Matter.Composite.remove(engine.world, captured.pop()!)
+    },
+    contacts: () => 0,
+  }
+}
+
+function planckWorld(sc: Scene): Stepper {
+  const world = new planck.World({ gravity: planck.Vec2(0, 0) })
+  const captured: planck.Body[] = []
+  const ground = world.createBody()
+  const S = (v: number) => v / PX
+  const edges: [number, number, number, number][] = [
+    [0, 0, sc.width, 0],
+    [0, 0, 0, sc.height],
+    [sc.width, 0, sc.width, sc.height],
+  ]
+  if (!sc.open) edges.push([0, sc.height, sc.width, sc.height])
+  for (const [x0, y0, x1, y1] of edges) ground.createFixture({ shape: new planck.Edge(planck.Vec2(S(x0), S(y0)), planck.Vec2(S(x1), S(y1))), restitution: sc.restitution })
+  for (const h of sc.holes) world.createBody({ position: planck.Vec2(S(h.x), S(h.y)) }).createFixture({ shape: new planck.Circle(S(HOLE_R)), isSensor: true, userData: 'hole' })
+  for (const b of sc.balls) {
+    const body = world.createBody({ type: 'dynamic', position: planck.Vec2(S(b.x), S(b.y)), linearDamping: damping(sc), fixedRotation: true })
+    body.createFixture({ shape: new planck.Circle(S(R)), density: 1, friction: 0, restitution: sc.restitution })
+    body.setLinearVelocity(planck.Vec2(S(b.vx), S(b.vy)))
+  }
+  world.on('begin-contact', (c) => {
+    const a = c.getFixtureA()
+    const b = c.getFixtureB()
+    const ball = a.getUserData() === 'hole' ? b.getBody() : b.getUserData() === 'hole' ? a.getBody() : undefined
+    if (ball && planck.Vec2.lengthOf(ball.getLinearVelocity()) * PX < V_MAX) captured.push(ball)
+  })
+  return {
+    step: () => {
+      world.step(DT)
+      while (captured.length > 0) world.destroyBody(captured.pop()!)
+    },
+    contacts: () => 0,
+  }
+}
+
+function rapier(sc: Scene): Stepper {
+  const world = new RAPIER.World({ x: 0, y: 0 })
+  world.timestep = DT
+  const queue = new RAPIER.EventQueue(true)
+  const S = (v: number) => v / PX
+  const fixed = world.createRigidBody(RAPIER.RigidBodyDesc.fixed())
+  const T = 0.5
+  const walls: [number, number, number, number][] = [
+    [S(sc.width) / 2 + T, T / 2, S(sc.width) / 2, -T / 2],
+    [T / 2, S(sc.height) / 2, -T / 2, S(sc.height) / 2],
+    [T / 2, S(sc.height) / 2, S(sc.width) + T / 2, S(sc.height) / 2],
+  ]
+  if (!sc.open) walls.push([S(sc.width) / 2 + T, T / 2, S(sc.width) / 2, S(sc.height) + T / 2])
+  for (const [hx, hy, cx, cy] of walls) world.createCollider(RAPIER.ColliderDesc.cuboid(hx, hy).setTranslation(cx, cy).setRestitution(sc.restitution).setFriction(0), fixed)
+  const holeHandles = new Set<number>()
+  for (const h of sc.holes) {
+    const col = world.createCollider(
+      RAPIER.ColliderDesc.ball(S(HOLE_R)).setTranslation(S(h.x), S(h.y)).setSensor(true).setActiveEvents(RAPIER.ActiveEvents.COLLISION_EVENTS),
+      fixed,
+    )
+    holeHandles.add(col.handle)
+  }
+  for (const b of sc.balls) {
+    const body = world.createRigidBody(
+      RAPIER.RigidBodyDesc.dynamic().setTranslation(S(b.x), S(b.y)).setLinvel(S(b.vx), S(b.vy)).setLinearDamping(damping(sc)).lockRotations(),
+    )
+    world.createCollider(RAPIER.ColliderDesc.ball(S(R)).setRestitution(sc.restitution).setFriction(0), body)
+  }
+  const captured: number[] = []
+  return {
+    step: () => {
+      world.step(queue)
+      queue.drainCollisionEvents((h1, h2, started) => {
+        if (!started) return
+        const ballCollider = holeHandles.has(h1) ? h2 : holeHandles.has(h2) ? h1 : -1
+        if (ballCollider < 0) return
+        const body = world.getCollider(ballCollider)?.parent()
+        if (body) {
+          const v = body.linvel()
+          if (Math.hypot(v.x, v.y) * PX < V_MAX) captured.push(body.handle)
+        }
+      })
+      while (captured.length > 0) {
+        const body = world.getRigidBody(captured.pop()!)
+        if (body) world.removeRigidBody(body)
+      }
+    },
+    contacts: () => 0,
+  }
+}
+
+interface Sample {
+  /** ns per ball-step, median step */
+  ns: number
+  /** worst step, ms */
+  worstMs: number
+  contactsPerStep: number
+}
+
+async function measure(name: string, n: number, make: () => Stepper, warm: boolean): Promise<Sample> {
+  if (warm) {
+    const throwaway = make()
+    for (let i = 0; i < 20; i++) throwaway.step()
+  }
+  const s = make()
+  collectGarbage()
+  const c0 = s.contacts()
+  const bench = new Bench({ time: 0, iterations: MEASURED_STEPS, warmup: false })
+  bench.add(name, s.step)
+  await bench.run()
+  const r = bench.tasks[0]!.result as { latency?: { p50: number; max: number }; error?: unknown }
+  if (!r.latency) throw new Error(`${name}: benchmark failed: ${String(r.error)}`)
+  return { ns: (r.latency.p50 * 1e6) / n, worstMs: r.latency.max, contactsPerStep: (s.contacts() - c0) / MEASURED_STEPS }
+}
+
+await RAPIER.init()
+const sizes = (argValue('--sizes') ?? '1000,10000').split(',').map(Number)
+const rows: ContactRow[] = []
+for (const make of [gas, panel]) {
+  for (const n of sizes) {
+    const sc = make(n)
+    const engines: [string, () => Stepper][] = [
+      ['off', () => ours(sc, 'off')],
+      ['exact', () => ours(sc, 'on')],
+      ['fixed', () => ours(sc, 'fixed')],
+      ['rapier', () => rapier(sc)],
+      ['matter', () => matter(sc)],
+      ['planck', () => planckWorld(sc)],
+    ]
+    const got = new Map<string, Sample[]>(engines.map(([k]) => [k, []]))
+    for (let round = 0; round < ROUNDS; round++) {
+      for (const [key, mk] of engines) got.get(key)!.push(await measure(key, n, mk, round === 0))
+    }
+    const med = (key: string) => {
+      const s = got.get(key)!
+      return { ns: median(s.map((x) => x.ns)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)) }
+    }
+    const off = med('off')
+    const exact = med('exact')
+    const fixed = med('fixed')
+    const perContactUs = (m: Sample) => (m.contactsPerStep > 0 ? ((m.ns - off.ns) * n) / m.contactsPerStep / 1000 : NaN)
+    const row: ContactRow = {
+      scene: sc.name,
+      balls: n,
+      off: off.ns,
+      exact: exact.ns,
+      fixed: fixed.ns,
+      rapier: med('rapier').ns,
+      matter: med('matter').ns,
+      planck: med('planck').ns,
+      worstMs: { exact: exact.worstMs, fixed: fixed.worstMs, rapier: med('rapier').worstMs, matter: med('matter').worstMs, planck: med('planck').worstMs },
+      contactsPerStep: { exact: exact.contactsPerStep, fixed: fixed.contactsPerStep },
+      usPerContact: { exact: perContactUs(exact), fixed: perContactUs(fixed) },
+    }
+    rows.push(row)
+    const f = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1))
+    console.log(
+      `${sc.name} ${n}: ns/ball-step off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)}, rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
+        `worst step ms exact ${f(row.worstMs.exact)}, fixed ${f(row.worstMs.fixed)}, rapier ${f(row.worstMs.rapier)}; ` +
+        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact exact ${f(row.usPerContact.exact)}, fixed ${f(row.usPerContact.fixed)}`,
+    )
+  }
+}
+const json = writeResult('contacts', {
+  dt: DT,
+  measuredSteps: MEASURED_STEPS,
+  rounds: ROUNDS,
+  contactTick: 1 / 240,
+  timing: 'tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene, ns per ball-step; median of ROUNDS rounds, engines interleaved',
+  perContact: '(ns per ball-step with contacts − the same with contacts off) × balls / contacts per step',
+  scenes: {
+    gas: 'walled square, area fraction 0.2, restitution 0.9, no holes, no deceleration, 150–350 px/s',
+    panel: 'tiles of the default 5 × 5 panel in one field open at the bottom, 40 balls a tile thrown up at once from a launch band, ROLLING_DECEL 300',
+  },
+  rows,
+})
+const svg = await writeFigure('contacts', contactsFigure(rows, MEASURED_STEPS, ROUNDS))
+console.log(`wrote ${json} and ${svg}`)
