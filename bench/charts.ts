@@ -91,16 +91,19 @@ export interface ContactRow {
   off: number
   exact: number
   fixed: number
+  fixed240: number
   rapier: number
   matter: number
   planck: number
-  worstMs: { exact: number; fixed: number; rapier: number; matter: number; planck: number }
-  contactsPerStep: { exact: number; fixed: number }
-  usPerContact: { exact: number; fixed: number }
+  meanLive: Record<string, number>
+  worstMs: { exact: number; fixed: number; fixed240: number; rapier: number; matter: number; planck: number }
+  contactsPerStep: { exact: number; fixed: number; fixed240: number }
+  usPerContact: { exact: number; fixed: number; fixed240: number }
 }
 
 const CONTACT_ENGINES = [
-  ['ours, fixed tick', 'fixed'],
+  ['ours, fixed 1/120', 'fixed'],
+  ['ours, fixed 1/240', 'fixed240'],
   ['ours, exact', 'exact'],
   ['rapier2d-compat', 'rapier'],
   ['matter-js', 'matter'],
@@ -115,8 +118,8 @@ export function contactsFigure(rows: readonly ContactRow[], steps: number, round
   return {
     $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
     title: {
-      text: 'Ball-ball contacts on: cost per ball-step against general 2D engines',
-      subtitle: `same scenes, dt = 1/120 s, CONTACT_TICK 1/240 s, median step of ${steps}, median of ${rounds} rounds, one run on a 2-core machine`,
+      text: 'Ball-ball contacts on: cost per live ball-step against general 2D engines',
+      subtitle: `same scenes, dt = 1/120 s, median step of ${steps}, median of ${rounds} rounds, one run on a 2-core machine`,
     },
     width: 620,
     height: 320,
@@ -124,7 +127,7 @@ export function contactsFigure(rows: readonly ContactRow[], steps: number, round
     encoding: {
       x: { field: 'engine', type: 'nominal', sort: CONTACT_ENGINES.map((e) => e[0]), title: null, axis: { labelAngle: 0 } },
       xOffset: { field: 'scene', type: 'nominal', sort: scenes },
-      y: { field: 'ns', type: 'quantitative', stack: null, scale: { type: 'log', domain: [10, top] }, title: 'ns per ball-step (log scale)' },
+      y: { field: 'ns', type: 'quantitative', stack: null, scale: { type: 'log', domain: [10, top] }, title: 'ns per live ball-step (log scale)' },
       color: { field: 'scene', type: 'nominal', title: null, sort: scenes, legend: { orient: 'top-left', labelLimit: 300 } },
     },
     layer: [
@@ -132,4 +135,58 @@ export function contactsFigure(rows: readonly ContactRow[], steps: number, round
       { mark: { type: 'text', dy: -6, fontSize: 8 }, encoding: { text: { field: 'ns', type: 'quantitative', format: '.3~r' } } },
     ],
   }
+}
+
+export interface AccuracyPoint {
+  scene: string
+  method: string
+  /** ns per ball-step */
+  ns: number
+  /** share of balls ending where the exact method's do */
+  agreement: number
+  /** total variation distance of the distribution of ends from the exact method's */
+  holeError: number
+}
+
+/** A short label for a method of the accuracy chart: the tick of a fixed run, or what the method is. */
+function shortLabel(method: string): string {
+  const tick = /tick (1\/\d+)/.exec(method)
+  if (tick) return `fixed ${tick[1]}`
+  if (method.startsWith('exact, spawns')) return 'exact, spawns ±1e-9 px'
+  if (method.startsWith('exact')) return 'exact (reference)'
+  return method
+}
+
+/** Cost against agreement with the exact method, one panel per scene; the fixed ticks joined by a line. */
+export function contactAccuracyFigure(points: readonly AccuracyPoint[], seeds: number): TopLevelSpec {
+  const values = points.map((p, i) => ({
+    ...p,
+    order: i,
+    label: shortLabel(p.method),
+    family: p.method.startsWith('fixed') ? 'fixed tick' : p.method.startsWith('exact') ? 'exact' : 'contacts off',
+    agreementPct: 100 * p.agreement,
+  }))
+  return {
+    $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
+    title: {
+      text: 'Contact methods: cost against agreement of outcomes with the exact method',
+      subtitle: `default panel, a burst thrown at once, ${seeds} seeds a scene; agreement: share of balls that end in the same hole (or out, or at rest)`,
+    },
+    data: { values },
+    facet: { column: { field: 'scene', type: 'nominal', title: null } },
+    spec: {
+      width: 300,
+      height: 300,
+      encoding: {
+        x: { field: 'ns', type: 'quantitative', scale: { type: 'log' }, title: 'ns per ball-step (log scale)' },
+        y: { field: 'agreementPct', type: 'quantitative', scale: { domain: [50, 100] }, title: 'balls ending where the exact method says, %' },
+        color: { field: 'family', type: 'nominal', title: null, legend: { orient: 'bottom' } },
+      },
+      layer: [
+        { transform: [{ filter: "datum.family === 'fixed tick'" }], mark: { type: 'line', strokeDash: [3, 2] }, encoding: { order: { field: 'order', type: 'quantitative' } } },
+        { mark: { type: 'point', filled: true, size: 50 } },
+        { mark: { type: 'text', align: 'left', dx: 6, dy: 8, fontSize: 9 }, encoding: { text: { field: 'label', type: 'nominal' } } },
+      ],
+    },
+  } as TopLevelSpec
 }

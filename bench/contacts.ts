@@ -9,14 +9,17 @@
 // Every ball is put down apart from the others (no engine starts by pushing overlaps apart). Each engine
 // steps at dt = 1/120 s under tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene,
 // median of ROUNDS rounds with the engines interleaved. Printed as ns per ball-step and as the ratio
-// peer / ours. Cost per contact = (step with contacts − the same step with contacts off) / contacts per
-// step, for this module's methods. Writes docs/results/contacts.json and docs/figures/contacts.svg.
+// peer / ours. The cost is divided by the balls still in play (each engine takes balls out at its holes
+// at its own rate). Cost per contact = (step with contacts − the same step with contacts off) / contacts
+// per step, for this module's methods. The fixed-tick method runs at its default CONTACT_TICK (1/120 s:
+// one contact solve per step here, as the peers) and at 1/240 s. Writes docs/results/contacts.json and docs/figures/contacts.svg.
 //
 //   npm run bench:contacts          (1,000 and 10,000 balls)
 import RAPIER from '@dimforge/rapier2d-compat'
 import Matter from 'matter-js'
 import * as planck from 'planck'
 import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
+import { BallMode } from '../components/Ball'
 import { contactsFigure, type ContactRow } from './charts'
 import { DT, argValue, collectGarbage, median, writeFigure, writeResult } from './lib'
 import { Bench } from 'tinybench'
@@ -84,11 +87,12 @@ function panel(n: number): Scene {
   return { name: 'panel', width: cols * W, height: rows * H, open: true, restitution: 0.9, decel: 300, balls, holes }
 }
 
-type Stepper = { step: () => void; contacts: () => number }
+/** step: one step; contacts: contacts so far (this module); live: balls still in play (not captured or out) */
+type Stepper = { step: () => void; contacts: () => number; live: () => number }
 
-function ours(sc: Scene, mode: 'off' | 'on' | 'fixed'): Stepper {
+function ours(sc: Scene, mode: 'off' | 'on' | 'fixed', tick = 1 / 120): Stepper {
   const sim: BallPhysics = createBallPhysics(
-    { ROLLING_DECEL: sc.decel, BALL_COLLISIONS: mode, BALL_RESTITUTION: sc.restitution },
+    { ROLLING_DECEL: sc.decel, BALL_COLLISIONS: mode, BALL_RESTITUTION: sc.restitution, CONTACT_TICK: tick },
     { capacity: sc.balls.length + sc.holes.length + 64 },
   )
   sim.setWalls({ minX: 0, minY: 0, maxX: sc.width, maxY: sc.height, restitution: sc.restitution, open: { bottom: sc.open } })
@@ -101,6 +105,14 @@ function ours(sc: Scene, mode: 'off' | 'on' | 'fixed'): Stepper {
       w.events.count = 0
     },
     contacts: () => w.collide?.contacts ?? w.fixed?.contacts ?? 0,
+    live: () => {
+      let n = 0
+      for (const b of sim.balls()) {
+        const m = w.Ball.mode[b]
+        if (m !== BallMode.Captured && m !== BallMode.Out) n++
+      }
+      return n
+    },
   }
 }
 
@@ -120,6 +132,7 @@ function matter(sc: Scene): Stepper {
   if (!sc.open) walls.push(wall(sc.width / 2, sc.height + T / 2, sc.width + 2 * T, T))
   const holes = sc.holes.map((h) => Matter.Bodies.circle(h.x, h.y, HOLE_R, { isStatic: true, isSensor: true }))
   Matter.Composite.add(engine.world, [...bodies, ...walls, ...holes])
+  const statics = walls.length + holes.length
   const captured: Matter.Body[] = []
   Matter.Events.on(engine, 'collisionStart', (e) => {
     for (const p of e.pairs) {
@@ -133,6 +146,7 @@ function matter(sc: Scene): Stepper {
       while (captured.length > 0) Matter.Composite.remove(engine.world, captured.pop()!)
     },
     contacts: () => 0,
+    live: () => Matter.Composite.allBodies(engine.world).length - statics,
   }
 }
 
@@ -166,6 +180,7 @@ function planckWorld(sc: Scene): Stepper {
       while (captured.length > 0) world.destroyBody(captured.pop()!)
     },
     contacts: () => 0,
+    live: () => world.getBodyCount() - 1 - sc.holes.length,
   }
 }
 
@@ -217,18 +232,30 @@ function rapier(sc: Scene): Stepper {
       }
     },
     contacts: () => 0,
+    live: () => world.bodies.len() - 1,
   }
 }
 
 interface Sample {
-  /** ns per ball-step, median step */
+  /** ns per live ball-step: median step / mean balls in play over the measured steps */
   ns: number
   /** worst step, ms */
   worstMs: number
   contactsPerStep: number
 }
 
-async function measure(name: string, n: number, make: () => Stepper, warm: boolean): Promise<Sample> {
+/** Mean balls in play over the measured steps, from an untimed run of the same fresh scene (all engines are deterministic). */
+function meanLive(make: () => Stepper): number {
+  const s = make()
+  let sum = 0
+  for (let i = 0; i < MEASURED_STEPS; i++) {
+    s.step()
+    sum += s.live()
+  }
+  return sum / MEASURED_STEPS
+}
+
+async function measure(name: string, live: number, make: () => Stepper, warm: boolean): Promise<Sample> {
   if (warm) {
     const throwaway = make()
     for (let i = 0; i < 20; i++) throwaway.step()
@@ -241,7 +268,7 @@ async function measure(name: string, n: number, make: () => Stepper, warm: boole
   await bench.run()
   const r = bench.tasks[0]!.result as { latency?: { p50: number; max: number }; error?: unknown }
   if (!r.latency) throw new Error(`${name}: benchmark failed: ${String(r.error)}`)
-  return { ns: (r.latency.p50 * 1e6) / n, worstMs: r.latency.max, contactsPerStep: (s.contacts() - c0) / MEASURED_STEPS }
+  return { ns: (r.latency.p50 * 1e6) / live, worstMs: r.latency.max, contactsPerStep: (s.contacts() - c0) / MEASURED_STEPS }
 }
 
 await RAPIER.init()
@@ -254,13 +281,15 @@ for (const make of [gas, panel]) {
       ['off', () => ours(sc, 'off')],
       ['exact', () => ours(sc, 'on')],
       ['fixed', () => ours(sc, 'fixed')],
+      ['fixed240', () => ours(sc, 'fixed', 1 / 240)],
       ['rapier', () => rapier(sc)],
       ['matter', () => matter(sc)],
       ['planck', () => planckWorld(sc)],
     ]
     const got = new Map<string, Sample[]>(engines.map(([k]) => [k, []]))
+    const live = new Map(engines.map(([k, mk]) => [k, meanLive(mk)]))
     for (let round = 0; round < ROUNDS; round++) {
-      for (const [key, mk] of engines) got.get(key)!.push(await measure(key, n, mk, round === 0))
+      for (const [key, mk] of engines) got.get(key)!.push(await measure(key, live.get(key)!, mk, round === 0))
     }
     const med = (key: string) => {
       const s = got.get(key)!
@@ -269,24 +298,29 @@ for (const make of [gas, panel]) {
     const off = med('off')
     const exact = med('exact')
     const fixed = med('fixed')
-    const perContactUs = (m: Sample) => (m.contactsPerStep > 0 ? ((m.ns - off.ns) * n) / m.contactsPerStep / 1000 : NaN)
+    const fixed240 = med('fixed240')
+    // the extra cost of a step with contacts over the same step without, per contact (live balls of each)
+    const perContactUs = (m: Sample, key: string) =>
+      m.contactsPerStep > 0 ? (m.ns * live.get(key)! - off.ns * live.get('off')!) / m.contactsPerStep / 1000 : NaN
     const row: ContactRow = {
       scene: sc.name,
       balls: n,
       off: off.ns,
       exact: exact.ns,
       fixed: fixed.ns,
+      fixed240: fixed240.ns,
       rapier: med('rapier').ns,
       matter: med('matter').ns,
       planck: med('planck').ns,
-      worstMs: { exact: exact.worstMs, fixed: fixed.worstMs, rapier: med('rapier').worstMs, matter: med('matter').worstMs, planck: med('planck').worstMs },
-      contactsPerStep: { exact: exact.contactsPerStep, fixed: fixed.contactsPerStep },
-      usPerContact: { exact: perContactUs(exact), fixed: perContactUs(fixed) },
+      meanLive: Object.fromEntries(live),
+      worstMs: { exact: exact.worstMs, fixed: fixed.worstMs, fixed240: fixed240.worstMs, rapier: med('rapier').worstMs, matter: med('matter').worstMs, planck: med('planck').worstMs },
+      contactsPerStep: { exact: exact.contactsPerStep, fixed: fixed.contactsPerStep, fixed240: fixed240.contactsPerStep },
+      usPerContact: { exact: perContactUs(exact, 'exact'), fixed: perContactUs(fixed, 'fixed'), fixed240: perContactUs(fixed240, 'fixed240') },
     }
     rows.push(row)
     const f = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1))
     console.log(
-      `${sc.name} ${n}: ns/ball-step off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)}, rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
+      `${sc.name} ${n}: ns/live ball-step off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)} (1/240: ${f(row.fixed240)}), rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
         `worst step ms exact ${f(row.worstMs.exact)}, fixed ${f(row.worstMs.fixed)}, rapier ${f(row.worstMs.rapier)}; ` +
         `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact exact ${f(row.usPerContact.exact)}, fixed ${f(row.usPerContact.fixed)}`,
     )
@@ -296,7 +330,8 @@ const json = writeResult('contacts', {
   dt: DT,
   measuredSteps: MEASURED_STEPS,
   rounds: ROUNDS,
-  contactTick: 1 / 240,
+  contactTick: { fixed: 1 / 120, fixed240: 1 / 240 },
+  normalisation: 'ns per live ball-step: the median step divided by the mean number of balls in play (not captured, not out) over the measured steps, per engine',
   timing: 'tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene, ns per ball-step; median of ROUNDS rounds, engines interleaved',
   perContact: '(ns per ball-step with contacts − the same with contacts off) × balls / contacts per step',
   scenes: {

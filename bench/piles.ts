@@ -1,0 +1,151 @@
+// Contacts under arcade abuse: the worst step, for both contact methods.
+//   burst: 10,000 balls thrown from the default panel's launch point in one frame (walls, bottom open);
+//          the launcher holds each until its spot is clear; 4 s at 60 Hz.
+//   pile:  a 100 × 100 pile of resting balls (22.5 px apart) in the corner of a 3,000 px box, pressed by a
+//          stream of fast balls (8 a step, put down 60–360 px off the pile, at 1,500 px/s toward the
+//          corner), with restitution 0 and 1
+//          (balls and walls); 2 s at 60 Hz.
+// Prints and writes the mean and worst step (ms), the deepest overlap between balls on the panel at the
+// end (px), and the contacts per step. A method whose step takes longer than STEP_LIMIT_MS stops its run
+// early (the bound on a step's work holds, but a run of such steps would take minutes); the row says so.
+// Writes docs/results/piles.json.
+//
+//   npm run bench:piles
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
+import { BallMode } from '../components/Ball'
+import { argValue, writeResult } from './lib'
+
+const DT = 1 / 60
+const STEP_LIMIT_MS = 5_000
+const BALLS = Number(argValue('--balls') ?? 10_000)
+
+interface Row {
+  scene: string
+  method: string
+  steps: number
+  stoppedEarly: boolean
+  meanStepMs: number
+  worstStepMs: number
+  deepestOverlapPx: number
+  contactsPerStep: number
+}
+
+function random(seed: number): () => number {
+  let s = seed
+  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+}
+
+/** Deepest overlap of two balls on the panel, px, through a grid of cells one diameter wide. */
+function deepestOverlap(sim: BallPhysics): number {
+  const B = sim.world.Ball
+  const ids = sim.balls().filter((b) => B.mode[b] === BallMode.Rolling || B.mode[b] === BallMode.Resting || B.mode[b] === BallMode.RimRoll)
+  let rMax = 0
+  for (const b of ids) rMax = Math.max(rMax, B.radius[b]!)
+  const cell = 2 * rMax
+  const grid = new Map<string, number[]>()
+  for (const b of ids) {
+    const k = `${Math.floor(B.x[b]! / cell)},${Math.floor(B.y[b]! / cell)}`
+    const list = grid.get(k)
+    if (list) list.push(b)
+    else grid.set(k, [b])
+  }
+  let worst = 0
+  for (const b of ids) {
+    const cx = Math.floor(B.x[b]! / cell)
+    const cy = Math.floor(B.y[b]! / cell)
+    for (let dx = -1; dx <= 1; dx++) {
+      for (let dy = -1; dy <= 1; dy++) {
+        for (const o of grid.get(`${cx + dx},${cy + dy}`) ?? []) {
+          if (o <= b) continue
+          const d = Math.hypot(B.x[b]! - B.x[o]!, B.y[b]! - B.y[o]!)
+          worst = Math.max(worst, B.radius[b]! + B.radius[o]! - d)
+        }
+      }
+    }
+  }
+  return worst
+}
+
+function contactsOf(sim: BallPhysics): number {
+  return sim.world.collide?.contacts ?? sim.world.fixed?.contacts ?? 0
+}
+
+function runScene(scene: string, method: string, sim: BallPhysics, steps: number, each?: (step: number) => void): Row {
+  let worst = 0
+  let total = 0
+  let done = 0
+  let early = false
+  const c0 = contactsOf(sim)
+  for (let s = 0; s < steps; s++) {
+    each?.(s)
+    const t0 = performance.now()
+    sim.step(DT)
+    const ms = performance.now() - t0
+    sim.drainEvents()
+    total += ms
+    worst = Math.max(worst, ms)
+    done++
+    if (ms > STEP_LIMIT_MS) {
+      early = true
+      break
+    }
+  }
+  const row: Row = {
+    scene,
+    method,
+    steps: done,
+    stoppedEarly: early,
+    meanStepMs: total / done,
+    worstStepMs: worst,
+    deepestOverlapPx: deepestOverlap(sim),
+    contactsPerStep: (contactsOf(sim) - c0) / done,
+  }
+  console.log(
+    `${scene.padEnd(12)} ${method.padEnd(6)} steps ${String(done).padStart(4)}${early ? ' (stopped: a step over 5 s)' : ''}  mean ${row.meanStepMs.toFixed(1).padStart(7)} ms  worst ${row.worstStepMs.toFixed(1).padStart(7)} ms  ` +
+      `deepest overlap ${row.deepestOverlapPx.toExponential(1)} px  contacts/step ${row.contactsPerStep.toFixed(0)}`,
+  )
+  return row
+}
+
+function burst(mode: 'on' | 'fixed'): Row {
+  const sim = createBallPhysics({ BALL_COLLISIONS: mode }, { capacity: BALLS + 64 })
+  addPanel(sim)
+  sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
+  const r = random(4242)
+  for (let i = 0; i < BALLS; i++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.7 * r(), angle: (r() - 0.5) * 1.2 })
+  return runScene(`burst ${BALLS}`, mode === 'on' ? 'exact' : 'fixed', sim, 240)
+}
+
+function pile(mode: 'on' | 'fixed', e: number): Row {
+  const side = Math.round(Math.sqrt(BALLS))
+  const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: e }, { capacity: BALLS + 1000 })
+  const box = 3000
+  sim.setWalls({ minX: 0, minY: 0, maxX: box, maxY: box, restitution: e })
+  for (let i = 0; i < side; i++) for (let j = 0; j < side; j++) sim.addBall({ x: 12 + 22.5 * i, y: 12 + 22.5 * j, vx: 0, vy: 0 })
+  const r = random(99)
+  const speed = 1500
+  const edge = 22.5 * side
+  return runScene(`pile e=${e}`, mode === 'on' ? 'exact' : 'fixed', sim, 120, () => {
+    for (let k = 0; k < 8; k++) {
+      const x = edge + 60 + 300 * r()
+      const y = edge + 60 + 300 * r()
+      const d = Math.hypot(x, y)
+      sim.addBall({ x, y, vx: (-speed * x) / d, vy: (-speed * y) / d })
+    }
+  })
+}
+
+const rows: Row[] = []
+for (const mode of ['fixed', 'on'] as const) {
+  rows.push(burst(mode))
+  rows.push(pile(mode, 0))
+  rows.push(pile(mode, 1))
+}
+const json = writeResult('piles', {
+  dt: DT,
+  balls: BALLS,
+  stepLimitMs: STEP_LIMIT_MS,
+  timing: 'performance.now() around each step, one run',
+  rows,
+})
+console.log(`wrote ${json}`)
