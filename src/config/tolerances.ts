@@ -66,3 +66,6 @@ export const MAX_RESTING_CELLS = 4
  */
 export const MAX_PROJECTION_SWEEPS = 64
 export const PROJECTION_SLOP = 1e-4
+
+/** Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts). */
+export const MAX_WIDEN_ROUNDS = 4

@@ -127,7 +127,7 @@ function gatherResting(w: BallWorld, F: FixedContactState): void {
 }
 
 /** Adds the resting balls the circle (x, y, reach) reaches, once each (the seen stamp). */
-function seedResting(w: BallWorld, F: FixedContactState, x: number, y: number, reach: number): void {
+export function seedResting(w: BallWorld, F: FixedContactState, x: number, y: number, reach: number): void {
   const C = F.rest
   for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!, x, y, reach)
   if (C.restCount === 0) return
@@ -155,39 +155,38 @@ function addResting(w: BallWorld, F: FixedContactState, e: number, x: number, y:
 
 /** Pins the candidates touching a closed wall and lists those that can reach one within the tick. */
 function markWalls(w: BallWorld, F: FixedContactState): void {
+  for (let i = 0; i < F.n; i++) markWall(w, F, i)
+}
+
+/** Candidate i: the closed walls it touches (pinned), and whether its reach meets one (the near-wall list). */
+export function markWall(w: BallWorld, F: FixedContactState, i: number): void {
   const W = w.Walls
   const e = w.walls
   const open = W.open[e]!
-  const minX = W.minX[e]!
-  const maxX = W.maxX[e]!
-  const minY = W.minY[e]!
-  const maxY = W.maxY[e]!
-  for (let i = 0; i < F.n; i++) {
-    const x = F.x[i]!
-    const y = F.y[i]!
-    const r = F.r[i]!
-    const reach = F.reach[i]!
-    let pin = 0
-    let near = false
-    if ((open & WallEdge.Left) === 0) {
-      if (x - r - minX <= TOUCH_GAP) pin |= WallEdge.Left
-      if (x - reach - minX <= 0) near = true
-    }
-    if ((open & WallEdge.Right) === 0) {
-      if (maxX - x - r <= TOUCH_GAP) pin |= WallEdge.Right
-      if (maxX - x - reach <= 0) near = true
-    }
-    if ((open & WallEdge.Top) === 0) {
-      if (y - r - minY <= TOUCH_GAP) pin |= WallEdge.Top
-      if (y - reach - minY <= 0) near = true
-    }
-    if ((open & WallEdge.Bottom) === 0) {
-      if (maxY - y - r <= TOUCH_GAP) pin |= WallEdge.Bottom
-      if (maxY - y - reach <= 0) near = true
-    }
-    F.pinned[i] = pin
-    if (near) F.nearWall[F.nearWallCount++] = i
+  const x = F.x[i]!
+  const y = F.y[i]!
+  const r = F.r[i]!
+  const reach = F.reach[i]!
+  let pin = 0
+  let near = false
+  if ((open & WallEdge.Left) === 0) {
+    if (x - r - W.minX[e]! <= TOUCH_GAP) pin |= WallEdge.Left
+    if (x - reach - W.minX[e]! <= 0) near = true
   }
+  if ((open & WallEdge.Right) === 0) {
+    if (W.maxX[e]! - x - r <= TOUCH_GAP) pin |= WallEdge.Right
+    if (W.maxX[e]! - x - reach <= 0) near = true
+  }
+  if ((open & WallEdge.Top) === 0) {
+    if (y - r - W.minY[e]! <= TOUCH_GAP) pin |= WallEdge.Top
+    if (y - reach - W.minY[e]! <= 0) near = true
+  }
+  if ((open & WallEdge.Bottom) === 0) {
+    if (W.maxY[e]! - y - r <= TOUCH_GAP) pin |= WallEdge.Bottom
+    if (W.maxY[e]! - y - reach <= 0) near = true
+  }
+  F.pinned[i] = pin
+  if (near) F.nearWall[F.nearWallCount++] = i
 }
 
 function close(F: FixedContactState, i: number, j: number): boolean {
@@ -236,6 +235,9 @@ export function findPairs(F: FixedContactState): void {
     }
   }
   const cells = cols * rows
+  F.gridCell = cell
+  F.cols = small > 0 ? cols : 0
+  F.rows = small > 0 ? rows : 0
   const start = reserveCells(F, cells)
   start.fill(0, 0, cells + 1)
   for (let i = 0; i < n; i++) {

@@ -96,6 +96,8 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
       F.vy[a] = F.vy[a]! - j * ima * ny
       F.vx[b] = F.vx[b]! + j * imb * nx
       F.vy[b] = F.vy[b]! + j * imb * ny
+      if ((F.changed[a]! & 1) === 0) F.hit[F.hitCount++] = a
+      if ((F.changed[b]! & 1) === 0) F.hit[F.hitCount++] = b
       F.changed[a]! |= 1
       F.changed[b]! |= 1
       moved = true
@@ -171,6 +173,7 @@ function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: n
     if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) pushEvent(w.events, EventType.Wall, F.id[i]!, 0, t, false, 0, 0)
     F.vx[i] = vx
     F.vy[i] = vy
+    if ((F.changed[i]! & 1) === 0) F.hit[F.hitCount++] = i
     F.changed[i]! |= 1
     moved = true
   }

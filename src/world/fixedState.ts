@@ -36,8 +36,17 @@ export interface FixedContactState {
   vy: Float64Array
   /** inverse mass */
   im: Float64Array
-  /** radius plus the distance the ball can cover in one tick, px */
+  /** radius plus the distance the ball can cover in one tick, px (at the velocity it was paired with) */
   reach: Float64Array
+  /** the reach at the velocity a solve round left it with; grown: 1 where that is wider (src/contacts/fixedReach.ts) */
+  wide: Float64Array
+  grown: Uint8Array
+  /** candidates whose velocity the solve changed, in the order it did */
+  hit: Int32Array
+  hitCount: number
+  /** candidates widened in this round */
+  widened: Int32Array
+  widenedCount: number
   /** grid cell of a small candidate */
   next: Int32Array
   /** what the solve changed: 1 velocity, 2 position */
@@ -69,6 +78,10 @@ export interface FixedContactState {
   minY: number
   maxX: number
   maxY: number
+  /** the sorted grid of the tick: its cell (px), columns and rows */
+  gridCell: number
+  cols: number
+  rows: number
   /** contacts reported (impulses with approach of at least BALL_SETTLE_SPEED), and ticks solved */
   contacts: number
   ticks: number
@@ -95,6 +108,12 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     vy: new Float64Array(n),
     im: new Float64Array(n),
     reach: new Float64Array(n),
+    wide: new Float64Array(n),
+    grown: new Uint8Array(n),
+    widened: new Int32Array(n),
+    hit: new Int32Array(n),
+    hitCount: 0,
+    widenedCount: 0,
     next: new Int32Array(n),
     changed: new Uint8Array(n),
     pinned: new Uint8Array(n),
@@ -117,6 +136,9 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     minY: 0,
     maxX: 0,
     maxY: 0,
+    gridCell: 1,
+    cols: 0,
+    rows: 0,
     contacts: 0,
     ticks: 0,
   }
@@ -140,28 +162,37 @@ export function pushCandidate(F: FixedContactState, eid: number): void {
   F.id[F.n++] = eid
 }
 
-/** Makes room in every per-candidate array (but the ids, which keep their contents) for n candidates. */
+/** Makes room in every per-candidate array (keeping their contents) for n candidates. */
 export function reserveCandidates(F: FixedContactState, n: number): void {
-  if (F.x.length < n) {
-    let len = F.x.length
-    while (len < n) len *= 2
-    F.x = new Float64Array(len)
-    F.y = new Float64Array(len)
-    F.r = new Float64Array(len)
-    F.vx = new Float64Array(len)
-    F.vy = new Float64Array(len)
-    F.im = new Float64Array(len)
-    F.reach = new Float64Array(len)
-    F.sx = new Float64Array(len)
-    F.sy = new Float64Array(len)
-    F.sr = new Float64Array(len)
-    F.si = new Int32Array(len)
-    F.next = new Int32Array(len)
-    F.changed = new Uint8Array(len)
-    F.pinned = new Uint8Array(len)
-    F.big = new Int32Array(len)
-    F.nearWall = new Int32Array(len)
-  }
+  if (F.x.length >= n) return
+  let len = F.x.length
+  while (len < n) len *= 2
+  F.x = grownTo(F.x, len)
+  F.y = grownTo(F.y, len)
+  F.r = grownTo(F.r, len)
+  F.vx = grownTo(F.vx, len)
+  F.vy = grownTo(F.vy, len)
+  F.im = grownTo(F.im, len)
+  F.reach = grownTo(F.reach, len)
+  F.wide = grownTo(F.wide, len)
+  F.grown = grownTo(F.grown, len)
+  F.next = grownTo(F.next, len)
+  F.changed = grownTo(F.changed, len)
+  F.pinned = grownTo(F.pinned, len)
+  F.sx = grownTo(F.sx, len)
+  F.sy = grownTo(F.sy, len)
+  F.sr = grownTo(F.sr, len)
+  F.si = grownTo(F.si, len)
+  F.big = grownTo(F.big, len)
+  F.nearWall = grownTo(F.nearWall, len)
+  F.widened = grownTo(F.widened, len)
+  F.hit = grownTo(F.hit, len)
+}
+
+function grownTo<T extends Float64Array | Int32Array | Uint8Array>(a: T, n: number): T {
+  const next = new (a.constructor as new (n: number) => T)(n)
+  next.set(a)
+  return next
 }
 
 /** Appends the pair (a, b) of candidate indices. */

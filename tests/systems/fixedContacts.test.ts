@@ -106,6 +106,22 @@ describe('fixed-tick contacts', () => {
     expect(sim.ballState(fast).x).toBeLessThan(sim.ballState(row[0]!).x)
   })
 
+  it('a struck ball sped up by the solve is paired again within the tick: a fast striker into a gapped row leaves no overlap', () => {
+    for (const speed of [2000, 20_000]) {
+      const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+      const row: number[] = []
+      for (let i = 0; i < 4; i++) row.push(sim.addBall({ x: 300 + 23 * i, y: 100, vx: 0, vy: 0 }))
+      sim.addBall({ x: 300 - 23 - speed / 240, y: 100, vx: speed, vy: 0 })
+      for (let s = 0; s < 12; s++) {
+        sim.step(1 / 240)
+        sim.drainEvents()
+        expect(worstOverlap(sim), `${speed} px/s, step ${s}`).toBeLessThanOrEqual(1e-9)
+      }
+      // the momentum ran down the row to its last ball
+      expect(sim.ballState(row[3]!).vx).toBeGreaterThan(0.9 * speed)
+    }
+  })
+
   it('the same scene at 30, 60, 120 and 240 Hz gives bit-identical contacts and final states', () => {
     const scene = (dt: number) => {
       const r = rng(21)
