@@ -28,6 +28,6 @@ export function fixedContactsSystem(w: BallWorld): void {
   F.hitCount = 0
   solveVelocities(w, F, t, iterations)
   for (let round = 0; round < MAX_WIDEN_ROUNDS && widenReach(w, F); round++) solveVelocities(w, F, t, iterations)
-  solvePositions(F)
+  solvePositions(w, F)
   applyChanges(w, F, t)
 }

@@ -1,5 +1,5 @@
 // Adversarial property suite: random sequences of API calls (fast-check, seeded) on a createBallPhysics world
-// (METHOD 'exact'; BALL_COLLISIONS 'off' | 'on' × BALL_RESTITUTION 0, 0.5, 1 × ROLLING_DECEL 0, 300), with
+// (METHOD 'exact'; BALL_COLLISIONS 'off' | 'on' | 'fixed' × BALL_RESTITUTION 0, 0.5, 1 × ROLLING_DECEL 0, 300), with
 // extreme but valid input: radii 1e-3…200 px and now and then up to MAX_RADIUS, masses 1e-9…1e9, speeds up to
 // 1e5 px/s, balls put down on one another, overlapping one, inside a lip circle or aimed at a hole (rim shots),
 // bursts of up to 30 balls at one point, holes added and removed, walls of every shape (the panel, 1e-6 px
@@ -8,10 +8,11 @@
 //   finite   every element of every Ball and Path store of every live ball is finite; every mode is named
 //   events   drained events never go back in time, and each lies in the window [time before, time after]
 //            of the call that reported it
-//   energy   contacts on: Σ ½·m·v² does not rise across a step that reports collisions and no wall event
+//   energy   contacts on or fixed: Σ ½·m·v² does not rise across a step that reports collisions and no wall event
 //   time     each step returns within STEP_BUDGET_MS (and a whole run within RUN_BUDGET_MS)
 //   overlap  contacts on, 0.5 s after the last ball was put down: no two balls on the panel (rolling, rimRoll,
-//            resting) overlap by more than 1e-3 px
+//            resting) overlap by more than 1e-3 px; fixed, the same right after each contact tick's solve,
+//            unless the balls cover more than half of a closed box (they may not fit)
 // A failure throws with the API calls made so far written as code, so fast-check's shrunk counterexample
 // reads as a repro.
 //
@@ -52,8 +53,10 @@ type Op =
   | { t: 'clearWalls' }
   | { t: 'step'; dt: number }
 
+type Contacts = 'off' | 'on' | 'fixed'
+
 interface Cfg {
-  contacts: 'off' | 'on'
+  contacts: Contacts
   e: number
   decel: number
 }
@@ -182,9 +185,9 @@ function opArbs(L: Limits) {
   return { op, prelude }
 }
 
-const cfgArb = (contacts: readonly ('off' | 'on')[]) =>
+const cfgArb = (contacts: readonly Contacts[]) =>
   fc.record({ contacts: fc.constantFrom(...contacts), e: fc.constantFrom(0, 0.5, 1), decel: fc.constantFrom(0, 300) })
-const scenario = (L: Limits, contacts: readonly ('off' | 'on')[] = ['off', 'on']): fc.Arbitrary<[Cfg, Op[]]> => {
+const scenario = (L: Limits, contacts: readonly Contacts[] = ['off', 'on', 'fixed']): fc.Arbitrary<[Cfg, Op[]]> => {
   const { op, prelude } = opArbs(L)
   return fc
     .tuple(cfgArb(contacts), prelude, fc.array(op, { minLength: 1, maxLength: 25, size: 'max' }))
@@ -205,12 +208,26 @@ const worst: Record<string, number> = {}
 const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; events: Record<string, number> }> = {}
 
 const PANEL_MODES = new Set(['rolling', 'rimRoll', 'resting'])
+
+/**
+ * Balls on the panel covering more than half of a closed box: they may not fit side by side at all (ten
+ * balls of radius 100 in the panel's 420 × 480 box cover 1.6 times its area), so overlaps cannot all go.
+ */
+function crowded(sim: BallPhysics): boolean {
+  const w = sim.world
+  if (w.walls === 0) return false
+  const W = w.Walls
+  const area = Math.max(0, W.maxX[w.walls]! - W.minX[w.walls]!) * Math.max(0, W.maxY[w.walls]! - W.minY[w.walls]!)
+  let cover = 0
+  for (const b of sim.balls()) if (PANEL_MODES.has(BALL_MODE_NAMES[w.Ball.mode[b]!]!)) cover += Math.PI * w.Ball.radius[b]! ** 2
+  return cover > 0.5 * area
+}
 const clampCoord = (v: number) => Math.max(-1e9, Math.min(1e9, v))
 const lit = (v: unknown) => JSON.stringify(v).replace(/"(\w+)":/g, '$1: ').replace(/,/g, ', ')
 
 function kinetic(sim: BallPhysics): number {
   const B = sim.world.Ball
-  const m = sim.world.collide!.mass
+  const m = (sim.world.collide ?? sim.world.fixed)!.mass
   let ke = 0
   for (const b of sim.balls()) ke += 0.5 * m[b]! * (B.vx[b]! * B.vx[b]! + B.vy[b]! * B.vy[b]!)
   return ke
@@ -252,9 +269,27 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (ms > STEP_BUDGET_MS) throw new OverBudget(`step still running after ${ms.toFixed(0)} ms (pass ${sim.world.pass})`)
     },
   })
+  let lastSpawn = 0
+  // fixed-tick contacts resolve overlaps at each contact tick; between ticks a ball whose path changes (a
+  // wall, a stop) can move up to one tick's travel into a neighbour. So the overlap check looks right after
+  // each tick's solve, by a probe after the solve in the schedule
+  let tickOverlap: { depth: number; a: number; b: number; t: number } | null = null
+  if (cfg.contacts === 'fixed' && on('overlap')) {
+    let ticks = 0
+    const at = sim.schedule.findIndex((e) => e.name === 'fixedContacts')
+    sim.schedule.splice(at + 1, 0, {
+      name: 'overlapProbe',
+      run: (w) => {
+        if (w.fixed!.ticks === ticks) return
+        ticks = w.fixed!.ticks
+        if (w.time - lastSpawn < 0.5 || crowded(sim)) return
+        const o = worstOverlap(sim)
+        if (o.depth > (tickOverlap?.depth ?? 1e-3)) tickOverlap = { ...o, t: w.time }
+      },
+    })
+  }
   const all: Op[] = [...ops, ...Array.from({ length: SETTLE_STEPS }, (): Op => ({ t: 'step', dt: 1 / 60 }))]
   let lastEvent = -Infinity
-  let lastSpawn = 0
   let stepping = 0
   const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, events: {} })
   stats.runs++
@@ -307,7 +342,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
 
   for (const op of all) {
     const t0 = sim.time
-    const ke0 = on('energy') && op.t === 'step' && cfg.contacts === 'on' ? kinetic(sim) : 0
+    const ke0 = on('energy') && op.t === 'step' && cfg.contacts !== 'off' ? kinetic(sim) : 0
     switch (op.t) {
       case 'addBall':
       case 'throw': {
@@ -445,10 +480,14 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         if (BALL_MODE_NAMES[m] === undefined) fail(`bad mode: Ball.mode[${b}] = ${m}`)
       }
     }
-    if (on('energy') && op.t === 'step' && cfg.contacts === 'on' && events.some((e) => e.type === 'collision') && !events.some((e) => e.type === 'wall')) {
+    if (on('energy') && op.t === 'step' && cfg.contacts !== 'off' && events.some((e) => e.type === 'collision') && !events.some((e) => e.type === 'wall')) {
       const ke1 = kinetic(sim)
       stats.checked++
       if (ke1 > ke0 * (1 + 1e-9) + 1e-9) fail(`energy rise: kinetic energy ${ke0} -> ${ke1} over a step with collisions and no wall event`)
+    }
+    if (tickOverlap !== null) {
+      const o: { depth: number; a: number; b: number; t: number } = tickOverlap
+      fail(`overlap: balls ${o.a} and ${o.b} overlap by ${o.depth} px after the contact tick at t = ${o.t} (last spawn at ${lastSpawn})`)
     }
     if (on('overlap') && cfg.contacts === 'on' && sim.time - lastSpawn >= 0.5) {
       const o = worstOverlap(sim)
@@ -509,6 +548,18 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
   // ranges, steps with contacts on can take seconds (docs/known-failures.md)
   it('every step returns within 2 s, and a run of 65 steps within 5 s (radii 2…200 px, masses 1e-3…1e3, no walls narrower than a ball)', () => {
     property('time (narrowed)', scenario(NO_RUNAWAY), ['time'], 80, SEED + 5)
+  }, 120_000)
+
+  it('fixed-tick contacts: kinetic energy does not rise across a step with collisions and no wall event (full ranges)', () => {
+    property('energy (fixed)', scenario(FULL, ['fixed']), ['energy'], 60, SEED + 11)
+  }, 120_000)
+
+  it('fixed-tick contacts, full ranges (radii 1e-3 px to the maximum, masses 1e-9…1e9, degenerate walls): every step returns within 2 s, a run within 5 s', () => {
+    property('time (fixed, full)', scenario(FULL, ['fixed']), ['time'], 80, SEED + 12)
+  }, 120_000)
+
+  it('fixed-tick contacts, full ranges: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
+    property('overlap (fixed, full)', scenario(FULL, ['fixed']), ['overlap'], 80, SEED + 13)
   }, 120_000)
 
   // no holes, so no rim rolls: a rim roll's start can leave an overlap (docs/known-failures.md)

@@ -120,7 +120,7 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   SUBSTEPS: 1,
   BALL_COLLISIONS: 'off',
   CONTACT_TICK: 1 / 120,
-  CONTACT_ITERATIONS: 8,
+  CONTACT_ITERATIONS: 32,
   BALL_RESTITUTION: 0.9,
   BALL_SETTLE_SPEED: 1,
 })

@@ -66,6 +66,8 @@ export const MAX_RESTING_CELLS = 4
  */
 export const MAX_PROJECTION_SWEEPS = 64
 export const PROJECTION_SLOP = 1e-4
+/** Least share of a pair's overlap each ball takes in the projection, whatever the mass ratio (positions only: no momentum or energy is involved). */
+export const MIN_PROJECTION_SHARE = 0.1
 
 /** Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts). */
 export const MAX_WIDEN_ROUNDS = 4

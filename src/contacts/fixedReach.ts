@@ -5,7 +5,7 @@
 // resting balls now in its reach (they join the candidates). The solve then runs again over all pairs.
 // At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts): a chain longer than that is caught
 // at the next tick, by the projection.
-import { TOUCH_GAP } from '../config/tolerances.js'
+import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
 import { markWall, seedResting } from './fixedGrid.js'
@@ -20,7 +20,9 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
     const vx = F.vx[i]!
     const vy = F.vy[i]!
     const wide = F.r[i]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
-    if (!(wide > F.reach[i]!)) continue
+    // wider by no more than the projection's slop: at worst it moves that far into a neighbour, which the
+    // next tick's projection takes out
+    if (!(wide > F.reach[i]! + PROJECTION_SLOP)) continue
     F.wide[i] = wide
     F.grown[i] = 1
     F.widened[F.widenedCount++] = i

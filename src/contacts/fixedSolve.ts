@@ -7,11 +7,12 @@
 //     within the tick" is the swept test on straight lines at the present velocities, and the impulse acts
 //     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
-//   positions: sweeps that move every overlapping pair apart along the normal, shared by inverse mass, and
+//   positions: sweeps that move every overlapping pair apart along the normal, shared by inverse mass (each
+//     taking at least a tenth), and
 //     keep balls inside the closed walls, until no overlap is deeper than PROJECTION_SLOP (at most
 //     MAX_PROJECTION_SWEEPS). Only positions change: the projection adds no kinetic energy.
-// A ball pressed against a closed wall, pushed toward it, keeps its place in the projection (the wall
-// holds it), so a heavy ball cannot drive a light one through the wall.
+// In the projection, the part of a push that a closed wall keeps a ball from taking goes to the other ball
+// of the pair, so a heavy ball cannot drive a light one through the wall.
 // Then every ball the solve changed starts a fresh path from its new state at the tick (a ball on a rim or
 // in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
 // if it leaves at BALL_SETTLE_SPEED or more.
@@ -22,7 +23,7 @@ import { launchBall, placeBall } from '../motion/ballFate.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
-import { MAX_PROJECTION_SWEEPS, PROJECTION_SLOP } from '../config/tolerances.js'
+import { MAX_PROJECTION_SWEEPS, MIN_PROJECTION_SHARE, PROJECTION_SLOP } from '../config/tolerances.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { strikeLeavesRim } from './law.js'
 
@@ -64,24 +65,17 @@ function normal(F: FixedContactState, a: number, b: number): number {
   return d - F.r[a]! - F.r[b]!
 }
 
-/** True when a push along (dx, dy) would drive candidate i into a closed wall it touches. */
-function intoWall(F: FixedContactState, i: number, dx: number, dy: number): boolean {
-  const p = F.pinned[i]!
-  if (p === 0) return false
-  return (
-    ((p & WallEdge.Left) !== 0 && dx < 0) ||
-    ((p & WallEdge.Right) !== 0 && dx > 0) ||
-    ((p & WallEdge.Top) !== 0 && dy < 0) ||
-    ((p & WallEdge.Bottom) !== 0 && dy > 0)
-  )
-}
-
 export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number): void {
   const e = w.config.BALL_RESTITUTION
   const settle = w.config.BALL_SETTLE_SPEED
   for (let it = 0; it < iterations; it++) {
     let moved = false
-    for (let p = 0; p < F.pairCount; p++) {
+    // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
+    // Gauss-Seidel): a push runs through a row against a wall either way within a sweep
+    if (wallVelocities(w, F, t, settle)) moved = true
+    const back = (it & 1) === 1
+    for (let k = 0; k < F.pairCount; k++) {
+      const p = back ? F.pairCount - 1 - k : k
       const a = F.pairA[p]!
       const b = F.pairB[p]!
       if (!meetsWithinTick(F, a, b)) continue
@@ -184,10 +178,12 @@ function bounce(vn: number, settle: number): number {
   return Math.abs(vn) < settle ? 0 : -box.e * vn
 }
 
-export function solvePositions(F: FixedContactState): void {
+export function solvePositions(w: BallWorld, F: FixedContactState): void {
   for (let it = 0; it < MAX_PROJECTION_SWEEPS; it++) {
     let worst = 0
-    for (let p = 0; p < F.pairCount; p++) {
+    const back = (it & 1) === 1
+    for (let k = 0; k < F.pairCount; k++) {
+      const p = back ? F.pairCount - 1 - k : k
       const a = F.pairA[p]!
       const b = F.pairB[p]!
       const gap = normal(F, a, b)
@@ -195,47 +191,74 @@ export function solvePositions(F: FixedContactState): void {
       const nx = nrm.x
       const ny = nrm.y
       if (-gap > worst) worst = -gap
-      let ima = intoWall(F, a, -nx, -ny) ? 0 : F.im[a]!
-      let imb = intoWall(F, b, nx, ny) ? 0 : F.im[b]!
-      if (ima + imb === 0) {
-        ima = F.im[a]!
-        imb = F.im[b]!
+      // shared by inverse mass, each ball taking at least MIN_PROJECTION_SHARE (a light ball squeezed between
+      // heavy ones would otherwise take every push and pass it to and fro); what a wall keeps one ball from
+      // taking, the other takes (a ball against a wall is held by it)
+      const want = -gap
+      const share = Math.min(1 - MIN_PROJECTION_SHARE, Math.max(MIN_PROJECTION_SHARE, F.im[a]! / (F.im[a]! + F.im[b]!)))
+      const ax = F.x[a]!
+      const ay = F.y[a]!
+      F.x[a] = ax - want * share * nx
+      F.y[a] = ay - want * share * ny
+      keepInside(w, F, a)
+      const took = (ax - F.x[a]!) * nx + (ay - F.y[a]!) * ny
+      const bx = F.x[b]!
+      const by = F.y[b]!
+      F.x[b] = bx + (want - took) * nx
+      F.y[b] = by + (want - took) * ny
+      keepInside(w, F, b)
+      // and what a wall keeps b from taking goes back to a
+      const left = want - took - ((F.x[b]! - bx) * nx + (F.y[b]! - by) * ny)
+      if (left > 0) {
+        F.x[a] = F.x[a]! - left * nx
+        F.y[a] = F.y[a]! - left * ny
+        keepInside(w, F, a)
       }
-      const sa = ima / (ima + imb)
-      const sb = 1 - sa
-      F.x[a] = F.x[a]! + gap * sa * nx
-      F.y[a] = F.y[a]! + gap * sa * ny
-      F.x[b] = F.x[b]! - gap * sb * nx
-      F.y[b] = F.y[b]! - gap * sb * ny
       F.changed[a]! |= 2
       F.changed[b]! |= 2
-      keepInside(F, a)
-      keepInside(F, b)
     }
     if (worst <= PROJECTION_SLOP) break
   }
 }
 
-/** Keeps a moved candidate inside the closed walls (no further out than it was); pins it where it stops. */
-function keepInside(F: FixedContactState, i: number): void {
+/**
+ * Keeps a moved candidate from being pushed through a closed wall: never further past a wall's inner face
+ * than it was when the tick began (a ball outside the box stays outside); pins it where it stops.
+ */
+function keepInside(w: BallWorld, F: FixedContactState, i: number): void {
   const open = box.open
   if (open === 15) return
+  const eid = F.id[i]!
   const r = F.r[i]!
-  if ((open & WallEdge.Left) === 0 && F.x[i]! - r < box.minX) {
-    F.x[i] = box.minX + r
-    F.pinned[i]! |= WallEdge.Left
+  const x0 = w.Ball.x[eid]!
+  const y0 = w.Ball.y[eid]!
+  if ((open & WallEdge.Left) === 0) {
+    const lo = Math.min(x0, box.minX + r)
+    if (F.x[i]! < lo) {
+      F.x[i] = lo
+      F.pinned[i]! |= WallEdge.Left
+    }
   }
-  if ((open & WallEdge.Right) === 0 && F.x[i]! + r > box.maxX) {
-    F.x[i] = (open & WallEdge.Left) === 0 && box.maxX - box.minX < 2 * r ? (box.minX + box.maxX) / 2 : box.maxX - r
-    F.pinned[i]! |= WallEdge.Right
+  if ((open & WallEdge.Right) === 0) {
+    const hi = Math.max(x0, box.maxX - r)
+    if (F.x[i]! > hi) {
+      F.x[i] = hi
+      F.pinned[i]! |= WallEdge.Right
+    }
   }
-  if ((open & WallEdge.Top) === 0 && F.y[i]! - r < box.minY) {
-    F.y[i] = box.minY + r
-    F.pinned[i]! |= WallEdge.Top
+  if ((open & WallEdge.Top) === 0) {
+    const lo = Math.min(y0, box.minY + r)
+    if (F.y[i]! < lo) {
+      F.y[i] = lo
+      F.pinned[i]! |= WallEdge.Top
+    }
   }
-  if ((open & WallEdge.Bottom) === 0 && F.y[i]! + r > box.maxY) {
-    F.y[i] = (open & WallEdge.Top) === 0 && box.maxY - box.minY < 2 * r ? (box.minY + box.maxY) / 2 : box.maxY - r
-    F.pinned[i]! |= WallEdge.Bottom
+  if ((open & WallEdge.Bottom) === 0) {
+    const hi = Math.max(y0, box.maxY - r)
+    if (F.y[i]! > hi) {
+      F.y[i] = hi
+      F.pinned[i]! |= WallEdge.Bottom
+    }
   }
 }
 
