@@ -1,16 +1,17 @@
-// npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, resting,
-// recycling), then
+// npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
+// contact-accuracy, piles, resting, recycling), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
 // assertions (the machine is shared and noisy), so the exit status only says whether every benchmark ran.
 //
-//   npm run bench                  full run: writes docs/results/*.json and docs/figures/{scale,peers}.svg
+//   npm run bench                  full run: writes docs/results/*.json and docs/figures/*.svg
 //   npm run bench -- --quick       (or npm run bench:quick) no 1M rows (scale up to 100k balls, 100k resting
-//                                  balls); writes under test-artifacts/bench-quick/, leaving docs/ alone
+//                                  balls), 2,500-ball piles, 8 accuracy seeds; writes under
+//                                  test-artifacts/bench-quick/, leaving docs/ alone
 //   npm run bench -- --out DIR     results under DIR/results and DIR/figures
 import { spawnSync } from 'node:child_process'
 import { readFileSync } from 'node:fs'
 import { join } from 'node:path'
-import type { PeerRow, ScaleRow } from './charts'
+import type { AccuracyPoint, ContactRow, PeerRow, ScaleRow } from './charts'
 import { argValue } from './lib'
 
 const quick = process.argv.includes('--quick')
@@ -20,6 +21,9 @@ const benches: [string, string[]][] = [
   ['bench/pipeline.ts', []],
   ['bench/scale.ts', quick ? ['--max', '100000'] : []],
   ['bench/peers.ts', []],
+  ['bench/contacts.ts', []],
+  ['bench/contactAccuracy.ts', quick ? ['--seeds', '8'] : []],
+  ['bench/piles.ts', quick ? ['--balls', '2500'] : []],
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
 ]
@@ -56,6 +60,19 @@ const pipeline = read<{ balls: number; nsPerBallStep: Record<string, number>; ra
 const scale = read<{ rows: ScaleRow[] }>('scale')
 const peers = read<{ rows: PeerRow[] }>('peers')
 const resting = read<{ rows: RestingRow[] }>('resting')
+const contacts = read<{ rows: ContactRow[] }>('contacts')
+const accuracy = read<{ points: AccuracyPoint[] }>('contact-accuracy')
+interface PileRow {
+  scene: string
+  method: string
+  steps: number
+  stoppedEarly: boolean
+  meanStepMs: number
+  worstStepMs: number
+  deepestOverlapPx: number
+  contactsPerStep: number
+}
+const piles = read<{ balls: number; rows: PileRow[] }>('piles')
 
 const k = (n: number) => n.toLocaleString('en-US')
 const f = (v: number) => (v >= 100 ? k(Math.round(v)) : v.toFixed(1))
@@ -94,6 +111,26 @@ if (resting) {
   }
 }
 
+if (contacts) {
+  console.log('\ncontacts on (ns per live ball-step; ratio rapier / fixed-tick at its default tick; worst step ms; µs per contact)')
+  console.log('scene  balls     fixed  fixed 1/240   exact   rapier  matter   planck  rapier/fixed  worst fixed/exact/rapier   µs/contact fixed/exact')
+  for (const r of contacts.rows) {
+    console.log(
+      `${r.scene.padEnd(6)} ${k(r.balls).padStart(6)} ${f(r.fixed).padStart(9)} ${f(r.fixed240).padStart(12)} ${f(r.exact).padStart(7)} ${f(r.rapier).padStart(8)} ${f(r.matter).padStart(7)} ${f(r.planck).padStart(8)} ${x(r.rapier / r.fixed).padStart(13)}  ${`${f(r.worstMs.fixed)}/${f(r.worstMs.exact)}/${f(r.worstMs.rapier)}`.padStart(23)}   ${f(r.usPerContact.fixed)}/${f(r.usPerContact.exact)}`,
+    )
+  }
+}
+if (accuracy) {
+  console.log('\ncontact methods against the exact one (share of balls ending in the same hole, or out, or at rest; cost ns per ball-step)')
+  for (const p of accuracy.points) console.log(`${p.scene.padEnd(9)} ${p.method.padEnd(30)} ${(100 * p.agreement).toFixed(1).padStart(6)} %   distribution error ${(100 * p.holeError).toFixed(1).padStart(4)} %   ${f(p.ns).padStart(5)} ns`)
+}
+if (piles) {
+  console.log(`\narcade abuse (${k(piles.balls)} balls; worst and mean step, ms)`)
+  for (const r of piles.rows) {
+    console.log(`${r.scene.padEnd(12)} ${r.method.padEnd(6)} worst ${f(r.worstStepMs).padStart(7)}  mean ${f(r.meanStepMs).padStart(7)}  steps ${r.steps}${r.stoppedEarly ? ' (stopped: a step over 5 s)' : ''}  deepest overlap at the end ${r.deepestOverlapPx.toExponential(1)} px`)
+  }
+}
+
 console.log('\nfloors (checked, not asserted)')
 const check = (ok: boolean | undefined, text: string) => console.log(`${ok === undefined ? 'SKIP' : ok ? 'PASS' : 'FAIL'}  ${text}`)
 const row100k = scale?.rows.find((r) => r.balls === 100_000 && r.holes === 25)
@@ -102,6 +139,14 @@ check(row100k && row100k.ratio <= 4, `100k balls over 25 holes: ${row100k ? x(ro
 const peer10k = peers?.rows.find((r) => r.balls === 10_000 && r.contacts === 'off')
 check(peer10k && peer10k['rapier/ours'] >= 50, `10k balls: ${peer10k ? x(peer10k['rapier/ours']) : '?'} faster than rapier2d-compat (floor ≥ 50×)`)
 check(peer10k && peer10k['matter/ours'] >= 100, `10k balls: ${peer10k ? x(peer10k['matter/ours']) : '?'} faster than matter-js (floor ≥ 100×)`)
+for (const n of [1000, 10_000]) {
+  for (const scene of ['gas', 'panel'] as const) {
+    const r = contacts?.rows.find((q) => q.balls === n && q.scene === scene)
+    check(r && r.rapier / r.fixed >= 5, `contacts on, ${scene}, ${k(n)} balls: fixed-tick ${r ? x(r.rapier / r.fixed) : '?'} faster than rapier2d-compat (floor ≥ 5×)`)
+  }
+  const gas = contacts?.rows.find((q) => q.balls === n && q.scene === 'gas')
+  check(gas && gas.usPerContact.fixed <= 3, `contacts on, gas, ${k(n)} balls: ${gas ? gas.usPerContact.fixed.toFixed(1) : '?'} µs per contact, fixed-tick (floor ≤ 3)`)
+}
 const million = scale?.rows.filter((r) => r.balls === 1_000_000) ?? []
 if (million.length === 0) check(undefined, `1M balls: heap per ball not measured (${quick ? 'quick mode' : 'no 1M rows'}; floor < 450 B)`)
 for (const r of million) check(r.heapBytesPerBall < 450, `1M balls over ${k(r.holes)} holes: ${r.heapBytesPerBall.toFixed(1)} B of heap per ball (floor < 450; balls are bitECS entities)`)
