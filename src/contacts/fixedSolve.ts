@@ -3,7 +3,8 @@
 //   velocities: up to CONTACT_ITERATIONS sweeps over the pairs (then the closed walls) in a fixed order.
 //     A pair that approaches and would touch within the tick takes the two-body impulse
 //     j = (1 + e)·w / (1/m_a + 1/m_b) (e = BALL_RESTITUTION, or 0 below BALL_SETTLE_SPEED): every impulse is
-//     a two-body contact, so momentum is kept and kinetic energy never rises, sweep by sweep. "Would touch
+//     a two-body contact, so momentum is kept and kinetic energy never rises, sweep by sweep; a pair takes
+//     its restitution once a tick, and closes inelastically when pushed together again within it. "Would touch
 //     within the tick" is the swept test on straight lines at the present velocities, and the impulse acts
 //     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
@@ -65,6 +66,12 @@ function normal(F: FixedContactState, a: number, b: number): number {
   return d - F.r[a]! - F.r[b]!
 }
 
+/** pairHit bits: the pair took an impulse this tick; its contact was reported */
+const IMPULSED = 1
+const REPORTED = 2
+/** changed bit of a candidate whose wall hit this tick was reported */
+const WALL_REPORTED = 4
+
 export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number): void {
   const e = w.config.BALL_RESTITUTION
   const settle = w.config.BALL_SETTLE_SPEED
@@ -85,7 +92,12 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
       if (!(approach > 0)) continue
       const ima = F.im[a]!
       const imb = F.im[b]!
-      const j = ((1 + (approach < settle ? 0 : e)) * approach) / (ima + imb)
+      // restitution once a tick per pair: met again in a later sweep (a third ball pushed them together),
+      // the pair closes inelastically, so a light ball between heavy ones cannot be bounced to and fro
+      // without end within one tick
+      const hit = F.pairHit[p]!
+      const j = ((1 + (approach < settle || (hit & IMPULSED) !== 0 ? 0 : e)) * approach) / (ima + imb)
+      F.pairHit[p] = hit | IMPULSED
       F.vx[a] = F.vx[a]! - j * ima * nx
       F.vy[a] = F.vy[a]! - j * ima * ny
       F.vx[b] = F.vx[b]! + j * imb * nx
@@ -95,8 +107,8 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
       F.changed[a]! |= 1
       F.changed[b]! |= 1
       moved = true
-      if (F.pairHit[p] === 0 && approach >= settle) {
-        F.pairHit[p] = 1
+      if ((hit & REPORTED) === 0 && approach >= settle) {
+        F.pairHit[p] = hit | IMPULSED | REPORTED
         F.contacts++
         const ia = F.id[a]!
         const ib = F.id[b]!
@@ -164,7 +176,10 @@ function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: n
       hit = true
     }
     if (!hit) continue
-    if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) pushEvent(w.events, EventType.Wall, F.id[i]!, 0, t, false, 0, 0)
+    if ((F.changed[i]! & WALL_REPORTED) === 0 && Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) {
+      pushEvent(w.events, EventType.Wall, F.id[i]!, 0, t, false, 0, 0)
+      F.changed[i]! |= WALL_REPORTED
+    }
     F.vx[i] = vx
     F.vy[i] = vy
     if ((F.changed[i]! & 1) === 0) F.hit[F.hitCount++] = i

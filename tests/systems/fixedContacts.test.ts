@@ -277,3 +277,59 @@ describe('fixed-tick contacts under arcade load', () => {
     expect(Number.isFinite(sim.ballState(heavy).vx)).toBe(true)
   })
 })
+
+// The scenes docs/known-failures.md records for the exact method, under the fixed-tick method: each step's
+// work is bounded by the balls on the panel and their pairs, not by the events in the step.
+describe('fixed-tick contacts on the exact method’s known failures', () => {
+  function timed(sim: BallPhysics, steps: number, dt = 1 / 60): number {
+    let worst = 0
+    for (let i = 0; i < steps; i++) {
+      const t0 = performance.now()
+      sim.step(dt)
+      worst = Math.max(worst, performance.now() - t0)
+      sim.drainEvents()
+    }
+    return worst
+  }
+
+  it('balls of radius 640 wider than their walls, and 150 balls in walls 5 px wide: steps of milliseconds', () => {
+    const a = createBallPhysics({ ...FIXED, ROLLING_DECEL: 0 })
+    a.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 4800, restitution: 1 })
+    for (let i = 0; i < 3; i++) a.addBall({ x: 210, y: 700 + 1300 * i, vx: 100, vy: 0, radius: 640 })
+    expect(timed(a, 30)).toBeLessThan(200)
+    const b = createBallPhysics({ ...FIXED, ROLLING_DECEL: 0 })
+    b.setWalls({ minX: 0, minY: 0, maxX: 5, maxY: 4800, restitution: 1 })
+    for (let i = 0; i < 150; i++) b.addBall({ x: 2.5, y: 20 + 30 * i, vx: 100, vy: 0 })
+    expect(timed(b, 30)).toBeLessThan(200)
+  })
+
+  it('300 balls of masses 100 and 0.01 at 5,000 px/s in the panel: steps of milliseconds, speeds within MAX_SPEED', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    const r = rng(12345)
+    for (let i = 0; i < 300; i++) {
+      const a = r() * 2 * Math.PI
+      sim.addBall({ x: 11 + r() * 398, y: 11 + r() * 458, vx: 5000 * Math.sin(a), vy: -5000 * Math.cos(a), mass: r() < 0.5 ? 100 : 0.01 })
+    }
+    expect(timed(sim, 30)).toBeLessThan(250)
+    const B = sim.world.Ball
+    for (const b of sim.balls()) expect(Math.hypot(B.vx[b]!, B.vy[b]!)).toBeLessThanOrEqual(1e5)
+  })
+
+  it('a tiny ball pressed against a wall, and a light ball between two heavy ones: the world goes on', () => {
+    const a = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    a.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    a.addBall({ x: 20, y: 240, vx: 0, vy: 0, radius: 0.001 })
+    a.addBall({ x: 60, y: 240, vx: -200, vy: 0 })
+    const bystander = a.addBall({ x: 100, y: 50, vx: 100, vy: 0 })
+    expect(timed(a, 120)).toBeLessThan(100)
+    expect(a.ballState(bystander).x).toBeCloseTo(300, 3)
+    const b = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    b.addBall({ x: 0, y: 0, vx: 100, vy: 0, mass: 1e9 })
+    b.addBall({ x: 50, y: 0, vx: 0, vy: 0, mass: 1e-9 })
+    b.addBall({ x: 100, y: 0, vx: -100, vy: 0, mass: 1e9 })
+    const other = b.addBall({ x: 0, y: 300, vx: 100, vy: 0 })
+    expect(timed(b, 120)).toBeLessThan(100)
+    expect(b.ballState(other).x).toBeCloseTo(200, 3)
+  })
+})
