@@ -237,11 +237,15 @@ async function main(): Promise<void> {
 
   const tuning = createTuning(el('gui'), el('tuning-status'), game)
   // ball-ball contacts, beside the multi-ball buttons: the same key as the tuning panel's drop-down
+  // cycles off → exact ('on') → fixed tick → off
   const contactsBtn = el<HTMLButtonElement>('contacts')
-  const contactsOn = (): boolean => (game.pending ?? game.overrides).BALL_COLLISIONS === 'on'
+  const contactsMode = () => (game.pending ?? game.overrides).BALL_COLLISIONS ?? 'off'
+  const CONTACT_LABEL = { off: 'off', on: 'exact', fixed: 'fixed tick' } as const
   button('contacts', () => {
-    tuning.set('BALL_COLLISIONS', contactsOn() ? 'off' : 'on')
-    contactsBtn.setAttribute('aria-pressed', String(contactsOn()))
+    const now = contactsMode()
+    tuning.set('BALL_COLLISIONS', now === 'off' ? 'on' : now === 'on' ? 'fixed' : 'off')
+    contactsBtn.setAttribute('aria-pressed', String(contactsMode() !== 'off'))
+    contactsBtn.textContent = `Contacts: ${CONTACT_LABEL[contactsMode()]}`
   })
 
   // ---- HUD ----

@@ -80,7 +80,8 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     return
   }
   // fixed-tick contacts: the step is split at the contact ticks k·CONTACT_TICK (the same instants at every
-  // frame rate); the window that starts at a tick solves the contacts in its first pass
+  // frame rate), and the contacts are solved at each (by the schedule's fixedContacts system); a solve
+  // asked for between steps (a ball put down or given a new velocity) runs in the next step's first pass
   for (;;) {
     const tick = F.nextTick * F.tick
     if (tick <= world.time) {
@@ -91,6 +92,15 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     const stop = tick < end ? tick : end
     runWindow(world, schedule, stop)
     F.due = false
+    if (stop === tick) {
+      // the tick's solve right at the end of the window that reaches it: a step that ends on a tick ends
+      // solved (what the game draws), and the next window starts from the solved state
+      F.nextTick++
+      F.due = true
+      world.pass = 0
+      for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
+      F.due = false
+    }
     if (stop === end) return
   }
 }

@@ -286,20 +286,25 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(problems).toEqual([])
   })
 
-  it('the contacts toggle beside the multi-ball buttons: a 1,000-ball burst comes out with none inside another, and scores', async () => {
-    await page.click('#contacts')
-    expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('true')
-    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe('on')
-    const score0 = await page.evaluate(() => window.__demo.score)
-    await page.click('#multi-1000')
-    await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe('on')
-    const t0 = await page.evaluate(() => window.__demo.simTime)
-    await page.waitForFunction((t) => window.__demo.simTime > t + 0.5, t0, { timeout: 30_000 })
-    // in the page's own world, after 0.5 s of simulated time: no two balls on the panel overlap
-    expect(await page.evaluate(() => window.__demo.worstOverlap)).toBeLessThanOrEqual(1e-3)
-    await page.waitForFunction((s) => window.__demo.score > s, score0, { timeout: 30_000 })
+  it('the contacts toggle beside the multi-ball buttons (exact, then fixed tick): a 1,000-ball burst comes out with none inside another, and scores', async () => {
+    for (const mode of ['on', 'fixed'] as const) {
+      await page.click('#contacts')
+      expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('true')
+      await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe(mode)
+      expect(await page.textContent('#contacts')).toBe(mode === 'on' ? 'Contacts: exact' : 'Contacts: fixed tick')
+      const score0 = await page.evaluate(() => window.__demo.score)
+      await page.click('#multi-1000')
+      await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe(mode)
+      const t0 = await page.evaluate(() => window.__demo.simTime)
+      await page.waitForFunction((t) => window.__demo.simTime > t + 0.5, t0, { timeout: 30_000 })
+      // in the page's own world, after 0.5 s of simulated time: no two balls on the panel overlap
+      expect(await page.evaluate(() => window.__demo.worstOverlap), mode).toBeLessThanOrEqual(1e-3)
+      await page.waitForFunction((s) => window.__demo.score > s, score0, { timeout: 30_000 })
+      await page.click('#clear-balls')
+    }
     // back to the design values for the tests after this one
     await page.click('#contacts')
+    expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('false')
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
     await page.click('#clear-balls')
     expect(problems).toEqual([])
