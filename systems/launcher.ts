@@ -5,13 +5,13 @@
 // clears the spot, instead of starting them inside one another. The rule adds no kinetic energy (a held ball
 // keeps its velocity and is launched only where it overlaps nothing), and a released ball starts
 // where it was put, at the step's start: release times are quantised to steps.
-// Bounded work: at most MAX_SPOT_CHECKS full checks per step (each against the moving balls and the
-// resting balls near the spot); a held ball overlapping the held ball just before it in the queue waits
+// Bounded work: at most MAX_SPOT_CHECKS full checks per step (each against the moving and resting balls
+// near the spot, through grids); a held ball overlapping the held ball just before it in the queue waits
 // without one. The rest wait for later steps.
 // Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact.
 import { BallMode } from '../components/Ball.js'
 import { MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
-import { spotTaken } from '../src/contacts/spot.js'
+import { spotAdd, spotTaken } from '../src/contacts/spot.js'
 import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 
@@ -41,6 +41,7 @@ export function launcherSystem(w: BallWorld): void {
       continue
     }
     placeBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!)
+    spotAdd(w, eid)
   }
   q.count = kept
 }

@@ -6,7 +6,7 @@
 // A uniform grid holds the balls whose reach is at most half a cell; the cell is twice the largest reach,
 // or four times the mean reach when the largest is more than four times the mean (then the wider or
 // faster balls are "big": each scans the grid rows within its reach, and the big balls are paired with
-// each other directly). Work per tick: O(balls on the panel + grid cells (at most 4 per small ball) +
+// each other directly). Work per tick: O(balls on the panel + grid cells (at most 4 per candidate + 64) +
 // pairs + big·(balls in reach, at most all) + big²).
 import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
@@ -155,7 +155,30 @@ function addResting(w: BallWorld, F: FixedContactState, e: number, x: number, y:
 
 /** Pins the candidates touching a closed wall and lists those that can reach one within the tick. */
 function markWalls(w: BallWorld, F: FixedContactState): void {
-  for (let i = 0; i < F.n; i++) markWall(w, F, i)
+  const W = w.Walls
+  const e = w.walls
+  const open = W.open[e]!
+  // an open edge is never near: its bound is moved to where no ball is
+  const minX = (open & WallEdge.Left) === 0 ? W.minX[e]! : -Infinity
+  const maxX = (open & WallEdge.Right) === 0 ? W.maxX[e]! : Infinity
+  const minY = (open & WallEdge.Top) === 0 ? W.minY[e]! : -Infinity
+  const maxY = (open & WallEdge.Bottom) === 0 ? W.maxY[e]! : Infinity
+  const { x: X, y: Y, r: Rad, reach: Reach } = F
+  for (let i = 0; i < F.n; i++) {
+    const x = X[i]!
+    const y = Y[i]!
+    const reach = Reach[i]!
+    // far from every wall (the common case): not near, not pinned
+    if (x - reach > minX && x + reach < maxX && y - reach > minY && y + reach < maxY) continue
+    const r = Rad[i]!
+    let pin = 0
+    if (x - r - minX <= TOUCH_GAP) pin |= WallEdge.Left
+    if (maxX - x - r <= TOUCH_GAP) pin |= WallEdge.Right
+    if (y - r - minY <= TOUCH_GAP) pin |= WallEdge.Top
+    if (maxY - y - r <= TOUCH_GAP) pin |= WallEdge.Bottom
+    F.pinned[i] = pin
+    F.nearWall[F.nearWallCount++] = i
+  }
 }
 
 /** Candidate i: the closed walls it touches (pinned), and whether its reach meets one (the near-wall list). */
@@ -212,21 +235,16 @@ export function findPairs(F: FixedContactState): void {
   const minY = F.minY
   const maxX = F.maxX
   const maxY = F.maxY
-  let small = 0
-  for (let i = 0; i < n; i++) {
-    if (F.reach[i]! > half) F.big[F.bigCount++] = i
-    else small++
-  }
   let cell = F.cell
   let cols = 1
   let rows = 1
-  if (small > 0) {
+  if (n > 0) {
     // about one ball a cell at least (more, emptier cells cost more in the sort than the tests they save)
-    const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / small)
+    const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / n)
     if (even > cell) cell = even
     cols = Math.floor((maxX - minX) / cell) + 1
     rows = Math.floor((maxY - minY) / cell) + 1
-    const most = 4 * small + 64
+    const most = 4 * n + 64
     if (cols * rows > most) {
       // a sparse scene: coarser cells (still at least twice every small reach)
       cell *= Math.sqrt((cols * rows) / most) * 1.001
@@ -235,17 +253,22 @@ export function findPairs(F: FixedContactState): void {
     }
   }
   const cells = cols * rows
-  F.gridCell = cell
-  F.cols = small > 0 ? cols : 0
-  F.rows = small > 0 ? rows : 0
   const start = reserveCells(F, cells)
   start.fill(0, 0, cells + 1)
+  let small = 0
   for (let i = 0; i < n; i++) {
-    if (F.reach[i]! > half) continue
+    if (F.reach[i]! > half) {
+      F.big[F.bigCount++] = i
+      continue
+    }
+    small++
     const c = cellOf(F.x[i]! - minX, F.y[i]! - minY, cell, cols, rows)
     F.next[i] = c
     start[c + 1]!++
   }
+  F.gridCell = cell
+  F.cols = small > 0 ? cols : 0
+  F.rows = small > 0 ? rows : 0
   for (let c = 0; c < cells; c++) start[c + 1]! += start[c]!
   // counting sort, stable: candidates by cell, by index within a cell; their data copied in that order
   const sx = F.sx

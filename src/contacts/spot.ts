@@ -1,26 +1,19 @@
 // Is a spot on the panel free? A ball put down (ball-ball contacts 'on' or 'fixed') where another ball is would start
-// inside it; such a ball is held until its spot is clear (systems/launcher.ts). Checked against every
-// moving ball (their stored state is at the world's time between steps) and, through the resting grid,
-// against the resting balls near the spot.
+// inside it; such a ball is held until its spot is clear (systems/launcher.ts). Checked, through grids,
+// against the moving balls near the spot (their stored state is at the world's time between steps) and
+// the resting balls near it.
 import { BallMode } from '../../components/Ball.js'
+import type { CollisionState } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { restingState } from '../world/restingGrid.js'
+import { isMoving } from '../world/idLists.js'
+import { bucketOf, restingState } from '../world/restingGrid.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
 export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
   const C = restingState(w)
   if (C === null) return false
-  const B = w.Ball
-  const balls = w.moving.dense
-  for (let i = 0, n = w.moving.count; i < n; i++) {
-    const b = balls[i]!
-    if (b === self) continue
-    const dx = B.x[b]! - x
-    const dy = B.y[b]! - y
-    const s = r + B.radius[b]!
-    if (dx * dx + dy * dy < s * s) return true
-  }
+  if (movingAt(w, C, self, x, y, r)) return true
   for (let i = 0; i < C.bigRestCount; i++) if (near(w, C.bigRest[i]!, self, x, y, r)) return true
   if (C.restCount === 0) return false
   const rMask = C.restHead.length - 1
@@ -34,6 +27,70 @@ export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: n
     for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r)) return true
   }
   return false
+}
+
+/**
+ * A moving ball (its stored state is at the world's time between steps) overlapping the circle, through the
+ * spot grid: built from the moving set the first time a spot is checked at this world time (O(moving)),
+ * then kept (spotAdd puts each new ball in), so putting down n balls at once costs O(n + moving), not
+ * O(n · moving). A lookup wider than the grid's table scans the moving set.
+ */
+function movingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: number, r: number): boolean {
+  if (!C.spotBuilt || C.spotTime !== w.time) buildSpotGrid(w, C)
+  const reach = r + C.spotMaxR
+  const mask = C.spotHead.length - 1
+  if (capsuleCellEstimate(C, x, y, x, y, reach) > w.moving.count) {
+    const balls = w.moving.dense
+    for (let i = 0, n = w.moving.count; i < n; i++) if (overlapsMoving(w, balls[i]!, self, x, y, r)) return true
+    return false
+  }
+  const k = capsuleCells(C, x, y, x, y, reach, mask)
+  for (let i = 0; i < k; i++) {
+    for (let b = C.spotHead[C.cells[i]!]!; b !== 0; b = C.spotNext[b]!) if (overlapsMoving(w, b, self, x, y, r)) return true
+  }
+  return false
+}
+
+function overlapsMoving(w: BallWorld, b: number, self: number, x: number, y: number, r: number): boolean {
+  if (b === self || !isMoving(w, b)) return false
+  const B = w.Ball
+  const dx = B.x[b]! - x
+  const dy = B.y[b]! - y
+  const s = r + B.radius[b]!
+  return dx * dx + dy * dy < s * s
+}
+
+function buildSpotGrid(w: BallWorld, C: CollisionState): void {
+  let size = C.spotHead.length
+  while (size < 2 * w.moving.count) size *= 2
+  if (size !== C.spotHead.length) C.spotHead = new Uint32Array(size)
+  else C.spotHead.fill(0)
+  C.spotTime = w.time
+  C.spotMaxR = 0
+  C.spotBuilt = true
+  C.spotGen++
+  const balls = w.moving.dense
+  for (let i = 0, n = w.moving.count; i < n; i++) link(w, C, balls[i]!)
+}
+
+function link(w: BallWorld, C: CollisionState, eid: number): void {
+  const B = w.Ball
+  const bucket = bucketOf(Math.floor(B.x[eid]! / C.cell), Math.floor(B.y[eid]! / C.cell), C.spotHead.length - 1)
+  C.spotNext[eid] = C.spotHead[bucket]!
+  C.spotHead[bucket] = eid
+  C.spotIn[eid] = C.spotGen
+  if (B.radius[eid]! > C.spotMaxR) C.spotMaxR = B.radius[eid]!
+}
+
+/** A ball just put down moving at the world's time joins the spot grid, if the grid is of this time. */
+export function spotAdd(w: BallWorld, eid: number): void {
+  const C = restingState(w)
+  if (C === null || !C.spotBuilt || C.spotTime !== w.time || !isMoving(w, eid)) return
+  if (2 * w.moving.count > C.spotHead.length || C.spotIn[eid] === C.spotGen) {
+    buildSpotGrid(w, C)
+    return
+  }
+  link(w, C, eid)
 }
 
 /** A resting ball b other than `self` overlapping the circle (x, y, r). */

@@ -70,6 +70,19 @@ export interface CollisionState {
   hVB: Uint32Array
   hKind: Uint8Array
   heapCount: number
+  /**
+   * spot grid (src/contacts/spot.ts): the moving balls hashed by the cell of their centre at the world's
+   * time `spotTime`, built when a spot is first checked at that time and kept while balls are put down;
+   * links by ball id (0: end), the largest radius in it, whether it is built
+   */
+  spotHead: Uint32Array
+  spotNext: Uint32Array
+  /** the build a ball was linked in (a reused id linked again would corrupt a chain: the grid is rebuilt) */
+  spotIn: Uint32Array
+  spotGen: number
+  spotTime: number
+  spotMaxR: number
+  spotBuilt: boolean
   /** time of the last event handled, s */
   now: number
   /** contacts resolved since the world was made */
@@ -117,6 +130,13 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     hVB: new Uint32Array(1 << 10),
     hKind: new Uint8Array(1 << 10),
     heapCount: 0,
+    spotHead: new Uint32Array(1 << 8),
+    spotNext: new Uint32Array(capacity),
+    spotIn: new Uint32Array(capacity),
+    spotGen: 0,
+    spotTime: 0,
+    spotMaxR: 0,
+    spotBuilt: false,
     now: 0,
     contacts: 0,
   }
@@ -143,6 +163,8 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.restClass = grown(C.restClass, capacity)
   C.predicted = grown(C.predicted, capacity)
   C.seen = grown(C.seen, capacity)
+  C.spotNext = grown(C.spotNext, capacity)
+  C.spotIn = grown(C.spotIn, capacity)
 }
 
 /** Marks a ball's motion as changed: its heap entries become stale. */
