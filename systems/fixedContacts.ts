@@ -26,6 +26,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   prepareSolve(w)
   const iterations = w.config.CONTACT_ITERATIONS
   F.hitCount = 0
+  F.overlap = false
   solveVelocities(w, F, t, iterations)
   for (let round = 0; round < MAX_WIDEN_ROUNDS && widenReach(w, F); round++) solveVelocities(w, F, t, iterations)
   solvePositions(w, F)

@@ -285,15 +285,21 @@ export function findPairs(F: FixedContactState): void {
   }
   F.fill.fill(0, 0, cells)
   // each sorted entry against the rest of its cell and the next cell in its row (one run of entries),
-  // then the three cells below (another)
-  for (let p = 0; p < small; p++) {
-    const c = F.next[si[p]!]!
-    const gy = Math.floor(c / cols)
-    const gx = c - gy * cols
-    scan(F, p, p + 1, start[gx + 1 < cols ? c + 2 : c + 1]!)
-    if (gy + 1 < rows) {
+  // then the three cells below (another); cells visited in row order, so no division per entry
+  for (let gy = 0, c = 0; gy < rows; gy++) {
+    const below = gy + 1 < rows
+    for (let gx = 0; gx < cols; gx++, c++) {
+      const from = start[c]!
+      const to = start[c + 1]!
+      if (from === to) continue
+      const run = start[gx + 1 < cols ? c + 2 : c + 1]!
       const d = c + cols
-      scan(F, p, start[gx > 0 ? d - 1 : d]!, start[gx + 1 < cols ? d + 2 : d + 1]!)
+      const lo = below ? start[gx > 0 ? d - 1 : d]! : 0
+      const hi = below ? start[gx + 1 < cols ? d + 2 : d + 1]! : 0
+      for (let p = from; p < to; p++) {
+        scan(F, p, p + 1, run)
+        if (below) scan(F, p, lo, hi)
+      }
     }
   }
   for (let k = 0; k < F.bigCount; k++) {

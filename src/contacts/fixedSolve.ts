@@ -130,6 +130,7 @@ function meetsWithinTick(F: FixedContactState, a: number, b: number): boolean {
   const S = F.r[a]! + F.r[b]!
   const c = dx * dx + dy * dy - S * S
   if (c <= 0) {
+    if (c < 0) F.overlap = true
     normal(F, a, b)
     return true
   }
@@ -194,6 +195,8 @@ function bounce(vn: number, settle: number): number {
 }
 
 export function solvePositions(w: BallWorld, F: FixedContactState): void {
+  // the velocity sweeps met every pair at the tick's positions: no overlap among them, nothing to move
+  if (!F.overlap) return
   for (let it = 0; it < MAX_PROJECTION_SWEEPS; it++) {
     let worst = 0
     const back = (it & 1) === 1

@@ -41,6 +41,8 @@ export interface FixedContactState {
   /** the reach at the velocity a solve round left it with; grown: 1 where that is wider (src/contacts/fixedReach.ts) */
   wide: Float64Array
   grown: Uint8Array
+  /** some pair met by the velocity sweeps of this tick overlaps */
+  overlap: boolean
   /** candidates whose velocity the solve changed, in the order it did */
   hit: Int32Array
   hitCount: number
@@ -113,6 +115,7 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     widened: new Int32Array(n),
     hit: new Int32Array(n),
     hitCount: 0,
+    overlap: false,
     widenedCount: 0,
     next: new Int32Array(n),
     changed: new Uint8Array(n),
