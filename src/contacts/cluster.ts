@@ -3,7 +3,7 @@ import { BallMode } from '../../components/Ball.js'
 import { APPROACH_EPSILON, MAX_CAPSULE_CELLS, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
-import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
+import { capsuleCellEstimate, capsuleCells, staleEntry } from './sweepGrid.js'
 
 /**
  * Gathers into C.cluster the balls touching a or b (gap ≤ TOUCH_GAP at time t), and those touching
@@ -38,7 +38,9 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
       for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
         const bucket = C.cells[i]!
         if (C.sweepStamp[bucket] !== C.stamp) continue
-        for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) n = consider(w, list, n, C.entBall[e]!, m, t, stamp)
+        for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) {
+          if (!staleEntry(C, e)) n = consider(w, list, n, C.entBall[e]!, m, t, stamp)
+        }
       }
     }
     for (let i = 0; i < C.bigCount && n < MAX_CLUSTER; i++) n = consider(w, list, n, C.big[i]!, m, t, stamp)

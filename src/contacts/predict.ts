@@ -2,12 +2,12 @@
 // own next event, pushed into the event heap.
 import { BallMode } from '../../components/Ball.js'
 import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'
-import { appendId, grown } from '../world/contactState.js'
+import { appendId } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { HeapKind, heapPush } from './eventHeap.js'
 import { AT, E, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 import { RESULT, SearchResult, TIME, search, searchContact } from './search.js'
-import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, sweptCapsule } from './sweepGrid.js'
+import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, staleEntry, sweptCapsule } from './sweepGrid.js'
 
 /**
  * Predicts ball `a`'s contacts with every ball near its path over [C.now, tickEnd] and pushes them, and its
@@ -50,7 +50,7 @@ export function predictBall(w: BallWorld, a: number): void {
     if (C.sweepStamp[bucket] !== C.stamp) continue
     for (let e = C.sweepHead[bucket]!; e >= 0; e = C.entNext[e]!) {
       const b = C.entBall[e]!
-      if (C.seen[b] === stamp) continue
+      if (C.seen[b] === stamp || staleEntry(C, e)) continue
       // stale entries of balls that have since stopped: those are found through the resting grid
       const mb = w.Ball.mode[b]
       if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
@@ -81,23 +81,9 @@ export function predictBall(w: BallWorld, a: number): void {
       tryPair(w, a, b, startA, endA, tEnd)
     }
   }
-  // enter a's capsule, in the same cells (resting balls are found through the resting grid)
-  if (mode !== BallMode.Resting) {
-    for (let k = 0; k < n; k++) {
-      const bucket = C.cells[k]!
-      if (C.entCount === C.entNext.length) {
-        C.entNext = grown(C.entNext, C.entCount * 2)
-        C.entBall = grown(C.entBall, C.entCount * 2)
-      }
-      const e = C.entCount++
-      C.entBall[e] = a
-      if (C.sweepStamp[bucket] !== C.stamp) {
-        C.sweepStamp[bucket] = C.stamp
-        C.entNext[e] = -1
-      } else C.entNext[e] = C.sweepHead[bucket]!
-      C.sweepHead[bucket] = e
-    }
-  }
+  // enter a's capsule, in the same cells (resting balls are found through the resting grid); its older
+  // capsule's entries go stale
+  if (mode !== BallMode.Resting) enterCapsule(C, a, n)
   if (mode === BallMode.Resting) return
   // resting balls, by centre cell (widened by the largest radius in the grid); all of them when that is
   // cheaper than the cells; then those too wide for the grid

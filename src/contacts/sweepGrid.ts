@@ -54,6 +54,7 @@ export function beginCollisionStep(w: BallWorld): void {
   const C = w.collide!
   C.heapCount = 0
   C.entCount = 0
+  C.entLive = 0
   C.bigCount = 0
   let size = C.sweepHead.length
   while (size < 4 * w.moving.count) size *= 2
@@ -65,8 +66,63 @@ export function beginCollisionStep(w: BallWorld): void {
   C.stamp++
   if (C.stamp === 0xffffffff) {
     C.sweepStamp.fill(0)
+    C.entStep.fill(0)
     C.stamp = 1
   }
+}
+
+/** True when hash entry e belongs to an older capsule of its ball (skipped: the ball has a newer one). */
+export function staleEntry(C: CollisionState, e: number): boolean {
+  const b = C.entBall[e]!
+  return C.entStep[b] === C.stamp && e < C.entStart[b]!
+}
+
+/**
+ * Enters ball a's capsule (the n buckets in C.cells) into the hash as its latest; its older capsule's
+ * entries become stale. When stale entries outnumber live ones (and a few thousand), the hash is
+ * compacted: only the latest capsules are kept, in the same order, so walking a bucket costs what its
+ * live entries cost, however many times the step's balls were predicted again.
+ */
+export function enterCapsule(C: CollisionState, a: number, n: number): void {
+  if (C.entStep[a] === C.stamp) C.entLive -= C.entLen[a]!
+  if (C.entCount + n > 2 * (C.entLive + n) + 4096) compact(C)
+  if (C.entCount + n > C.entNext.length) {
+    let len = C.entNext.length
+    while (len < C.entCount + n) len *= 2
+    C.entNext = grown(C.entNext, len)
+    C.entBall = grown(C.entBall, len)
+    C.entBucket = grown(C.entBucket, len)
+  }
+  C.entStep[a] = C.stamp
+  C.entStart[a] = C.entCount
+  C.entLen[a] = n
+  C.entLive += n
+  for (let k = 0; k < n; k++) link(C, C.entCount++, a, C.cells[k]!)
+}
+
+function link(C: CollisionState, e: number, ball: number, bucket: number): void {
+  C.entBall[e] = ball
+  C.entBucket[e] = bucket
+  if (C.sweepStamp[bucket] !== C.stamp) {
+    C.sweepStamp[bucket] = C.stamp
+    C.entNext[e] = -1
+  } else C.entNext[e] = C.sweepHead[bucket]!
+  C.sweepHead[bucket] = e
+}
+
+/** Keeps only the latest capsules' entries, relinked in their order (a bucket walks as before, less the stale). */
+function compact(C: CollisionState): void {
+  const count = C.entCount
+  // empty every bucket the entries use; then relink the live entries in ascending order
+  for (let e = 0; e < count; e++) C.sweepStamp[C.entBucket[e]!] = C.stamp - 1
+  let k = 0
+  for (let e = 0; e < count; e++) {
+    const b = C.entBall[e]!
+    if (C.entStep[b] !== C.stamp || e < C.entStart[b]!) continue
+    if (e === C.entStart[b]) C.entStart[b] = k
+    link(C, k++, b, C.entBucket[e]!)
+  }
+  C.entCount = k
 }
 
 /** The capsule a ball may sweep from `from` to the end of its known motion (capped at `to`). */

@@ -53,7 +53,18 @@ export interface CollisionState {
   stamp: number
   entNext: Int32Array
   entBall: Uint32Array
+  /** the bucket of each entry (for compaction) */
+  entBucket: Int32Array
   entCount: number
+  /**
+   * each ball's latest capsule in this step's hash: its first entry and entry count, valid where
+   * entStep[ball] === stamp; an entry before its ball's first is stale (the ball has a newer capsule)
+   */
+  entStart: Int32Array
+  entLen: Int32Array
+  entStep: Uint32Array
+  /** entries of the latest capsules (live); the hash is compacted when stale entries outnumber them */
+  entLive: number
   /** per-query stamp by entity id, so a candidate is tested once per query */
   seen: Uint32Array
   seenStamp: number
@@ -117,7 +128,12 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     stamp: 0,
     entNext: new Int32Array(1 << 12),
     entBall: new Uint32Array(1 << 12),
+    entBucket: new Int32Array(1 << 12),
     entCount: 0,
+    entStart: new Int32Array(capacity),
+    entLen: new Int32Array(capacity),
+    entStep: new Uint32Array(capacity),
+    entLive: 0,
     seen: new Uint32Array(capacity),
     seenStamp: 0,
     cells: new Int32Array(256),
@@ -165,6 +181,9 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.seen = grown(C.seen, capacity)
   C.spotNext = grown(C.spotNext, capacity)
   C.spotIn = grown(C.spotIn, capacity)
+  C.entStart = grown(C.entStart, capacity)
+  C.entLen = grown(C.entLen, capacity)
+  C.entStep = grown(C.entStep, capacity)
 }
 
 /** Marks a ball's motion as changed: its heap entries become stale. */
