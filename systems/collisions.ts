@@ -5,7 +5,8 @@
 //     kept (resolveContact in src/collide.ts); elastic when either ball touched another within
 //     CONTACT_DURATION (a push runs along a row of touching balls as in Newton's cradle)
 //   settling contact (approach slower than BALL_SETTLE_SPEED, or the same two balls touching again with
-//     nothing between): the touching cluster around them leaves with its centre-of-mass velocity, less any
+//     nothing between, or a ball past MAX_STEP_CONTACTS contacts in this step: a light ball squeezed
+//     between heavy ones): the touching cluster around them leaves with its centre-of-mass velocity, less any
 //     motion into a closed wall a member touches; then nothing in it can touch again (inelastic collapse ends)
 //   struck while rolling on a rim: it leaves the rim and is in transit through that hole (no new decision
 //     there; it falls in if it stops inside the lip circle), as after a pop-off
@@ -14,12 +15,13 @@
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { CONTACT_DURATION, TOUCH_GAP } from '../src/config/tolerances.js'
+import { CONTACT_DURATION, MAX_STEP_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
 import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
 import { pushCollisionEvent } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
 import { pushId } from '../src/world/idLists.js'
+import type { CollisionState } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 
 export function collisionsSystem(w: BallWorld): void {
@@ -56,7 +58,7 @@ export function collisionsSystem(w: BallWorld): void {
     const approach = -((B.vx[b]! - B.vx[a]!) * nx + (B.vy[b]! - B.vy[a]!) * ny)
     // a glancing contact at relative speed v approaches slower than s in a share of about s²/(2v²) of
     // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
-    const settle = approach < w.config.BALL_SETTLE_SPEED || isRepeatContact(w, a, b)
+    const settle = approach < w.config.BALL_SETTLE_SPEED || isRepeatContact(w, a, b) || countContact(C, a) > MAX_STEP_CONTACTS || countContact(C, b) > MAX_STEP_CONTACTS
     C.contacts++
     if (settle) {
       settleCluster(w, a, b, t)
@@ -76,6 +78,15 @@ export function collisionsSystem(w: BallWorld): void {
     C.partner[a] = b
     C.partner[b] = a
   }
+}
+
+/** Counts a contact of ball eid in this step; returns its contacts in the step so far. */
+function countContact(C: CollisionState, eid: number): number {
+  if (C.stepContactsAt[eid] !== C.stamp) {
+    C.stepContactsAt[eid] = C.stamp
+    C.stepContacts[eid] = 0
+  }
+  return ++C.stepContacts[eid]!
 }
 
 /** The cluster touching a and b leaves with its centre-of-mass velocity (less motion into walls). */

@@ -544,10 +544,10 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
     property('energy (no walls)', scenario(FULL_NO_WALLS, ['on']), ['energy'], 120, SEED + 8)
   }, 120_000)
 
-  // narrowed (NO_RUNAWAY: radii 2…200 px, given masses 1e-3…1e3, no walls narrower than a ball): over the full
-  // ranges, steps with contacts on can take seconds (docs/known-failures.md)
-  it('every step returns within 2 s, and a run of 65 steps within 5 s (radii 2…200 px, masses 1e-3…1e3, no walls narrower than a ball)', () => {
-    property('time (narrowed)', scenario(NO_RUNAWAY), ['time'], 80, SEED + 5)
+  // over the full ranges since the swept-capsule hash drops stale entries (a step's cost grew with the
+  // square of its events: docs/known-failures.md)
+  it('every step returns within 2 s, and a run of 65 steps within 5 s, over the full ranges, every contact mode', () => {
+    property('time (full)', scenario(FULL), ['time'], 150, SEED + 5)
   }, 120_000)
 
   it('fixed-tick contacts: kinetic energy does not rise across a step with collisions and no wall event (full ranges)', () => {

@@ -205,6 +205,43 @@ describe('nothing left behind, events in order', () => {
   })
 })
 
+describe('a squeezed light ball does not stop the world', () => {
+  // a light ball between heavy balls, or between a heavy ball and a wall, would take about π·√(M/m)
+  // contacts; every step ran out of passes and the whole world waited (docs/known-failures.md)
+  it('a tiny ball pressed against a wall by a default ball: a bystander rolls its full 200 px in 2 s', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    sim.addBall({ x: 20, y: 240, vx: 0, vy: 0, radius: 0.001 })
+    sim.addBall({ x: 60, y: 240, vx: -200, vy: 0 })
+    const bystander = sim.addBall({ x: 100, y: 50, vx: 100, vy: 0 })
+    for (let i = 0; i < 120; i++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+    }
+    // it stopped at x ≈ 124.5 (every step from t ≈ 0.25 s waited at the pass cap)
+    expect(sim.ballState(bystander).x).toBeCloseTo(300, 6)
+    storesFinite(sim)
+  })
+
+  it('a 1e-9 ball between two 1e9 balls closing on it: steps return and a bystander rolls on', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.addBall({ x: 0, y: 0, vx: 100, vy: 0, mass: 1e9 })
+    sim.addBall({ x: 50, y: 0, vx: 0, vy: 0, mass: 1e-9 })
+    sim.addBall({ x: 100, y: 0, vx: -100, vy: 0, mass: 1e9 })
+    const bystander = sim.addBall({ x: 0, y: 300, vx: 100, vy: 0 })
+    let collisions = 0
+    for (let i = 0; i < 120; i++) {
+      sim.step(1 / 60)
+      collisions += sim.drainEvents().filter((e) => e.type === 'collision').length
+    }
+    // it moved 28 px of its 200, in steps of up to 2.9 s
+    expect(sim.ballState(bystander).x).toBeCloseTo(200, 6)
+    // the squeeze ends in a settled cluster within a step's contact budget, not a billion contacts
+    expect(collisions).toBeLessThan(2 * 64 + 8)
+    storesFinite(sim)
+  })
+})
+
 describe('settling never merges a separating ball', () => {
   it('a light striker rebounds off a heavy pile as the two-body law says (it once stopped dead, merged into the settling pile)', () => {
     // two heavy balls at rest, touching; a light ball strikes the right one at 3,000 px/s. The heavy ball

@@ -71,3 +71,11 @@ export const MIN_PROJECTION_SHARE = 0.1
 
 /** Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts). */
 export const MAX_WIDEN_ROUNDS = 4
+
+/**
+ * Exact contacts: contacts one ball may take in one step before its later contacts in that step settle
+ * (perfectly inelastic, the touching cluster leaves together). A light ball squeezed between heavy balls,
+ * or between a heavy ball and a wall, would take about π·√(M/m) contacts (1e9 for a mass ratio of 1e18)
+ * and stop the world at the pass cap; a Newton's cradle or a burst takes a few a step.
+ */
+export const MAX_STEP_CONTACTS = 64

@@ -67,6 +67,7 @@ export function beginCollisionStep(w: BallWorld): void {
   if (C.stamp === 0xffffffff) {
     C.sweepStamp.fill(0)
     C.entStep.fill(0)
+    C.stepContactsAt.fill(0)
     C.stamp = 1
   }
 }

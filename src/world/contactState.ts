@@ -94,6 +94,9 @@ export interface CollisionState {
   spotTime: number
   spotMaxR: number
   spotBuilt: boolean
+  /** contacts each ball took in this step (valid where stepContactsAt[ball] === stamp) */
+  stepContacts: Uint32Array
+  stepContactsAt: Uint32Array
   /** time of the last event handled, s */
   now: number
   /** contacts resolved since the world was made */
@@ -146,6 +149,8 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     hVB: new Uint32Array(1 << 10),
     hKind: new Uint8Array(1 << 10),
     heapCount: 0,
+    stepContacts: new Uint32Array(capacity),
+    stepContactsAt: new Uint32Array(capacity),
     spotHead: new Uint32Array(1 << 8),
     spotNext: new Uint32Array(capacity),
     spotIn: new Uint32Array(capacity),
@@ -184,6 +189,8 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.entStart = grown(C.entStart, capacity)
   C.entLen = grown(C.entLen, capacity)
   C.entStep = grown(C.entStep, capacity)
+  C.stepContacts = grown(C.stepContacts, capacity)
+  C.stepContactsAt = grown(C.stepContactsAt, capacity)
 }
 
 /** Marks a ball's motion as changed: its heap entries become stale. */
