@@ -1,12 +1,12 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
-// contact-accuracy, piles, resting, recycling), then
+// contact-accuracy, piles, the adversarial suite's long version, resting, recycling), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
 // assertions (the machine is shared and noisy), so the exit status only says whether every benchmark ran.
 //
 //   npm run bench                  full run: writes docs/results/*.json and docs/figures/*.svg
 //   npm run bench -- --quick       (or npm run bench:quick) no 1M rows (scale up to 100k balls, 100k resting
-//                                  balls), 2,500-ball piles, 8 accuracy seeds; writes under
-//                                  test-artifacts/bench-quick/, leaving docs/ alone
+//                                  balls), 2,500-ball piles, 8 accuracy seeds, the adversarial suite at 2×;
+//                                  writes under test-artifacts/bench-quick/, leaving docs/ alone
 //   npm run bench -- --out DIR     results under DIR/results and DIR/figures
 import { spawnSync } from 'node:child_process'
 import { readFileSync } from 'node:fs'
@@ -24,6 +24,7 @@ const benches: [string, string[]][] = [
   ['bench/contacts.ts', []],
   ['bench/contactAccuracy.ts', quick ? ['--seeds', '8'] : []],
   ['bench/piles.ts', quick ? ['--balls', '2500'] : []],
+  ['bench/adversarial.ts', quick ? ['--scale', '2'] : []],
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
 ]
@@ -73,6 +74,7 @@ interface PileRow {
   contactsPerStep: number
 }
 const piles = read<{ balls: number; rows: PileRow[] }>('piles')
+const adversarial = read<{ scale: number; seconds: number; properties: Record<string, { passed: boolean; runs: number; steps: number; slowestStepMs: number }> }>('adversarial')
 
 const k = (n: number) => n.toLocaleString('en-US')
 const f = (v: number) => (v >= 100 ? k(Math.round(v)) : v.toFixed(1))
@@ -128,6 +130,13 @@ if (piles) {
   console.log(`\narcade abuse (${k(piles.balls)} balls; worst and mean step, ms)`)
   for (const r of piles.rows) {
     console.log(`${r.scene.padEnd(12)} ${r.method.padEnd(6)} worst ${f(r.worstStepMs).padStart(7)}  mean ${f(r.meanStepMs).padStart(7)}  steps ${r.steps}${r.stoppedEarly ? ' (stopped: a step over 5 s)' : ''}  deepest overlap at the end ${r.deepestOverlapPx.toExponential(1)} px`)
+  }
+}
+
+if (adversarial) {
+  console.log(`\nadversarial suite, long version (${adversarial.scale}× the runs of npm test, other seeds, ${adversarial.seconds.toFixed(0)} s)`)
+  for (const [name, r] of Object.entries(adversarial.properties)) {
+    console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0)} ms`)
   }
 }
 

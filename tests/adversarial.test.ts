@@ -20,12 +20,20 @@
 // STEP_BUDGET_MS, so a runaway step ends (as a failure of 'time', or as a discarded run of the other
 // properties) instead of hanging vitest. It catches work spread over event passes, which is what every
 // runaway step found so far is; a loop inside one system would not be caught.
+import { writeFileSync } from 'node:fs'
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, type BallEvent, type BallPhysics } from '../src/index'
 import { BALL_MODE_NAMES, BallSchema, PathSchema } from '../src/ecs'
 
 const STEP_BUDGET_MS = 2000
+/**
+ * The long version (`npm run bench:adversarial`) sets ADVERSARIAL_SCALE: every property runs that many
+ * times as often, on other seeds, and the run's statistics go to ADVERSARIAL_REPORT (a JSON file).
+ */
+const SCALE = Math.max(1, Number(process.env.ADVERSARIAL_SCALE ?? 1) || 1)
+const SEED_SHIFT = SCALE === 1 ? 0 : 7919 * SCALE
+const REPORT = process.env.ADVERSARIAL_REPORT
 /** a whole run's stepping (every step under the budget, but a world that grinds at the pass cap every step) */
 const RUN_BUDGET_MS = 5000
 const SETTLE_STEPS = 40 // 0.67 s at 60 Hz after the last call: past the 0.5 s the overlap check waits for
@@ -499,22 +507,35 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
 
 /** A property over `arb`: checks `checks`; a run over budget fails 'time' and is discarded by the others. */
 function property(name: string, arb: fc.Arbitrary<[Cfg, Op[]]>, checks: readonly Check[], numRuns: number, seed: number): void {
-  fc.assert(
-    fc.property(arb, ([cfg, ops]) => {
-      try {
-        runScenario(name, cfg, ops, checks)
-      } catch (err) {
-        if (err instanceof OverBudget) {
-          seen[name]!.discarded++
-          fc.pre(false)
+  let failure: string | null = null
+  try {
+    fc.assert(
+      fc.property(arb, ([cfg, ops]) => {
+        try {
+          runScenario(name, cfg, ops, checks)
+        } catch (err) {
+          if (err instanceof OverBudget) {
+            seen[name]!.discarded++
+            fc.pre(false)
+          }
+          throw err
         }
-        throw err
-      }
-    }),
-    { seed, numRuns, interruptAfterTimeLimit: 120_000, markInterruptAsFailure: true },
-  )
-  console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
+      }),
+      { seed: seed + SEED_SHIFT, numRuns: numRuns * SCALE, interruptAfterTimeLimit: 120_000 * SCALE, markInterruptAsFailure: true },
+    )
+  } catch (err) {
+    failure = String(err instanceof Error ? err.message : err)
+    throw err
+  } finally {
+    console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
+    if (REPORT) {
+      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, ...seen[name], failure }
+      writeFileSync(REPORT, JSON.stringify(report, null, 2) + '\n')
+    }
+  }
 }
+
+const report: Record<string, object> = {}
 
 // ---------------------------------------------------------------- the properties
 
@@ -530,42 +551,42 @@ const FULL_NO_WALLS: Limits = { ...FULL, walls: false }
 describe('adversarial API sequences (fast-check, seeded)', () => {
   it('every element of every Ball and Path store of every live ball stays finite; every mode is a BALL_MODE_NAMES mode', () => {
     property('finite', scenario(FULL), ['finite'], 100, SEED + 1)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   it('drained events never go back in time, and each lies in the window of the call that reported it', () => {
     property('events', scenario(FULL), ['events'], 100, SEED + 2)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   it('contacts on: kinetic energy does not rise across a step with collisions and no wall event', () => {
     property('energy', scenario(FULL, ['on']), ['energy'], 60, SEED + 3)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   it('contacts on, no walls: kinetic energy does not rise across a step with collisions', () => {
     property('energy (no walls)', scenario(FULL_NO_WALLS, ['on']), ['energy'], 120, SEED + 8)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   // over the full ranges since the swept-capsule hash drops stale entries (a step's cost grew with the
   // square of its events: docs/known-failures.md)
   it('every step returns within 2 s, and a run of 65 steps within 5 s, over the full ranges, every contact mode', () => {
     property('time (full)', scenario(FULL), ['time'], 150, SEED + 5)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   it('fixed-tick contacts: kinetic energy does not rise across a step with collisions and no wall event (full ranges)', () => {
     property('energy (fixed)', scenario(FULL, ['fixed']), ['energy'], 60, SEED + 11)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   it('fixed-tick contacts, full ranges (radii 1e-3 px to the maximum, masses 1e-9…1e9, degenerate walls): every step returns within 2 s, a run within 5 s', () => {
     property('time (fixed, full)', scenario(FULL, ['fixed']), ['time'], 80, SEED + 12)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   it('fixed-tick contacts, full ranges: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
     property('overlap (fixed, full)', scenario(FULL, ['fixed']), ['overlap'], 80, SEED + 13)
-  }, 120_000)
+  }, 120_000 * SCALE)
 
   // no holes, so no rim rolls: a rim roll's start can leave an overlap (docs/known-failures.md)
   it('contacts on, no holes: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
     property('overlap (no holes)', scenario(NO_RUNAWAY_NO_HOLES, ['on']), ['overlap'], 100, SEED + 7)
-  }, 120_000)
+  }, 120_000 * SCALE)
 })
 
 // ---------------------------------------------------------------- shrunk counterexamples

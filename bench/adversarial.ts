@@ -1,0 +1,33 @@
+// The adversarial suite's long version: tests/adversarial.test.ts with every property run
+// ADVERSARIAL_SCALE times as often (default 10) on other seeds, under vitest in a process of its own.
+// Prints each property's result, runs and slowest step, and writes docs/results/adversarial.json.
+//
+//   npm run bench:adversarial [-- --scale 10]
+import { spawnSync } from 'node:child_process'
+import { mkdirSync, readFileSync } from 'node:fs'
+import { join } from 'node:path'
+import { argValue, outDir, writeResult } from './lib'
+
+const scale = Number(argValue('--scale') ?? 10)
+const dir = join('test-artifacts', 'adversarial')
+mkdirSync(dir, { recursive: true })
+const file = join(dir, 'report.json')
+const t0 = Date.now()
+const run = spawnSync(process.platform === 'win32' ? 'npx.cmd' : 'npx', ['vitest', 'run', 'tests/adversarial.test.ts'], {
+  env: { ...process.env, ADVERSARIAL_SCALE: String(scale), ADVERSARIAL_REPORT: file },
+  stdio: ['ignore', 'pipe', 'pipe'],
+  encoding: 'utf8',
+})
+const seconds = (Date.now() - t0) / 1000
+let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; failure: string | null }> = {}
+try {
+  report = JSON.parse(readFileSync(file, 'utf8'))
+} catch {
+  console.error(run.stdout?.slice(-4000), run.stderr?.slice(-4000))
+  throw new Error('the adversarial suite wrote no report')
+}
+for (const [name, r] of Object.entries(report)) {
+  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.failure ? `\n      ${r.failure.split('\n').slice(0, 3).join('\n      ')}` : ''}`)
+}
+const json = writeResult('adversarial', { scale, seconds, vitestExit: run.status, properties: report })
+console.log(`${seconds.toFixed(0)} s; wrote ${json} (results under ${outDir()})`)
