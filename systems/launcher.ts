@@ -11,7 +11,7 @@
 // Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact.
 import { BallMode } from '../components/Ball.js'
 import { MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
-import { spotAdd, spotTaken } from '../src/contacts/spot.js'
+import { spotTaken } from '../src/contacts/spot.js'
 import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 
@@ -41,7 +41,6 @@ export function launcherSystem(w: BallWorld): void {
       continue
     }
     placeBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!)
-    spotAdd(w, eid)
   }
   q.count = kept
 }

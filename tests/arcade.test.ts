@@ -392,6 +392,20 @@ describe('a launcher firing many balls from one point', () => {
     }
   })
 
+  it('a resting ball set moving by a command is found by the next spot check at the same time (adversarial counterexample)', () => {
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+      const a = sim.addBall({ x: 1000, y: 0, vx: 0, vy: 0 })
+      sim.step(1e-9) // a rests
+      // spot checks at this time build the grid (enough small moving balls that a lookup uses it)
+      for (let i = 0; i < 10; i++) sim.addBall({ x: -42 + 10 * i, y: 1015, vx: 0, vy: 1, radius: 2 })
+      sim.setBallVelocity(a, 0, 1) // a wakes, at the same time
+      const b = sim.throwBall({ x: 1000, y: 0, power: 0, angle: 0, radius: 2 })
+      // it was put down inside a (13 px deep) and stayed there
+      expect(sim.ballState(b).mode, mode).toBe('held')
+    }
+  })
+
   it('an id removed and reused in the same frame leaves the spot grid whole', () => {
     const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
     const ids = Array.from({ length: 50 }, (_, i) => sim.addBall({ x: 30 * i, y: 0, vx: 1, vy: 0 }))

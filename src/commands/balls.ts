@@ -13,7 +13,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
-import { spotAdd, spotTaken } from '../contacts/spot.js'
+import { spotTaken } from '../contacts/spot.js'
 import { checkBall, checkHole, checkWorld, finite, flag, positive, readSpec, within } from './validate.js'
 
 export interface BallSpec {
@@ -89,7 +89,6 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
     return eid
   }
   placeBall(w, eid, x, y, vx, vy)
-  spotAdd(w, eid)
   return eid
 }
 

@@ -6,7 +6,8 @@ import { BallMode } from '../../components/Ball.js'
 import type { CollisionState } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { isMoving } from '../world/idLists.js'
-import { bucketOf, restingState } from '../world/restingGrid.js'
+import { restingState } from '../world/restingGrid.js'
+import { buildSpotGrid } from '../world/spotGrid.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
@@ -31,9 +32,10 @@ export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: n
 
 /**
  * A moving ball (its stored state is at the world's time between steps) overlapping the circle, through the
- * spot grid: built from the moving set the first time a spot is checked at this world time (O(moving)),
- * then kept (spotAdd puts each new ball in), so putting down n balls at once costs O(n + moving), not
- * O(n · moving). A lookup wider than the grid's table scans the moving set.
+ * spot grid (src/world/spotGrid.ts): built from the moving set the first time a spot is checked at this
+ * world time (O(moving)), then kept, each ball that starts moving at this time linked in, so putting down n
+ * balls at once costs O(n + moving), not O(n · moving). A lookup wider than the grid's table scans the
+ * moving set.
  */
 function movingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: number, r: number): boolean {
   if (!C.spotBuilt || C.spotTime !== w.time) buildSpotGrid(w, C)
@@ -58,39 +60,6 @@ function overlapsMoving(w: BallWorld, b: number, self: number, x: number, y: num
   const dy = B.y[b]! - y
   const s = r + B.radius[b]!
   return dx * dx + dy * dy < s * s
-}
-
-function buildSpotGrid(w: BallWorld, C: CollisionState): void {
-  let size = C.spotHead.length
-  while (size < 2 * w.moving.count) size *= 2
-  if (size !== C.spotHead.length) C.spotHead = new Uint32Array(size)
-  else C.spotHead.fill(0)
-  C.spotTime = w.time
-  C.spotMaxR = 0
-  C.spotBuilt = true
-  C.spotGen++
-  const balls = w.moving.dense
-  for (let i = 0, n = w.moving.count; i < n; i++) link(w, C, balls[i]!)
-}
-
-function link(w: BallWorld, C: CollisionState, eid: number): void {
-  const B = w.Ball
-  const bucket = bucketOf(Math.floor(B.x[eid]! / C.cell), Math.floor(B.y[eid]! / C.cell), C.spotHead.length - 1)
-  C.spotNext[eid] = C.spotHead[bucket]!
-  C.spotHead[bucket] = eid
-  C.spotIn[eid] = C.spotGen
-  if (B.radius[eid]! > C.spotMaxR) C.spotMaxR = B.radius[eid]!
-}
-
-/** A ball just put down moving at the world's time joins the spot grid, if the grid is of this time. */
-export function spotAdd(w: BallWorld, eid: number): void {
-  const C = restingState(w)
-  if (C === null || !C.spotBuilt || C.spotTime !== w.time || !isMoving(w, eid)) return
-  if (2 * w.moving.count > C.spotHead.length || C.spotIn[eid] === C.spotGen) {
-    buildSpotGrid(w, C)
-    return
-  }
-  link(w, C, eid)
 }
 
 /** A resting ball b other than `self` overlapping the circle (x, y, r). */

@@ -1,5 +1,6 @@
 // Id lists without allocation: a growable list, and the sparse set of the balls that move.
 import type { BallWorld } from './createWorld.js'
+import { spotJoin } from './spotGrid.js'
 
 /** A growable list of entity ids. */
 export interface IdList {
@@ -48,6 +49,7 @@ export function addMoving(world: BallWorld, eid: number): void {
   }
   m.sparse[eid] = m.count
   m.dense[m.count++] = eid
+  spotJoin(world, eid)
 }
 
 /** Removes by swapping the last element in; callers iterating `dense` go from the end to the start. */
