@@ -29,7 +29,7 @@ const HOLE_R = 18
 const V_MAX = 600
 const PX = 100
 const MEASURED_STEPS = 120
-const ROUNDS = 3
+const ROUNDS = 5
 
 interface Scene {
   name: 'gas' | 'panel'
