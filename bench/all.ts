@@ -11,7 +11,7 @@
 import { spawnSync } from 'node:child_process'
 import { readFileSync } from 'node:fs'
 import { join } from 'node:path'
-import type { AccuracyPoint, ContactRow, PeerRow, ScaleRow } from './charts'
+import type { AccuracyPoint, ContactRow, PeerRow, PileRow, ScaleRow } from './charts'
 import { argValue } from './lib'
 
 const quick = process.argv.includes('--quick')
@@ -63,16 +63,6 @@ const peers = read<{ rows: PeerRow[] }>('peers')
 const resting = read<{ rows: RestingRow[] }>('resting')
 const contacts = read<{ rows: ContactRow[] }>('contacts')
 const accuracy = read<{ points: AccuracyPoint[] }>('contact-accuracy')
-interface PileRow {
-  scene: string
-  method: string
-  steps: number
-  stoppedEarly: boolean
-  meanStepMs: number
-  worstStepMs: number
-  deepestOverlapPx: number
-  contactsPerStep: number
-}
 const piles = read<{ balls: number; rows: PileRow[] }>('piles')
 const adversarial = read<{ scale: number; seconds: number; properties: Record<string, { passed: boolean; runs: number; steps: number; slowestStepMs: number }> }>('adversarial')
 

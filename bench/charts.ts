@@ -190,3 +190,15 @@ export function contactAccuracyFigure(points: readonly AccuracyPoint[], seeds: n
     },
   } as TopLevelSpec
 }
+
+/** A row of bench/piles.ts: one scene under one contact method. */
+export interface PileRow {
+  scene: string
+  method: string
+  steps: number
+  stoppedEarly: boolean
+  meanStepMs: number
+  worstStepMs: number
+  deepestOverlapPx: number
+  contactsPerStep: number
+}

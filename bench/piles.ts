@@ -13,22 +13,13 @@
 //   npm run bench:piles
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
 import { BallMode } from '../components/Ball'
+import type { PileRow } from './charts'
 import { argValue, writeResult } from './lib'
 
 const DT = 1 / 60
 const STEP_LIMIT_MS = 5_000
 const BALLS = Number(argValue('--balls') ?? 10_000)
 
-interface Row {
-  scene: string
-  method: string
-  steps: number
-  stoppedEarly: boolean
-  meanStepMs: number
-  worstStepMs: number
-  deepestOverlapPx: number
-  contactsPerStep: number
-}
 
 function random(seed: number): () => number {
   let s = seed
@@ -70,7 +61,7 @@ function contactsOf(sim: BallPhysics): number {
   return sim.world.collide?.contacts ?? sim.world.fixed?.contacts ?? 0
 }
 
-function runScene(scene: string, method: string, sim: BallPhysics, steps: number, each?: (step: number) => void): Row {
+function runScene(scene: string, method: string, sim: BallPhysics, steps: number, each?: (step: number) => void): PileRow {
   let worst = 0
   let total = 0
   let done = 0
@@ -90,7 +81,7 @@ function runScene(scene: string, method: string, sim: BallPhysics, steps: number
       break
     }
   }
-  const row: Row = {
+  const row: PileRow = {
     scene,
     method,
     steps: done,
@@ -107,7 +98,7 @@ function runScene(scene: string, method: string, sim: BallPhysics, steps: number
   return row
 }
 
-function burst(mode: 'on' | 'fixed'): Row {
+function burst(mode: 'on' | 'fixed'): PileRow {
   const sim = createBallPhysics({ BALL_COLLISIONS: mode }, { capacity: BALLS + 64 })
   addPanel(sim)
   sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
@@ -116,7 +107,7 @@ function burst(mode: 'on' | 'fixed'): Row {
   return runScene(`burst ${BALLS}`, mode === 'on' ? 'exact' : 'fixed', sim, 240)
 }
 
-function pile(mode: 'on' | 'fixed', e: number): Row {
+function pile(mode: 'on' | 'fixed', e: number): PileRow {
   const side = Math.round(Math.sqrt(BALLS))
   const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: e }, { capacity: BALLS + 1000 })
   const box = 3000
@@ -135,7 +126,7 @@ function pile(mode: 'on' | 'fixed', e: number): Row {
   })
 }
 
-const rows: Row[] = []
+const rows: PileRow[] = []
 for (const mode of ['fixed', 'on'] as const) {
   rows.push(burst(mode))
   rows.push(pile(mode, 0))
