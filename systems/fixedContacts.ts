@@ -7,7 +7,7 @@
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
 import { findPairs, gatherCandidates } from '../src/contacts/fixedGrid.js'
-import { applyChanges, prepareSolve, solvePositions, solveVelocities } from '../src/contacts/fixedSolve.js'
+import { applyChanges, solvePositions, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { MAX_WIDEN_ROUNDS } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
@@ -17,13 +17,11 @@ export function fixedContactsSystem(w: BallWorld): void {
   if (F === null || !F.due || w.pass !== 0) return
   F.due = false
   const t = w.time
-  F.now = t
   F.ticks++
   gatherCandidates(w, F)
   if (F.n < 2) return
   findPairs(F)
   if (F.pairCount === 0) return
-  prepareSolve(w)
   const iterations = w.config.CONTACT_ITERATIONS
   F.hitCount = 0
   F.overlap = false

@@ -61,7 +61,6 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
     const reach = r + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
     F.reach[k] = reach
     F.changed[k] = 0
-    F.pinned[k] = 0
     sum += reach
     if (reach > max) max = reach
     if (x < minX) minX = x
@@ -75,7 +74,8 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
   F.maxX = maxX
   F.maxY = maxY
   F.nearWallCount = 0
-  if (w.walls !== 0) markWalls(w, F)
+  readWalls(w)
+  if (w.walls !== 0) for (let i = 0; i < n; i++) markWall(F, i)
 }
 
 /** Appends the resting balls within reach of the seeds (moving candidates, touched resting balls), sorted by id. */
@@ -153,63 +153,31 @@ function addResting(w: BallWorld, F: FixedContactState, e: number, x: number, y:
   pushCandidate(F, e)
 }
 
-/** Pins the candidates touching a closed wall and lists those that can reach one within the tick. */
-function markWalls(w: BallWorld, F: FixedContactState): void {
+/**
+ * The closed walls of this tick: their inner faces (an open edge, or no walls, at ±Infinity, where no ball
+ * ever reaches) and restitution; read once a tick, by the gather, for the pairing and the solve.
+ */
+export const walls = { minX: -Infinity, maxX: Infinity, minY: -Infinity, maxY: Infinity, e: 0 }
+
+function readWalls(w: BallWorld): void {
   const W = w.Walls
   const e = w.walls
-  const open = W.open[e]!
-  // an open edge is never near: its bound is moved to where no ball is
-  const minX = (open & WallEdge.Left) === 0 ? W.minX[e]! : -Infinity
-  const maxX = (open & WallEdge.Right) === 0 ? W.maxX[e]! : Infinity
-  const minY = (open & WallEdge.Top) === 0 ? W.minY[e]! : -Infinity
-  const maxY = (open & WallEdge.Bottom) === 0 ? W.maxY[e]! : Infinity
-  const { x: X, y: Y, r: Rad, reach: Reach } = F
-  for (let i = 0; i < F.n; i++) {
-    const x = X[i]!
-    const y = Y[i]!
-    const reach = Reach[i]!
-    // far from every wall (the common case): not near, not pinned
-    if (x - reach > minX && x + reach < maxX && y - reach > minY && y + reach < maxY) continue
-    const r = Rad[i]!
-    let pin = 0
-    if (x - r - minX <= TOUCH_GAP) pin |= WallEdge.Left
-    if (maxX - x - r <= TOUCH_GAP) pin |= WallEdge.Right
-    if (y - r - minY <= TOUCH_GAP) pin |= WallEdge.Top
-    if (maxY - y - r <= TOUCH_GAP) pin |= WallEdge.Bottom
-    F.pinned[i] = pin
-    F.nearWall[F.nearWallCount++] = i
-  }
+  const open = e === 0 ? 15 : W.open[e]!
+  walls.minX = (open & WallEdge.Left) === 0 ? W.minX[e]! : -Infinity
+  walls.maxX = (open & WallEdge.Right) === 0 ? W.maxX[e]! : Infinity
+  walls.minY = (open & WallEdge.Top) === 0 ? W.minY[e]! : -Infinity
+  walls.maxY = (open & WallEdge.Bottom) === 0 ? W.maxY[e]! : Infinity
+  walls.e = e === 0 ? 0 : W.restitution[e]!
 }
 
-/** Candidate i: the closed walls it touches (pinned), and whether its reach meets one (the near-wall list). */
-export function markWall(w: BallWorld, F: FixedContactState, i: number): void {
-  const W = w.Walls
-  const e = w.walls
-  const open = W.open[e]!
+/** Lists candidate i among those near a closed wall when its reach meets one within the tick. */
+export function markWall(F: FixedContactState, i: number): void {
   const x = F.x[i]!
   const y = F.y[i]!
-  const r = F.r[i]!
   const reach = F.reach[i]!
-  let pin = 0
-  let near = false
-  if ((open & WallEdge.Left) === 0) {
-    if (x - r - W.minX[e]! <= TOUCH_GAP) pin |= WallEdge.Left
-    if (x - reach - W.minX[e]! <= 0) near = true
-  }
-  if ((open & WallEdge.Right) === 0) {
-    if (W.maxX[e]! - x - r <= TOUCH_GAP) pin |= WallEdge.Right
-    if (W.maxX[e]! - x - reach <= 0) near = true
-  }
-  if ((open & WallEdge.Top) === 0) {
-    if (y - r - W.minY[e]! <= TOUCH_GAP) pin |= WallEdge.Top
-    if (y - reach - W.minY[e]! <= 0) near = true
-  }
-  if ((open & WallEdge.Bottom) === 0) {
-    if (W.maxY[e]! - y - r <= TOUCH_GAP) pin |= WallEdge.Bottom
-    if (W.maxY[e]! - y - reach <= 0) near = true
-  }
-  F.pinned[i] = pin
-  if (near) F.nearWall[F.nearWallCount++] = i
+  // far from every wall: the common case
+  if (x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY) return
+  F.nearWall[F.nearWallCount++] = i
 }
 
 function close(F: FixedContactState, i: number, j: number): boolean {

@@ -43,7 +43,7 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
     const g = F.widened[k]!
     F.reach[g] = F.wide[g]!
     F.grown[g] = 0
-    if (w.walls !== 0) markWall(w, F, g)
+    markWall(F, g)
   }
   return true
 }
@@ -93,9 +93,8 @@ function addResting(w: BallWorld, F: FixedContactState, from: number): void {
     F.im[k] = 1 / F.mass[eid]!
     F.reach[k] = B.radius[eid]! + TOUCH_GAP
     F.changed[k] = 0
-    F.pinned[k] = 0
     F.grown[k] = 0
-    if (w.walls !== 0) markWall(w, F, k)
+    markWall(F, k)
     for (let m = 0; m < F.widenedCount; m++) {
       const g = F.widened[m]!
       const dx = F.x[k]! - F.x[g]!

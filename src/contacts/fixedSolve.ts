@@ -18,7 +18,6 @@
 // in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
 // if it leaves at BALL_SETTLE_SPEED or more.
 import { BallMode } from '../../components/Ball.js'
-import { WallEdge } from '../../components/Walls.js'
 import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import type { BallWorld } from '../world/createWorld.js'
@@ -26,25 +25,8 @@ import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
 import { MAX_PROJECTION_SWEEPS, MIN_PROJECTION_SHARE, PROJECTION_SLOP } from '../config/tolerances.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
+import { walls } from './fixedGrid.js'
 import { strikeLeavesRim } from './law.js'
-
-/** The walls box of this tick (closed edges only matter), read once. */
-const box = { minX: 0, maxX: 0, minY: 0, maxY: 0, open: 15, e: 0 }
-
-function readBox(w: BallWorld): void {
-  if (w.walls === 0) {
-    box.open = 15
-    return
-  }
-  const W = w.Walls
-  const e = w.walls
-  box.minX = W.minX[e]!
-  box.maxX = W.maxX[e]!
-  box.minY = W.minY[e]!
-  box.maxY = W.maxY[e]!
-  box.open = W.open[e]!
-  box.e = W.restitution[e]!
-}
 
 /** Normal of pair p (a→b) into nrm; returns the gap (negative: overlap). */
 const nrm = { x: 1, y: 0 }
@@ -153,7 +135,6 @@ function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: n
   if (F.nearWallCount === 0) return false
   let moved = false
   const tick = F.tick
-  const open = box.open
   for (let k = 0; k < F.nearWallCount; k++) {
     const i = F.nearWall[k]!
     const x = F.x[i]!
@@ -162,17 +143,12 @@ function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: n
     let vx = F.vx[i]!
     let vy = F.vy[i]!
     let hit = false
-    if ((open & WallEdge.Left) === 0 && vx < 0 && x - r - box.minX <= -vx * tick) {
-      vx = bounce(vx, settle)
-      hit = true
-    } else if ((open & WallEdge.Right) === 0 && vx > 0 && box.maxX - x - r <= vx * tick) {
+    // an open edge's face is at ±Infinity: never within a tick
+    if ((vx < 0 && x - r - walls.minX <= -vx * tick) || (vx > 0 && walls.maxX - x - r <= vx * tick)) {
       vx = bounce(vx, settle)
       hit = true
     }
-    if ((open & WallEdge.Top) === 0 && vy < 0 && y - r - box.minY <= -vy * tick) {
-      vy = bounce(vy, settle)
-      hit = true
-    } else if ((open & WallEdge.Bottom) === 0 && vy > 0 && box.maxY - y - r <= vy * tick) {
+    if ((vy < 0 && y - r - walls.minY <= -vy * tick) || (vy > 0 && walls.maxY - y - r <= vy * tick)) {
       vy = bounce(vy, settle)
       hit = true
     }
@@ -191,7 +167,7 @@ function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: n
 }
 
 function bounce(vn: number, settle: number): number {
-  return Math.abs(vn) < settle ? 0 : -box.e * vn
+  return Math.abs(vn) < settle ? 0 : -walls.e * vn
 }
 
 export function solvePositions(w: BallWorld, F: FixedContactState): void {
@@ -241,43 +217,16 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
 
 /**
  * Keeps a moved candidate from being pushed through a closed wall: never further past a wall's inner face
- * than it was when the tick began (a ball outside the box stays outside); pins it where it stops.
+ * than it was when the tick began (a ball outside the box stays outside; an open edge's face is at
+ * ±Infinity, so it never holds).
  */
 function keepInside(w: BallWorld, F: FixedContactState, i: number): void {
-  const open = box.open
-  if (open === 15) return
   const eid = F.id[i]!
   const r = F.r[i]!
   const x0 = w.Ball.x[eid]!
   const y0 = w.Ball.y[eid]!
-  if ((open & WallEdge.Left) === 0) {
-    const lo = Math.min(x0, box.minX + r)
-    if (F.x[i]! < lo) {
-      F.x[i] = lo
-      F.pinned[i]! |= WallEdge.Left
-    }
-  }
-  if ((open & WallEdge.Right) === 0) {
-    const hi = Math.max(x0, box.maxX - r)
-    if (F.x[i]! > hi) {
-      F.x[i] = hi
-      F.pinned[i]! |= WallEdge.Right
-    }
-  }
-  if ((open & WallEdge.Top) === 0) {
-    const lo = Math.min(y0, box.minY + r)
-    if (F.y[i]! < lo) {
-      F.y[i] = lo
-      F.pinned[i]! |= WallEdge.Top
-    }
-  }
-  if ((open & WallEdge.Bottom) === 0) {
-    const hi = Math.max(y0, box.maxY - r)
-    if (F.y[i]! > hi) {
-      F.y[i] = hi
-      F.pinned[i]! |= WallEdge.Bottom
-    }
-  }
+  F.x[i] = Math.min(Math.max(F.x[i]!, Math.min(x0, walls.minX + r)), Math.max(x0, walls.maxX - r))
+  F.y[i] = Math.min(Math.max(F.y[i]!, Math.min(y0, walls.minY + r)), Math.max(y0, walls.maxY - r))
 }
 
 /** Gives every changed ball a fresh path from its state at the tick t (see the top of this file). */
@@ -314,8 +263,4 @@ function moveResting(w: BallWorld, F: FixedContactState, eid: number, x: number,
     return
   }
   restingInsert(w, eid)
-}
-
-export function prepareSolve(w: BallWorld): void {
-  readBox(w)
 }

@@ -3,7 +3,7 @@
 // candidate (the balls on the panel at one contact tick) and grown by doubling, so a tick allocates nothing
 // once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
 import type { BallPhysicsConfig } from '../config/design.js'
-import { createCollisionState, type CollisionState } from './contactState.js'
+import { appendId, createCollisionState, type CollisionState } from './contactState.js'
 
 export interface FixedContactState {
   /** mass of each ball (by entity id), in units of a default ball */
@@ -24,8 +24,6 @@ export interface FixedContactState {
   nextTick: number
   /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
   due: boolean
-  /** the time of the tick being solved, s */
-  now: number
   // candidates of the tick being solved, in ascending id order
   n: number
   id: Uint32Array
@@ -53,8 +51,6 @@ export interface FixedContactState {
   next: Int32Array
   /** what the solve changed: 1 velocity, 2 position */
   changed: Uint8Array
-  /** closed walls the candidate touches, a WallEdge bit mask (it cannot be pushed further into them) */
-  pinned: Uint8Array
   /** grid: first sorted entry of each cell (cells + 1 entries), and fill counters */
   start: Int32Array
   fill: Int32Array
@@ -100,7 +96,6 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     tick: config.CONTACT_TICK,
     nextTick: 1,
     due: false,
-    now: 0,
     n: 0,
     id: new Uint32Array(n),
     x: new Float64Array(n),
@@ -119,7 +114,6 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     widenedCount: 0,
     next: new Int32Array(n),
     changed: new Uint8Array(n),
-    pinned: new Uint8Array(n),
     start: new Int32Array(4 * n),
     fill: new Int32Array(4 * n),
     sx: new Float64Array(n),
@@ -181,7 +175,6 @@ export function reserveCandidates(F: FixedContactState, n: number): void {
   F.grown = grownTo(F.grown, len)
   F.next = grownTo(F.next, len)
   F.changed = grownTo(F.changed, len)
-  F.pinned = grownTo(F.pinned, len)
   F.sx = grownTo(F.sx, len)
   F.sy = grownTo(F.sy, len)
   F.sr = grownTo(F.sr, len)
@@ -221,10 +214,5 @@ export function pushPair(F: FixedContactState, a: number, b: number): void {
  * the projection moved, or one that came to rest (it may have stopped inside another).
  */
 export function touchBall(F: FixedContactState, eid: number): void {
-  if (F.touchedCount === F.touched.length) {
-    const next = new Uint32Array(2 * F.touched.length)
-    next.set(F.touched)
-    F.touched = next
-  }
-  F.touched[F.touchedCount++] = eid
+  F.touched = appendId(F.touched, F.touchedCount++, eid)
 }
