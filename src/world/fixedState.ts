@@ -194,14 +194,11 @@ function grownTo<T extends Float64Array | Int32Array | Uint8Array>(a: T, n: numb
 /** Appends the pair (a, b) of candidate indices. */
 export function pushPair(F: FixedContactState, a: number, b: number): void {
   if (F.pairCount === F.pairA.length) {
+    // pairs are also added during the solve (fixedReach.ts): what the earlier ones took this tick is kept
     const len = 2 * F.pairA.length
-    const pa = new Int32Array(len)
-    const pb = new Int32Array(len)
-    pa.set(F.pairA)
-    pb.set(F.pairB)
-    F.pairA = pa
-    F.pairB = pb
-    F.pairHit = new Uint8Array(len)
+    F.pairA = grownTo(F.pairA, len)
+    F.pairB = grownTo(F.pairB, len)
+    F.pairHit = grownTo(F.pairHit, len)
   }
   F.pairA[F.pairCount] = a
   F.pairB[F.pairCount] = b
