@@ -6,8 +6,8 @@
 // A uniform grid holds the balls whose reach is at most half a cell; the cell is twice the largest reach,
 // or four times the mean reach when the largest is more than four times the mean (then the wider or
 // faster balls are "big": each scans the grid rows within its reach, and the big balls are paired with
-// each other directly). Work per tick: O(ball ids in use (a scan of the mode bytes) + grid cells (at most 4 per candidate + 64) +
-// pairs + big·(balls in reach, at most all) + big²).
+// each other directly). Work per tick: O(ball ids in use (a scan of the mode bytes) + grid cells (at most
+// 4 per candidate + 64) + pairs + big·(balls in reach, at most all) + big²).
 import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
