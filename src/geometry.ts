@@ -138,7 +138,10 @@ export function rollPopTime(vt0: number, friction: number, arc: number): number 
   return q < 1 ? -Math.log1p(-q) / friction : Infinity
 }
 
-/** Arc length of the pop-off threshold: RIM_ROLL_MAX_TURNS turns of the lip circle. */
+/**
+ * Arc length of the pop-off threshold: RIM_ROLL_MAX_TURNS turns of the lip circle (radius R). The arc is the
+ * distance the ball rolls; its centre rides the smaller contact circle, so it turns through more angle.
+ */
 export function popArc(maxTurns: number, holeRadius: number): number {
   return maxTurns * 2 * Math.PI * holeRadius
 }

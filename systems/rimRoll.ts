@@ -1,9 +1,9 @@
 // Stage 3, rim-around / lip-out. Region 3 of the (δ, v) map, and the mid-speed part of region 2.
-//   on the lip circle (radius R): v_t(τ) = v_t0·e^(−μ_roll·τ),  arc s(τ) = v_t0·(1 − e^(−μ_roll·τ))/μ_roll
+//   on the contact circle (radius R − r/2): v_t(τ) = v_t0·e^(−μ_roll·τ),  arc s(τ) = v_t0·(1 − e^(−μ_roll·τ))/μ_roll
 //   drop when v_t < RIM_ROLL_DROP_SPEED; pop off when s > RIM_ROLL_MAX_TURNS·2πR, whichever comes first
 // A contact the COG gate marked Roll starts rolling: the normal component is spent, the tangential speed
-// kept, and the centre rides the lip circle from the contact's angle (the design's "ball balanced on the
-// lip"). The decay is the exact exponential, so the end times are closed forms and every dt is stable.
+// kept, and the centre rides the contact circle from where the gate took the contact (the design puts it on
+// the lip circle, r/2 further out: docs/decisions.md §2). The decay is the exact exponential, so the end times are closed forms and every dt is stable.
 // A drop is a capture (via 'rimRoll'); a pop-off leaves along the tangent with the hole locked until the
 // centre is outside the lip circle.
 // Reads Path.mark, Ball, Hole, RimContact; writes Ball, RimContact, Path; emits 'rimRoll', 'capture', 'lipOut', 'nearMiss'.

@@ -242,6 +242,31 @@ describe('a squeezed light ball does not stop the world', () => {
   })
 })
 
+describe('a rim roll starts where the ball is', () => {
+  // the roll once started on the lip circle (R), r/2 further out than the contact circle where the COG gate
+  // took the contact: the centre jumped 5.5 px and, with contacts on, landed inside the ball beside it
+  it('a ball that catches up a small ball as it starts a rim roll: the two never overlap (adversarial counterexample)', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.addHole({ x: 290, y: 310 })
+    const a = sim.throwBall({ x: 210, y: 450, power: 0, angle: 0.6, radius: 5 })
+    const b = sim.throwBall({ x: 210, y: 450, power: 0.633, angle: 0.6 }) // held until a clears the spot
+    let rolls = 0
+    let checked = 0
+    for (let i = 0; i < 60; i++) {
+      sim.step(1 / 60)
+      rolls += sim.drainEvents().filter((e) => e.type === 'rimRoll').length
+      const A = sim.ballState(a)
+      const B = sim.ballState(b)
+      const onPanel = (m: string) => m === 'rolling' || m === 'rimRoll' || m === 'resting'
+      if (!onPanel(A.mode) || !onPanel(B.mode)) continue
+      checked++
+      expect(Math.hypot(A.x - B.x, A.y - B.y), `step ${i}: ${A.mode} ${B.mode}`).toBeGreaterThanOrEqual(5 + 11 - 1e-3)
+    }
+    expect(rolls).toBeGreaterThan(0)
+    expect(checked).toBeGreaterThan(20)
+  })
+})
+
 describe('settling never merges a separating ball', () => {
   it('a light striker rebounds off a heavy pile as the two-body law says (it once stopped dead, merged into the settling pile)', () => {
     // two heavy balls at rest, touching; a light ball strikes the right one at 3,000 px/s. The heavy ball

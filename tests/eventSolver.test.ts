@@ -89,12 +89,12 @@ describe('event solver: hand-derived cases', () => {
     expect(res.events[1]!.time).toBeCloseTo(tPop, 12)
     // contact at angle atan2(δ, −√(ρ_c² − δ²)) on the far side going +x, i.e. clockwise in angle (y down)
     const phi0 = Math.atan2(11.5, -Math.sqrt(RHO_C * RHO_C - 11.5 * 11.5))
-    const phi = phi0 - POP_ARC / R
+    const phi = phi0 - POP_ARC / RHO_C // the centre rides the contact circle: 63.9 px of arc turn it 0.81 turns
     const vOut = vt0 - 5 * POP_ARC // v_t(τ) = v_t0 − μ·arc(τ) for the exponential decay
     const run = (vOut * vOut) / (2 * A)
     expect(res.events[3]!.time).toBeCloseTo(tPop + vOut / A, 9)
-    expect(res.x).toBeCloseTo(R * Math.cos(phi) + Math.sin(phi) * run, 9)
-    expect(res.y).toBeCloseTo(R * Math.sin(phi) - Math.cos(phi) * run, 9)
+    expect(res.x).toBeCloseTo(RHO_C * Math.cos(phi) + Math.sin(phi) * run, 9)
+    expect(res.y).toBeCloseTo(RHO_C * Math.sin(phi) - Math.cos(phi) * run, 9)
   })
 
   it('a brush at δ = 15 px and 340 px/s (δ_eff(340) = 14.8 px, v_skip(15) = 353.8 px/s) bounces at the lip and never rolls', () => {

@@ -3,7 +3,7 @@
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
-import { popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
+import { cogRadius, popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { setBallMode } from '../world/ballMode.js'
 
@@ -36,12 +36,16 @@ export function rollPopsOff(w: BallWorld, eid: number): boolean {
 /** A rim-rolling ball's state at a time, written by rimRollAt (module scratch: no allocation). */
 export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc: 0, radius: 0 }
 
-/** Evaluates a rim-rolling ball at time t into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt. */
+/**
+ * Evaluates a rim-rolling ball at time t into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt. The
+ * centre rides the contact circle ρ_c = R − r/2, where the COG gate took the contact (so a roll starts where
+ * the ball is, with no jump), and turns arc/ρ_c radians.
+ */
 export function rimRollAt(w: BallWorld, eid: number, t: number): void {
   const RC = w.RimContact
   const slot = w.Ball.rim[eid]!
   const hole = RC.hole[slot]!
-  const R = w.Hole.radius[hole]!
+  const R = cogRadius(w.Hole.radius[hole]!, w.Ball.radius[eid]!)
   const vt0 = RC.speed0[slot]!
   const mu = w.config.RIM_ROLL_FRICTION
   let tau = t - RC.time0[slot]!

@@ -258,13 +258,15 @@ export function solveBall(
           }
           // pop off along the tangent at the end of the arc
           const tEnd = t + tPop
-          const phi = phi0 + (dir * rollArc(tPop, vt0, mu)) / h.R
+          // the centre rides the contact circle, where the roll began
+          const rho = cogRadius(h.R, r)
+          const phi = phi0 + (dir * rollArc(tPop, vt0, mu)) / rho
           const v = rollSpeed(tPop, vt0, mu)
           holeEvent('lipOut', h.id, tEnd)
           holeEvent('nearMiss', h.id, tEnd)
           fromHole = h.id
-          x0 = h.x + h.R * Math.cos(phi)
-          y0 = h.y + h.R * Math.sin(phi)
+          x0 = h.x + rho * Math.cos(phi)
+          y0 = h.y + rho * Math.sin(phi)
           vx0 = -dir * Math.sin(phi) * v
           vy0 = dir * Math.cos(phi) * v
           t0 = tEnd

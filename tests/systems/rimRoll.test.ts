@@ -8,18 +8,23 @@ const ROLL_DROP = { delta: 11, v: 490 }
 const ROLL_POP = { delta: 12.3, v: 459 }
 
 describe('rim-roll system (Stage 3)', () => {
-  it('keeps the centre on the lip circle and decays the speed as v_t0·e^(−μτ) exactly, at any dt', () => {
+  it('keeps the centre on the contact circle (R − r/2) and decays the speed as v_t0·e^(−μτ) exactly, at any dt', () => {
     for (const dt of [1 / 240, 1 / 60, 0.1, 0.25]) {
       const { sim, ball } = shoot(ROLL_DROP.delta, ROLL_DROP.v, {}, 30)
       let t0 = -1
       let vt0 = 0
+      let before = sim.ballState(ball)
       for (let i = 0; i < 400 && t0 < 0; i++) {
+        before = sim.ballState(ball)
         sim.step(1 / 2000)
         const ev = sim.drainEvents()
         const roll = ev.find((e) => e.type === 'rimRoll')
         if (roll) t0 = roll.time
       }
       expect(t0).toBeGreaterThan(0)
+      // the roll starts where the ball is: no jump across the 1/2000 s step that took the contact
+      const start = sim.ballState(ball)
+      expect(Math.hypot(start.x - before.x, start.y - before.y)).toBeLessThan((ROLL_DROP.v * 1.01) / 2000)
       vt0 = sim.world.RimContact.speed0[rimSlot(sim.world, ball)]!
       const mu = sim.config.RIM_ROLL_FRICTION
       const tDrop = rollDropTime(vt0, mu, 110)
@@ -28,7 +33,7 @@ describe('rim-roll system (Stage 3)', () => {
         sim.step(dt)
         const st = sim.ballState(ball)
         expect(st.mode).toBe('rimRoll')
-        expect(Math.abs(Math.hypot(st.x, st.y) - 18)).toBeLessThan(EXACT)
+        expect(Math.abs(Math.hypot(st.x, st.y) - (18 - 11 / 2))).toBeLessThan(EXACT)
         const v = Math.hypot(st.vx, st.vy)
         expect(Math.abs(v - vt0 * Math.exp(-mu * (sim.time - t0)))).toBeLessThan(1e-9)
         expect(v).toBeGreaterThan(0)

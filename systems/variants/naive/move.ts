@@ -1,10 +1,11 @@
 // Naive motion, as a tick-sampled port would write it: explicit Euler with the rolling deceleration,
 //   x ← x + v·h,  |v| ← |v| − a·h  (stopped at 0)
 // and on the rim, the exponential decay replaced by its first-order step,
-//   arc ← arc + v·h,  φ ← φ ± v·h/R,  v ← v·(1 − μ_roll·h)      (negative for h > 1/μ_roll)
+//   arc ← arc + v·h,  φ ← φ ± v·h/ρ_c,  v ← v·(1 − μ_roll·h)    (negative for h > 1/μ_roll; ρ_c = R − r/2)
 // No event is found in time: whatever happened inside the sub-step is seen at its end (naiveDetect).
 // Reads Ball, RimContact, Hole, the naive store; writes Ball, RimContact (angle, arc), the naive store.
 import { BallMode } from '../../../components/Ball.js'
+import { cogRadius } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 
@@ -30,7 +31,7 @@ export function naiveMoveSystem(w: BallWorld): void {
     if (B.mode[eid] === BallMode.RimRoll) {
       const rim = B.rim[eid]!
       const hole = RC.hole[rim]!
-      const R = H.radius[hole]!
+      const R = cogRadius(H.radius[hole]!, B.radius[eid]!)
       const v = S.rollSpeed[eid]!
       const dir = RC.direction[rim]!
       RC.arc[rim] = RC.arc[rim]! + v * h

@@ -1,5 +1,5 @@
-// Stage 3, rim-around / lip-out, at the tick. A contact marked Roll snaps the centre onto the lip circle at
-// the overshot position's angle and keeps the tangential speed there; naiveMove then decays it by
+// Stage 3, rim-around / lip-out, at the tick. A contact marked Roll snaps the centre onto the contact circle
+// ρ_c = R − r/2 at the overshot position's angle and keeps the tangential speed there; naiveMove then decays it by
 // v·(1 − μ_roll·h) per sub-step. When naiveDetect finds v < RIM_ROLL_DROP_SPEED the ball drops in; when
 // it finds the arc past RIM_ROLL_MAX_TURNS·2πR it pops off along the tangent, hole locked until it is out.
 // Reads the naive marks, Ball, Hole, RimContact; writes Ball, RimContact, the naive store;
@@ -10,6 +10,7 @@ import { RimMode } from '../../../components/RimContact.js'
 import { CaptureVia, EventType } from '../../../src/events.js'
 import { captureBall, emitHoleEvent } from '../../../src/motion/ballFate.js'
 import { startRimRoll } from '../../../src/motion/rimRoll.js'
+import { cogRadius } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { setBallMode } from '../../../src/world/ballMode.js'
@@ -30,7 +31,7 @@ export function naiveRimRollSystem(w: BallWorld): void {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
       const phi = startRimRoll(w, eid, hole, st.t)
-      const R = H.radius[hole]!
+      const R = cogRadius(H.radius[hole]!, B.radius[eid]!)
       RC.angle[rim] = phi
       RC.arc[rim] = 0
       const v = RC.speed0[rim]!
