@@ -61,10 +61,14 @@ export const MAX_RESTING_CELLS = 4
 
 /**
  * Fixed-tick contacts: the overlap projection sweeps over the pairs until no overlap is deeper than
- * PROJECTION_SLOP px, at most MAX_PROJECTION_SWEEPS times a tick (a jammed pile needs many: each sweep moves
- * a push one ball further through it). Bounds a tick's projection at MAX_PROJECTION_SWEEPS × pairs.
+ * PROJECTION_SLOP px (a jammed pile needs many sweeps: each moves a push one ball further through it). Full
+ * sweeps first; once a sweep moves fewer balls than an eighth of the pairs, sweeps over the pairs of the balls
+ * still moving. A tick's projection visits at most PROJECTION_BUDGET × pairs pairs, in at most
+ * MAX_LISTED_SWEEPS sweeps (which also bound the velocity solve's sweeps over listed pairs,
+ * src/contacts/fixedSolve.ts).
  */
-export const MAX_PROJECTION_SWEEPS = 64
+export const PROJECTION_BUDGET = 64
+export const MAX_LISTED_SWEEPS = 1024
 export const PROJECTION_SLOP = 1e-4
 /** Least share of a pair's overlap each ball takes in the projection, whatever the mass ratio (positions only: no momentum or energy is involved). */
 export const MIN_PROJECTION_SHARE = 0.1

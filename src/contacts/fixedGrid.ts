@@ -78,7 +78,10 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
   if (w.walls !== 0) for (let i = 0; i < n; i++) markWall(F, i)
 }
 
-/** Appends the resting balls within reach of the seeds (moving candidates, touched resting balls), sorted by id. */
+/**
+ * Appends the resting balls within reach of the seeds (moving candidates, touched resting balls), sorted by
+ * id; or, when there are no more resting balls than moving ones, every resting ball.
+ */
 function gatherResting(w: BallWorld, F: FixedContactState): void {
   const C = F.rest
   if (C.restCount === 0 && C.bigRestCount === 0) {
@@ -91,6 +94,20 @@ function gatherResting(w: BallWorld, F: FixedContactState): void {
     C.seenStamp = 1
   }
   const moving = F.n
+  if (C.restCount + C.bigRestCount <= moving) {
+    // few resting balls: all of them join, in id order (pairing them costs less than a lookup per moving ball)
+    const live = B.live
+    const mode = B.mode
+    const top = Math.min(live.length, w.entityIndex.maxId + 1)
+    for (let eid = 1; eid < top; eid++) {
+      if (live[eid] === 1 && mode[eid] === BallMode.Resting) {
+        C.seen[eid] = C.seenStamp
+        pushCandidate(F, eid)
+      }
+    }
+    F.touchedCount = 0
+    return
+  }
   for (let k = 0; k < moving; k++) {
     const eid = F.id[k]!
     const vx = B.vx[eid]!
@@ -210,14 +227,14 @@ export function findPairs(F: FixedContactState): void {
     // about one ball a cell at least (more, emptier cells cost more in the sort than the tests they save)
     const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / n)
     if (even > cell) cell = even
-    cols = Math.floor((maxX - minX) / cell) + 1
-    rows = Math.floor((maxY - minY) / cell) + 1
     const most = 4 * n + 64
-    if (cols * rows > most) {
-      // a sparse scene: coarser cells (still at least twice every small reach)
+    for (;;) {
+      cols = Math.floor((maxX - minX) / cell) + 1
+      rows = Math.floor((maxY - minY) / cell) + 1
+      if (cols * rows <= most) break
+      // a sparse scene: coarser cells (still at least twice every small reach); again while a long thin box
+      // (one row or column) still has too many
       cell *= Math.sqrt((cols * rows) / most) * 1.001
-      cols = Math.min(Math.floor((maxX - minX) / cell) + 1, most)
-      rows = Math.min(Math.floor((maxY - minY) / cell) + 1, Math.floor(most / cols))
     }
   }
   const cells = cols * rows

@@ -1,5 +1,5 @@
 // State of the fixed-tick contact method (config.BALL_COLLISIONS = 'fixed'): each ball's mass, the contact
-// clock, and the per-tick working arrays of src/contacts/fixedGrid.ts and fixedSolve.ts, packed by
+// clock, and the per-tick working arrays of src/contacts/fixedGrid.ts, fixedSolve.ts and fixedProject.ts, packed by
 // candidate (the balls on the panel at one contact tick) and grown by doubling, so a tick allocates nothing
 // once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
 import type { BallPhysicsConfig } from '../config/design.js'
@@ -80,9 +80,24 @@ export interface FixedContactState {
   gridCell: number
   cols: number
   rows: number
+  /** the solve's pairs of each candidate (CSR: adjStart, n + 1 entries, into adjPairs), the pairs listed for the next sweep, the candidates moved in a sweep */
+  adjStart: Int32Array
+  adjPairs: Int32Array
+  active: Int32Array
+  activeCount: number
+  moved: Int32Array
+  /** the heap of pair keys of a sweep over listed pairs */
+  heap: Int32Array
+  /** stamps of the sweeps over listed pairs: a pair in the sweep, a pair in the next sweep, a candidate moved */
+  pairStamp: Uint32Array
+  nextStamp: Uint32Array
+  ballStamp: Uint32Array
+  stamp: number
   /** contacts reported (impulses with approach of at least BALL_SETTLE_SPEED), and ticks solved */
   contacts: number
   ticks: number
+  /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
+  capped: number
 }
 
 export function createFixedState(capacity: number, config: Readonly<BallPhysicsConfig>): FixedContactState {
@@ -136,8 +151,42 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     gridCell: 1,
     cols: 0,
     rows: 0,
+    adjStart: new Int32Array(n + 1),
+    adjPairs: new Int32Array(2 * n),
+    active: new Int32Array(n),
+    activeCount: 0,
+    moved: new Int32Array(n),
+    heap: new Int32Array(n),
+    pairStamp: new Uint32Array(n),
+    nextStamp: new Uint32Array(n),
+    ballStamp: new Uint32Array(n),
+    stamp: 0,
     contacts: 0,
     ticks: 0,
+    capped: 0,
+  }
+}
+
+/** Makes room in the arrays of the sweeps over listed pairs for n candidates and `pairs` pairs (contents not kept). */
+export function reserveSweeps(F: FixedContactState, n: number, pairs: number): void {
+  if (F.adjStart.length < n + 1) {
+    F.adjStart = new Int32Array(2 * n + 1)
+    F.moved = new Int32Array(2 * n)
+    F.ballStamp = new Uint32Array(2 * n)
+    F.stamp = 0
+  }
+  if (F.active.length < pairs) {
+    F.adjPairs = new Int32Array(4 * pairs)
+    F.active = new Int32Array(2 * pairs)
+    F.heap = new Int32Array(2 * pairs)
+    F.pairStamp = new Uint32Array(2 * pairs)
+    F.nextStamp = new Uint32Array(2 * pairs)
+    F.stamp = 0
+  }
+  if (F.stamp === 0) {
+    F.pairStamp.fill(0)
+    F.nextStamp.fill(0)
+    F.ballStamp.fill(0)
   }
 }
 

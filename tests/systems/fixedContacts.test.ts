@@ -207,6 +207,60 @@ describe('fixed-tick contacts', () => {
     expect(kinetic(sim)).toBe(0)
   })
 
+  it('a big ball in a long, thin field of candidates (one ball 65,000 px away) meets the balls in its way', () => {
+    // the sparse grid once capped its columns for a field one row high, and the big ball's cell range fell
+    // past the last column: it went through a ball for ten ticks (38 px deep; adversarial counterexample)
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.addBall({ x: -65_000, y: 0, vx: 0, vy: 1 })
+    sim.addBall({ x: -20, y: 0, vx: 170, vy: 0, radius: 90, mass: 1 })
+    for (let i = 0; i < 5; i++) sim.addBall({ x: 150 + 30 * i, y: 0, vx: -50, vy: 0 })
+    let contacts = 0
+    for (let i = 0; i < 60; i++) {
+      sim.step(1 / 60)
+      contacts += sim.drainEvents().filter((e) => e.type === 'collision').length
+      expect(worstOverlap(sim), `step ${i}`).toBeLessThanOrEqual(1e-3)
+    }
+    expect(contacts).toBeGreaterThan(0)
+  })
+
+  it('a ball creeping into a resting one below BALL_SETTLE_SPEED is held by it, between ticks too (it once went on into it)', () => {
+    // the resting ball keeps still (it would leave slower than BALL_SETTLE_SPEED), so it holds like a wall;
+    // the creeping ball once kept its approach and moved into it until the next tick's projection
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    const still = sim.addBall({ x: 0, y: 0, vx: 0, vy: 0 })
+    sim.addBall({ x: 0.3, y: -28.2, vx: 0, vy: 1, radius: 16.7 }) // touches it about 0.5 s in
+    sim.step(1 / 240) // step ends fall between ticks from here on
+    for (let i = 0; i < 60; i++) {
+      sim.step(1 / 60)
+      expect(worstOverlap(sim), `t = ${sim.time}`).toBeLessThanOrEqual(1e-3)
+    }
+    expect(sim.ballState(still)).toMatchObject({ x: 0, y: 0, mode: 'resting' })
+  })
+
+  it('a light ball wedged between a heavy one and a wall squirts out: the velocity sweeps go on past CONTACT_ITERATIONS until it does', () => {
+    // adversarial counterexample: a ball of radius 84 (445 times the mass) drove a default ball into the top
+    // wall at an angle; each sweep passed the light ball a little of the push, 32 sweeps left the pair
+    // approaching, and the big ball moved 0.9 px into the light one before the next tick. Step ends fall
+    // between ticks here (a 1/240 s step)
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.addBall({ x: 0, y: -20, vx: 0, vy: 0, radius: 1, mass: 1 })
+    sim.addBall({ x: 0, y: -20, vx: 0, vy: 0, radius: 1, mass: 1 })
+    sim.throwBall({ x: 3.662860000000002, y: 10, power: 1, angle: 4.962962410435011 })
+    for (let i = 0; i < 3; i++) sim.step(1 / 60)
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: {} })
+    sim.addBall({ x: -20, y: -20, vx: -3.6644673094240367e-13, vy: 2992.264636608189, radius: 1, mass: 1374.0419750125147 })
+    sim.step(1 / 240)
+    sim.step(1 / 60)
+    sim.addHole({ x: 394.06532, y: 307.12264 })
+    sim.throwBall({ x: 489.4962756543867, y: 515.2403785500787, power: 1, angle: -0.42478480457704776, radius: 84.33347577642752 })
+    sim.removeBall(1)
+    const spawned = sim.time
+    for (let i = 0; i < 39; i++) {
+      sim.step(1 / 60)
+      if (sim.time - spawned >= 0.5) expect(worstOverlap(sim), `t = ${sim.time}`).toBeLessThanOrEqual(1e-3)
+    }
+  })
+
   it('two identical runs give bit-identical state', () => {
     const once = () => {
       const r = rng(8)

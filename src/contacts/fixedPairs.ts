@@ -1,0 +1,124 @@
+// The fixed-tick solve's pairs (src/contacts/fixedSolve.ts, fixedProject.ts): a pair's normal and gap,
+// and sweeps over listed pairs. After the full sweeps, a sweep need only meet the pairs with a ball whose
+// velocity or position changed since the pair was last met (the others cannot take an impulse or a push):
+// each candidate's pairs are indexed (CSR), and a sweep takes its pairs in pair order from a heap, so that
+// a pair ahead of the sweep joins it when one of its balls changes and a pair behind joins the next sweep,
+// as in a full Gauss-Seidel sweep.
+import type { FixedContactState } from '../world/fixedState.js'
+
+/** Normal of pair p (a→b) into nrm; returns the gap (negative: overlap). */
+export const nrm = { x: 1, y: 0 }
+export function normal(F: FixedContactState, a: number, b: number): number {
+  const dx = F.x[b]! - F.x[a]!
+  const dy = F.y[b]! - F.y[a]!
+  const d = Math.sqrt(dx * dx + dy * dy)
+  if (d > 0) {
+    nrm.x = dx / d
+    nrm.y = dy / d
+  } else {
+    // coincident centres: apart along the relative velocity, else along +x (the lower index to the left)
+    const rx = F.vx[a]! - F.vx[b]!
+    const ry = F.vy[a]! - F.vy[b]!
+    const s = Math.sqrt(rx * rx + ry * ry)
+    nrm.x = s > 0 ? rx / s : 1
+    nrm.y = s > 0 ? ry / s : 0
+  }
+  return d - F.r[a]! - F.r[b]!
+}
+
+/** Each candidate's pairs (CSR: F.adjStart, F.adjPairs). */
+export function buildAdjacency(F: FixedContactState): void {
+  const pairs = F.pairCount
+  const adjStart = F.adjStart
+  const adjPairs = F.adjPairs
+  adjStart.fill(0, 0, F.n + 1)
+  for (let p = 0; p < pairs; p++) {
+    adjStart[F.pairA[p]! + 1]!++
+    adjStart[F.pairB[p]! + 1]!++
+  }
+  for (let i = 0; i < F.n; i++) adjStart[i + 1]! += adjStart[i]!
+  const cursor = F.next // free after the pairing: fill cursors
+  for (let i = 0; i < F.n; i++) cursor[i] = adjStart[i]!
+  for (let p = 0; p < pairs; p++) {
+    adjPairs[cursor[F.pairA[p]!]!++] = p
+    adjPairs[cursor[F.pairB[p]!]!++] = p
+  }
+}
+
+/**
+ * Queues the pairs of candidate i, whose velocity or position changed while the pair with key `key` was met:
+ * a pair ahead in this sweep joins the heap, one behind (or this one) the next sweep's list (F.active,
+ * F.activeCount). Returns the heap's new size.
+ */
+export function activate(F: FixedContactState, i: number, key: number, back: boolean, stamp: number, size: number): number {
+  const pairs = F.pairCount
+  for (let q = F.adjStart[i]!, e = F.adjStart[i + 1]!; q < e; q++) {
+    const r = F.adjPairs[q]!
+    const kr = back ? pairs - 1 - r : r
+    if (kr > key) {
+      if (F.pairStamp[r] === stamp) continue
+      F.pairStamp[r] = stamp
+      size = heapPush(F.heap, size, kr)
+    } else if (F.nextStamp[r] !== stamp) {
+      F.nextStamp[r] = stamp
+      F.active[F.activeCount++] = r
+    }
+  }
+  return size
+}
+
+/**
+ * Starts a sweep over the pairs listed in F.active (for the next sweep): stamps them and builds the heap of
+ * their keys (pair order, reversed for a backward sweep); empties the list. Returns the heap's size.
+ */
+export function startSweep(F: FixedContactState, back: boolean, stamp: number): number {
+  const pairs = F.pairCount
+  let size = 0
+  for (let k = 0; k < F.activeCount; k++) {
+    const p = F.active[k]!
+    F.pairStamp[p] = stamp
+    size = heapPush(F.heap, size, back ? pairs - 1 - p : p)
+  }
+  F.activeCount = 0
+  return size
+}
+
+/** A fresh stamp for the sweeps' marks (the marks are cleared when the stamps wrap). */
+export function nextStamp(F: FixedContactState): number {
+  if (F.stamp === 0xffffffff) {
+    F.pairStamp.fill(0)
+    F.nextStamp.fill(0)
+    F.ballStamp.fill(0)
+    F.stamp = 0
+  }
+  return ++F.stamp
+}
+
+/** Binary min-heap of keys in h[0..size): push, pop (the least key leaves h[0]); return the new size. */
+export function heapPush(h: Int32Array, size: number, key: number): number {
+  let i = size
+  while (i > 0) {
+    const up = (i - 1) >> 1
+    if (h[up]! <= key) break
+    h[i] = h[up]!
+    i = up
+  }
+  h[i] = key
+  return size + 1
+}
+
+export function heapPop(h: Int32Array, size: number): number {
+  const n = size - 1
+  const key = h[n]!
+  let i = 0
+  for (;;) {
+    let c = 2 * i + 1
+    if (c >= n) break
+    if (c + 1 < n && h[c + 1]! < h[c]!) c++
+    if (h[c]! >= key) break
+    h[i] = h[c]!
+    i = c
+  }
+  h[i] = key
+  return n
+}
