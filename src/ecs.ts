@@ -32,7 +32,7 @@ export { addHole, addHoles, removeHole } from './commands/holes.js'
 export type { HoleSpec } from './commands/holes.js'
 export { clearWalls, setWalls } from './commands/walls.js'
 export type { WallsSpec } from './commands/walls.js'
-export { drainEvents } from './commands/events.js'
+export { drainEvents, drainEventsWith } from './commands/events.js'
 
 // components
 export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'
@@ -48,7 +48,7 @@ export type { WallsStore } from '../components/Walls.js'
 
 // for a game's own systems: events, and the motion a decision restarts
 export { CaptureVia, EventType, pushEvent } from './events.js'
-export type { BallEvent, CaptureViaCode, EventTypeCode } from './events.js'
+export type { BallEvent, CaptureViaCode, EventTypeCode, EventView } from './events.js'
 export { planRolling, sampleAtDistance, sampleRolling, startPath } from './motion/rolling.js'
 export { planRimRoll, sampleRimRoll, startRimRoll } from './motion/rimRoll.js'
 export { captureBall, emitHoleEvent, launchBall, restBall } from './motion/ballFate.js'

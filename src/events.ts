@@ -65,6 +65,41 @@ export interface EventBuffer {
   cutCount: number
   cutIds: Uint32Array
   cutAt: Uint32Array
+  /** true while drainEventBufferWith is calling back (a drain then is refused) */
+  draining: boolean
+  /** at a drain: for each cut id, the event count when it was last cut (by entity id; 0 otherwise) */
+  cutMark: Uint32Array
+  /** at a drain: the kept events' indices in time order, and the merge sort's scratch */
+  order: Uint32Array
+  scratch: Uint32Array
+}
+
+/**
+ * One event as drainEventsWith passes it to its callback: one object, rewritten for every event (copy what
+ * you keep). The fields a BallEvent may leave out are always here: 0 (or false, or undefined for via)
+ * where they do not apply.
+ */
+export interface EventView {
+  type: BallEventType
+  /** the EventType code of type */
+  code: EventTypeCode
+  ball: number
+  /** simulation time of the event, s */
+  time: number
+  /** the hole, for hole events (0: none) */
+  hole: number
+  /** true when delta and speed are the lip crossing's (hole events that carry them) */
+  hasLip: boolean
+  /** δ at the lip crossing, px */
+  delta: number
+  /** v at the lip crossing, px/s; for a collision, the approach speed */
+  speed: number
+  /** how a capture happened */
+  via: CaptureViaName | undefined
+  /** the other ball of a collision (0 otherwise) */
+  other: number
+  /** normal impulse of a collision (0 otherwise) */
+  impulse: number
 }
 
 export function createEventBuffer(capacity = 1024): EventBuffer {
@@ -83,6 +118,10 @@ export function createEventBuffer(capacity = 1024): EventBuffer {
     cutCount: 0,
     cutIds: new Uint32Array(16),
     cutAt: new Uint32Array(16),
+    draining: false,
+    cutMark: new Uint32Array(64),
+    order: new Uint32Array(capacity),
+    scratch: new Uint32Array(capacity),
   }
 }
 
@@ -109,6 +148,8 @@ function grow(buf: EventBuffer): void {
   buf.via = next.via
   buf.other = next.other
   buf.impulse = next.impulse
+  buf.order = next.order
+  buf.scratch = next.scratch
 }
 
 /** Appends one event. `delta`/`speed` are recorded only when `hasDV` is true; `hole` 0 means none. */
@@ -172,24 +213,97 @@ export function cutEvents(buf: EventBuffer, id: number): void {
 }
 
 /**
+ * Puts the indices of the buffered events to report into buf.order, sorted by time (ties: by ball id, then
+ * by the order they were recorded, so the order is deterministic); returns how many. Events that name an
+ * entity removed after they were buffered are left out. Allocates nothing once the arrays have grown.
+ */
+function orderEvents(buf: EventBuffer): number {
+  const cuts = buf.cutCount
+  if (cuts > 0) {
+    let top = 0
+    for (let k = 0; k < cuts; k++) if (buf.cutIds[k]! > top) top = buf.cutIds[k]!
+    if (buf.cutMark.length <= top) {
+      let len = buf.cutMark.length
+      while (len <= top) len *= 2
+      buf.cutMark = new Uint32Array(len)
+    }
+    for (let k = 0; k < cuts; k++) buf.cutMark[buf.cutIds[k]!] = buf.cutAt[k]! // later cuts overwrite
+  }
+  const mark = buf.cutMark
+  const order = buf.order
+  let n = 0
+  for (let i = 0, count = buf.count; i < count; i++) {
+    if (cuts > 0) {
+      const b = buf.ball[i]!
+      const h = buf.hole[i]!
+      const o = buf.other[i]!
+      if ((b < mark.length && i < mark[b]!) || (h < mark.length && i < mark[h]!) || (o < mark.length && i < mark[o]!)) continue
+    }
+    order[n++] = i
+  }
+  if (cuts > 0) {
+    for (let k = 0; k < cuts; k++) mark[buf.cutIds[k]!] = 0
+    buf.cutCount = 0
+  }
+  sortOrder(buf, n)
+  return n
+}
+
+/** a before b in the drain order: time, then ball id, then record order */
+function before(buf: EventBuffer, a: number, b: number): boolean {
+  const ta = buf.time[a]!
+  const tb = buf.time[b]!
+  if (ta !== tb) return ta < tb
+  const ba = buf.ball[a]!
+  const bb = buf.ball[b]!
+  return ba !== bb ? ba < bb : a < b
+}
+
+/** Sorts buf.order[0..n): runs already in order are common (one ball's events), so a bottom-up merge sort. */
+function sortOrder(buf: EventBuffer, n: number): void {
+  let src = buf.order
+  let dst = buf.scratch
+  // runs of 8 by insertion, then merges of doubling width
+  for (let lo = 0; lo < n; lo += 8) {
+    const hi = Math.min(lo + 8, n)
+    for (let i = lo + 1; i < hi; i++) {
+      const v = src[i]!
+      let j = i - 1
+      while (j >= lo && before(buf, v, src[j]!)) {
+        src[j + 1] = src[j]!
+        j--
+      }
+      src[j + 1] = v
+    }
+  }
+  for (let width = 8; width < n; width *= 2) {
+    for (let lo = 0; lo < n; lo += 2 * width) {
+      const mid = Math.min(lo + width, n)
+      const hi = Math.min(lo + 2 * width, n)
+      let i = lo
+      let j = mid
+      let k = lo
+      while (i < mid && j < hi) dst[k++] = before(buf, src[j]!, src[i]!) ? src[j++]! : src[i++]!
+      while (i < mid) dst[k++] = src[i++]!
+      while (j < hi) dst[k++] = src[j++]!
+    }
+    const t = src
+    src = dst
+    dst = t
+  }
+  if (src !== buf.order) {
+    buf.scratch = buf.order
+    buf.order = src
+  }
+}
+
+/**
  * Returns the buffered events as objects sorted by time (ties: by ball id, then by the order they were
  * recorded, so the order is deterministic) and empties the buffer.
  */
 export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
-  // events that name an entity removed after they were buffered are dropped
-  let cut: Map<number, number> | null = null
-  if (buf.cutCount > 0) {
-    cut = new Map()
-    for (let k = 0; k < buf.cutCount; k++) cut.set(buf.cutIds[k]!, buf.cutAt[k]!) // later cuts overwrite
-    buf.cutCount = 0
-  }
-  const order: number[] = []
-  for (let i = 0, n = buf.count; i < n; i++) {
-    if (cut !== null && (i < (cut.get(buf.ball[i]!) ?? 0) || i < (cut.get(buf.hole[i]!) ?? 0) || i < (cut.get(buf.other[i]!) ?? 0))) continue
-    order.push(i)
-  }
-  const n = order.length
-  order.sort((a, b) => buf.time[a]! - buf.time[b]! || buf.ball[a]! - buf.ball[b]! || a - b)
+  const n = orderEvents(buf)
+  const order = buf.order
   const out = new Array<BallEvent>(n)
   for (let k = 0; k < n; k++) {
     const i = order[k]!
@@ -212,4 +326,60 @@ export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
   }
   buf.count = 0
   return out
+}
+
+const view: EventView = { type: 'skip', code: EventType.Skip, ball: 0, time: 0, hole: 0, hasLip: false, delta: 0, speed: 0, via: undefined, other: 0, impulse: 0 }
+
+/**
+ * Passes the buffered events, in drainEventBuffer's order, to `visit` one at a time through one reused view,
+ * and empties the buffer of them; returns how many. Allocates nothing once the buffer has grown to the
+ * scene. `visit` may command or step the world (remove the ball it is told was captured, say): the events
+ * that records wait for the next drain. It may not drain again (an Error).
+ */
+export function drainEventBufferWith(buf: EventBuffer, visit: (e: EventView) => void): number {
+  const n = orderEvents(buf)
+  const drained = buf.count
+  const order = buf.order
+  buf.draining = true
+  try {
+    for (let k = 0; k < n; k++) {
+      const i = order[k]!
+      const code = buf.type[i]! as EventTypeCode
+      view.type = EVENT_TYPE_NAMES[code]!
+      view.code = code
+      view.ball = buf.ball[i]!
+      view.time = buf.time[i]!
+      view.hole = buf.hole[i]!
+      view.hasLip = buf.hasDV[i] === 1
+      view.delta = buf.delta[i]!
+      view.speed = buf.speed[i]!
+      view.via = VIA_NAMES[buf.via[i]!]
+      view.other = buf.other[i]!
+      view.impulse = buf.impulse[i]!
+      visit(view)
+    }
+  } finally {
+    buf.draining = false
+    dropFirst(buf, drained)
+  }
+  return n
+}
+
+/** Drops the first `k` buffered events: the ones recorded after them (and the cuts made since) move down. */
+function dropFirst(buf: EventBuffer, k: number): void {
+  const rest = buf.count - k
+  if (rest > 0) {
+    buf.type.copyWithin(0, k, buf.count)
+    buf.ball.copyWithin(0, k, buf.count)
+    buf.hole.copyWithin(0, k, buf.count)
+    buf.time.copyWithin(0, k, buf.count)
+    buf.delta.copyWithin(0, k, buf.count)
+    buf.speed.copyWithin(0, k, buf.count)
+    buf.hasDV.copyWithin(0, k, buf.count)
+    buf.via.copyWithin(0, k, buf.count)
+    buf.other.copyWithin(0, k, buf.count)
+    buf.impulse.copyWithin(0, k, buf.count)
+  }
+  buf.count = rest
+  for (let c = 0; c < buf.cutCount; c++) buf.cutAt[c] = Math.max(0, buf.cutAt[c]! - k)
 }

@@ -27,7 +27,7 @@ export type { PanelHole, PanelLayout } from './panel.js'
 export { createFixedStepClock } from './clock.js'
 export type { FixedStepClock, FixedStepClockOptions } from './clock.js'
 export { EVENT_TYPE_NAMES } from './events.js'
-export type { BallEvent, BallEventType, CaptureViaName } from './events.js'
+export type { BallEvent, BallEventType, CaptureViaName, EventView } from './events.js'
 export { BALL_MODE_NAMES } from '../components/Ball.js'
 export type { BallModeName } from '../components/Ball.js'
 export {

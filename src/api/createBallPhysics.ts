@@ -1,7 +1,7 @@
 // The game API: a world, its schedule and clock behind a small typed surface. Every method is one of the
 // commands (src/commands/) applied to this world; step runs the schedule with dt capped at MAX_STEP.
 import type { BallPhysicsConfig, ConfigOverrides } from '../config/design.js'
-import type { BallEvent } from '../events.js'
+import type { BallEvent, EventView } from '../events.js'
 import {
   addBall,
   ballState,
@@ -19,7 +19,7 @@ import {
   type ThrowSpec,
 } from '../commands/balls.js'
 import { createBallWorld } from '../commands/createBallWorld.js'
-import { drainEvents } from '../commands/events.js'
+import { drainEvents, drainEventsWith } from '../commands/events.js'
 import { addHole, removeHole, type HoleSpec } from '../commands/holes.js'
 import { clearWalls, setWalls, type WallsSpec } from '../commands/walls.js'
 import { describe } from '../check.js'
@@ -40,8 +40,14 @@ export interface BallPhysics {
   throwBall(spec: ThrowSpec): number
   /** Advances by dt seconds (any finite dt > 0; more than MAX_STEP is cut to MAX_STEP). Returns the dt simulated. */
   step(dt: number): number
-  /** Events since the last drain, in time order. */
+  /** Events since the last drain, in time order, as new objects. */
   drainEvents(): BallEvent[]
+  /**
+   * Events since the last drain, in the same order, passed to `visit` one at a time through one reused view
+   * (copy what you keep); returns how many. Allocates nothing: for games with many balls. `visit` may
+   * command or step the world; what that records waits for the next drain.
+   */
+  drainEventsWith(visit: (e: EventView) => void): number
   ballState(ball: number): BallState
   holeState(hole: number): HoleState
   /** Removes a ball (as bitECS removeEntity does): the simulation forgets it; its buffered events are dropped. */
@@ -93,6 +99,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
       return h
     },
     drainEvents: () => drainEvents(w),
+    drainEventsWith: (visit) => drainEventsWith(w, visit),
     ballState: (ball) => ballState(w, ball),
     holeState: (hole) => holeState(w, hole),
     removeBall: (ball) => removeBall(w, ball),

@@ -1,5 +1,5 @@
 // Reading the events the systems recorded.
-import { drainEventBuffer, type BallEvent } from '../events.js'
+import { drainEventBuffer, drainEventBufferWith, type BallEvent, type EventView } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { checkWorld } from './validate.js'
 
@@ -9,5 +9,20 @@ import { checkWorld } from './validate.js'
  * dropped (the id may already belong to a new entity).
  */
 export function drainEvents(world: BallWorld): BallEvent[] {
-  return drainEventBuffer(checkWorld('drainEvents', world).events)
+  const buf = checkWorld('drainEvents', world).events
+  if (buf.draining) throw new Error('drainEvents: called from a drainEventsWith callback (drain once, after it returns)')
+  return drainEventBuffer(buf)
+}
+
+/**
+ * The events since the last drain, in the same order as drainEvents, passed to `visit` one at a time
+ * through one reused EventView (copy what you keep: its fields change with the next event); returns how
+ * many. Allocates nothing once the buffer has grown to the scene: for games with many balls. `visit` may
+ * command or step the world; the events that records wait for the next drain.
+ */
+export function drainEventsWith(world: BallWorld, visit: (e: EventView) => void): number {
+  const buf = checkWorld('drainEventsWith', world).events
+  if (typeof visit !== 'function') throw new TypeError(`drainEventsWith: visit must be a function (e: EventView) => void, got ${visit === null ? 'null' : typeof visit}`)
+  if (buf.draining) throw new Error('drainEventsWith: called from a drainEventsWith callback (drain once, after it returns)')
+  return drainEventBufferWith(buf, visit)
 }
