@@ -10,7 +10,8 @@
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
 //     A ball at rest that an impulse would leave slower than BALL_SETTLE_SPEED holds like a wall. Sweeps that
 //     run out with impulses still given go on over the pairs whose balls changed (a light ball wedged
-//     between a heavy one and a wall needs many), up to CONTACT_ITERATIONS × pairs more pair visits.
+//     between a heavy one and a wall needs many), up to CONTACT_ITERATIONS × pairs more pair visits. A pair
+//     that drives a ball into a closed wall it can reach is solved together with that wall (pairWithWall).
 //   positions: src/contacts/fixedProject.ts.
 // Then every ball the solve changed starts a fresh path from its new state at the tick (a ball on a rim or
 // in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
@@ -84,10 +85,17 @@ function impulse(w: BallWorld, F: FixedContactState, p: number, t: number, e: nu
     j = k / (ima + imb)
   }
   F.pairHit[p] = hit | IMPULSED
-  F.vx[a] = F.vx[a]! - j * ima * nx
-  F.vy[a] = F.vy[a]! - j * ima * ny
-  F.vx[b] = F.vx[b]! + j * imb * nx
-  F.vy[b] = F.vy[b]! + j * imb * ny
+  // a ball the impulse drives into a closed wall it can reach within the tick: the pair and that wall
+  // solved together (below), so a squeeze or a wedge ends in one visit, not a little of the push each sweep
+  const q = ima > 0 && wallAhead(F, a, -nx, -ny) ? a : imb > 0 && wallAhead(F, b, nx, ny) ? b : -1
+  if (q >= 0 && pairWithWall(w, F, a, b, q, ima, imb, k - approach, approach, t, settle)) {
+    j = block.j
+  } else {
+    F.vx[a] = F.vx[a]! - j * ima * nx
+    F.vy[a] = F.vy[a]! - j * ima * ny
+    F.vx[b] = F.vx[b]! + j * imb * nx
+    F.vy[b] = F.vy[b]! + j * imb * ny
+  }
   if ((F.changed[a]! & 1) === 0) F.hit[F.hitCount++] = a
   if ((F.changed[b]! & 1) === 0) F.hit[F.hitCount++] = b
   F.changed[a]! |= 1
@@ -100,6 +108,89 @@ function impulse(w: BallWorld, F: FixedContactState, p: number, t: number, e: nu
     pushCollisionEvent(w.events, ia < ib ? ia : ib, ia < ib ? ib : ia, t, approach, j)
   }
   return true
+}
+
+/** the closed wall found by wallAhead: its inward normal */
+const face = { x: 0, y: 0 }
+/** the impulses of the last pairWithWall: the pair's, the wall's */
+const block = { j: 0, k: 0 }
+
+/**
+ * True when a push on candidate i along (dx, dy) drives it into a closed wall it can reach within the tick
+ * (its gap to the wall's face at most the distance it can cover in a tick); that wall's inward normal is
+ * left in `face` (of two, the one the push meets more squarely).
+ */
+function wallAhead(F: FixedContactState, i: number, dx: number, dy: number): boolean {
+  const x = F.x[i]!
+  const y = F.y[i]!
+  const r = F.r[i]!
+  const travel = F.reach[i]! - r
+  let best = 0
+  if (dx < 0 && x - r - walls.minX <= travel && dx < best) {
+    best = dx
+    face.x = 1
+    face.y = 0
+  } else if (dx > 0 && walls.maxX - x - r <= travel && -dx < best) {
+    best = -dx
+    face.x = -1
+    face.y = 0
+  }
+  if (dy < 0 && y - r - walls.minY <= travel && dy < best) {
+    best = dy
+    face.x = 0
+    face.y = 1
+  } else if (dy > 0 && walls.maxY - y - r <= travel && -dy < best) {
+    best = -dy
+    face.x = 0
+    face.y = -1
+  }
+  return best < 0
+}
+
+/**
+ * Pair (a, b), approaching at `approach` along nrm, solved together with the wall `face` that candidate q
+ * (a or b) is pushed into: pair impulse j ≥ 0 and wall impulse k ≥ 0 on q such that the pair leaves at
+ * `separate` (its restitution's share) and q does not move into the wall (inelastic there), each zero when
+ * the other alone does it. Applied when both are positive and kinetic energy does not rise (with the pair
+ * inelastic if its restitution would raise it); returns false, changing nothing, otherwise.
+ */
+function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number, ima: number, imb: number, separate: number, approach: number, t: number, settle: number): boolean {
+  const nx = nrm.x
+  const ny = nrm.y
+  const imq = q === a ? ima : imb
+  // q is pushed along d = ∓n; c = d·w < 0 (into the wall)
+  const s = q === a ? -1 : 1
+  const c = s * (nx * face.x + ny * face.y)
+  const u2 = F.vx[q]! * face.x + F.vy[q]! * face.y
+  const den = ima + imb - imq * c * c
+  if (!(den > 0)) return false
+  const m2a = ima > 0 ? 1 / ima : 0
+  const m2b = imb > 0 ? 1 / imb : 0
+  const before = m2a * (F.vx[a]! ** 2 + F.vy[a]! ** 2) + m2b * (F.vx[b]! ** 2 + F.vy[b]! ** 2)
+  for (let pass = 0; pass < 2; pass++) {
+    const target = pass === 0 ? separate : 0
+    const j = (target + approach + c * u2) / den
+    const k = -u2 / imq - j * c
+    if (!(j > 0 && k > 0)) return false
+    const vax = F.vx[a]! - j * ima * nx + (q === a ? k * ima * face.x : 0)
+    const vay = F.vy[a]! - j * ima * ny + (q === a ? k * ima * face.y : 0)
+    const vbx = F.vx[b]! + j * imb * nx + (q === b ? k * imb * face.x : 0)
+    const vby = F.vy[b]! + j * imb * ny + (q === b ? k * imb * face.y : 0)
+    const after = m2a * (vax * vax + vay * vay) + m2b * (vbx * vbx + vby * vby)
+    if (after > before) continue
+    F.vx[a] = vax
+    F.vy[a] = vay
+    F.vx[b] = vbx
+    F.vy[b] = vby
+    block.j = j
+    block.k = k
+    if ((F.changed[q]! & WALL_REPORTED) === 0 && k * imq >= settle) {
+      pushEvent(w.events, EventType.Wall, F.id[q]!, 0, t, false, 0, 0)
+      F.changed[q]! |= WALL_REPORTED
+    }
+    return true
+  }
+  return false
 }
 
 /**

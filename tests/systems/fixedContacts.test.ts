@@ -261,6 +261,35 @@ describe('fixed-tick contacts', () => {
     }
   })
 
+  it('a heavy ball driving a light one straight into a wall: the pair and the wall are solved together, no overlap between ticks', () => {
+    // each impulse took m/(m + M) of the heavy ball's approach and the wall sent the light ball back each
+    // sweep: the sweeps ran out with the pair closing, and the heavy ball (mass 1,374 at 3,000 px/s) went
+    // 2.8 px into the light one before the next tick (adversarial counterexample)
+    for (const e of [0, 0.9]) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5 })
+      const light = sim.addBall({ x: 200, y: 400, vx: 0, vy: 3000 })
+      const heavy = sim.addBall({ x: 201, y: 380, vx: 0, vy: 3000, radius: 1, mass: 1374 })
+      sim.step(1 / 240) // step ends fall between ticks from here on
+      let walls = 0
+      const ke = () => ['light', 'heavy'].reduce((k, _, i) => {
+        const s = sim.ballState(i === 0 ? light : heavy)
+        return k + 0.5 * (i === 0 ? 1 : 1374) * (s.vx ** 2 + s.vy ** 2)
+      }, 0)
+      let last = ke()
+      for (let i = 0; i < 20; i++) {
+        sim.step(1 / 60)
+        walls += sim.drainEvents().filter((ev) => ev.type === 'wall').length
+        expect(worstOverlap(sim), `e = ${e}, t = ${sim.time}`).toBeLessThanOrEqual(1e-3)
+        const k = ke()
+        expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+        last = k
+      }
+      expect(walls).toBeGreaterThan(0)
+      expect(sim.ballState(heavy).vy, `e = ${e}`).toBeLessThanOrEqual(0) // stopped or sent back by the wall through the light ball
+    }
+  })
+
   it('two identical runs give bit-identical state', () => {
     const once = () => {
       const r = rng(8)
