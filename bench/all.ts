@@ -57,7 +57,7 @@ interface RestingRow {
   contactsDuringRun: { alone: number; inReach: number; all: number }
   wokenDuringRun: { all: number }
 }
-const pipeline = read<{ balls: number; nsPerBallStep: Record<string, number>; ratioToPlain: Record<string, number> }>('pipeline')
+const pipeline = read<{ balls: number; nsPerBallStep: Record<string, number>; ratioToBare: Record<string, number>; ratioToPlain: Record<string, number> }>('pipeline')
 const scale = read<{ rows: ScaleRow[] }>('scale')
 const peers = read<{ rows: PeerRow[] }>('peers')
 const resting = read<{ rows: RestingRow[] }>('resting')
@@ -74,7 +74,8 @@ console.log(`\n== summary (${join(out, 'results')}, one run; ns per ball-step un
 if (pipeline) {
   const p = pipeline.nsPerBallStep
   const q = pipeline.ratioToPlain
-  console.log(`\npipeline, ${k(pipeline.balls)} balls: plain loop ${p.plainLoop!.toFixed(2)}, open field ${p.openField!.toFixed(2)} (${x(q.openField!)}), default panel ${p.panel!.toFixed(2)} (${x(q.panel!)})`)
+  const b = pipeline.ratioToBare
+  console.log(`\npipeline, ${k(pipeline.balls)} balls: bare loop ${p.bareLoop!.toFixed(2)}, plain loop ${p.plainLoop!.toFixed(2)}; open field ${p.openField!.toFixed(2)} (${x(b.openField!)} bare, ${x(q.openField!)} plain), default panel ${p.panel!.toFixed(2)} (${x(b.panel!)} bare, ${x(q.panel!)} plain)`)
 }
 if (scale) {
   console.log('\nscaling (ours beside a plain loop over the same typed arrays that only moves the balls, same run)')

@@ -74,6 +74,14 @@ export const median = (a: readonly number[]): number => {
  * rolling deceleration. One function for every run (a loop in a fresh closure per run can start cold, in
  * V8's interpreter, at 100+ ns per ball-step).
  */
+/** The barest loop that moves balls: x += vx·dt, y += vy·dt over two pairs of columns, nothing else. */
+export function bareStep(x: Float64Array, y: Float64Array, vx: Float64Array, vy: Float64Array, n: number): void {
+  for (let i = 0; i < n; i++) {
+    x[i] = x[i]! + vx[i]! * DT
+    y[i] = y[i]! + vy[i]! * DT
+  }
+}
+
 export function plainStep(x: Float64Array, y: Float64Array, vx: Float64Array, vy: Float64Array, n: number, decel: number): void {
   for (let i = 0; i < n; i++) {
     const u = vx[i]!

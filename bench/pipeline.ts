@@ -1,11 +1,12 @@
-// Pipeline cost per ball-step against a plain typed-array loop that only moves the same balls, each step
-// timed by tinybench (median step of a run, median of the runs). Prints figures and writes
+// Pipeline cost per ball-step against two loops over the same balls, each step timed by tinybench (median
+// step of a run, median of the runs): the bare loop x += vx·dt, y += vy·dt (the limit: nothing cheaper moves
+// balls), and a plain loop that also applies the rolling deceleration (a square root a ball). Prints figures and writes
 // docs/results/pipeline.json; asserts nothing (machines here are shared and noisy: compare the ratio
 // measured side by side in this run, not absolute times across runs).
 //
 //   npm run bench:pipeline   (N = 100,000)       npm run bench:pipeline -- 20000   (another N)
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
-import { DT, collectGarbage, median, medianStepMs, plainStep, writeResult } from './lib'
+import { DT, bareStep, collectGarbage, median, medianStepMs, plainStep, writeResult } from './lib'
 
 const N = Number(process.argv.slice(2).find((a) => /^\d+$/.test(a)) ?? 100_000)
 const WARMUP = 30
@@ -62,9 +63,14 @@ function panelSim(n: number): BallPhysics {
   return sim
 }
 
-/** The limit: one step of the same balls with the same rolling deceleration, nothing else. */
+/** One step of the same balls with the same rolling deceleration, nothing else. */
 function plainLoop(b: Ball0, n: number, decel: number): () => void {
   return () => plainStep(b.x, b.y, b.vx, b.vy, n, decel)
+}
+
+/** The limit: the same balls moved on straight lines, two multiply-adds a ball. */
+function bareLoop(b: Ball0, n: number): () => void {
+  return () => bareStep(b.x, b.y, b.vx, b.vy, n)
 }
 
 
@@ -83,11 +89,13 @@ async function nsPerBallStep(step: () => void): Promise<number> {
 }
 
 const decel = createBallPhysics().config.ROLLING_DECEL
+const bare: number[] = []
 const plain: number[] = []
 const open: number[] = []
 const panel: number[] = []
 let moving = 0
 for (let rep = 0; rep < REPEATS; rep++) {
+  bare.push(await nsPerBallStep(bareLoop(openField(N), N)))
   plain.push(await nsPerBallStep(plainLoop(openField(N), N, decel)))
 
   const sim = openFieldSim(openField(N), N)
@@ -105,12 +113,14 @@ const result = {
   warmupSteps: WARMUP,
   repeats: REPEATS,
   timing: 'tinybench: median step of each run of STEPS steps, median of REPEATS runs',
-  nsPerBallStep: { plainLoop: median(plain), openField: median(open), panel: median(panel) },
+  nsPerBallStep: { bareLoop: median(bare), plainLoop: median(plain), openField: median(open), panel: median(panel) },
+  ratioToBare: { openField: median(open) / median(bare), panel: median(panel) / median(bare) },
   ratioToPlain: { openField: median(open) / median(plain), panel: median(panel) / median(plain) },
   openFieldBallsStillMovingAfterRun: moving,
 }
 console.log(`pipeline benchmark, ${N} balls, 25 holes, dt = 1/120 s, median step of ${STEPS}, median of ${REPEATS} runs`)
-console.log(`  plain typed-array loop (moves only)   ${result.nsPerBallStep.plainLoop.toFixed(2)} ns/ball-step`)
-console.log(`  full pipeline, open field (sparse)    ${result.nsPerBallStep.openField.toFixed(2)} ns/ball-step   ${result.ratioToPlain.openField.toFixed(2)}× plain`)
-console.log(`  full pipeline, default panel (dense)  ${result.nsPerBallStep.panel.toFixed(2)} ns/ball-step   ${result.ratioToPlain.panel.toFixed(2)}× plain`)
+console.log(`  bare loop (x += vx·dt, y += vy·dt)    ${result.nsPerBallStep.bareLoop.toFixed(2)} ns/ball-step`)
+console.log(`  plain loop (with the deceleration)    ${result.nsPerBallStep.plainLoop.toFixed(2)} ns/ball-step`)
+console.log(`  full pipeline, open field (sparse)    ${result.nsPerBallStep.openField.toFixed(2)} ns/ball-step   ${result.ratioToBare.openField.toFixed(2)}× bare   ${result.ratioToPlain.openField.toFixed(2)}× plain`)
+console.log(`  full pipeline, default panel (dense)  ${result.nsPerBallStep.panel.toFixed(2)} ns/ball-step   ${result.ratioToBare.panel.toFixed(2)}× bare   ${result.ratioToPlain.panel.toFixed(2)}× plain`)
 console.log(`wrote ${writeResult('pipeline', result)}`)
