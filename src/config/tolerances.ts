@@ -63,9 +63,8 @@ export const MAX_RESTING_CELLS = 4
  * Fixed-tick contacts: the overlap projection sweeps over the pairs until no overlap is deeper than
  * PROJECTION_SLOP px (a jammed pile needs many sweeps: each moves a push one ball further through it). Full
  * sweeps first; once a sweep moves fewer balls than an eighth of the pairs, sweeps over the pairs of the balls
- * still moving. A tick's projection visits at most PROJECTION_BUDGET × pairs pairs, in at most
- * MAX_LISTED_SWEEPS sweeps (which also bound the velocity solve's sweeps over listed pairs,
- * src/contacts/fixedSolve.ts).
+ * still moving (src/contacts/fixedPairs.ts). A tick's projection visits at most PROJECTION_BUDGET × pairs
+ * pairs, in at most MAX_LISTED_SWEEPS sweeps.
  */
 export const PROJECTION_BUDGET = 64
 export const MAX_LISTED_SWEEPS = 1024

@@ -94,7 +94,7 @@ function gatherResting(w: BallWorld, F: FixedContactState): void {
     C.seenStamp = 1
   }
   const moving = F.n
-  if (C.restCount + C.bigRestCount <= moving) {
+  if (4 * (C.restCount + C.bigRestCount) <= moving) {
     // few resting balls: all of them join, in id order (pairing them costs less than a lookup per moving ball)
     const live = B.live
     const mode = B.mode

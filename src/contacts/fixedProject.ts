@@ -28,8 +28,9 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
     moved = 0
     for (let k = 0; k < pairs; k++) {
       const p = back ? pairs - 1 - k : k
-      const gap = project(w, F, p)
+      const gap = normal(F, F.pairA[p]!, F.pairB[p]!)
       if (!(gap < 0)) continue
+      pushApart(w, F, p, gap)
       if (-gap > worst) worst = -gap
       if (F.ballStamp[F.pairA[p]!] !== stamp && movedA) {
         F.ballStamp[F.pairA[p]!] = stamp
@@ -76,8 +77,9 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
       size = heapPop(F.heap, size)
       const p = back ? pairs - 1 - key : key
       budget--
-      const gap = project(w, F, p)
+      const gap = normal(F, F.pairA[p]!, F.pairB[p]!)
       if (!(gap < 0)) continue
+      pushApart(w, F, p, gap)
       if (-gap > worst) worst = -gap
       if (movedA) size = activate(F, F.pairA[p]!, key, back, stamp, size)
       if (movedB) size = activate(F, F.pairB[p]!, key, back, stamp, size)
@@ -87,21 +89,14 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
   F.capped++
 }
 
-/** whether the last project() moved ball a, ball b of its pair */
+/** whether the last pushApart() moved ball a, ball b of its pair */
 let movedA = false
 let movedB = false
 
-/**
- * Moves the balls of pair p apart if they overlap; returns the gap found (negative: an overlap) and sets
- * movedA, movedB.
- */
-function project(w: BallWorld, F: FixedContactState, p: number): number {
+/** Moves the balls of pair p, overlapping by −gap along nrm (normal() just set it), apart; sets movedA, movedB. */
+function pushApart(w: BallWorld, F: FixedContactState, p: number, gap: number): void {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
-  const gap = normal(F, a, b)
-  movedA = false
-  movedB = false
-  if (!(gap < 0)) return gap
   const nx = nrm.x
   const ny = nrm.y
   // shared by inverse mass, each ball taking at least MIN_PROJECTION_SHARE (a light ball squeezed between
@@ -131,7 +126,6 @@ function project(w: BallWorld, F: FixedContactState, p: number): number {
   F.changed[b]! |= 2
   movedA = F.x[a] !== ax || F.y[a] !== ay
   movedB = F.x[b] !== bx || F.y[b] !== by
-  return gap
 }
 
 /**

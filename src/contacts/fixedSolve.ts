@@ -8,10 +8,10 @@
 //     within the tick" is the swept test on straight lines at the present velocities, and the impulse acts
 //     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
-//     A ball at rest that an impulse would leave slower than BALL_SETTLE_SPEED holds like a wall. Sweeps that
-//     run out with impulses still given go on over the pairs whose balls changed (a light ball wedged
-//     between a heavy one and a wall needs many), up to CONTACT_ITERATIONS × pairs more pair visits. A pair
-//     that drives a ball into a closed wall it can reach is solved together with that wall (pairWithWall).
+//     A ball at rest that an impulse would leave slower than BALL_SETTLE_SPEED holds like a wall. A pair
+//     that drives a ball into a closed wall it can reach is solved together with that wall (pairWithWall):
+//     a light ball squeezed or wedged against a wall by a heavy one would otherwise take a little of the
+//     push each sweep, and the sweeps run out with the pair still closing.
 //   positions: src/contacts/fixedProject.ts.
 // Then every ball the solve changed starts a fresh path from its new state at the tick (a ball on a rim or
 // in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
@@ -20,12 +20,11 @@ import { BallMode } from '../../components/Ball.js'
 import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { reserveSweeps, touchBall, type FixedContactState } from '../world/fixedState.js'
+import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
-import { MAX_LISTED_SWEEPS } from '../config/tolerances.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { walls } from './fixedGrid.js'
-import { activate, buildAdjacency, heapPop, nextStamp, normal, nrm, startSweep } from './fixedPairs.js'
+import { normal, nrm } from './fixedPairs.js'
 import { strikeLeavesRim } from './law.js'
 
 /** pairHit bits: the pair took an impulse this tick; its contact was reported */
@@ -50,7 +49,6 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     if (wallVelocities(w, F, t, settle)) moved = true
     if (!moved) return
   }
-  residualSweeps(w, F, t, iterations, e, settle)
 }
 
 /**
@@ -61,10 +59,17 @@ function impulse(w: BallWorld, F: FixedContactState, p: number, t: number, e: nu
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   if (!meetsWithinTick(F, a, b)) return false
+  const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
+  if (!(approach > 0)) return false
+  return applyImpulse(w, F, p, approach, t, e, settle)
+}
+
+/** Pair p, approaching at `approach` along nrm, takes its impulse (see impulse); false if neither ball can move. */
+function applyImpulse(w: BallWorld, F: FixedContactState, p: number, approach: number, t: number, e: number, settle: number): boolean {
+  const a = F.pairA[p]!
+  const b = F.pairB[p]!
   const nx = nrm.x
   const ny = nrm.y
-  const approach = -((F.vx[b]! - F.vx[a]!) * nx + (F.vy[b]! - F.vy[a]!) * ny)
-  if (!(approach > 0)) return false
   let ima = F.im[a]!
   let imb = F.im[b]!
   // restitution once a tick per pair: met again in a later sweep (a third ball pushed them together),
@@ -191,55 +196,6 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
     return true
   }
   return false
-}
-
-/**
- * When the sweeps run out with impulses still being given (a light ball wedged between a heavy one and a
- * wall takes many: each sweep passes it a little of the push), Gauss-Seidel sweeps go on over the pairs of
- * the balls whose velocity changed since the pair was last met (the others cannot take an impulse), in pair
- * order, each ball's walls met right after its pairs: up to iterations × pairs more pair visits, at most
- * MAX_LISTED_SWEEPS sweeps. A pile pressed without end spends the budget; a wedge settles in it.
- */
-function residualSweeps(w: BallWorld, F: FixedContactState, t: number, iterations: number, e: number, settle: number): void {
-  const pairs = F.pairCount
-  if (pairs === 0) return
-  reserveSweeps(F, F.n, pairs)
-  buildAdjacency(F)
-  let budget = iterations * pairs
-  // first: every pair that would still take an impulse
-  const stamp0 = nextStamp(F)
-  F.activeCount = 0
-  for (let p = 0; p < pairs; p++) {
-    if (!approaches(F, p)) continue
-    F.nextStamp[p] = stamp0
-    F.active[F.activeCount++] = p
-  }
-  for (let sweep = 0; sweep < MAX_LISTED_SWEEPS && F.activeCount > 0 && budget > 0; sweep++) {
-    const back = (sweep & 1) === 1
-    const stamp = nextStamp(F)
-    let size = startSweep(F, back, stamp)
-    while (size > 0 && budget > 0) {
-      const key = F.heap[0]!
-      size = heapPop(F.heap, size)
-      const p = back ? pairs - 1 - key : key
-      budget--
-      if (!impulse(w, F, p, t, e, settle)) continue
-      const a = F.pairA[p]!
-      const b = F.pairB[p]!
-      wallVelocity(w, F, t, settle, a)
-      wallVelocity(w, F, t, settle, b)
-      size = activate(F, a, key, back, stamp, size)
-      size = activate(F, b, key, back, stamp, size)
-    }
-  }
-}
-
-/** True when pair p approaches and its balls would touch within the tick (it would take an impulse). */
-function approaches(F: FixedContactState, p: number): boolean {
-  const a = F.pairA[p]!
-  const b = F.pairB[p]!
-  if (!meetsWithinTick(F, a, b)) return false
-  return (F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y < 0
 }
 
 /**
