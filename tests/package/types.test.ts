@@ -38,7 +38,7 @@ async function sh(cmd: string, args: string[], cwd: string): Promise<Result> {
 }
 
 const CONSUMER = `
-import { createBallPhysics, DEFAULT_CONFIG, addPanel, DEFAULT_PANEL, type BallEvent, type BallPhysics } from '${PKG}'
+import { createBallPhysics, DEFAULT_CONFIG, addPanel, DEFAULT_PANEL, type BallEvent, type BallPhysics, type EventView } from '${PKG}'
 import { createBallWorld, runSchedule, DEFAULT_SCHEDULE, BallMode, type BallWorld } from '${PKG}/ecs'
 import { referenceOutcome, type ReferenceOutcome } from '${PKG}/reference'
 
@@ -51,10 +51,14 @@ const own: BallWorld = createBallWorld({}, { capacity: 64 })
 runSchedule(own, DEFAULT_SCHEDULE, 1 / 60)
 const events: BallEvent[] = sim.drainEvents()
 const kinds: string[] = events.map((e) => e.type)
+let latest = 0
+const drained: number = sim.drainEventsWith((e: EventView) => {
+  latest = e.time
+})
 const rolling: 0 = BallMode.Rolling
 const outcome: ReferenceOutcome = referenceOutcome({ delta: 5, speed: 300, holeRadius: 18, ballRadius: 11, gravity: 6953, inertia: 0.4 })
 const captured: boolean = outcome.captured
-export const used = [holes, kinds, rolling, captured]
+export const used = [holes, kinds, rolling, captured, drained, latest]
 
 // Each line below is an error only while the types are real: were any of them \`any\`, the directive would
 // be unused (TS2578) and the check would fail.
@@ -70,6 +74,8 @@ export const never: BallEvent['type'] = 'explosion'
 BallMode.Rolling = 1
 // @ts-expect-error the outcome is not a number
 export const notNumber: number = outcome
+// @ts-expect-error an event view's hole is a number (0: none), not optional
+sim.drainEventsWith((e) => { const h: undefined = e.hole })
 `
 
 const RESOLUTIONS = [
