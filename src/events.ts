@@ -334,7 +334,8 @@ const view: EventView = { type: 'skip', code: EventType.Skip, ball: 0, time: 0, 
  * Passes the buffered events, in drainEventBuffer's order, to `visit` one at a time through one reused view,
  * and empties the buffer of them; returns how many. Allocates nothing once the buffer has grown to the
  * scene. `visit` may command or step the world (remove the ball it is told was captured, say): the events
- * that records wait for the next drain. It may not drain again (an Error).
+ * that records wait for the next drain. It may not drain again (an Error). If it throws, the drain ends
+ * there: the events it had not yet been given are dropped with the others.
  */
 export function drainEventBufferWith(buf: EventBuffer, visit: (e: EventView) => void): number {
   const n = orderEvents(buf)

@@ -86,9 +86,21 @@ describe('drainEventsWith', () => {
     expect(d.drainEvents()).toEqual(c.drainEvents())
   })
 
-  it('refuses a drain from its callback, and a callback that is not a function', () => {
+  it('refuses a drain from its callback, and a callback that is not a function; a callback that throws ends the drain', () => {
     const sim = burst(40)
     sim.step(0.5)
+    const thrower = burst(40)
+    thrower.step(0.5)
+    let seen = 0
+    expect(() =>
+      thrower.drainEventsWith(() => {
+        if (++seen === 2) throw new Error('game code failed')
+      }),
+    ).toThrow('game code failed')
+    expect(seen).toBe(2)
+    expect(thrower.drainEvents()).toEqual([]) // the rest went with the drain
+    thrower.step(1 / 60)
+    expect(() => thrower.drainEventsWith(() => {})).not.toThrow() // and the buffer is usable again
     expect(() => sim.drainEventsWith(() => sim.drainEvents())).toThrow(/drainEvents: called from a drainEventsWith callback/)
     expect(() => sim.drainEventsWith(null as never)).toThrow(TypeError)
     expect(() => sim.drainEventsWith(null as never)).toThrow(/visit must be a function/)
