@@ -118,7 +118,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     Path: createPathStore(capacity),
     Walls: createWallsStore(SMALL_STORE),
     walls: 0,
-    moving: { count: 0, dense: new Uint32Array(256), sparse: new Uint32Array(capacity) },
+    moving: { count: 0, dense: new Uint32Array(256), sparse: new Uint32Array(capacity), churn: 0, spare: new Uint32Array(256) },
     entityIndex,
     rimFree: createIdList(SMALL_STORE),
     rimNext: 1,

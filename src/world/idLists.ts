@@ -31,6 +31,10 @@ export interface MovingSet {
   dense: Uint32Array
   /** index in `dense` by entity id; valid only where dense[sparse[eid]] === eid */
   sparse: Uint32Array
+  /** balls added or removed since `dense` was last put in id order */
+  churn: number
+  /** orderMoving's scratch (it becomes `dense`, and `dense` the scratch) */
+  spare: Uint32Array
 }
 
 export function isMoving(world: BallWorld, eid: number): boolean {
@@ -46,9 +50,11 @@ export function addMoving(world: BallWorld, eid: number): void {
     const next = new Uint32Array(m.dense.length * 2)
     next.set(m.dense)
     m.dense = next
+    m.spare = new Uint32Array(next.length)
   }
   m.sparse[eid] = m.count
   m.dense[m.count++] = eid
+  m.churn++
   spotJoin(world, eid)
 }
 
@@ -60,4 +66,26 @@ export function removeMoving(world: BallWorld, eid: number): void {
   const last = m.dense[--m.count]!
   m.dense[i] = last
   m.sparse[last] = i
+  m.churn++
+}
+
+/**
+ * Puts the moving balls back in ascending id order (a scan of the ids in use: no sort), so a pass walks the
+ * per-ball arrays in memory order. Swap-removals and recycled ids scatter the order over time; with 100,000
+ * balls refilled as they fall in, a scattered order cost about 3× the step of an ordered one (cache misses).
+ */
+export function orderMoving(world: BallWorld): void {
+  const m = world.moving
+  m.churn = 0
+  if (m.spare.length < m.dense.length) m.spare = new Uint32Array(m.dense.length)
+  const out = m.spare
+  const top = Math.min(m.sparse.length, world.entityIndex.maxId + 1)
+  let n = 0
+  for (let eid = 1; eid < top && n < m.count; eid++) {
+    const i = m.sparse[eid]!
+    if (i < m.count && m.dense[i] === eid) out[n++] = eid
+  }
+  for (let k = 0; k < n; k++) m.sparse[out[k]!] = k
+  m.spare = m.dense
+  m.dense = out
 }
