@@ -1,5 +1,5 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
-// contact-accuracy, piles, the adversarial suite's long version, resting, recycling), then
+// contact-accuracy, piles, the adversarial suite's long version, resting, recycling, dense), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
 // assertions (the machine is shared and noisy), so the exit status only says whether every benchmark ran.
 //
@@ -27,6 +27,7 @@ const benches: [string, string[]][] = [
   ['bench/adversarial.ts', quick ? ['--scale', '2'] : []],
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
+  ['bench/dense.ts', []],
 ]
 const failed: string[] = []
 for (const [entry, args] of benches) {
@@ -64,6 +65,7 @@ const resting = read<{ rows: RestingRow[] }>('resting')
 const contacts = read<{ rows: ContactRow[] }>('contacts')
 const accuracy = read<{ points: AccuracyPoint[] }>('contact-accuracy')
 const piles = read<{ balls: number; rows: PileRow[] }>('piles')
+const dense = read<{ rows: { balls: number; ordered: number; scattered: number }[]; growth100kOver10k: { ordered: number; scattered: number } }>('dense')
 const adversarial = read<{ scale: number; seconds: number; properties: Record<string, { passed: boolean; runs: number; steps: number; slowestStepMs: number }> }>('adversarial')
 
 const k = (n: number) => n.toLocaleString('en-US')
@@ -76,6 +78,12 @@ if (pipeline) {
   const q = pipeline.ratioToPlain
   const b = pipeline.ratioToBare
   console.log(`\npipeline, ${k(pipeline.balls)} balls: bare loop ${p.bareLoop!.toFixed(2)}, plain loop ${p.plainLoop!.toFixed(2)}; open field ${p.openField!.toFixed(2)} (${x(b.openField!)} bare, ${x(q.openField!)} plain), default panel ${p.panel!.toFixed(2)} (${x(b.panel!)} bare, ${x(q.panel!)} plain)`)
+}
+if (dense) {
+  const g = dense.growth100kOver10k
+  console.log(`\ndense events with recycling (ns per ball-step; in brackets with the moving balls' id order held off)`)
+  for (const r of dense.rows) console.log(`${k(r.balls).padStart(9)} balls  ${r.ordered.toFixed(1).padStart(6)}  (${r.scattered.toFixed(1)})`)
+  console.log(`  100,000 / 10,000: ${x(g.ordered)} (${x(g.scattered)})`)
 }
 if (scale) {
   console.log('\nscaling (ours beside a plain loop over the same typed arrays that only moves the balls, same run)')
