@@ -10,10 +10,12 @@
 // without one. The rest wait for later steps.
 // Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact.
 import { BallMode } from '../components/Ball.js'
+import { MAX_SPEED } from '../src/config/limits.js'
 import { MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
-import { spotTaken } from '../src/contacts/spot.js'
+import { spotHeldByResting, spotTaken } from '../src/contacts/spot.js'
 import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { createIdList } from '../src/world/idLists.js'
 
 export function launcherSystem(w: BallWorld): void {
   if (w.pass !== 0 || w.held.count === 0) return
@@ -29,13 +31,18 @@ export function launcherSystem(w: BallWorld): void {
     const y = B.y[eid]!
     const r = B.radius[eid]!
     let wait: boolean
+    let checked = false
     if (last !== 0 && overlaps(w, eid, last)) wait = true
     else if (checks >= MAX_SPOT_CHECKS) wait = true
     else {
       checks++
+      checked = true
       wait = spotTaken(w, eid, x, y, r)
     }
     if (wait) {
+      // a spot held only by resting balls: the launcher knocks them off it (else a ball that came to rest
+      // on a launcher's spot would hold every ball behind it for good)
+      if (checked && spotHeldByResting(w, eid, x, y, r, blockers)) kick(w, eid, x, y)
       q.ids[kept++] = eid
       last = eid
       continue
@@ -43,6 +50,37 @@ export function launcherSystem(w: BallWorld): void {
     placeBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!)
   }
   q.count = kept
+}
+
+const blockers = createIdList(8)
+
+/**
+ * Each resting ball on held ball h's spot (x, y) leaves it, away from the spot's centre, at the speed a
+ * head-on strike by h at its launch velocity would give it: (1 + e)·m_h/(m_h + m_b)·|v_h| (at most
+ * MAX_SPEED; not at all below BALL_SETTLE_SPEED, where it would stay). The launcher does the work: kinetic
+ * energy is added, as by a throw, and h stays held until its spot is clear.
+ */
+function kick(w: BallWorld, h: number, x: number, y: number): void {
+  const B = w.Ball
+  const mass = w.collide !== null ? w.collide.mass : w.fixed!.mass
+  const vh = Math.hypot(B.vx[h]!, B.vy[h]!)
+  const e = w.config.BALL_RESTITUTION
+  for (let i = 0; i < blockers.count; i++) {
+    const b = blockers.ids[i]!
+    const speed = Math.min(MAX_SPEED, ((1 + e) * mass[h]! * vh) / (mass[h]! + mass[b]!))
+    if (!(speed >= w.config.BALL_SETTLE_SPEED)) continue
+    let nx = B.x[b]! - x
+    let ny = B.y[b]! - y
+    let d = Math.hypot(nx, ny)
+    if (d === 0) {
+      // on the spot's centre: along h's launch direction (or up the panel)
+      nx = vh > 0 ? B.vx[h]! : 0
+      ny = vh > 0 ? B.vy[h]! : -1
+      d = vh > 0 ? vh : 1
+    }
+    placeBall(w, b, B.x[b]!, B.y[b]!, (speed * nx) / d, (speed * ny) / d)
+    w.kicks++
+  }
 }
 
 function overlaps(w: BallWorld, a: number, b: number): boolean {

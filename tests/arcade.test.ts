@@ -446,6 +446,40 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.ballState(sim.addBall({ x: 301, y: 1, vx: 0, vy: 0 })).mode).toBe('rolling')
   })
 
+  it('a ball resting on the launcher\'s spot is knocked off it as a head-on strike would, and the held balls come out (it once held them for good)', () => {
+    for (const mode of ['on', 'fixed'] as const) {
+      const e = 0.5
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: e, ROLLING_DECEL: 0 })
+      const blocker = sim.addBall({ x: 210, y: 440, vx: 0, vy: 0 }) // 10 px above the spot: on it
+      const held = [0, 1, 2].map(() => sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0 }))
+      expect(held.map((b) => sim.ballState(b).mode)).toEqual(['held', 'held', 'held'])
+      const vh = Math.hypot(sim.ballState(held[0]!).vx, sim.ballState(held[0]!).vy)
+      // put down still, the blocker rolls until its stop in the first step, rests, and is knocked off the
+      // spot at the launcher's next turn
+      let steps = 0
+      while (steps < 3 && sim.ballState(blocker).vy === 0) {
+        sim.step(1 / 60)
+        steps++
+      }
+      const kicked = sim.ballState(blocker)
+      expect(kicked.mode, mode).toBe('rolling')
+      // away from the spot's centre (straight up here), at (1 + e)·m/(m + m)·|v| for equal masses
+      expect(kicked.vx).toBe(0)
+      expect(kicked.vy).toBeCloseTo((-(1 + e) * vh) / 2, 9)
+      for (let i = 0; i < 120; i++) sim.step(1 / 60)
+      for (const b of held) expect(sim.ballState(b).mode, mode).not.toBe('held')
+    }
+  })
+
+  it('a resting ball too heavy to be knocked below BALL_SETTLE_SPEED stays, and the held ball waits', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0 })
+    const blocker = sim.addBall({ x: 210, y: 440, vx: 0, vy: 0, mass: 1e9 })
+    const held = sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0 })
+    for (let i = 0; i < 30; i++) sim.step(1 / 60)
+    expect(sim.ballState(blocker)).toMatchObject({ mode: 'resting', x: 210, y: 440 })
+    expect(sim.ballState(held).mode).toBe('held')
+  })
+
   it('with contacts off nothing is held (balls pass through each other)', () => {
     const sim = createBallPhysics()
     const a = sim.addBall({ x: 100, y: 100, vx: 10, vy: 0 })

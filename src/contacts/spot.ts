@@ -5,7 +5,7 @@
 import { BallMode } from '../../components/Ball.js'
 import type { CollisionState } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { isMoving } from '../world/idLists.js'
+import { isMoving, pushId, type IdList } from '../world/idLists.js'
 import { restingState } from '../world/restingGrid.js'
 import { buildSpotGrid } from '../world/spotGrid.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
@@ -14,19 +14,48 @@ import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
   const C = restingState(w)
   if (C === null) return false
-  if (movingAt(w, C, self, x, y, r)) return true
-  for (let i = 0; i < C.bigRestCount; i++) if (near(w, C.bigRest[i]!, self, x, y, r)) return true
-  if (C.restCount === 0) return false
+  return movingAt(w, C, self, x, y, r) || restingAt(w, C, self, x, y, r, null)
+}
+
+/**
+ * When the only balls on the spot (x, y, r) are resting ones, lists them in `out` (emptied first) and
+ * returns true; false when a moving ball is on it, or nothing is.
+ */
+export function spotHeldByResting(w: BallWorld, self: number, x: number, y: number, r: number, out: IdList): boolean {
+  out.count = 0
+  const C = restingState(w)
+  if (C === null || movingAt(w, C, self, x, y, r)) return false
+  if (++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  restingAt(w, C, self, x, y, r, out)
+  return out.count > 0
+}
+
+/** A resting ball on the circle: true at the first one found, or, with `out`, every one listed there. */
+function restingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: number, r: number, out: IdList | null): boolean {
+  for (let i = 0; i < C.bigRestCount; i++) if (near(w, C.bigRest[i]!, self, x, y, r) && found(C, out, C.bigRest[i]!)) return true
+  if (C.restCount === 0) return out !== null && out.count > 0
   const rMask = C.restHead.length - 1
   const reach = r + C.maxRadius
   if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
-    for (let i = 0; i <= rMask; i++) for (let b = C.restHead[i]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r)) return true
-    return false
+    for (let i = 0; i <= rMask; i++) for (let b = C.restHead[i]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r) && found(C, out, b)) return true
+  } else {
+    const k = capsuleCells(C, x, y, x, y, reach, rMask)
+    for (let i = 0; i < k; i++) {
+      for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r) && found(C, out, b)) return true
+    }
   }
-  const k = capsuleCells(C, x, y, x, y, reach, rMask)
-  for (let i = 0; i < k; i++) {
-    for (let b = C.restHead[C.cells[i]!]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r)) return true
-  }
+  return out !== null && out.count > 0
+}
+
+/** A resting ball on the spot: stop at it (no list), or list it once (the seen stamp) and go on. */
+function found(C: CollisionState, out: IdList | null, b: number): boolean {
+  if (out === null) return true
+  if (C.seen[b] === C.seenStamp) return false
+  C.seen[b] = C.seenStamp
+  pushId(out, b)
   return false
 }
 

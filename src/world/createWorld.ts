@@ -84,6 +84,8 @@ export interface BallWorldData {
   ballStores: object[]
   /** balls held at their spawn spot until it is clear (ball-ball contacts on), in the order they came */
   held: IdList
+  /** balls the launcher has knocked off its spots since the world was made (systems/launcher.ts) */
+  kicks: number
 }
 
 export type BallWorld = World<BallWorldData>
@@ -138,6 +140,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     stepping: false,
     ballStores: [],
     held: createIdList(16),
+    kicks: 0,
   }
   return createWorld<BallWorldData>(data, entityIndex)
 }
