@@ -4,7 +4,9 @@
 // launcher firing many balls from one point so lets them out one after another, each as the one before it
 // clears the spot, instead of starting them inside one another. The rule adds no kinetic energy (a held ball
 // keeps its velocity and is launched only where it overlaps nothing), and a released ball starts
-// where it was put, at the step's start: release times are quantised to steps.
+// where it was put, at the step's start: release times are quantised to steps. A spot held only by resting
+// balls is cleared: the launcher knocks them off it (kick, below; the one place it adds energy, as a throw
+// does), so a ball that stops on a launcher's spot does not hold the balls behind it for good.
 // Bounded work: at most MAX_SPOT_CHECKS full checks per step (each against the moving and resting balls
 // near the spot, through grids); a held ball overlapping the held ball just before it in the queue waits
 // without one. The rest wait for later steps.
