@@ -82,3 +82,10 @@ export const MAX_WIDEN_ROUNDS = 4
  * and stop the world at the pass cap; a Newton's cradle or a burst takes a few a step.
  */
 export const MAX_STEP_CONTACTS = 64
+
+/**
+ * Contacts off: the moving balls are put back in id order (src/world/idLists.ts, orderMoving) at a step's
+ * start once more than a quarter of them have come and gone, in a moving set of more than this many balls
+ * (below it the per-ball arrays stay in cache whatever the order).
+ */
+export const MOVING_ORDER_MIN = 4096

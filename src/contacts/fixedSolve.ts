@@ -130,26 +130,27 @@ function wallAhead(F: FixedContactState, i: number, dx: number, dy: number): boo
   const y = F.y[i]!
   const r = F.r[i]!
   const travel = F.reach[i]! - r
-  let best = 0
-  if (dx < 0 && x - r - walls.minX <= travel && dx < best) {
-    best = dx
-    face.x = 1
+  const cx = into(dx, x - r - walls.minX, walls.maxX - x - r, travel)
+  const cy = into(dy, y - r - walls.minY, walls.maxY - y - r, travel)
+  if (cx === 0 && cy === 0) return false
+  if (cx <= cy) {
+    face.x = dx < 0 ? 1 : -1
     face.y = 0
-  } else if (dx > 0 && walls.maxX - x - r <= travel && -dx < best) {
-    best = -dx
-    face.x = -1
-    face.y = 0
-  }
-  if (dy < 0 && y - r - walls.minY <= travel && dy < best) {
-    best = dy
+  } else {
     face.x = 0
-    face.y = 1
-  } else if (dy > 0 && walls.maxY - y - r <= travel && -dy < best) {
-    best = -dy
-    face.x = 0
-    face.y = -1
+    face.y = dy < 0 ? 1 : -1
   }
-  return best < 0
+  return true
+}
+
+/**
+ * On one axis, a push component d against the walls whose faces are gapLow below and gapHigh above: −|d|
+ * when it drives the ball into a face within `travel`, else 0.
+ */
+function into(d: number, gapLow: number, gapHigh: number, travel: number): number {
+  if (d < 0) return gapLow <= travel ? d : 0
+  if (d > 0) return gapHigh <= travel ? -d : 0
+  return 0
 }
 
 /**

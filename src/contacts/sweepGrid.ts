@@ -3,6 +3,7 @@
 import { BallMode } from '../../components/Ball.js'
 import { grown, type CollisionState } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
+import { cogRadius } from '../geometry.js'
 import { bucketOf } from '../world/restingGrid.js'
 import { AT, E, X, Y, evalBall, motionEnd } from './evalMotion.js'
 
@@ -137,11 +138,11 @@ export const CR = 4
 export function sweptCapsule(w: BallWorld, eid: number, from: number, to: number): void {
   const r = w.Ball.radius[eid]!
   if (w.Ball.mode[eid] === BallMode.RimRoll) {
-    // anywhere on the contact circle of its hole, radius R − r/2
+    // anywhere on the contact circle of its hole
     const hole = w.RimContact.hole[w.Ball.rim[eid]!]!
     cap[X1] = cap[X2] = w.Hole.x[hole]!
     cap[Y1] = cap[Y2] = w.Hole.y[hole]!
-    cap[CR] = w.Hole.radius[hole]! + r / 2
+    cap[CR] = cogRadius(w.Hole.radius[hole]!, r) + r
     return
   }
   E[AT] = from
