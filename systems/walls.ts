@@ -31,7 +31,14 @@ export function wallsSystem(w: BallWorld): void {
       const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
       // with contacts on, a ball pressed to the wall by others slides along it instead of bouncing forever
       const vn = horizontal ? B.vx[eid]! : B.vy[eid]!
-      const k = Math.abs(vn) < settle ? 0 : -e
+      // a ball wider than its box on this axis (both faces closed) would meet the far face at once, and
+      // again, for ever at one instant: it stays wedged on this axis
+      const W = w.Walls
+      const lo = horizontal ? W.minX[w.walls]! : W.minY[w.walls]!
+      const hi = horizontal ? W.maxX[w.walls]! : W.maxY[w.walls]!
+      const both = horizontal ? WallEdge.Left | WallEdge.Right : WallEdge.Top | WallEdge.Bottom
+      const wedged = (W.open[w.walls]! & both) === 0 && hi - lo <= 2 * B.radius[eid]!
+      const k = wedged || Math.abs(vn) < settle ? 0 : -e
       const vx = horizontal ? k * vn : B.vx[eid]!
       const vy = horizontal ? B.vy[eid]! : k * vn
       pushEvent(w.events, EventType.Wall, eid, 0, t, false, 0, 0)

@@ -25,8 +25,12 @@ import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, type BallEvent, type BallPhysics } from '../src/index'
 import { BALL_MODE_NAMES, BallSchema, PathSchema } from '../src/ecs'
+import { machineSlowdown } from './helpers'
 
-const STEP_BUDGET_MS = 2000
+// wall-clock budgets stated for the development machine, scaled to this one (tests/helpers.ts)
+const SLOWDOWN = machineSlowdown()
+const STEP_BUDGET_MS = 2000 * SLOWDOWN
+console.info(`adversarial: time budgets ×${SLOWDOWN.toFixed(2)} (this machine against the development machine)`)
 /**
  * The long version (`npm run bench:adversarial`) sets ADVERSARIAL_SCALE: every property runs that many
  * times as often, on other seeds, and the run's statistics go to ADVERSARIAL_REPORT (a JSON file).
@@ -35,7 +39,7 @@ const SCALE = Math.max(1, Number(process.env.ADVERSARIAL_SCALE ?? 1) || 1)
 const SEED_SHIFT = SCALE === 1 ? 0 : 7919 * SCALE
 const REPORT = process.env.ADVERSARIAL_REPORT
 /** a whole run's stepping (every step under the budget, but a world that grinds at the pass cap every step) */
-const RUN_BUDGET_MS = 5000
+const RUN_BUDGET_MS = 5000 * SLOWDOWN
 const SETTLE_STEPS = 40 // 0.67 s at 60 Hz after the last call: past the 0.5 s the overlap check waits for
 const SEED = 20_240_517
 
@@ -536,7 +540,7 @@ function property(name: string, arb: fc.Arbitrary<[Cfg, Op[]]>, checks: readonly
   } finally {
     console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
     if (REPORT) {
-      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, ...seen[name], failure }
+      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, budgetScale: SLOWDOWN, ...seen[name], failure }
       writeFileSync(REPORT, JSON.stringify(report, null, 2) + '\n')
     }
   }
@@ -572,7 +576,7 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
 
   // over the full ranges since the swept-capsule hash drops stale entries (a step's cost grew with the
   // square of its events: docs/known-failures.md)
-  it('every step returns within 2 s, and a run of 65 steps within 5 s, over the full ranges, every contact mode', () => {
+  it('every step returns within 2 s, and a run of 65 steps within 5 s (budgets scaled to this machine), over the full ranges, every contact mode', () => {
     property('time (full)', scenario(FULL), ['time'], 150, SEED + 5)
   }, 120_000 * SCALE)
 

@@ -2,6 +2,7 @@
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
 import { PathSchema, BallSchema } from '../src/ecs'
+import { timeBudget } from './helpers'
 
 function storesFinite(sim: ReturnType<typeof createBallPhysics>): void {
   const w = sim.world
@@ -410,7 +411,7 @@ describe('a launcher firing many balls from one point', () => {
       const ms = performance.now() - t0
       expect(sim.world.held.count, mode).toBe(0)
       // a scan of the moving set per ball was 3.2·10⁹ distance tests here (about 9 s); the grid is 80,000 lookups
-      expect(ms, mode).toBeLessThan(3000)
+      expect(ms, mode).toBeLessThan(timeBudget(3000))
       // a ball put down on one of them in the same frame is held; one beside them is not
       expect(sim.ballState(sim.addBall({ x: 30 * 77 + 5, y: 30 * 13, vx: 0, vy: 0 })).mode).toBe('held')
       expect(sim.ballState(sim.addBall({ x: 30 * 200 + 20, y: 30 * 13, vx: 0, vy: 0 })).mode).toBe('rolling')

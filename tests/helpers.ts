@@ -87,3 +87,38 @@ export function stepWorld(w: BallWorld, n = 1, dt = 1 / 120): BallEvent[] {
   }
   return out
 }
+
+/**
+ * A wall-clock budget for this machine: `ms` is stated for the development machine, on which a reference
+ * workload (a 150-ball contacts-on box, 30 steps) takes REF_BASE_MS at best; a slower or busier machine,
+ * measured once per test file, gets budgets that much larger (up to 8×). The budgets catch hangs and
+ * blow-ups of orders of magnitude; a slow CI machine is not taken for one.
+ */
+export function timeBudget(ms: number): number {
+  slowdown ??= Math.min(8, Math.max(1, refWorkMs() / REF_BASE_MS))
+  return ms * slowdown
+}
+
+/** how much slower than the development machine this one runs the reference workload (1 or more) */
+export function machineSlowdown(): number {
+  return timeBudget(1)
+}
+
+const REF_BASE_MS = 33
+let slowdown: number | undefined
+
+/** The best of seven runs of the reference workload, in ms (the first runs also pay for compilation). */
+function refWorkMs(): number {
+  let best = Infinity
+  for (let run = 0; run < 7; run++) {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0, BALL_RESTITUTION: 0.9 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 0.9 })
+    let s = 12_345
+    const rnd = () => (s = (Math.imul(s, 1_103_515_245) + 12_345) >>> 0) / 2 ** 32
+    for (let i = 0; i < 150; i++) sim.addBall({ x: 20 + (i % 15) * 24, y: 20 + Math.floor(i / 15) * 24, vx: (rnd() - 0.5) * 800, vy: (rnd() - 0.5) * 800 })
+    const t0 = performance.now()
+    for (let i = 0; i < 30; i++) sim.step(1 / 60)
+    best = Math.min(best, performance.now() - t0)
+  }
+  return best
+}

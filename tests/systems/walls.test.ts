@@ -25,6 +25,24 @@ describe('walls system', () => {
     expect(st.vy).toBeCloseTo(40, 9) // tangential kept
   })
 
+  // a ball wider than its box met the far face at once after each bounce, for ever at one instant: with
+  // contacts on every step ran out of passes and the whole world waited (found by the adversarial suite)
+  it('a ball wider than its box stops on that axis at its first wall (no endless bounces at one instant); the others move on', () => {
+    for (const contacts of ['off', 'on', 'fixed'] as const) {
+      const sim = createBallPhysics({ ROLLING_DECEL: 0, BALL_COLLISIONS: contacts })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 1200, restitution: 1 })
+      const wide = sim.addBall({ x: -523, y: 100, vx: 925, vy: 0, radius: 300 })
+      const other = sim.addBall({ x: 200, y: 1000, vx: 300, vy: 0 })
+      const ev = run(sim, 1 / 60, 1)
+      const wideWalls = ev.filter((e) => e.type === 'wall' && e.ball === wide)
+      expect(wideWalls.length, contacts).toBe(1)
+      expect(sim.ballState(wide).vx, contacts).toBe(0)
+      // the other ball was not held: it reached the right wall at 300 px/s and came back
+      expect(ev.filter((e) => e.type === 'wall' && e.ball === other).length, contacts).toBe(1)
+      expect(sim.ballState(other).x, contacts).toBeCloseTo(409 - 300 * (1 - 209 / 300), 6)
+    }
+  })
+
   it('lets a ball out through an open edge: a gutter event at the crossing, then it is out of play', () => {
     const sim = createBallPhysics({ ROLLING_DECEL: 0 })
     sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, open: { bottom: true } })
