@@ -7,7 +7,7 @@
 // is removed); the freed row is zeroed. Slot 0 is never handed out and stays zero, so a ball without a
 // slot reads hole 0, mode None. At any moment only the balls inside a lip circle hold a slot, a small
 // share of a large scene, so the store grows with the peak number of concurrent contacts instead of
-// costing its 71 bytes for every ball. Read a ball's row as RimContact.x[rimSlot(world, ball)]; write
+// costing its 120 bytes for every ball. Read a ball's row as RimContact.x[rimSlot(world, ball)]; write
 // only through acquireRim (src/world/rimSlots.ts). A row says nothing once its lock has ended.
 //
 // As a bitECS component, RimContact marks the balls a hole holds on its rim (mode rimRoll): query or
@@ -28,6 +28,14 @@ export const RimMode = {
   Rolling: 4,
 } as const
 export type RimModeCode = (typeof RimMode)[keyof typeof RimMode]
+/**
+ * RimContact.ride: a tabulated ride round the lip that leaves at its end ('lipOut') or drops in, or one
+ * straight across from the crossing to the exit point (a bounce or a skip, reported at the crossing)
+ */
+export const RIDE_LEAVES = 1
+export const RIDE_DROPS = 2
+export const RIDE_ACROSS = 3
+
 export const RIM_MODE_NAMES = ['none', 'transit', 'skipping', 'entering', 'rolling'] as const
 
 export const RimContactSchema = {
@@ -55,6 +63,23 @@ export const RimContactSchema = {
   direction: Int8Array,
   /** rim roll: start time, s */
   time0: Float64Array,
+  /**
+   * RIDE_LEAVES, RIDE_DROPS or RIDE_ACROSS: a tabulated ride (RIM_MODEL 'tabulated'): over rideTime seconds
+   * the centre turns rideTurn radians at a steady rate while its distance from the hole centre goes from
+   * rideFrom to rideTo (RIDE_ACROSS: it moves straight between the same two points), then the ball leaves
+   * with (exitVx, exitVy) or drops in; 0: the design's Stage 3 roll
+   */
+  ride: Uint8Array,
+  /** tabulated ride: turn of the centre about the hole, rad (≥ 0; the sense is `direction`) */
+  rideTurn: Float64Array,
+  /** tabulated ride: duration, s */
+  rideTime: Float64Array,
+  /** tabulated ride: distance of the centre from the hole centre at the start and at the end, px */
+  rideFrom: Float64Array,
+  rideTo: Float64Array,
+  /** tabulated ride that escapes: velocity it leaves with, px/s */
+  exitVx: Float64Array,
+  exitVy: Float64Array,
 }
 
 export const createRimContactStore = (capacity: number) => createStore(RimContactSchema, capacity)

@@ -23,7 +23,8 @@ import {
   type CaptureMap,
   type DeltaSpeedGrid,
 } from '../src/physical/agreement'
-import { PHYSICAL_CONFIG } from '../src/config/presets'
+import { PHYSICAL_CONFIG, TABULATED_CONFIG } from '../src/config/presets'
+import { captureRows, rimTableFor } from '../src/reference/rimTable'
 import { v1Schedule } from '../src/schedule'
 import { referenceCaptureSpeed, referenceOutcome } from '../src/reference/index'
 import type { ScheduleEntry } from '../src/schedule'
@@ -56,6 +57,15 @@ log(`reference map: ${FINE.nDelta} × ${FINE.nSpeed} cells in ${(refMs / 1000).t
 
 const vcDead = referenceCaptureSpeed(0, R, r, G, J)
 log(`reference dead-centre capture limit: ${vcDead.toFixed(1)} px/s (design V_MAX ${DEFAULT_CONFIG.V_MAX}, V_SKIP_MAX ${DEFAULT_CONFIG.V_SKIP_MAX})`)
+
+// the tabulated model's table at this geometry: its outcome grid built here (capture rows shipped), then the
+// rows computed again to show what a geometry without shipped rows costs on first use
+const table0 = rimTableFor(R / r, J)
+t0 = performance.now()
+const rowsAgain = captureRows(R / r, J)
+const rowsMs = performance.now() - t0
+const rowsSame = rowsAgain.every((v, i) => v === table0.vc[i])
+log(`rim table (R/r = ${(R / r).toFixed(4)}, j = ${J}): outcome grid built in ${table0.buildMs.toFixed(0)} ms (capture rows shipped); the rows computed again in ${rowsMs.toFixed(0)} ms, ${rowsSame ? 'bit-identical to the shipped ones' : 'DIFFERENT from the shipped ones: run npm run rim-table'}`)
 
 // ---- §3 the fit: coarse search over shape × V_MAX × RIM_ROLL_MAX_TURNS, then a finer look on the fine grid ----
 const TURNS = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.565]
@@ -122,6 +132,7 @@ const models: Model[] = [
   { key: 'v1', label: 'v1 rule', overrides: {}, schedule: v1Schedule() },
   { key: 'design', label: 'design (six stages)', overrides: {} },
   { key: 'preset', label: 'physical preset', overrides: PHYSICAL_CONFIG },
+  { key: 'tabulated', label: 'tabulated reference', overrides: TABULATED_CONFIG },
   { key: 'quadraticDeadCentre', label: `quadratic, V_MAX = dead-centre limit`, overrides: deadCentreQuadratic },
   { key: 'ellipseFit', label: 'ellipse, fitted', overrides: { V_MAX: fits[0]!.vMax, RIM_ROLL_MAX_TURNS: fits[0]!.turns } },
 ]
@@ -195,6 +206,7 @@ const runners: Record<string, () => number> = {
   v1: contactRig({}, v1Schedule(), false, false),
   design: contactRig({}, undefined, false, false),
   preset: contactRig(PHYSICAL_CONFIG, undefined, false, false),
+  tabulated: contactRig(TABULATED_CONFIG, undefined, false, false),
   hero: contactRig({}, undefined, true, false),
   reference: referenceRun,
 }
@@ -216,6 +228,7 @@ const shot = {
   v1: ns('v1') / 1000,
   design: ns('design') / 1000,
   preset: ns('preset') / 1000,
+  tabulated: ns('tabulated') / 1000,
   hero: ns('hero') / 1000,
 }
 const costs = {
@@ -223,16 +236,17 @@ const costs = {
   v1: (ns('v1') - ns('baseline')) / 1000,
   design: (ns('design') - ns('baseline')) / 1000,
   preset: (ns('preset') - ns('baseline')) / 1000,
+  tabulated: (ns('tabulated') - ns('baseline')) / 1000,
   heroInEngine: (ns('hero') - ns('baseline')) / 1000,
   referenceAlone: ns('reference') / 1000,
 }
 log(
   `one rim contact through the engine (add, step to the decision, remove), µs: no hole ${shot.noHole.toFixed(2)}, v1 ${shot.v1.toFixed(2)}, ` +
-    `design ${shot.design.toFixed(2)}, preset ${shot.preset.toFixed(2)}, hero ${shot.hero.toFixed(1)}; reference alone ${costs.referenceAlone.toFixed(1)}`,
+    `design ${shot.design.toFixed(2)}, preset ${shot.preset.toFixed(2)}, tabulated ${shot.tabulated.toFixed(2)} (${(shot.tabulated / shot.design).toFixed(2)}× the design's), hero ${shot.hero.toFixed(1)}; reference alone ${costs.referenceAlone.toFixed(1)}`,
 )
 log(
   `marginal cost per rim contact, µs (median of ${REPEATS} × ${SAMPLE}; engine minus the same step with no hole, ${(costs.baselineShotNs / 1000).toFixed(2)} µs): ` +
-    `v1 ${costs.v1.toFixed(2)}, design ${costs.design.toFixed(2)}, preset ${costs.preset.toFixed(2)}, ` +
+    `v1 ${costs.v1.toFixed(2)}, design ${costs.design.toFixed(2)}, preset ${costs.preset.toFixed(2)}, tabulated ${costs.tabulated.toFixed(2)}, ` +
     `hero in the engine ${costs.heroInEngine.toFixed(1)}, reference alone ${costs.referenceAlone.toFixed(1)}`,
 )
 
@@ -325,6 +339,7 @@ const result = {
   agreement: table,
   costPerRimContactUs: { wholeContact: { ...shot, referenceAlone: costs.referenceAlone }, marginal: costs, sample: SAMPLE, repeats: REPEATS, contactStep: CONTACT_TIME },
   scene: sceneCost,
+  rimTable: { gridBuildMs: table0.buildMs, rowsMs, rowsShippedIdentical: rowsSame },
 }
 mkdirSync('docs/results', { recursive: true })
 writeFileSync('docs/results/physical.json', JSON.stringify(result, null, 2) + '\n')
@@ -429,6 +444,7 @@ const points = [
   { model: 'v1 rule (engine)', cost: shot.v1, agreement: 100 * agreementOf('v1') },
   { model: 'design, six stages (engine)', cost: shot.design, agreement: 100 * agreementOf('design') },
   { model: 'physical preset (engine)', cost: shot.preset, agreement: 100 * agreementOf('preset') },
+  { model: 'tabulated reference (engine)', cost: shot.tabulated, agreement: 100 * agreementOf('tabulated') },
   { model: 'reference alone (one call)', cost: costs.referenceAlone, agreement: 100 },
   { model: 'hero ball: reference in the engine', cost: shot.hero, agreement: 100 },
 ]

@@ -11,6 +11,7 @@ export type { BallWorldOptions } from './world/createWorld.js'
 export { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE } from './config/limits.js'
 export {
   CAPTURE_WINDOW_SHAPES,
+  RIM_MODELS,
   COLLISION_MODES,
   CONFIG_CHOICES,
   CONFIG_RANGES,
@@ -20,8 +21,9 @@ export {
   resolveConfig,
   skipFromGravity,
 } from './config/design.js'
-export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, SimulationMethod } from './config/design.js'
-export { PHYSICAL_CONFIG } from './config/presets.js'
+export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, RimModel, SimulationMethod } from './config/design.js'
+export { PHYSICAL_CONFIG, TABULATED_CONFIG } from './config/presets.js'
+export { prepareRimTable } from './reference/rimTable.js'
 export { DEFAULT_PANEL, addPanel } from './panel.js'
 export type { PanelHole, PanelLayout } from './panel.js'
 export { createFixedStepClock } from './clock.js'

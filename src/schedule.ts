@@ -8,6 +8,7 @@ import { captureSystem } from '../systems/capture.js'
 import { collisionsSystem } from '../systems/collisions.js'
 import { cogGateSystem } from '../systems/cogGate.js'
 import { fixedContactsSystem } from '../systems/fixedContacts.js'
+import { tabulatedRimSystem } from '../systems/tabulatedRim.js'
 import { heroReferenceSystem } from '../systems/heroReference.js'
 import { integrationSystem } from '../systems/integration.js'
 import { launcherSystem } from '../systems/launcher.js'
@@ -36,6 +37,7 @@ export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
   Object.freeze({ name: 'fixedContacts', run: fixedContactsSystem }),
   Object.freeze({ name: 'integration', run: integrationSystem }),
   Object.freeze({ name: 'heroReference', run: heroReferenceSystem }),
+  Object.freeze({ name: 'tabulatedRim', run: tabulatedRimSystem }),
   Object.freeze({ name: 'skipOver', run: skipOverSystem }),
   Object.freeze({ name: 'capture', run: captureSystem }),
   Object.freeze({ name: 'cogGate', run: cogGateSystem }),

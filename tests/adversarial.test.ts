@@ -69,6 +69,8 @@ type Contacts = 'off' | 'on' | 'fixed'
 
 interface Cfg {
   contacts: Contacts
+  /** the rim model (absent: the design's stages) */
+  rim?: 'tabulated'
   e: number
   decel: number
 }
@@ -197,12 +199,14 @@ function opArbs(L: Limits) {
   return { op, prelude }
 }
 
-const cfgArb = (contacts: readonly Contacts[]) =>
-  fc.record({ contacts: fc.constantFrom(...contacts), e: fc.constantFrom(0, 0.5, 1), decel: fc.constantFrom(0, 300) })
-const scenario = (L: Limits, contacts: readonly Contacts[] = ['off', 'on', 'fixed']): fc.Arbitrary<[Cfg, Op[]]> => {
+const cfgArb = (contacts: readonly Contacts[], tabulated = false): fc.Arbitrary<Cfg> =>
+  tabulated
+    ? fc.record({ contacts: fc.constantFrom(...contacts), e: fc.constantFrom(0, 0.5, 1), decel: fc.constantFrom(0, 300), rim: fc.constant('tabulated' as const) })
+    : fc.record({ contacts: fc.constantFrom(...contacts), e: fc.constantFrom(0, 0.5, 1), decel: fc.constantFrom(0, 300) })
+const scenario = (L: Limits, contacts: readonly Contacts[] = ['off', 'on', 'fixed'], tabulated = false): fc.Arbitrary<[Cfg, Op[]]> => {
   const { op, prelude } = opArbs(L)
   return fc
-    .tuple(cfgArb(contacts), prelude, fc.array(op, { minLength: 1, maxLength: 25, size: 'max' }))
+    .tuple(cfgArb(contacts, tabulated), prelude, fc.array(op, { minLength: 1, maxLength: 25, size: 'max' }))
     .map(([cfg, pre, ops]): [Cfg, Op[]] => [cfg, [...pre, ...ops]])
 }
 
@@ -263,7 +267,7 @@ function worstOverlap(sim: BallPhysics): { depth: number; a: number; b: number }
 /** Applies `ops` (then SETTLE_STEPS steps of 1/60 s) and checks `checks` after every call; throws on a violation. */
 function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonly Check[]): void {
   const on = (c: Check) => checks.includes(c)
-  const overrides = { METHOD: 'exact', BALL_COLLISIONS: cfg.contacts, BALL_RESTITUTION: cfg.e, ROLLING_DECEL: cfg.decel } as const
+  const overrides = { METHOD: 'exact', BALL_COLLISIONS: cfg.contacts, BALL_RESTITUTION: cfg.e, ROLLING_DECEL: cfg.decel, ...(cfg.rim === undefined ? {} : { RIM_MODEL: cfg.rim }) } as const
   const sim = createBallPhysics(overrides)
   const calls: string[] = []
   const log = (s: string) => {
@@ -595,6 +599,14 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
   // radii and masses where balls collide more often than they fly apart (two million contacts in the long run)
   it('fixed-tick contacts, radii 2–200 px, masses 1e-3…1e3: from 0.5 s after the last spawn, no overlap over 1e-3 px after any tick', () => {
     property('overlap (fixed)', scenario(NO_RUNAWAY, ['fixed']), ['overlap'], 100, SEED + 14)
+  }, 120_000 * SCALE)
+
+  it('tabulated rim model, every contact mode, full ranges: stores finite, events in order and in their window, every step within its time budget', () => {
+    property('tabulated', scenario(FULL, ['off', 'on', 'fixed'], true), ['finite', 'events', 'time'], 80, SEED + 21)
+  }, 120_000 * SCALE)
+
+  it('tabulated rim model, contacts on: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
+    property('tabulated overlap', scenario(NO_RUNAWAY, ['on'], true), ['overlap'], 60, SEED + 22)
   }, 120_000 * SCALE)
 
   // with holes: rim rolls start where the ball is (they started on the lip circle, r/2 further out, and could

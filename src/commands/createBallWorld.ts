@@ -6,6 +6,7 @@ import { resolveConfig, type ConfigOverrides } from '../config/design.js'
 import { adoptBall, forgetBall } from '../world/balls.js'
 import { createWorldData, gridThreshold, type BallWorld, type BallWorldOptions } from '../world/createWorld.js'
 import { forgetHole } from './holes.js'
+import { rimTableFor } from '../reference/rimTable.js'
 import { describe, readSpec } from './validate.js'
 import { forgetWalls } from './walls.js'
 
@@ -29,6 +30,11 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     throw new RangeError(`options.capacity must be an integer in [1, ${MAX_CAPACITY}], got ${describe(capacity)}`)
   }
   const world = createWorldData(config, capacity, gridThreshold(broadphase))
+  // the tabulated rim model's table for the config's ball and hole, built now (once per process, about
+  // 100 ms) rather than at the first crossing; other sizes: prepareRimTable
+  if (config.RIM_MODEL === 'tabulated' && config.BALL_RADIUS < config.HOLE_RADIUS) {
+    world.rimTables.push(rimTableFor(config.HOLE_RADIUS / config.BALL_RADIUS, config.BALL_INERTIA))
+  }
   observe(world, onAdd(world.Ball), (eid: number) => adoptBall(world, eid))
   observe(world, onRemove(world.Ball), (eid: number) => forgetBall(world, eid))
   observe(world, onRemove(world.Hole), (eid: number) => forgetHole(world, eid))

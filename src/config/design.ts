@@ -50,7 +50,12 @@ export interface BallPhysicsConfig {
    * 'quadratic' (Penner's fit v_c(δ) = V_MAX·(1 − δ²/R²), so δ_eff = R·√(1 − v/V_MAX)); see docs/physical.md.
    */
   CAPTURE_WINDOW: CaptureWindowShape
-  /** j in I = j·m·r² (2/5 solid, 2/3 thin shell): used only by a hero ball's physical reference. */
+  /**
+   * How a lip crossing is decided: 'stages' (the design's six closed-form stages) or 'tabulated' (a table of
+   * the rigid-sphere reference at the crossing's R/r and BALL_INERTIA: TABULATED_CONFIG, docs/physical.md).
+   */
+  RIM_MODEL: RimModel
+  /** j in I = j·m·r² (2/5 solid, 2/3 thin shell): used by a hero ball's physical reference and the rim table. */
   BALL_INERTIA: number
   /** Largest dt that one step simulates, s; a longer step (a tab that slept) is cut to this. */
   MAX_STEP: number
@@ -78,6 +83,10 @@ export interface BallPhysicsConfig {
    */
   BALL_SETTLE_SPEED: number
 }
+
+/** Rim models (config.RIM_MODEL). */
+export const RIM_MODELS = ['stages', 'tabulated'] as const
+export type RimModel = (typeof RIM_MODELS)[number]
 
 /** Capture window shapes (config.CAPTURE_WINDOW). */
 export const CAPTURE_WINDOW_SHAPES = ['ellipse', 'quadratic'] as const
@@ -113,6 +122,7 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   MAX_VY: 700,
   ROLLING_DECEL: 300,
   CAPTURE_WINDOW: 'ellipse',
+  RIM_MODEL: 'stages',
   BALL_INERTIA: 2 / 5,
   MAX_STEP: 0.25,
   MAX_EVENT_PASSES: 256,
@@ -135,12 +145,13 @@ interface Range {
 }
 
 /** Keys whose value is one of a list of names. */
-export type ChoiceKey = 'CAPTURE_WINDOW' | 'METHOD' | 'BALL_COLLISIONS'
+export type ChoiceKey = 'CAPTURE_WINDOW' | 'RIM_MODEL' | 'METHOD' | 'BALL_COLLISIONS'
 type NumericKey = Exclude<keyof BallPhysicsConfig, ChoiceKey>
 
 /** Allowed values of every key that names a choice. */
 export const CONFIG_CHOICES: Readonly<Record<ChoiceKey, readonly string[]>> = Object.freeze({
   CAPTURE_WINDOW: CAPTURE_WINDOW_SHAPES,
+  RIM_MODEL: RIM_MODELS,
   METHOD: METHODS,
   BALL_COLLISIONS: COLLISION_MODES,
 })
@@ -225,6 +236,9 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
       continue
     }
     out[key as NumericKey] = checkKey(key as NumericKey, value)
+  }
+  if (out.RIM_MODEL !== 'stages' && out.METHOD !== 'exact') {
+    throw new RangeError(`config.RIM_MODEL '${out.RIM_MODEL}' needs config.METHOD 'exact', got '${out.METHOD}'`)
   }
   if (out.BALL_COLLISIONS !== 'off' && out.METHOD !== 'exact') {
     throw new RangeError(`config.BALL_COLLISIONS '${out.BALL_COLLISIONS}' needs config.METHOD 'exact', got '${out.METHOD}'`)

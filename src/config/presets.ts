@@ -19,3 +19,15 @@ export const PHYSICAL_CONFIG: Readonly<ConfigOverrides> = Object.freeze({
    */
   RIM_ROLL_MAX_TURNS: 0.25,
 })
+
+/**
+ * The reference-tabulated rim model: every lip crossing decided by a table of the rigid-sphere reference at
+ * the crossing's geometry (src/reference/rimTable.ts, systems/tabulatedRim.ts) instead of the six stages; a
+ * ball that rolls round the lip rides it for the reference's time. Agrees with the live reference on
+ * capture against escape on 99.98 % of the 180 × 200 (δ, v) grid (docs/physical.md).
+ *
+ *   createBallPhysics(TABULATED_CONFIG)                // or { ...TABULATED_CONFIG, BALL_COLLISIONS: 'on' }
+ */
+export const TABULATED_CONFIG: Readonly<ConfigOverrides> = Object.freeze({
+  RIM_MODEL: 'tabulated',
+})

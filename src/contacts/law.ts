@@ -58,5 +58,8 @@ export function isRepeatContact(w: BallWorld, a: number, b: number): boolean {
 /** The rim mode a struck ball keeps: inside a lip circle it is in transit (its decision there is void). */
 export function strikeLeavesRim(w: BallWorld, eid: number): void {
   const c = w.Ball.rim[eid]!
-  if (c !== 0) w.RimContact.mode[c] = RimMode.Transit
+  if (c !== 0) {
+    w.RimContact.mode[c] = RimMode.Transit
+    w.RimContact.ride[c] = 0
+  }
 }

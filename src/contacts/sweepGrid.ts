@@ -139,10 +139,14 @@ export function sweptCapsule(w: BallWorld, eid: number, from: number, to: number
   const r = w.Ball.radius[eid]!
   if (w.Ball.mode[eid] === BallMode.RimRoll) {
     // anywhere on the contact circle of its hole
-    const hole = w.RimContact.hole[w.Ball.rim[eid]!]!
+    const slot = w.Ball.rim[eid]!
+    const hole = w.RimContact.hole[slot]!
     cap[X1] = cap[X2] = w.Hole.x[hole]!
     cap[Y1] = cap[Y2] = w.Hole.y[hole]!
-    cap[CR] = cogRadius(w.Hole.radius[hole]!, r) + r
+    // a tabulated ride reaches as far out as the farther of its two ends
+    const RC = w.RimContact
+    const far = RC.ride[slot] !== 0 ? Math.max(RC.rideFrom[slot]!, RC.rideTo[slot]!) : cogRadius(w.Hole.radius[hole]!, r)
+    cap[CR] = far + r
     return
   }
   E[AT] = from

@@ -2,7 +2,7 @@
 // start of a roll and its end (drop or pop-off), exact for every dt.
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
-import { RimMode } from '../../components/RimContact.js'
+import { RIDE_ACROSS, RimMode } from '../../components/RimContact.js'
 import { cogRadius, popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { setBallMode } from '../world/ballMode.js'
@@ -13,6 +13,14 @@ export function planRimRoll(w: BallWorld, eid: number): void {
   const cfg = w.config
   const slot = w.Ball.rim[eid]!
   const hole = RC.hole[slot]!
+  if (RC.ride[slot] !== 0) {
+    // a tabulated ride ends when its time is up (systems/tabulatedRim.ts decides what then)
+    const P = w.Path
+    P.nextKind[eid] = PathEvent.RollEnd
+    P.nextHole[eid] = hole
+    P.nextT[eid] = RC.time0[slot]! + RC.rideTime[slot]!
+    return
+  }
   const vt0 = RC.speed0[slot]!
   const tDrop = rollDropTime(vt0, cfg.RIM_ROLL_FRICTION, cfg.RIM_ROLL_DROP_SPEED)
   const tPop = rollPopTime(vt0, cfg.RIM_ROLL_FRICTION, popArc(cfg.RIM_ROLL_MAX_TURNS, w.Hole.radius[hole]!))
@@ -45,6 +53,10 @@ export function rimRollAt(w: BallWorld, eid: number, t: number): void {
   const RC = w.RimContact
   const slot = w.Ball.rim[eid]!
   const hole = RC.hole[slot]!
+  if (RC.ride[slot] !== 0) {
+    rideAt(w, slot, hole, t)
+    return
+  }
   const R = cogRadius(w.Hole.radius[hole]!, w.Ball.radius[eid]!)
   const vt0 = RC.speed0[slot]!
   const mu = w.config.RIM_ROLL_FRICTION
@@ -65,6 +77,60 @@ export function rimRollAt(w: BallWorld, eid: number, t: number): void {
   o.angle = phi
   o.arc = arc
   o.radius = R
+}
+
+/**
+ * A tabulated ride at time t into rimRollState: the centre turns at a steady rate while its distance from
+ * the hole centre moves linearly from rideFrom to rideTo (an animation of the reference's outcome, whose
+ * start and end are the reference's: the lip crossing and the exit point or the drop).
+ */
+function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
+  const RC = w.RimContact
+  const T = RC.rideTime[slot]!
+  let tau = t - RC.time0[slot]!
+  if (tau < 0) tau = 0
+  else if (tau > T) tau = T
+  const f = T > 0 ? tau / T : 1
+  const turn = RC.rideTurn[slot]!
+  const dir = RC.direction[slot]!
+  const from = RC.rideFrom[slot]!
+  const to = RC.rideTo[slot]!
+  const o = rimRollState
+  if (RC.ride[slot] === RIDE_ACROSS) {
+    // straight from the crossing to the exit point
+    const a0 = RC.angle0[slot]!
+    const a1 = a0 + dir * turn
+    const x0 = from * Math.cos(a0)
+    const y0 = from * Math.sin(a0)
+    const x1 = to * Math.cos(a1)
+    const y1 = to * Math.sin(a1)
+    const px = x0 + (x1 - x0) * f
+    const py = y0 + (y1 - y0) * f
+    o.x = w.Hole.x[hole]! + px
+    o.y = w.Hole.y[hole]! + py
+    o.vx = T > 0 ? (x1 - x0) / T : 0
+    o.vy = T > 0 ? (y1 - y0) / T : 0
+    o.speed = Math.sqrt(o.vx * o.vx + o.vy * o.vy)
+    o.angle = Math.atan2(py, px)
+    o.arc = o.speed * tau
+    o.radius = Math.sqrt(px * px + py * py)
+    return
+  }
+  const phi = RC.angle0[slot]! + dir * turn * f
+  const rho = from + (to - from) * f
+  const c = Math.cos(phi)
+  const s = Math.sin(phi)
+  // d(phi)/dt and d(rho)/dt
+  const wPhi = T > 0 ? (dir * turn) / T : 0
+  const wRho = T > 0 ? (to - from) / T : 0
+  o.x = w.Hole.x[hole]! + rho * c
+  o.y = w.Hole.y[hole]! + rho * s
+  o.vx = wRho * c - rho * s * wPhi
+  o.vy = wRho * s + rho * c * wPhi
+  o.speed = Math.sqrt(o.vx * o.vx + o.vy * o.vy)
+  o.angle = phi
+  o.arc = rho * turn * f
+  o.radius = rho
 }
 
 /** Ball state at time t on the rim (rimRollAt), written into Ball, RimContact and Path. */

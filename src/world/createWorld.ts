@@ -25,6 +25,7 @@ import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { createHoleTable, type HoleTable } from './holeTable.js'
 import { createIdList, type IdList, type MovingSet } from './idLists.js'
+import type { RimTable } from '../reference/rimTable.js'
 
 export type { HoleTable } from './holeTable.js'
 export type { IdList, MovingSet } from './idLists.js'
@@ -48,6 +49,8 @@ export interface BallWorldData {
   entityIndex: EntityIndex
   /** RimContact slots given back, for reuse */
   rimFree: IdList
+  /** the tabulated rim model's tables this world may use (its config's, and those prepareRimTable added) */
+  rimTables: RimTable[]
   /** next RimContact slot never handed out (slot 0 is the empty row) */
   rimNext: number
   /** tag: the entity is a hole */
@@ -123,6 +126,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     moving: { count: 0, dense: new Uint32Array(256), sparse: new Uint32Array(capacity), churn: 0, spare: new Uint32Array(256) },
     entityIndex,
     rimFree: createIdList(SMALL_STORE),
+    rimTables: [],
     rimNext: 1,
     IsHole: {},
     capacity,

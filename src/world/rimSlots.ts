@@ -58,6 +58,13 @@ export function releaseRim(world: BallWorld, eid: number): void {
   RC.speed0[slot] = 0
   RC.direction[slot] = 0
   RC.time0[slot] = 0
+  RC.ride[slot] = 0
+  RC.rideTurn[slot] = 0
+  RC.rideTime[slot] = 0
+  RC.rideFrom[slot] = 0
+  RC.rideTo[slot] = 0
+  RC.exitVx[slot] = 0
+  RC.exitVy[slot] = 0
   pushId(world.rimFree, slot)
   world.Ball.rim[eid] = 0
 }

@@ -1,0 +1,208 @@
+// The reference-tabulated rim model (RIM_MODEL 'tabulated', TABULATED_CONFIG): its table against the live
+// reference, its shipped capture rows, and what a ball does at a tabulated crossing.
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_CONFIG, TABULATED_CONFIG, createBallPhysics, prepareRimTable, type BallEvent } from '../src/index'
+import { timeBudget } from './helpers'
+import { agreement, engineMap, gameGrid, referenceMap } from '../src/physical/agreement'
+import { RimKind, TABLE_ROWS, buildRimTable, captureRows, captureSpeedAt, crossingAngle, outcomeAt, rimOut, rimTableFor } from '../src/reference/rimTable'
+import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from '../src/reference/rimTableRows'
+import { referenceOutcome } from '../src/reference/index'
+
+const cfg = DEFAULT_CONFIG
+const R = cfg.HOLE_RADIUS
+const r = cfg.BALL_RADIUS
+const g = cfg.GRAVITY
+
+/** One hole at the origin, one ball on +x at offset d that crosses the lip at speed v (no rolling loss). */
+function shot(d: number, v: number, overrides = {}) {
+  const sim = createBallPhysics({ ...TABULATED_CONFIG, ROLLING_DECEL: 0, ...overrides })
+  sim.addHole({ x: 0, y: 0 })
+  const lipX = -Math.sqrt(R * R - d * d)
+  const ball = sim.addBall({ x: lipX - 30, y: d, vx: v, vy: 0 })
+  return { sim, ball, lipTime: 30 / v }
+}
+
+function run(sim: ReturnType<typeof shot>['sim'], dt: number, seconds: number): BallEvent[] {
+  const out: BallEvent[] = []
+  while (sim.time < seconds - 1e-12) {
+    sim.step(Math.min(dt, seconds - sim.time))
+    out.push(...sim.drainEvents())
+  }
+  return out
+}
+
+describe('the rim table', () => {
+  it('ships the capture rows of the design geometry, and recomputing them gives the same bits', () => {
+    expect(SHIPPED_RATIO).toBe(R / r)
+    expect(SHIPPED_INERTIA).toBe(cfg.BALL_INERTIA)
+    expect(SHIPPED_ROWS.length).toBe(TABLE_ROWS)
+    const rows = captureRows(R / r, cfg.BALL_INERTIA)
+    expect(Array.from(rows)).toEqual(SHIPPED_ROWS)
+    // and the table built from scratch is the table built from the shipped rows
+    const a = buildRimTable(R / r, cfg.BALL_INERTIA, rows)
+    const b = rimTableFor(R / r, cfg.BALL_INERTIA)
+    expect(Array.from(a.values)).toEqual(Array.from(b.values))
+    expect(Array.from(a.kind)).toEqual(Array.from(b.kind))
+  }, 60_000)
+
+  it('decides capture as the live reference on ≥ 99.5 % of a grid offset from its nodes, through the engine', () => {
+    // 47 × 53 cells: no cell centre on a table row or node
+    const grid = gameGrid(47, 53)
+    const ref = referenceMap(grid, r, g, cfg.BALL_INERTIA)
+    const tab = engineMap(grid, TABULATED_CONFIG)
+    const design = engineMap(grid, {})
+    const a = agreement(tab, ref.map)
+    expect(a).toBeGreaterThanOrEqual(0.995)
+    // far ahead of the design's six stages on the same cells (measured 82 %)
+    expect(a - agreement(design, ref.map)).toBeGreaterThan(0.1)
+  }, 60_000)
+
+  it('the boundary per row: just below v_c captures, just above escapes, in the reference itself', () => {
+    const t = rimTableFor(R / r, cfg.BALL_INERTIA)
+    for (const d of [0, 3, 7.7, 12, 16.5]) {
+      const vc = captureSpeedAt(t, d / r) * Math.sqrt(g * r)
+      const input = { delta: d, speed: vc * 0.99, holeRadius: R, ballRadius: r, gravity: g, inertia: cfg.BALL_INERTIA }
+      expect(referenceOutcome(input).captured, `δ = ${d}`).toBe(true)
+      input.speed = vc * 1.01
+      expect(referenceOutcome(input).captured, `δ = ${d}`).toBe(false)
+    }
+  })
+
+  it('interpolates within one outcome kind: a roll-out never exits inside the lip circle', () => {
+    const t = rimTableFor(R / r, cfg.BALL_INERTIA)
+    for (let d = 8; d < 17; d += 0.37) {
+      const ds = d / r
+      for (let v = 150; v < 400; v += 13) {
+        const vs = v / Math.sqrt(g * r)
+        const captured = vs <= captureSpeedAt(t, ds)
+        outcomeAt(t, ds, vs, captured)
+        // (it leaves on the lip circle, or lands beyond it after a hop)
+        if (rimOut.kind === RimKind.Rolled) expect(rimOut.exitRadius * r).toBeGreaterThanOrEqual(R * (1 - 1e-9))
+        expect(Number.isFinite(rimOut.time) && rimOut.time >= 0).toBe(true)
+      }
+    }
+    expect(crossingAngle(R / r, 0)).toBeCloseTo(Math.PI, 12)
+  })
+
+  it('rejects a geometry the reference cannot run, naming the field', () => {
+    expect(() => buildRimTable(0.9, 0.4)).toThrow(/ratio .* must be in \(1, ∞\)/)
+    expect(() => buildRimTable(1.5, 0.9)).toThrow(/inertia must be in \(0, 2\/3\]/)
+    expect(() => createBallPhysics({ RIM_MODEL: 'lookup' as never })).toThrow(/RIM_MODEL must be one of 'stages', 'tabulated'/)
+    expect(() => createBallPhysics({ RIM_MODEL: 'tabulated', METHOD: 'naive' })).toThrow(/RIM_MODEL 'tabulated' needs config.METHOD 'exact'/)
+  })
+})
+
+describe('a ball at a tabulated crossing', () => {
+  it('rolls round the lip and out: rides the lip circle for the reference’s time, to the reference’s exit', () => {
+    const d = 10
+    const v = 300
+    const { sim, ball, lipTime } = shot(d, v)
+    const ref = referenceOutcome({ delta: d, speed: v, holeRadius: R, ballRadius: r, gravity: g, inertia: cfg.BALL_INERTIA })
+    expect(ref.ending).toBe('rolledOut')
+    const events: BallEvent[] = []
+    let lastAngle = Infinity
+    let samples = 0
+    while (sim.time < lipTime + ref.duration + 0.05) {
+      sim.step(1 / 240)
+      events.push(...sim.drainEvents())
+      const st = sim.ballState(ball)
+      if (st.mode !== 'rimRoll') continue
+      // on the lip circle, turning one way (the ball passes above the hole, y down: the angle falls)
+      samples++
+      expect(Math.hypot(st.x, st.y)).toBeCloseTo(R, 6)
+      const a = Math.atan2(st.y, st.x)
+      const unwrapped = a > lastAngle + Math.PI ? a - 2 * Math.PI : a
+      expect(unwrapped).toBeLessThan(lastAngle)
+      lastAngle = unwrapped
+    }
+    expect(samples).toBeGreaterThan(30)
+    expect(events.map((e) => e.type)).toEqual(['rimRoll', 'lipOut', 'nearMiss'])
+    expect(events[0]!.time).toBeCloseTo(lipTime, 12)
+    // the ride lasts the reference's time within the table's interpolation (measured 2.6 % here, 40 px/s
+    // above the capture speed, where the time changes fastest)
+    expect(Math.abs(events[1]!.time - lipTime - ref.duration)).toBeLessThan(0.05 * ref.duration)
+    // leaves near the reference's exit point, at its exit speed
+    const st = sim.ballState(ball)
+    const back = sim.time - events[1]!.time
+    // (measured 2.6 px after 4.5 rad round the lip: the turn is interpolated on a grid of 32 × 64 nodes)
+    expect(Math.hypot(st.x - st.vx * back - ref.exitX!, st.y - st.vy * back - ref.exitY!)).toBeLessThan(3.5)
+    expect(Math.abs(Math.hypot(st.vx, st.vy) - ref.exitSpeed!)).toBeLessThan(0.01 * v)
+  })
+
+  it('rolls round the lip and drops in: rimRoll, then capture via rimRoll at the end of the ride', () => {
+    const { sim, ball, lipTime } = shot(14, 120)
+    const ref = referenceOutcome({ delta: 14, speed: 120, holeRadius: R, ballRadius: r, gravity: g, inertia: cfg.BALL_INERTIA })
+    expect(ref.captured).toBe(true)
+    const ev = run(sim, 1 / 60, 1)
+    expect(ev.map((e) => `${e.type}${e.via ? '/' + e.via : ''}`)).toEqual(['rimRoll', 'capture/rimRoll'])
+    expect(Math.abs(ev[1]!.time - lipTime - ref.duration)).toBeLessThan(0.01 * ref.duration)
+    expect(sim.ballState(ball).mode).toBe('captured')
+  })
+
+  it('a clean drop is captured at the crossing; a fast ball beyond the table asks the live reference', () => {
+    const a = shot(2, 200)
+    expect(run(a.sim, 1 / 60, 1).map((e) => `${e.type}/${e.via}`)).toEqual(['capture/clean'])
+    const b = shot(3, 3000)
+    const ev = run(b.sim, 1 / 60, 0.2)
+    const ref = referenceOutcome({ delta: 3, speed: 3000, holeRadius: R, ballRadius: r, gravity: g, inertia: cfg.BALL_INERTIA })
+    expect(ref.captured).toBe(false)
+    expect(ev.map((e) => e.type)).toEqual(ref.impacts === 0 ? ['skip'] : ['bounce', 'nearMiss'])
+    expect(ev[0]!.time).toBeCloseTo(b.lipTime, 12)
+  })
+
+  it('the same events, bit for bit, at 30, 60 and 240 Hz (a ride ends at its time, not at a tick)', () => {
+    const scene = (dt: number) => {
+      const sim = createBallPhysics({ ...TABULATED_CONFIG })
+      for (let i = 0; i < 5; i++) for (let j = 0; j < 4; j++) sim.addHole({ x: 60 + 80 * i, y: 60 + 80 * j })
+      for (let n = 0; n < 200; n++) sim.addBall({ x: 20 + ((n * 37) % 380), y: 330, vx: ((n * 13) % 41) - 20, vy: -(150 + ((n * 29) % 500)) })
+      return JSON.stringify(run(sim, dt, 2))
+    }
+    const at60 = scene(1 / 60)
+    expect(at60).toContain('rimRoll')
+    expect(at60).toContain('lipOut')
+    expect(scene(1 / 30)).toBe(at60)
+    expect(scene(1 / 240)).toBe(at60)
+  })
+
+  it('with contacts on, a ball struck while it rides leaves the lip in transit, and every state stays finite', () => {
+    const { sim, ball } = shot(10, 300, { BALL_COLLISIONS: 'on' })
+    run(sim, 1 / 120, 0.15)
+    expect(sim.ballState(ball).mode).toBe('rimRoll')
+    const p = sim.ballState(ball)
+    // a striker aimed at the riding ball's position a little later
+    const striker = sim.addBall({ x: p.x, y: p.y - 60, vx: 0, vy: 900 })
+    const ev = run(sim, 1 / 120, 0.6)
+    expect(ev.some((e) => e.type === 'collision')).toBe(true)
+    for (const b of [ball, striker]) {
+      const st = sim.ballState(b)
+      expect(Number.isFinite(st.x) && Number.isFinite(st.y) && Number.isFinite(st.vx) && Number.isFinite(st.vy)).toBe(true)
+      expect(st.mode).not.toBe('rimRoll')
+    }
+  })
+
+  it('another ball size: the live reference decides until prepareRimTable gives the world its table', () => {
+    const small = 7
+    const cases: Array<[number, number]> = [
+      [4, 150],
+      [12, 300],
+    ]
+    const outcomes = (prepare: boolean) => {
+      const sim = createBallPhysics({ ...TABULATED_CONFIG, ROLLING_DECEL: 0 })
+      if (prepare) expect(prepareRimTable(sim, R, small, { rows: 'lazy' })).toBeLessThan(timeBudget(1000))
+      sim.addHole({ x: 0, y: 0 })
+      return cases.map(([d, v]) => {
+        const b = sim.addBall({ x: -Math.sqrt(R * R - d * d) - 20, y: d, vx: v, vy: 0, radius: small })
+        for (let i = 0; i < 120; i++) sim.step(1 / 60)
+        sim.drainEvents()
+        return sim.ballState(b).mode === 'captured'
+      })
+    }
+    const expected = cases.map(([d, v]) => referenceOutcome({ delta: d, speed: v, holeRadius: R, ballRadius: small, gravity: g, inertia: cfg.BALL_INERTIA }).captured)
+    expect(outcomes(false)).toEqual(expected)
+    expect(outcomes(true)).toEqual(expected)
+    const sim = createBallPhysics(TABULATED_CONFIG)
+    expect(() => prepareRimTable(sim, 18, 18)).toThrow(/ballRadius must be in \(0, holeRadius\)/)
+    expect(() => prepareRimTable(sim, -1, 5)).toThrow(/holeRadius must be a finite number/)
+    expect(() => prepareRimTable(sim, 18, 5, { rows: 'later' as never })).toThrow(/options.rows must be 'now' or 'lazy'/)
+  }, 60_000)
+})
