@@ -338,6 +338,19 @@ async function main(): Promise<void> {
     get eventsSeen() {
       return game.eventsSeen
     },
+    /** balls riding or rolling on a lip now: distance of the centre from the hole's, and angle about it */
+    get lipRiders() {
+      const w = game.sim.world
+      const out: Array<{ ball: number; distance: number; angle: number }> = []
+      for (const b of game.sim.balls()) {
+        if (game.sim.ballState(b).mode !== 'rimRoll') continue
+        const hole = w.RimContact.hole[w.Ball.rim[b]!]!
+        const dx = w.Ball.x[b]! - w.Hole.x[hole]!
+        const dy = w.Ball.y[b]! - w.Hole.y[hole]!
+        out.push({ ball: b, distance: Math.hypot(dx, dy), angle: Math.atan2(dy, dx) })
+      }
+      return out
+    },
     get eventCounts() {
       return { ...game.eventCounts }
     },

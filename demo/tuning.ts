@@ -2,7 +2,7 @@
 // simulation with it (createBallPhysics + addPanel), so the message shown is the core's own RangeError;
 // a valid set waits in game.pending and takes effect at the next throw, burst or new game.
 import GUI, { type Controller } from 'lil-gui'
-import { CONFIG_CHOICES, DEFAULT_CONFIG, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
+import { CONFIG_CHOICES, DEFAULT_CONFIG, PHYSICAL_CONFIG, TABULATED_CONFIG, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
 import { Game } from './game'
 
 type Key = keyof BallPhysicsConfig
@@ -80,6 +80,15 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
     c.onFinishChange((v: unknown) => change(key, v))
     controllers.set(key, c)
   }
+  const preset = (p: Readonly<ConfigOverrides>): void => {
+    const result = Game.validate(p)
+    if (!result.ok) return
+    overrides = { ...p }
+    error = ''
+    game.setPending(overrides)
+    sync(result.config)
+    show()
+  }
   const actions = {
     designValues: (): void => {
       overrides = {}
@@ -88,6 +97,9 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
       sync(DEFAULT_CONFIG)
       show()
     },
+    /** a preset over the design values (pending like any change) */
+    physicalPreset: (): void => preset(PHYSICAL_CONFIG),
+    tabulatedPreset: (): void => preset(TABULATED_CONFIG),
     applyNow: (): void => {
       if (error) return
       game.reset()
@@ -95,6 +107,8 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
     },
   }
   gui.add(actions, 'designValues').name('Reset to design values').domElement.dataset.key = 'designValues'
+  gui.add(actions, 'physicalPreset').name('Physical preset (fitted stages)').domElement.dataset.key = 'physicalPreset'
+  gui.add(actions, 'tabulatedPreset').name('Tabulated reference (rides the lip)').domElement.dataset.key = 'tabulatedPreset'
   gui.add(actions, 'applyNow').name('Apply now (new game)').domElement.dataset.key = 'applyNow'
   show()
   return { gui, update: show, set: change }

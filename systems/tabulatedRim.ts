@@ -24,7 +24,7 @@ import { CaptureVia, EventType } from '../src/events.js'
 import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRimRoll, sampleRimRoll } from '../src/motion/rimRoll.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
-import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, crossingAngle, outcomeAt, rimOut, type RimTable } from '../src/reference/rimTable.js'
+import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, crossingAngle, exitAngleFrom, exitRelative, outcomeAt, rimOut, type RimTable } from '../src/reference/rimTable.js'
 import { simulateScaled } from '../src/reference/sphereLip.js'
 import { cogRadius } from '../src/geometry.js'
 import { lockAtLip } from '../src/world/rimSlots.js'
@@ -91,8 +91,9 @@ function decideCrossing(w: BallWorld, eid: number): void {
       while (turn + Math.PI < live.turnAngle) turn += 2 * Math.PI
       o.exitTurn = turn
       o.exitRadius = Math.sqrt(live.exitX! * live.exitX! + live.exitY! * live.exitY!)
-      o.exitCos = Math.cos(live.exitAngle!)
-      o.exitSin = Math.sin(live.exitAngle!)
+      const rel = exitRelative(live.exitAngle!, crossingAngle(R / r, ds), turn)
+      o.exitCos = Math.cos(rel)
+      o.exitSin = Math.sin(rel)
       o.exitSpeed = live.exitSpeed!
     }
   } else {
@@ -126,9 +127,14 @@ function decideCrossing(w: BallWorld, eid: number): void {
   if (o.kind !== RimKind.Captured) {
     turn = o.exitTurn
     to = o.exitRadius * r
-    const dx = o.exitCos * ux + o.exitSin * ex
-    const dy = o.exitCos * uy + o.exitSin * ey
-    const vOut = o.exitSpeed * vScale
+    // the exit direction in the reference's frame, then in the world's
+    const A = exitAngleFrom(Math.atan2(o.exitSin, o.exitCos), crossingAngle(R / r, ds), turn)
+    const ca = Math.cos(A)
+    const sa = Math.sin(A)
+    const dx = ca * ux + sa * ex
+    const dy = ca * uy + sa * ey
+    // the reference never leaves faster than it came (no energy is put in); the interpolation could, by a hair
+    const vOut = Math.min(o.exitSpeed * vScale, v)
     RC.exitVx[slot] = dx * vOut
     RC.exitVy[slot] = dy * vOut
   }

@@ -2,7 +2,7 @@
 // just inside the drawn window is captured clean, one just outside is not (under PHYSICAL_CONFIG the
 // window is quadratic; an overlay that fell back to the design's ellipse would fail here).
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_CONFIG, PHYSICAL_CONFIG, resolveConfig, type ConfigOverrides } from '../src/index'
+import { DEFAULT_CONFIG, PHYSICAL_CONFIG, TABULATED_CONFIG, resolveConfig, type ConfigOverrides } from '../src/index'
 import { regimeCurves } from '../demo/regimeCurves'
 import { settle, shoot } from './helpers'
 
@@ -36,6 +36,26 @@ describe.each([
       checked++
     }
     expect(checked).toBeGreaterThan(10)
+  })
+})
+
+describe('regime overlay under TABULATED_CONFIG', () => {
+  const config = resolveConfig(TABULATED_CONFIG)
+  const curves = regimeCurves(config, 60, 700)
+
+  it("draws the table's capture speed where the engine's capture decision changes (clean or after a roll)", () => {
+    const captured = (delta: number, speed: number) => {
+      const { sim, ball } = shoot(delta, speed, TABULATED_CONFIG)
+      return settle(sim, 1 / 240, 5).some((e) => e.ball === ball && e.type === 'capture')
+    }
+    let checked = 0
+    for (const p of curves.window.slice(1, -1)) {
+      if (p.speed >= 700 || p.delta > config.HOLE_RADIUS - 0.2) continue
+      expect(captured(p.delta, p.speed * 0.99), `below at (${p.delta}, ${p.speed})`).toBe(true)
+      expect(captured(p.delta, p.speed * 1.01), `above at (${p.delta}, ${p.speed})`).toBe(false)
+      checked++
+    }
+    expect(checked).toBeGreaterThan(40)
   })
 })
 

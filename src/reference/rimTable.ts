@@ -66,8 +66,23 @@ export interface RimTable {
   readonly buildMs: number
 }
 
-/** Where an outcome lookup writes (scaled units; exit values only for escapes). Module scratch: no allocation. */
+/**
+ * Where an outcome lookup writes (scaled units; exit values only for escapes; exitCos and exitSin give the
+ * exit direction relative to the tangent at the exit point: exitRelative). Module scratch: no allocation.
+ */
 export const rimOut = { kind: 0 as RimKindCode, turn: 0, time: 0, exitTurn: 0, exitRadius: 0, exitCos: 1, exitSin: 0, exitSpeed: 0 }
+
+/**
+ * The exit direction `exitAngle` (reference frame) relative to the tangent of the circle about the hole at
+ * the exit point, taken the way the ball turns (the angle falls): the exit point lies at psi0 − exitTurn,
+ * where that tangent points at psi0 − exitTurn − π/2. exitAngleFrom undoes it.
+ */
+export function exitRelative(exitAngle: number, psi0: number, exitTurn: number): number {
+  return exitAngle - (psi0 - exitTurn - Math.PI / 2)
+}
+export function exitAngleFrom(relative: number, psi0: number, exitTurn: number): number {
+  return relative + (psi0 - exitTurn - Math.PI / 2)
+}
 
 /**
  * The angle of the crossing point about the hole centre in the reference's frame (the ball comes along +x at
@@ -126,8 +141,11 @@ export function buildRimTable(ratio: number, inertia: number, rows?: Float64Arra
         while (turn + Math.PI < o.turnAngle) turn += 2 * Math.PI
         values[at + EXIT_TURN] = turn
         values[at + EXIT_RADIUS] = Math.sqrt(o.exitX! * o.exitX! + o.exitY! * o.exitY!)
-        values[at + EXIT_COS] = Math.cos(o.exitAngle!)
-        values[at + EXIT_SIN] = Math.sin(o.exitAngle!)
+        // the exit direction relative to the lip's tangent at the exit point (the way the ball turns): smooth
+        // from node to node even where the exit point itself swings round the hole
+        const rel = exitRelative(o.exitAngle!, crossingAngle(ratio, ds), turn)
+        values[at + EXIT_COS] = Math.cos(rel)
+        values[at + EXIT_SIN] = Math.sin(rel)
         values[at + EXIT_SPEED] = o.exitSpeed!
       }
     }
@@ -244,7 +262,8 @@ export function outcomeAt(t: RimTable, ds: number, vs: number, captured: boolean
     for (let c = 0; c < 4; c++) {
       const n = (i + (c >> 1)) * nV + k + (c & 1)
       const kc = kinds[n]!
-      if (kc === RimKind.Captured) continue
+      // a node where a guard stopped the reference has no outcome to lend
+      if (kc === RimKind.Captured || kc === RimKind.Guarded) continue
       const wgt = ((c >> 1) === 1 ? ud : 1 - ud) * ((c & 1) === 1 ? uv : 1 - uv)
       if (wgt > best) {
         best = wgt
@@ -312,11 +331,11 @@ function nearestKind(t: RimTable, i: number, k: number, captured: boolean): numb
   for (let d = 0; d < nV; d++) {
     if (k + d < nV) {
       const kc = t.kind[i * nV + k + d]!
-      if ((kc === RimKind.Captured) === captured) return kc
+      if (kc !== RimKind.Guarded && (kc === RimKind.Captured) === captured) return kc
     }
     if (k - d >= 0) {
       const kc = t.kind[i * nV + k - d]!
-      if ((kc === RimKind.Captured) === captured) return kc
+      if (kc !== RimKind.Guarded && (kc === RimKind.Captured) === captured) return kc
     }
   }
   return RimKind.Guarded
@@ -358,6 +377,17 @@ export function prepareRimTable(
   if (rows === 'now') fillCaptureRows(t)
   if (!w.rimTables.includes(t)) w.rimTables.push(t)
   return performance.now() - t0
+}
+
+/**
+ * The tabulated model's capture speed at offset `delta`, px/s: the largest lip-crossing speed its table
+ * captures at that offset (for overlays and charts; builds the geometry's table if need be).
+ */
+export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRadius: number, gravity: number, inertia = 2 / 5): number {
+  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
+  if (!(delta >= 0 && delta < holeRadius)) throw new RangeError(`delta must be in [0, holeRadius), got ${delta}`)
+  const t = rimTableFor(holeRadius / ballRadius, inertia)
+  return captureSpeedAt(t, delta / ballRadius) * Math.sqrt(gravity * ballRadius)
 }
 
 /** Tables built so far, by R/r and j (each is immutable, but for rows found late, and shared by every world). */

@@ -47,6 +47,7 @@ interface DemoHook {
   config: Record<string, unknown>
   simTime: number
   worstOverlap: number
+  lipRiders: { ball: number; distance: number; angle: number }[]
   toPage(x: number, y: number): { x: number; y: number }
   aim(angle: number): void
   charge(power: number): void
@@ -280,6 +281,31 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await expect.poll(() => page.textContent('#tuning-status')).toMatch(/BALL_COLLISIONS/)
     await page.click('#multi-100')
     await page.waitForFunction(() => (window.__demo.eventCounts.collision ?? 0) > 0, null, { timeout: 20_000 })
+    await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
+    expect(problems).toEqual([])
+  })
+
+  it('the tabulated preset from the tuning panel: balls ride round the lip circle (no jump to the exit), then drop in or roll out', async () => {
+    await page.locator('[data-key="tabulatedPreset"] button, [data-key="tabulatedPreset"]').first().click()
+    await expect.poll(() => page.textContent('#tuning-status')).toMatch(/Valid/)
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await expect.poll(() => page.evaluate(() => window.__demo.config.RIM_MODEL)).toBe('tabulated')
+    await page.click('#multi-100')
+    // one ball seen riding at three frames: on the lip circle (R = 18), at three different angles
+    const seen = new Map<number, { distance: number; angle: number }[]>()
+    let rider: { distance: number; angle: number }[] | undefined
+    for (let frame = 0; frame < 600 && rider === undefined; frame++) {
+      for (const r of await page.evaluate(() => window.__demo.lipRiders)) {
+        const list = seen.get(r.ball) ?? []
+        if (list.length === 0 || list[list.length - 1]!.angle !== r.angle) list.push(r)
+        seen.set(r.ball, list)
+        if (list.length >= 3 && list.every((p) => Math.abs(p.distance - 18) < 1e-6)) rider = list
+      }
+    }
+    expect(rider, 'a ball riding the lip circle at three frames').toBeDefined()
+    await page.waitForFunction(() => (window.__demo.eventCounts.lipOut ?? 0) > 0 && (window.__demo.eventCounts.rimRoll ?? 0) > 0, null, { timeout: 20_000 })
     await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
     await page.click('#clear-balls')
