@@ -24,7 +24,7 @@ import {
   type DeltaSpeedGrid,
 } from '../src/physical/agreement'
 import { PHYSICAL_CONFIG, TABULATED_CONFIG } from '../src/config/presets'
-import { captureRows, rimTableFor } from '../src/reference/rimTable'
+import { ROLL_TURN, RimKind, captureRows, captureSpeedAt, crossingAngle, exitAngleFrom, outcomeAt, rimOut, rimTableFor } from '../src/reference/rimTable'
 import { v1Schedule } from '../src/schedule'
 import { referenceCaptureSpeed, referenceOutcome } from '../src/reference/index'
 import type { ScheduleEntry } from '../src/schedule'
@@ -66,6 +66,42 @@ const rowsAgain = captureRows(R / r, J)
 const rowsMs = performance.now() - t0
 const rowsSame = rowsAgain.every((v, i) => v === table0.vc[i])
 log(`rim table (R/r = ${(R / r).toFixed(4)}, j = ${J}): outcome grid built in ${table0.buildMs.toFixed(0)} ms (capture rows shipped); the rows computed again in ${rowsMs.toFixed(0)} ms, ${rowsSame ? 'bit-identical to the shipped ones' : 'DIFFERENT from the shipped ones: run npm run rim-table'}`)
+
+// the table's escapes against the reference's on the fine grid: exit point, direction, speed and time
+const quantile = (a: number[], p: number) => [...a].sort((x, y) => x - y)[Math.floor(p * (a.length - 1))]!
+const exitErrors = (() => {
+  const rs = R / r
+  const vScale = Math.sqrt(G * r)
+  const point: number[] = []
+  const dir: number[] = []
+  const speed: number[] = []
+  const time: number[] = []
+  let kindSame = 0
+  for (let i = 0; i < FINE.nDelta; i++) {
+    for (let k = 0; k < FINE.nSpeed; k++) {
+      const ds = gridDelta(FINE, i) / r
+      const vs = gridSpeed(FINE, k) / vScale
+      const o = referenceOutcome({ delta: gridDelta(FINE, i), speed: gridSpeed(FINE, k), holeRadius: R, ballRadius: r, gravity: G, inertia: J })
+      if (o.captured || o.ending.endsWith('Limit') || vs <= captureSpeedAt(table0, ds)) continue
+      outcomeAt(table0, ds, vs, false)
+      const psi = crossingAngle(rs, ds) - rimOut.exitTurn
+      point.push(Math.hypot(rimOut.exitRadius * r * Math.cos(psi) - o.exitX!, rimOut.exitRadius * r * Math.sin(psi) - o.exitY!))
+      let dA = Math.abs(exitAngleFrom(Math.atan2(rimOut.exitSin, rimOut.exitCos), crossingAngle(rs, ds), rimOut.exitTurn) - o.exitAngle!) % (2 * Math.PI)
+      if (dA > Math.PI) dA = 2 * Math.PI - dA
+      dir.push(dA)
+      speed.push(Math.abs(rimOut.exitSpeed * vScale - o.exitSpeed!))
+      time.push(Math.abs(rimOut.time * Math.sqrt(r / G) - o.duration) / o.duration)
+      const kind = o.turnAngle >= ROLL_TURN ? RimKind.Rolled : o.impacts > 0 ? RimKind.Bounced : RimKind.Skipped
+      if (kind === rimOut.kind) kindSame++
+    }
+  }
+  const q = (a: number[]) => ({ median: quantile(a, 0.5), p90: quantile(a, 0.9), p99: quantile(a, 0.99) })
+  return { escapes: point.length, kindAgreement: kindSame / point.length, exitPointPx: q(point), exitDirectionRad: q(dir), exitSpeedPxPerS: q(speed), timeRelative: q(time) }
+})()
+log(
+  `rim table escapes against the reference (${exitErrors.escapes} cells): kind ${(100 * exitErrors.kindAgreement).toFixed(1)} %; exit point median ${exitErrors.exitPointPx.median.toFixed(2)} px (p90 ${exitErrors.exitPointPx.p90.toFixed(1)}, p99 ${exitErrors.exitPointPx.p99.toFixed(1)}); ` +
+    `direction median ${exitErrors.exitDirectionRad.median.toFixed(4)} rad (p90 ${exitErrors.exitDirectionRad.p90.toFixed(3)}); speed median ${exitErrors.exitSpeedPxPerS.median.toFixed(2)} px/s (p90 ${exitErrors.exitSpeedPxPerS.p90.toFixed(1)}); time median ${(100 * exitErrors.timeRelative.median).toFixed(2)} % (p90 ${(100 * exitErrors.timeRelative.p90).toFixed(1)} %)`,
+)
 
 // ---- §3 the fit: coarse search over shape × V_MAX × RIM_ROLL_MAX_TURNS, then a finer look on the fine grid ----
 const TURNS = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.565]
@@ -339,7 +375,7 @@ const result = {
   agreement: table,
   costPerRimContactUs: { wholeContact: { ...shot, referenceAlone: costs.referenceAlone }, marginal: costs, sample: SAMPLE, repeats: REPEATS, contactStep: CONTACT_TIME },
   scene: sceneCost,
-  rimTable: { gridBuildMs: table0.buildMs, rowsMs, rowsShippedIdentical: rowsSame },
+  rimTable: { gridBuildMs: table0.buildMs, rowsMs, rowsShippedIdentical: rowsSame, escapes: exitErrors },
 }
 mkdirSync('docs/results', { recursive: true })
 writeFileSync('docs/results/physical.json', JSON.stringify(result, null, 2) + '\n')
