@@ -27,6 +27,8 @@ export const PathEvent = {
   Gutter: 10,
   /** touches another ball (collisions system; markOther holds the other ball) */
   Collide: 11,
+  /** a tabulated bounce or skip reaches the reference's exit point (tabulated rim system) */
+  Landing: 12,
 } as const
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
 

@@ -24,19 +24,17 @@ export const RimMode = {
   Skipping: 2,
   /** inside, heading for the contact circle ρ_c = R − r/2 (passed the COG gate) */
   Entering: 3,
-  /** rolling on the rim (Stage 3) */
+  /** rolling on the rim (Stage 3), or riding it (a tabulated roll) */
   Rolling: 4,
+  /** carried across by the tabulated model: a bounce or skip on its way to the reference's exit point */
+  Crossing: 5,
 } as const
 export type RimModeCode = (typeof RimMode)[keyof typeof RimMode]
-/**
- * RimContact.ride: a tabulated ride round the lip that leaves at its end ('lipOut') or drops in, or one
- * straight across from the crossing to the exit point (a bounce or a skip, reported at the crossing)
- */
+/** RimContact.ride: a tabulated ride round the lip that leaves at its end ('lipOut'), or drops in */
 export const RIDE_LEAVES = 1
 export const RIDE_DROPS = 2
-export const RIDE_ACROSS = 3
 
-export const RIM_MODE_NAMES = ['none', 'transit', 'skipping', 'entering', 'rolling'] as const
+export const RIM_MODE_NAMES = ['none', 'transit', 'skipping', 'entering', 'rolling', 'crossing'] as const
 
 export const RimContactSchema = {
   /** entity id of the hole, 0 when none */
@@ -64,20 +62,23 @@ export const RimContactSchema = {
   /** rim roll: start time, s */
   time0: Float64Array,
   /**
-   * RIDE_LEAVES, RIDE_DROPS or RIDE_ACROSS: a tabulated ride (RIM_MODEL 'tabulated'): over rideTime seconds
-   * the centre turns rideTurn radians at a steady rate while its distance from the hole centre goes from
-   * rideFrom to rideTo (RIDE_ACROSS: it moves straight between the same two points), then the ball leaves
-   * with (exitVx, exitVy) or drops in; 0: the design's Stage 3 roll
+   * RIDE_LEAVES or RIDE_DROPS: a tabulated ride (RIM_MODEL 'tabulated'): over rideTime seconds the centre
+   * turns rideTurn radians at a steady rate while its distance from the hole centre goes from rideFrom to
+   * rideTo, then the ball leaves with (exitVx, exitVy) or drops in; 0: the design's Stage 3 roll
    */
   ride: Uint8Array,
   /** tabulated ride: turn of the centre about the hole, rad (≥ 0; the sense is `direction`) */
   rideTurn: Float64Array,
   /** tabulated ride: duration, s */
   rideTime: Float64Array,
-  /** tabulated ride: distance of the centre from the hole centre at the start and at the end, px */
+  /**
+   * tabulated ride: distance of the centre from the hole centre at the start and at the end, px; a crossing
+   * (RimMode.Crossing): rideTo is the distance along its path to the exit point, and time0 and speed0 the
+   * path's start time and speed (a path started since, by a wall or a strike, ends the crossing)
+   */
   rideFrom: Float64Array,
   rideTo: Float64Array,
-  /** tabulated ride that escapes: velocity it leaves with, px/s */
+  /** tabulated ride or crossing that escapes: velocity it leaves with, px/s */
   exitVx: Float64Array,
   exitVy: Float64Array,
 }

@@ -10,16 +10,18 @@
 //     to the exit point (then 'lipOut' and 'nearMiss', leaving with the exit velocity) or to the contact
 //     circle (then 'capture' via 'rimRoll'); 'rimRoll' at the crossing
 //   dropped in clean: 'capture' (via 'clean') at the crossing
-//   bounced or skipped: it rides straight across from the crossing to the exit point for the reference's
-//     time, then leaves with the exit velocity; 'bounce' + 'nearMiss' or 'skip' at the crossing
-// While it rides, the ball is in mode rimRoll (the RimContact component marks it), as in a Stage 3 roll.
+//   bounced or skipped: it is carried straight across from the crossing to the exit point (a rolling path,
+//     RimMode.Crossing, arriving after the reference's time), then leaves with the exit velocity; 'bounce' +
+//     'nearMiss' or 'skip' at the crossing
+// While it rides round the lip the ball is in mode rimRoll (the RimContact component marks it), as in a
+// Stage 3 roll; while it is carried across, it is rolling (the hole locked).
 // A ball faster than the table's top (2,000 px/s at the design's geometry), or of a size whose table was not
 // given to the world (it has its config's; prepareRimTable adds others), is decided by the live reference; a
 // ball not smaller than the hole, or a node where a guard stopped the reference, is left to the stages.
 // Reads Path, Ball, Hole, RimContact, config; writes Ball, Path, RimContact; emits the events above.
 import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
-import { RIDE_ACROSS, RIDE_DROPS, RIDE_LEAVES, RimMode } from '../components/RimContact.js'
+import { RIDE_DROPS, RIDE_LEAVES, RimMode } from '../components/RimContact.js'
 import { CaptureVia, EventType } from '../src/events.js'
 import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRimRoll, sampleRimRoll } from '../src/motion/rimRoll.js'
@@ -52,6 +54,7 @@ export function tabulatedRimSystem(w: BallWorld): void {
     const mark = P.mark[eid]
     if (mark === PathEvent.Lip) decideCrossing(w, eid)
     else if (mark === PathEvent.RollEnd && RC.ride[B.rim[eid]!] !== 0) endRide(w, eid)
+    else if (mark === PathEvent.Landing) land(w, eid)
   }
 }
 
@@ -114,36 +117,61 @@ function decideCrossing(w: BallWorld, eid: number): void {
   const side = cross >= 0 ? 1 : -1
   const ex = -uy * side
   const ey = ux * side
-  const timeScale = Math.sqrt(r / g)
-  const duration = o.time * timeScale
+  const RC = w.RimContact
   const hx = H.x[hole]!
   const hy = H.y[hole]!
-  // ride from where the ball is (its centre on the lip circle): round the lip, turning the way the path
-  // goes round the hole (in the reference's frame the angle falls; the world frame is mirrored when
-  // side < 0), or straight across to the exit point for a bounce or a skip. No jump at either end.
-  const RC = w.RimContact
-  let turn = o.turn
-  let to = cogRadius(R, r)
-  if (o.kind !== RimKind.Captured) {
-    turn = o.exitTurn
-    to = o.exitRadius * r
-    // the exit direction in the reference's frame, then in the world's
-    const A = exitAngleFrom(Math.atan2(o.exitSin, o.exitCos), crossingAngle(R / r, ds), turn)
+  const duration = o.time * Math.sqrt(r / g)
+  const escapes = o.kind !== RimKind.Captured
+  if (escapes) {
+    // the exit velocity: its direction in the reference's frame, then in the world's; the reference never
+    // leaves faster than it came (no energy is put in), the interpolation could by a hair
+    const psi0 = crossingAngle(R / r, ds)
+    const A = exitAngleFrom(Math.atan2(o.exitSin, o.exitCos), psi0, o.exitTurn)
     const ca = Math.cos(A)
     const sa = Math.sin(A)
-    const dx = ca * ux + sa * ex
-    const dy = ca * uy + sa * ey
-    // the reference never leaves faster than it came (no energy is put in); the interpolation could, by a hair
     const vOut = Math.min(o.exitSpeed * vScale, v)
-    RC.exitVx[slot] = dx * vOut
-    RC.exitVy[slot] = dy * vOut
+    RC.exitVx[slot] = (ca * ux + sa * ex) * vOut
+    RC.exitVy[slot] = (ca * uy + sa * ey) * vOut
+    if (!rolled) {
+      // a bounce or a skip: carried straight from the crossing to the reference's exit point, arriving
+      // after the reference's time (a rolling path: its own event ends it), then it leaves at the exit velocity
+      const psi = psi0 - o.exitTurn
+      const X = o.exitRadius * r * Math.cos(psi)
+      const Y = o.exitRadius * r * Math.sin(psi)
+      const dx = hx + X * ux + Y * ex - B.x[eid]!
+      const dy = hy + X * uy + Y * ey - B.y[eid]!
+      const L = Math.sqrt(dx * dx + dy * dy)
+      if (o.kind === RimKind.Skipped) emitHoleEvent(w, EventType.Skip, eid, hole, t)
+      else {
+        emitHoleEvent(w, EventType.Bounce, eid, hole, t)
+        emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
+      }
+      if (L > 1e-9 && duration > 0) {
+        // v0·T − a·T²/2 = L: there at time T (or sooner, at L, if the deceleration would stop it first)
+        const v0 = L / duration + 0.5 * w.config.ROLLING_DECEL * duration
+        startPath(w, eid, B.x[eid]!, B.y[eid]!, (dx / L) * v0, (dy / L) * v0, t)
+        RC.mode[slot] = RimMode.Crossing
+        RC.rideTo[slot] = L
+        RC.time0[slot] = t
+        RC.speed0[slot] = P.v0[eid]!
+      } else {
+        RC.mode[slot] = RimMode.Transit
+        startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, t)
+      }
+      P.fromHole[eid] = hole
+      planRolling(w, eid)
+      return
+    }
   }
+  // a roll round the lip: the ball rides it from where it is (its centre on the lip circle), turning the way
+  // the path goes round the hole (in the reference's frame the angle falls; the world frame is mirrored
+  // when side < 0), to the exit point or the contact circle, for the reference's time. No jump at either end.
   RC.mode[slot] = RimMode.Rolling
-  RC.ride[slot] = o.kind === RimKind.Captured ? RIDE_DROPS : rolled ? RIDE_LEAVES : RIDE_ACROSS
-  RC.rideTurn[slot] = turn
+  RC.ride[slot] = escapes ? RIDE_LEAVES : RIDE_DROPS
+  RC.rideTurn[slot] = escapes ? o.exitTurn : o.turn
   RC.rideTime[slot] = duration
   RC.rideFrom[slot] = Math.sqrt((B.x[eid]! - hx) ** 2 + (B.y[eid]! - hy) ** 2)
-  RC.rideTo[slot] = to
+  RC.rideTo[slot] = escapes ? o.exitRadius * r : cogRadius(R, r)
   RC.angle0[slot] = Math.atan2(B.y[eid]! - hy, B.x[eid]! - hx)
   RC.direction[slot] = side > 0 ? -1 : 1
   RC.time0[slot] = t
@@ -151,12 +179,20 @@ function decideCrossing(w: BallWorld, eid: number): void {
   setBallMode(w, eid, BallMode.RimRoll)
   sampleRimRoll(w, eid, t)
   planRimRoll(w, eid)
-  if (rolled) emitHoleEvent(w, EventType.RimRoll, eid, hole, t)
-  else if (o.kind === RimKind.Skipped) emitHoleEvent(w, EventType.Skip, eid, hole, t)
-  else {
-    emitHoleEvent(w, EventType.Bounce, eid, hole, t)
-    emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
-  }
+  emitHoleEvent(w, EventType.RimRoll, eid, hole, t)
+}
+
+/** A tabulated crossing reaches the reference's exit point (its state there sampled): it leaves at the exit velocity. */
+function land(w: BallWorld, eid: number): void {
+  const P = w.Path
+  const B = w.Ball
+  const RC = w.RimContact
+  const slot = B.rim[eid]!
+  P.mark[eid] = PathEvent.None
+  RC.mode[slot] = RimMode.Transit
+  startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, P.nextT[eid]!)
+  P.fromHole[eid] = P.markHole[eid]!
+  planRolling(w, eid)
 }
 
 /** A tabulated ride's end (its state there already sampled): drop in, or leave with the exit velocity. */
@@ -179,8 +215,6 @@ function endRide(w: BallWorld, eid: number): void {
   startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, t)
   P.fromHole[eid] = hole
   planRolling(w, eid)
-  // a bounce or a skip was reported at the crossing
-  if (ride === RIDE_ACROSS) return
   emitHoleEvent(w, EventType.LipOut, eid, hole, t)
   emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
 }

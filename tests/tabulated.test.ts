@@ -150,6 +150,41 @@ describe('a ball at a tabulated crossing', () => {
     expect(ev[0]!.time).toBeCloseTo(b.lipTime, 12)
   })
 
+  it('a bounce is carried across the hole to the reference’s exit point (rolling, hole locked), then leaves at its exit velocity', () => {
+    const d = 1.2
+    const v = 652
+    const { sim, ball, lipTime } = shot(d, v)
+    const ref = referenceOutcome({ delta: d, speed: v, holeRadius: R, ballRadius: r, gravity: g, inertia: cfg.BALL_INERTIA })
+    expect(ref.captured).toBe(false)
+    expect(ref.impacts).toBeGreaterThan(0)
+    const ev = run(sim, 1 / 240, lipTime + ref.duration / 2)
+    expect(ev.map((e) => e.type)).toEqual(['bounce', 'nearMiss'])
+    // half way: rolling, inside the hole's lip circle, locked to it
+    const mid = sim.ballState(ball)
+    expect(mid.mode).toBe('rolling')
+    expect(Math.hypot(mid.x, mid.y)).toBeLessThan(R)
+    expect(sim.world.RimContact.mode[sim.world.Ball.rim[ball]!]).toBe(5)
+    // at the reference's exit time, at its exit point (within the table's interpolation)
+    run(sim, 1e-4, lipTime + ref.duration + 1e-4)
+    const st = sim.ballState(ball)
+    expect(Math.hypot(st.x - ref.exitX!, st.y - ref.exitY!)).toBeLessThan(1)
+    // (the exit speed is interpolated: 3.5 px/s off here, 82 px/s; p90 over the fine grid 1.9 px/s)
+    expect(Math.abs(Math.hypot(st.vx, st.vy) - ref.exitSpeed!)).toBeLessThan(5)
+  })
+
+  it('a wall met while carried across ends the crossing: the ball bounces off the wall, never beyond it', () => {
+    const d = 1.2
+    const v = 652
+    const sim = createBallPhysics({ ...TABULATED_CONFIG, ROLLING_DECEL: 0 })
+    sim.addHole({ x: 0, y: 0 })
+    // the right wall cuts through the hole, short of the exit point (x ≈ 17.3)
+    sim.setWalls({ minX: -200, minY: -200, maxX: 5 + r, maxY: 200, restitution: 0.5 })
+    const ball = sim.addBall({ x: -Math.sqrt(R * R - d * d) - 30, y: d, vx: v, vy: 0 })
+    const ev = run(sim, 1 / 120, 1)
+    expect(ev.some((e) => e.type === 'wall')).toBe(true)
+    expect(sim.ballState(ball).x).toBeLessThanOrEqual(5 + 1e-9)
+  })
+
   it('the same events, bit for bit, at 30, 60 and 240 Hz (a ride ends at its time, not at a tick)', () => {
     const scene = (dt: number) => {
       const sim = createBallPhysics({ ...TABULATED_CONFIG })

@@ -2,7 +2,7 @@
 // start of a roll and its end (drop or pop-off), exact for every dt.
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
-import { RIDE_ACROSS, RimMode } from '../../components/RimContact.js'
+import { RimMode } from '../../components/RimContact.js'
 import { cogRadius, popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { setBallMode } from '../world/ballMode.js'
@@ -95,27 +95,6 @@ function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
   const dir = RC.direction[slot]!
   const from = RC.rideFrom[slot]!
   const to = RC.rideTo[slot]!
-  const o = rimRollState
-  if (RC.ride[slot] === RIDE_ACROSS) {
-    // straight from the crossing to the exit point
-    const a0 = RC.angle0[slot]!
-    const a1 = a0 + dir * turn
-    const x0 = from * Math.cos(a0)
-    const y0 = from * Math.sin(a0)
-    const x1 = to * Math.cos(a1)
-    const y1 = to * Math.sin(a1)
-    const px = x0 + (x1 - x0) * f
-    const py = y0 + (y1 - y0) * f
-    o.x = w.Hole.x[hole]! + px
-    o.y = w.Hole.y[hole]! + py
-    o.vx = T > 0 ? (x1 - x0) / T : 0
-    o.vy = T > 0 ? (y1 - y0) / T : 0
-    o.speed = Math.sqrt(o.vx * o.vx + o.vy * o.vy)
-    o.angle = Math.atan2(py, px)
-    o.arc = o.speed * tau
-    o.radius = Math.sqrt(px * px + py * py)
-    return
-  }
   const phi = RC.angle0[slot]! + dir * turn * f
   const rho = from + (to - from) * f
   const c = Math.cos(phi)
@@ -123,6 +102,7 @@ function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
   // d(phi)/dt and d(rho)/dt
   const wPhi = T > 0 ? (dir * turn) / T : 0
   const wRho = T > 0 ? (to - from) / T : 0
+  const o = rimRollState
   o.x = w.Hole.x[hole]! + rho * c
   o.y = w.Hole.y[hole]! + rho * s
   o.vx = wRho * c - rho * s * wPhi

@@ -158,6 +158,11 @@ export function planRolling(w: BallWorld, eid: number): void {
       if (RC.mode[slot] === RimMode.Entering && c2 < rc * rc) {
         d = p - Math.sqrt(rc * rc - c2)
         k = PathEvent.Contact
+      } else if (RC.mode[slot] === RimMode.Crossing && P.t0[eid] === RC.time0[slot] && P.v0[eid] === RC.speed0[slot]) {
+        // a tabulated crossing on its own path: it ends at the reference's exit point (the hole stays
+        // locked to there; the next path unlocks it as usual)
+        d = RC.rideTo[slot]!
+        k = PathEvent.Landing
       } else {
         d = c2 < R * R ? p + Math.sqrt(R * R - c2) : Q.s
       }
