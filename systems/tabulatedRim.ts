@@ -26,7 +26,7 @@ import { CaptureVia, EventType } from '../src/events.js'
 import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRimRoll, sampleRimRoll } from '../src/motion/rimRoll.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
-import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, crossingAngle, exitAngleFrom, exitRelative, outcomeAt, rimOut, type RimTable } from '../src/reference/rimTable.js'
+import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, crossingAngle, exitRelative, outcomeAt, rimOut, type RimTable } from '../src/reference/rimTable.js'
 import { simulateScaled } from '../src/reference/sphereLip.js'
 import { cogRadius } from '../src/geometry.js'
 import { lockAtLip } from '../src/world/rimSlots.js'
@@ -120,24 +120,31 @@ function decideCrossing(w: BallWorld, eid: number): void {
   const RC = w.RimContact
   const hx = H.x[hole]!
   const hy = H.y[hole]!
-  const duration = o.time * Math.sqrt(r / g)
+  const duration = (o.time * r) / vScale // √(r/g) = r/√(g·r)
   const escapes = o.kind !== RimKind.Captured
   if (escapes) {
     // the exit velocity: its direction in the reference's frame, then in the world's; the reference never
     // leaves faster than it came (no energy is put in), the interpolation could by a hair
-    const psi0 = crossingAngle(R / r, ds)
-    const A = exitAngleFrom(Math.atan2(o.exitSin, o.exitCos), psi0, o.exitTurn)
-    const ca = Math.cos(A)
-    const sa = Math.sin(A)
+    // The exit point lies at psi = psi0 − exitTurn about the hole; the crossing point (−√(R² − δ²), δ) gives
+    // cos and sin of psi0 without a trigonometric call. The exit direction is exitRelative's angle from the
+    // tangent at psi, which points at psi − π/2: (cos, sin) of it are (exitCos·sin psi + exitSin·cos psi,
+    // exitSin·sin psi − exitCos·cos psi).
+    const c0 = -Math.sqrt(R * R - delta * delta) / R
+    const s0 = delta / R
+    const cT = Math.cos(o.exitTurn)
+    const sT = Math.sin(o.exitTurn)
+    const cPsi = c0 * cT + s0 * sT
+    const sPsi = s0 * cT - c0 * sT
+    const ca = o.exitCos * sPsi + o.exitSin * cPsi
+    const sa = o.exitSin * sPsi - o.exitCos * cPsi
     const vOut = Math.min(o.exitSpeed * vScale, v)
     RC.exitVx[slot] = (ca * ux + sa * ex) * vOut
     RC.exitVy[slot] = (ca * uy + sa * ey) * vOut
     if (!rolled) {
       // a bounce or a skip: carried straight from the crossing to the reference's exit point, arriving
       // after the reference's time (a rolling path: its own event ends it), then it leaves at the exit velocity
-      const psi = psi0 - o.exitTurn
-      const X = o.exitRadius * r * Math.cos(psi)
-      const Y = o.exitRadius * r * Math.sin(psi)
+      const X = o.exitRadius * r * cPsi
+      const Y = o.exitRadius * r * sPsi
       const dx = hx + X * ux + Y * ex - B.x[eid]!
       const dy = hy + X * uy + Y * ey - B.y[eid]!
       const L = Math.sqrt(dx * dx + dy * dy)
