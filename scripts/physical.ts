@@ -484,7 +484,20 @@ const points = [
   { model: 'reference alone (one call)', cost: costs.referenceAlone, agreement: 100 },
   { model: 'hero ball: reference in the engine', cost: shot.hero, agreement: 100 },
 ]
-const plotted = points.map((p) => ({ ...p, plotCost: p.cost, label: `${p.model}: ${p.cost.toFixed(p.cost < 10 ? 2 : 1)} µs, ${p.agreement.toFixed(1)} %` }))
+const plotted = points.map((p) => ({
+  ...p,
+  plotCost: p.cost,
+  label: `${p.model}: ${p.cost.toFixed(p.cost < 10 ? 2 : 1)} µs, ${p.agreement.toFixed(p.agreement >= 99 && p.agreement < 100 ? 2 : 1)} %`,
+}))
+/** where each label sits: the closed forms above right of their points, the tabulated one below right, the hero above left and the reference alone (on the hero's point) below right */
+const placement = (model: string, n: number) =>
+  model.startsWith('tabulated')
+    ? { align: 'left', dx: 8, dy: 14 }
+    : n >= 3
+      ? model.startsWith('reference alone')
+        ? { align: 'left', dx: 10, dy: 16 }
+        : { align: 'right', dx: -10, dy: -8 }
+      : { align: 'left', dx: 8, dy: -8 }
 await svg(
   {
     $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
@@ -512,7 +525,7 @@ await svg(
       // one label layer per point, so that the two at 100 % (reference alone, hero) do not overprint
       ...plotted.map((p, n) => ({
         transform: [{ filter: { field: 'model', equal: p.model } }],
-        mark: { type: 'text', align: n >= 3 ? 'right' : 'left', dx: n >= 3 ? -10 : 8, dy: n === 4 ? 16 : -8, fontSize: 11 },
+        mark: { type: 'text', ...placement(p.model, n), fontSize: 11 },
         encoding: {
           x: { field: 'plotCost', type: 'quantitative' },
           y: { field: 'agreement', type: 'quantitative' },
