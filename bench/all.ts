@@ -77,7 +77,7 @@ if (pipeline) {
   const p = pipeline.nsPerBallStep
   const q = pipeline.ratioToPlain
   const b = pipeline.ratioToBare
-  console.log(`\npipeline, ${k(pipeline.balls)} balls: bare loop ${p.bareLoop!.toFixed(2)}, plain loop ${p.plainLoop!.toFixed(2)}; open field ${p.openField!.toFixed(2)} (${x(b.openField!)} bare, ${x(q.openField!)} plain), default panel ${p.panel!.toFixed(2)} (${x(b.panel!)} bare, ${x(q.panel!)} plain)`)
+  console.log(`\npipeline, ${k(pipeline.balls)} balls: bare loop ${p.bareLoop!.toFixed(2)}, plain loop ${p.plainLoop!.toFixed(2)}; open field ${p.openField!.toFixed(2)} (${x(b.openField!)} bare, ${x(q.openField!)} plain), slow balls without deceleration ${p.openFieldSlow!.toFixed(2)} (${x(b.openFieldSlow!)} bare), default panel ${p.panel!.toFixed(2)} (${x(b.panel!)} bare, ${x(q.panel!)} plain)`)
 }
 if (dense) {
   const g = dense.growth100kOver10k

@@ -1,6 +1,8 @@
 // Pipeline cost per ball-step against two loops over the same balls, each step timed by tinybench (median
 // step of a run, median of the runs): the bare loop x += vx·dt, y += vy·dt (the limit: nothing cheaper moves
-// balls), and a plain loop that also applies the rolling deceleration (a square root a ball). Prints figures and writes
+// balls), and a plain loop that also applies the rolling deceleration (a square root a ball). Three scenes:
+// the open field (balls at 300–700 px/s with the design's deceleration), the same field with slow balls
+// (30–70 px/s) and no deceleration (the sparse scene), and the default panel (every ball thrown at once). Prints figures and writes
 // docs/results/pipeline.json; asserts nothing (machines here are shared and noisy: compare the ratio
 // measured side by side in this run, not absolute times across runs).
 //
@@ -30,12 +32,15 @@ interface Ball0 {
   vy: Float64Array
 }
 
-/** Open field: 25 holes on a 5 × 5 grid 400 px apart, balls scattered among them (events are sparse). */
-function openField(n: number): Ball0 {
+/**
+ * Open field: 25 holes on a 5 × 5 grid 400 px apart, balls scattered among them (events are sparse) at
+ * 300–700 px/s, or `slow`: at 30–70 px/s (events sparser still).
+ */
+function openField(n: number, slow = false): Ball0 {
   const r = rand(1)
   const b = { x: new Float64Array(n), y: new Float64Array(n), vx: new Float64Array(n), vy: new Float64Array(n) }
   for (let i = 0; i < n; i++) {
-    const speed = 300 + 400 * r()
+    const speed = slow ? 30 + 40 * r() : 300 + 400 * r()
     const ang = r() * 2 * Math.PI
     b.x[i] = r() * 2000
     b.y[i] = r() * 2000
@@ -45,8 +50,8 @@ function openField(n: number): Ball0 {
   return b
 }
 
-function openFieldSim(init: Ball0, n: number): BallPhysics {
-  const sim = createBallPhysics({}, { capacity: n + 64 })
+function openFieldSim(init: Ball0, n: number, decel?: number): BallPhysics {
+  const sim = createBallPhysics(decel === undefined ? {} : { ROLLING_DECEL: decel }, { capacity: n + 64 })
   for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) sim.addHole({ x: 200 + 400 * i, y: 200 + 400 * j })
   for (let i = 0; i < n; i++) sim.addBall({ x: init.x[i]!, y: init.y[i]!, vx: init.vx[i]!, vy: init.vy[i]! })
   return sim
@@ -92,6 +97,7 @@ const decel = createBallPhysics().config.ROLLING_DECEL
 const bare: number[] = []
 const plain: number[] = []
 const open: number[] = []
+const slow: number[] = []
 const panel: number[] = []
 let moving = 0
 for (let rep = 0; rep < REPEATS; rep++) {
@@ -101,6 +107,8 @@ for (let rep = 0; rep < REPEATS; rep++) {
   const sim = openFieldSim(openField(N), N)
   open.push(await nsPerBallStep(simStep(sim)))
   moving = sim.balls().filter((b) => sim.world.Ball.mode[b]! < 2).length
+  // the sparse scene: slow balls, no rolling deceleration
+  slow.push(await nsPerBallStep(simStep(openFieldSim(openField(N, true), N, 0))))
 
   panel.push(await nsPerBallStep(simStep(panelSim(N))))
 }
@@ -113,14 +121,15 @@ const result = {
   warmupSteps: WARMUP,
   repeats: REPEATS,
   timing: 'tinybench: median step of each run of STEPS steps, median of REPEATS runs',
-  nsPerBallStep: { bareLoop: median(bare), plainLoop: median(plain), openField: median(open), panel: median(panel) },
-  ratioToBare: { openField: median(open) / median(bare), panel: median(panel) / median(bare) },
-  ratioToPlain: { openField: median(open) / median(plain), panel: median(panel) / median(plain) },
+  nsPerBallStep: { bareLoop: median(bare), plainLoop: median(plain), openField: median(open), openFieldSlow: median(slow), panel: median(panel) },
+  ratioToBare: { openField: median(open) / median(bare), openFieldSlow: median(slow) / median(bare), panel: median(panel) / median(bare) },
+  ratioToPlain: { openField: median(open) / median(plain), openFieldSlow: median(slow) / median(plain), panel: median(panel) / median(plain) },
   openFieldBallsStillMovingAfterRun: moving,
 }
 console.log(`pipeline benchmark, ${N} balls, 25 holes, dt = 1/120 s, median step of ${STEPS}, median of ${REPEATS} runs`)
 console.log(`  bare loop (x += vx·dt, y += vy·dt)    ${result.nsPerBallStep.bareLoop.toFixed(2)} ns/ball-step`)
 console.log(`  plain loop (with the deceleration)    ${result.nsPerBallStep.plainLoop.toFixed(2)} ns/ball-step`)
 console.log(`  full pipeline, open field (sparse)    ${result.nsPerBallStep.openField.toFixed(2)} ns/ball-step   ${result.ratioToBare.openField.toFixed(2)}× bare   ${result.ratioToPlain.openField.toFixed(2)}× plain`)
+console.log(`  the same, slow balls, no deceleration ${result.nsPerBallStep.openFieldSlow.toFixed(2)} ns/ball-step   ${result.ratioToBare.openFieldSlow.toFixed(2)}× bare   ${result.ratioToPlain.openFieldSlow.toFixed(2)}× plain`)
 console.log(`  full pipeline, default panel (dense)  ${result.nsPerBallStep.panel.toFixed(2)} ns/ball-step   ${result.ratioToBare.panel.toFixed(2)}× bare   ${result.ratioToPlain.panel.toFixed(2)}× plain`)
 console.log(`wrote ${writeResult('pipeline', result)}`)

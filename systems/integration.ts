@@ -41,6 +41,23 @@ export function integrationSystem(w: BallWorld): void {
     const { x, y, vx, vy } = B
     const { x0, y0, ux, uy, v0, t0 } = P
     const decel = w.config.ROLLING_DECEL
+    if (decel === 0) {
+      // without rolling deceleration a ball's velocity is its path's, ux·v0, written when the path began:
+      // only the position moves (the same bits as the general form below: d = v0·τ, x = x0 + ux·d)
+      for (let i = w.moving.count - 1; i >= 0; i--) {
+        const eid = balls[i]!
+        if (nextT[eid]! > tEnd) {
+          if (mode[eid] === BallMode.Rolling) {
+            const d = v0[eid]! * (tEnd - t0[eid]!)
+            x[eid] = x0[eid]! + ux[eid]! * d
+            y[eid] = y0[eid]! + uy[eid]! * d
+          } else sampleRimRoll(w, eid, tEnd)
+          continue
+        }
+        advanceThroughEvents(w, eid, tEnd)
+      }
+      return
+    }
     for (let i = w.moving.count - 1; i >= 0; i--) {
       const eid = balls[i]!
       if (nextT[eid]! > tEnd) {

@@ -21,8 +21,10 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   P.y0[eid] = y
   P.t0[eid] = t
   P.v0[eid] = speed
-  P.ux[eid] = speed > 0 ? vx / speed : 0
-  P.uy[eid] = speed > 0 ? vy / speed : 0
+  const ux = speed > 0 ? vx / speed : 0
+  const uy = speed > 0 ? vy / speed : 0
+  P.ux[eid] = ux
+  P.uy[eid] = uy
   P.speed[eid] = speed
   P.s[eid] = 0
   P.sHole[eid] = 0
@@ -30,8 +32,10 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   if (w.collide !== null) w.collide.partner[eid] = 0
   B.x[eid] = x
   B.y[eid] = y
-  B.vx[eid] = vx
-  B.vy[eid] = vy
+  // the closed form's velocity at the origin, ux·v0 (what every later sample of the path gives; without
+  // rolling deceleration the integration then never rewrites it)
+  B.vx[eid] = ux * speed
+  B.vy[eid] = uy * speed
 }
 
 // The planner's working state, kept in module scope so that planning allocates nothing (it never runs

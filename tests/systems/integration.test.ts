@@ -76,6 +76,32 @@ describe('integration system', () => {
     ])
   })
 
+  it('without rolling deceleration the step writes only positions, and every state is the closed form to the bit (velocity ux·v0 from the start of the path)', () => {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0 })
+    for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) sim.addHole({ x: 60 + 80 * i, y: 60 + 80 * j })
+    const balls: number[] = []
+    for (let n = 0; n < 300; n++) balls.push(sim.addBall({ x: (n * 37) % 400, y: (n * 53) % 400, vx: ((n * 13) % 91) - 45.3, vy: ((n * 29) % 83) - 40.7 }))
+    const w = sim.world
+    const B = w.Ball
+    const P = w.Path
+    let checked = 0
+    for (let s = 0; s < 90; s++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      for (const b of balls) {
+        if (B.mode[b] !== 0) continue
+        const got = [B.x[b]!, B.y[b]!, B.vx[b]!, B.vy[b]!]
+        // the general form (what sampleRolling writes), evaluated here: d = v0·τ − ½·0·τ², x = x0 + ux·d
+        const tau = w.time - P.t0[b]!
+        const d = P.v0[b]! * tau - 0.5 * 0 * tau * tau
+        const v = P.v0[b]! - 0 * tau
+        expect(got).toEqual([P.x0[b]! + P.ux[b]! * d, P.y0[b]! + P.uy[b]! * d, P.ux[b]! * v, P.uy[b]! * v])
+        checked++
+      }
+    }
+    expect(checked).toBeGreaterThan(10_000)
+  })
+
   it('keeps a ball rolling forever when ROLLING_DECEL is 0, its position exact after many steps', () => {
     const sim = createBallPhysics({ ROLLING_DECEL: 0 })
     const b = sim.addBall({ x: 1, y: 2, vx: 3, vy: -4 })
