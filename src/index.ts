@@ -23,7 +23,7 @@ export {
 } from './config/design.js'
 export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, RimModel, SimulationMethod } from './config/design.js'
 export { PHYSICAL_CONFIG, TABULATED_CONFIG } from './config/presets.js'
-export { prepareRimTable, tabulatedCaptureSpeed } from './reference/rimTable.js'
+export { prepareRimTable, tabulatedCaptureSpeed } from './reference/rimTables.js'
 export { DEFAULT_PANEL, addPanel } from './panel.js'
 export type { PanelHole, PanelLayout } from './panel.js'
 export { createFixedStepClock } from './clock.js'

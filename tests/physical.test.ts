@@ -151,6 +151,31 @@ describe('the hero ball', () => {
     expect(Math.atan2(s.vy, s.vx)).toBeCloseTo(out.exitAngle!, 9)
   })
 
+  it('rides the lip for the reference time when it rolls round it (no jump to the exit), and leaves from the reference exit point', () => {
+    const d = 10
+    const v = 300
+    const out = referenceOutcome({ delta: d, speed: v, holeRadius: cfg.HOLE_RADIUS, ballRadius: cfg.BALL_RADIUS, gravity: cfg.GRAVITY, inertia: cfg.BALL_INERTIA })
+    expect(out.ending).toBe('rolledOut')
+    const sim = createBallPhysics({ ROLLING_DECEL: 0 })
+    sim.addHole({ x: 0, y: 0 })
+    const lipX = -Math.sqrt(18 * 18 - d * d)
+    const ball = sim.addBall({ x: lipX - v * 0.05, y: d, vx: v, vy: 0, hero: true })
+    sim.step(0.05 + out.duration / 2)
+    const mid = sim.ballState(ball)
+    expect(mid.mode).toBe('rimRoll')
+    expect(Math.hypot(mid.x, mid.y)).toBeCloseTo(18, 9)
+    const events = sim.drainEvents()
+    expect(events.map((e) => e.type)).toEqual(['rimRoll'])
+    // (a hair past the exit: the ride's end is the crossing time plus the duration, in other roundings)
+    sim.step(out.duration / 2 + 1e-7)
+    const end = sim.drainEvents()
+    expect(end.map((e) => e.type)).toEqual(['lipOut', 'nearMiss'])
+    expect(end[0]!.time).toBeCloseTo(0.05 + out.duration, 9)
+    const s = sim.ballState(ball)
+    expect(s.x).toBeCloseTo(out.exitX!, 4)
+    expect(s.y).toBeCloseTo(out.exitY!, 4)
+  })
+
   it('mirrors: a path passing the hole on the other side leaves mirrored', () => {
     const run = (side: 1 | -1) => {
       const sim = createBallPhysics({ ROLLING_DECEL: 0 })

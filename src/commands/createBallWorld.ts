@@ -6,7 +6,7 @@ import { resolveConfig, type ConfigOverrides } from '../config/design.js'
 import { adoptBall, forgetBall } from '../world/balls.js'
 import { createWorldData, gridThreshold, type BallWorld, type BallWorldOptions } from '../world/createWorld.js'
 import { forgetHole } from './holes.js'
-import { rimTableFor } from '../reference/rimTable.js'
+import { rimTableFor } from '../reference/rimTables.js'
 import { describe, readSpec } from './validate.js'
 import { forgetWalls } from './walls.js'
 

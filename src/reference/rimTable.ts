@@ -14,8 +14,7 @@
 //
 // Above the table's top speed the caller asks the live reference (a rare, fast ball; see tabulatedRimSystem).
 import { simulateScaled } from './sphereLip.js'
-import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
-import type { BallWorld } from '../world/createWorld.js'
+import type { ReferenceOutcome } from './types.js'
 
 /** Outcome kinds stored per node. */
 export const RimKind = {
@@ -92,6 +91,37 @@ export function crossingAngle(ratio: number, ds: number): number {
   return Math.atan2(ds, -Math.sqrt(ratio * ratio - ds * ds))
 }
 
+/**
+ * A reference outcome (scaled units, at R/r = ratio and δ/r = ds) in the table's terms, into rimOut: the
+ * kind; the turn and time; for an escape, the exit point in polar form about the hole (its angle counted
+ * from the crossing the way the ball turns, unwrapped to the turn the reference rolled, so rolls round the
+ * lip interpolate as arcs), the exit direction relative to the lip's tangent there, and the exit speed.
+ */
+export function referenceToOut(o: ReferenceOutcome, ratio: number, ds: number): void {
+  const out = rimOut
+  out.turn = o.turnAngle
+  out.time = o.duration
+  if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit') {
+    out.kind = RimKind.Guarded
+    return
+  }
+  if (o.captured) {
+    out.kind = RimKind.Captured
+    return
+  }
+  out.kind = o.turnAngle >= ROLL_TURN ? RimKind.Rolled : o.impacts > 0 ? RimKind.Bounced : RimKind.Skipped
+  const psi0 = crossingAngle(ratio, ds)
+  let turn = psi0 - Math.atan2(o.exitY!, o.exitX!)
+  turn -= 2 * Math.PI * Math.floor(turn / (2 * Math.PI))
+  while (turn + Math.PI < o.turnAngle) turn += 2 * Math.PI
+  out.exitTurn = turn
+  out.exitRadius = Math.sqrt(o.exitX! * o.exitX! + o.exitY! * o.exitY!)
+  const rel = exitRelative(o.exitAngle!, psi0, turn)
+  out.exitCos = Math.cos(rel)
+  out.exitSin = Math.sin(rel)
+  out.exitSpeed = o.exitSpeed!
+}
+
 /** δ/r of row i (the last row sits just inside the lip: the reference needs |δ| < R). */
 function rowDelta(ratio: number, i: number): number {
   return i === TABLE_ROWS - 1 ? ratio * (1 - 1e-9) : (ratio * i) / (TABLE_ROWS - 1)
@@ -125,28 +155,19 @@ export function buildRimTable(ratio: number, inertia: number, rows?: Float64Arra
   for (let i = 0; i < nD; i++) {
     const ds = nodeDelta(ratio, i)
     for (let k = 0; k < nV; k++) {
-      const o = simulateScaled(ratio, ds, nodeSpeed(k), inertia, null)
+      referenceToOut(simulateScaled(ratio, ds, nodeSpeed(k), inertia, null), ratio, ds)
       const n = i * nV + k
       const at = n * VALUES
-      values[at + TURN] = o.turnAngle
-      values[at + TIME] = o.duration
-      if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit') kind[n] = RimKind.Guarded
-      else if (o.captured) kind[n] = RimKind.Captured
-      else {
-        kind[n] = o.turnAngle >= ROLL_TURN ? RimKind.Rolled : o.impacts > 0 ? RimKind.Bounced : RimKind.Skipped
-        // the exit point in polar form about the hole, its angle counted from the crossing the way the ball
-        // turns and unwrapped to the turn the reference rolled (so rolls round the lip interpolate as arcs)
-        let turn = crossingAngle(ratio, ds) - Math.atan2(o.exitY!, o.exitX!)
-        turn -= 2 * Math.PI * Math.floor(turn / (2 * Math.PI))
-        while (turn + Math.PI < o.turnAngle) turn += 2 * Math.PI
-        values[at + EXIT_TURN] = turn
-        values[at + EXIT_RADIUS] = Math.sqrt(o.exitX! * o.exitX! + o.exitY! * o.exitY!)
-        // the exit direction relative to the lip's tangent at the exit point (the way the ball turns): smooth
-        // from node to node even where the exit point itself swings round the hole
-        const rel = exitRelative(o.exitAngle!, crossingAngle(ratio, ds), turn)
-        values[at + EXIT_COS] = Math.cos(rel)
-        values[at + EXIT_SIN] = Math.sin(rel)
-        values[at + EXIT_SPEED] = o.exitSpeed!
+      const o = rimOut
+      kind[n] = o.kind
+      values[at + TURN] = o.turn
+      values[at + TIME] = o.time
+      if (o.kind !== RimKind.Captured && o.kind !== RimKind.Guarded) {
+        values[at + EXIT_TURN] = o.exitTurn
+        values[at + EXIT_RADIUS] = o.exitRadius
+        values[at + EXIT_COS] = o.exitCos
+        values[at + EXIT_SIN] = o.exitSin
+        values[at + EXIT_SPEED] = o.exitSpeed
       }
     }
   }
@@ -349,63 +370,4 @@ function nearestNode(t: RimTable, i: number, k: number, want: number): number {
     if (k - d >= 0 && t.kind[i * nV + k - d] === want) return i * nV + k - d
   }
   return -1
-}
-
-/**
- * Lets `world` decide crossings of a ball of radius `ballRadius` in a hole of radius `holeRadius` (inertia
- * j) from a table, built now if no world has built it yet: with every capture row (`rows: 'now'`, about
- * 1.5 s; the default) or with the rows found as crossings need them (`rows: 'lazy'`, about 100 ms now and
- * 15 ms per row later). A world with RIM_MODEL 'tabulated' has its config's BALL_RADIUS and HOLE_RADIUS table
- * from the start; a crossing of any other sizes without one is decided by the live reference (tens of µs
- * each). A world's decisions depend only on which tables it was given, never on what other worlds built.
- * Returns the time taken, ms.
- */
-export function prepareRimTable(
-  target: BallWorld | { world: BallWorld },
-  holeRadius: number,
-  ballRadius: number,
-  options: { inertia?: number; rows?: 'now' | 'lazy' } = {},
-): number {
-  const w = 'world' in target && 'config' in target.world ? target.world : (target as BallWorld)
-  if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
-  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
-  const inertia = options.inertia ?? w.config.BALL_INERTIA
-  const rows = options.rows ?? 'now'
-  if (rows !== 'now' && rows !== 'lazy') throw new RangeError(`options.rows must be 'now' or 'lazy', got ${String(rows)}`)
-  const t0 = performance.now()
-  const t = rimTableFor(holeRadius / ballRadius, inertia)
-  if (rows === 'now') fillCaptureRows(t)
-  if (!w.rimTables.includes(t)) w.rimTables.push(t)
-  return performance.now() - t0
-}
-
-/**
- * The tabulated model's capture speed at offset `delta`, px/s: the largest lip-crossing speed its table
- * captures at that offset (for overlays and charts; builds the geometry's table if need be).
- */
-export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRadius: number, gravity: number, inertia = 2 / 5): number {
-  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
-  if (!(delta >= 0 && delta < holeRadius)) throw new RangeError(`delta must be in [0, holeRadius), got ${delta}`)
-  const t = rimTableFor(holeRadius / ballRadius, inertia)
-  return captureSpeedAt(t, delta / ballRadius) * Math.sqrt(gravity * ballRadius)
-}
-
-/** Tables built so far, by R/r and j (each is immutable, but for rows found late, and shared by every world). */
-const cache = new Map<string, RimTable>()
-
-/**
- * The table for R/r = ratio and inertia j: built on first use (about 100 ms), then shared. At the design's
- * geometry (R/r = 18/11, j = 2/5) its capture rows are shipped; at any other, each row is found when a
- * crossing first needs it (about 15 ms). A game that wants no such pause calls this, then fillCaptureRows,
- * when it loads, for each ball and hole size it uses.
- */
-export function rimTableFor(ratio: number, inertia: number): RimTable {
-  const key = `${ratio}:${inertia}`
-  let t = cache.get(key)
-  if (t === undefined) {
-    const shipped = ratio === SHIPPED_RATIO && inertia === SHIPPED_INERTIA ? new Float64Array(SHIPPED_ROWS) : undefined
-    t = buildRimTable(ratio, inertia, shipped)
-    cache.set(key, t)
-  }
-  return t
 }

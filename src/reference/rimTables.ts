@@ -1,0 +1,65 @@
+// The rim tables a process has built, shared by every world (each is immutable but for capture rows found
+// late, which are the same bits whenever they are found), and what a world may use: its config's table from
+// the start, others given by prepareRimTable. src/reference/rimTable.ts builds and reads a table.
+import type { BallWorld } from '../world/createWorld.js'
+import { buildRimTable, captureSpeedAt, fillCaptureRows, type RimTable } from './rimTable.js'
+import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
+
+/**
+ * Lets `world` decide crossings of a ball of radius `ballRadius` in a hole of radius `holeRadius` (inertia
+ * j) from a table, built now if no world has built it yet: with every capture row (`rows: 'now'`, about
+ * 1.5 s; the default) or with the rows found as crossings need them (`rows: 'lazy'`, about 100 ms now and
+ * 15 ms per row later). A world with RIM_MODEL 'tabulated' has its config's BALL_RADIUS and HOLE_RADIUS table
+ * from the start; a crossing of any other sizes without one is decided by the live reference (tens of µs
+ * each). A world's decisions depend only on which tables it was given, never on what other worlds built.
+ * Returns the time taken, ms.
+ */
+export function prepareRimTable(
+  target: BallWorld | { world: BallWorld },
+  holeRadius: number,
+  ballRadius: number,
+  options: { inertia?: number; rows?: 'now' | 'lazy' } = {},
+): number {
+  const w = 'world' in target && 'config' in target.world ? target.world : (target as BallWorld)
+  if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
+  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
+  const inertia = options.inertia ?? w.config.BALL_INERTIA
+  const rows = options.rows ?? 'now'
+  if (rows !== 'now' && rows !== 'lazy') throw new RangeError(`options.rows must be 'now' or 'lazy', got ${String(rows)}`)
+  const t0 = performance.now()
+  const t = rimTableFor(holeRadius / ballRadius, inertia)
+  if (rows === 'now') fillCaptureRows(t)
+  if (!w.rimTables.includes(t)) w.rimTables.push(t)
+  return performance.now() - t0
+}
+
+/**
+ * The tabulated model's capture speed at offset `delta`, px/s: the largest lip-crossing speed its table
+ * captures at that offset (for overlays and charts; builds the geometry's table if need be).
+ */
+export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRadius: number, gravity: number, inertia = 2 / 5): number {
+  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
+  if (!(delta >= 0 && delta < holeRadius)) throw new RangeError(`delta must be in [0, holeRadius), got ${delta}`)
+  const t = rimTableFor(holeRadius / ballRadius, inertia)
+  return captureSpeedAt(t, delta / ballRadius) * Math.sqrt(gravity * ballRadius)
+}
+
+/** Tables built so far, by R/r and j (each is immutable, but for rows found late, and shared by every world). */
+const cache = new Map<string, RimTable>()
+
+/**
+ * The table for R/r = ratio and inertia j: built on first use (about 100 ms), then shared. At the design's
+ * geometry (R/r = 18/11, j = 2/5) its capture rows are shipped; at any other, each row is found when a
+ * crossing first needs it (about 15 ms). A game that wants no such pause calls this, then fillCaptureRows,
+ * when it loads, for each ball and hole size it uses.
+ */
+export function rimTableFor(ratio: number, inertia: number): RimTable {
+  const key = `${ratio}:${inertia}`
+  let t = cache.get(key)
+  if (t === undefined) {
+    const shipped = ratio === SHIPPED_RATIO && inertia === SHIPPED_INERTIA ? new Float64Array(SHIPPED_ROWS) : undefined
+    t = buildRimTable(ratio, inertia, shipped)
+    cache.set(key, t)
+  }
+  return t
+}
