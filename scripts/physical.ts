@@ -24,7 +24,8 @@ import {
   type DeltaSpeedGrid,
 } from '../src/physical/agreement'
 import { PHYSICAL_CONFIG, TABULATED_CONFIG } from '../src/config/presets'
-import { ROLL_TURN, RimKind, captureRows, captureSpeedAt, crossingAngle, exitAngleFrom, outcomeAt, rimOut, rimTableFor } from '../src/reference/rimTable'
+import { ROLL_TURN, RimKind, captureRows, captureSpeedAt, crossingAngle, exitAngleFrom, outcomeAt, rimOut } from '../src/reference/rimTable'
+import { rimTableFor } from '../src/reference/rimTables'
 import { v1Schedule } from '../src/schedule'
 import { referenceCaptureSpeed, referenceOutcome } from '../src/reference/index'
 import type { ScheduleEntry } from '../src/schedule'
