@@ -7,25 +7,19 @@
 // A drop is a capture (via 'rimRoll'); a pop-off leaves along the tangent with the hole locked until the
 // centre is outside the lip circle.
 // Reads Path.mark, Ball, Hole, RimContact; writes Ball, RimContact, Path; emits 'rimRoll', 'capture', 'lipOut', 'nearMiss'.
-import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
-import { RimMode } from '../components/RimContact.js'
 import { CaptureVia, EventType } from '../src/events.js'
 import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
-import { planRimRoll, rollPopsOff, sampleRimRoll, startRimRoll } from '../src/motion/rimRoll.js'
-import { planRolling, startPath } from '../src/motion/rolling.js'
+import { leaveRim, planRimRoll, rollPopsOff, sampleRimRoll, startRimRoll } from '../src/motion/rimRoll.js'
 import type { BallWorld } from '../src/world/createWorld.js'
-import { setBallMode } from '../src/world/ballMode.js'
 
 export function rimRollSystem(w: BallWorld): void {
   const P = w.Path
-  const RC = w.RimContact
   const B = w.Ball
   const list = w.marked
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
     const mark = P.mark[eid]
-    const rim = B.rim[eid]!
     if (mark === PathEvent.Roll) {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
@@ -40,13 +34,7 @@ export function rimRollSystem(w: BallWorld): void {
       const t = P.nextT[eid]!
       if (rollPopsOff(w, eid)) {
         // leave along the tangent; the state at t was set by the integration system
-        RC.mode[rim] = RimMode.Transit
-        setBallMode(w, eid, BallMode.Rolling)
-        startPath(w, eid, B.x[eid]!, B.y[eid]!, B.vx[eid]!, B.vy[eid]!, t)
-        P.fromHole[eid] = hole
-        planRolling(w, eid)
-        emitHoleEvent(w, EventType.LipOut, eid, hole, t)
-        emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
+        leaveRim(w, eid, hole, B.vx[eid]!, B.vy[eid]!, t)
       } else {
         captureBall(w, eid, hole, t, CaptureVia.RimRoll)
       }

@@ -19,7 +19,7 @@ import { lockAtLip } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { captureBall, emitHoleEvent } from './ballFate.js'
-import { planRimRoll, sampleRimRoll } from './rimRoll.js'
+import { leaveRim, planRimRoll, sampleRimRoll } from './rimRoll.js'
 import { planRolling, startPath } from './rolling.js'
 
 /**
@@ -149,11 +149,5 @@ export function endRide(w: BallWorld, eid: number): void {
     captureBall(w, eid, hole, t, CaptureVia.RimRoll)
     return
   }
-  RC.mode[slot] = RimMode.Transit
-  setBallMode(w, eid, BallMode.Rolling)
-  startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, t)
-  P.fromHole[eid] = hole
-  planRolling(w, eid)
-  emitHoleEvent(w, EventType.LipOut, eid, hole, t)
-  emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
+  leaveRim(w, eid, hole, RC.exitVx[slot]!, RC.exitVy[slot]!, t)
 }

@@ -5,6 +5,9 @@ import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { cogRadius, popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
+import { EventType } from '../events.js'
+import { emitHoleEvent } from './ballFate.js'
+import { planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 
 /** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
@@ -28,6 +31,22 @@ export function planRimRoll(w: BallWorld, eid: number): void {
   P.nextKind[eid] = PathEvent.RollEnd
   P.nextHole[eid] = hole
   P.nextT[eid] = RC.time0[slot]! + Math.min(tDrop, tPop)
+}
+
+/**
+ * A ball on a rim leaves it at time t with velocity (vx, vy): in transit through the hole (locked until its
+ * centre is out), rolling on a fresh path; 'lipOut' and 'nearMiss'. Shared by the Stage 3 pop-off and the
+ * end of a tabulated ride.
+ */
+export function leaveRim(w: BallWorld, eid: number, hole: number, vx: number, vy: number, t: number): void {
+  const B = w.Ball
+  w.RimContact.mode[B.rim[eid]!] = RimMode.Transit
+  setBallMode(w, eid, BallMode.Rolling)
+  startPath(w, eid, B.x[eid]!, B.y[eid]!, vx, vy, t)
+  w.Path.fromHole[eid] = hole
+  planRolling(w, eid)
+  emitHoleEvent(w, EventType.LipOut, eid, hole, t)
+  emitHoleEvent(w, EventType.NearMiss, eid, hole, t)
 }
 
 /** True when a rim roll that started with speed vt0 pops off before it drops. */
