@@ -79,3 +79,18 @@ describe('README examples', () => {
     expect(out).toBe('')
   })
 })
+
+describe('README benchmark tables', () => {
+  it('are the figures of docs/results/*.json (scripts/readme-tables.mjs regenerates them; a table edited by hand or left behind a new run fails here)', async () => {
+    const { regenerate, tables } = (await import(/* @vite-ignore */ resolve(root, 'scripts/readme-tables.mjs'))) as {
+      regenerate: (text: string) => string
+      tables: () => Map<string, string[]>
+    }
+    expect(tables().size).toBe(8)
+    const again = regenerate(readme)
+    const differing = readme.split('\n').filter((line, i) => line !== again.split('\n')[i])
+    expect(differing).toEqual([])
+    // and the check can fail: a changed figure is caught
+    expect(regenerate(readme.replace(/\| 100,000 \| ([0-9.]+) \(/, '| 100,000 | 999.9 ('))).not.toBe(readme.replace(/\| 100,000 \| ([0-9.]+) \(/, '| 100,000 | 999.9 ('))
+  })
+})
