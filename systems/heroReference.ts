@@ -13,6 +13,7 @@
 // Reads Path, Ball, Hole, config; writes Ball, Path, RimContact (takes the ball's slot); emits the events above.
 import { PathEvent } from '../components/Path.js'
 import { applyRimOutcome } from '../src/motion/rimOutcome.js'
+import { pathOffset } from '../src/motion/rolling.js'
 import { RimKind, ROLL_TURN, referenceToOut, rimOut } from '../src/reference/rimTable.js'
 import { simulateScaled } from '../src/reference/sphereLip.js'
 import { type BallWorld } from '../src/world/createWorld.js'
@@ -31,14 +32,13 @@ export function heroReferenceSystem(w: BallWorld): void {
     const hole = P.markHole[eid]!
     const R = H.radius[hole]!
     const r = B.radius[eid]!
-    // signed offset of the path: the closest point of the path is at cross·(−uy, ux) from the hole centre
-    const cross = (H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+    const cross = pathOffset(w, eid, hole)
     const delta = Math.abs(cross)
     const v = P.speed[eid]!
     if (!(r < R) || !(delta < R) || !(v > 0)) continue
     const ds = delta / r
     referenceToOut(simulateScaled(R / r, ds, v / Math.sqrt(w.config.GRAVITY * r), w.config.BALL_INERTIA, null), R / r, ds)
     if (rimOut.kind === RimKind.Guarded) continue
-    applyRimOutcome(w, eid, hole, cross, delta, v)
+    applyRimOutcome(w, eid, hole, cross)
   }
 }

@@ -9,7 +9,7 @@ import { RimMode } from '../components/RimContact.js'
 import { EventType } from '../src/events.js'
 import { vSkip } from '../src/geometry.js'
 import { emitHoleEvent } from '../src/motion/ballFate.js'
-import { planRolling } from '../src/motion/rolling.js'
+import { pathOffset, planRolling } from '../src/motion/rolling.js'
 import { lockAtLip } from '../src/world/rimSlots.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 
@@ -24,7 +24,7 @@ export function skipOverSystem(w: BallWorld): void {
     if (P.mark[eid] !== PathEvent.Lip) continue
     const hole = P.markHole[eid]!
     // (δ, v) at the crossing: δ from the path's geometry, v from its closed form at that distance
-    const delta = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
+    const delta = Math.abs(pathOffset(w, eid, hole))
     const v = P.speed[eid]!
     const t = P.nextT[eid]!
     const rim = lockAtLip(w, eid, hole, delta, v, t, RimMode.Transit)

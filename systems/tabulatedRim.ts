@@ -12,6 +12,7 @@
 // Reads Path, Ball, Hole, RimContact, config; writes Ball, Path, RimContact; emits the events above.
 import { PathEvent } from '../components/Path.js'
 import { applyRimOutcome, endRide, landCrossing } from '../src/motion/rimOutcome.js'
+import { pathOffset } from '../src/motion/rolling.js'
 import { RimKind, TABLE_TOP_SPEED, captureSpeedAt, outcomeAt, referenceToOut, rimOut, type RimTable } from '../src/reference/rimTable.js'
 import { simulateScaled } from '../src/reference/sphereLip.js'
 import { type BallWorld } from '../src/world/createWorld.js'
@@ -52,10 +53,7 @@ function decideCrossing(w: BallWorld, eid: number): void {
   const hole = P.markHole[eid]!
   const R = H.radius[hole]!
   const r = B.radius[eid]!
-  const ux = P.ux[eid]!
-  const uy = P.uy[eid]!
-  // signed offset of the path: its closest point is at cross·(−uy, ux) from the hole centre
-  const cross = (H.x[hole]! - P.x0[eid]!) * uy - (H.y[hole]! - P.y0[eid]!) * ux
+  const cross = pathOffset(w, eid, hole)
   const delta = Math.abs(cross)
   const v = P.speed[eid]!
   if (!(r < R) || !(delta < R) || !(v > 0)) return
@@ -74,5 +72,5 @@ function decideCrossing(w: BallWorld, eid: number): void {
     outcomeAt(table, ds, vs, vs <= captureSpeedAt(table, ds))
     if (o.kind === RimKind.Guarded) return
   }
-  applyRimOutcome(w, eid, hole, cross, delta, v)
+  applyRimOutcome(w, eid, hole, cross)
 }

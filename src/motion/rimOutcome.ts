@@ -24,9 +24,11 @@ import { planRolling, startPath } from './rolling.js'
 
 /**
  * Applies the outcome in rimOut (not RimKind.Guarded) to ball eid at its lip crossing of `hole` (marked Lip
- * this pass): `cross` is the path's signed offset from the hole centre, `delta` its size, `v` the speed.
+ * this pass): `cross` is the path's signed offset from the hole centre (pathOffset).
  */
-export function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number, delta: number, v: number): void {
+export function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number): void {
+  const delta = Math.abs(cross)
+  const v = w.Path.speed[eid]!
   const P = w.Path
   const H = w.Hole
   const B = w.Ball

@@ -210,6 +210,15 @@ export function planRolling(w: BallWorld, eid: number): void {
   }
 }
 
+/**
+ * The signed offset of a ball's straight path from a hole's centre: the path's closest point to it is at
+ * offset·(−uy, ux) from the centre; |offset| is the δ of a lip crossing.
+ */
+export function pathOffset(w: BallWorld, eid: number, hole: number): number {
+  const P = w.Path
+  return (w.Hole.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (w.Hole.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+}
+
 /** Ball state at time t on its straight path (clamped at its stop). */
 export function sampleRolling(w: BallWorld, eid: number, t: number): void {
   const P = w.Path

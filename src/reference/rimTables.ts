@@ -20,7 +20,7 @@ export function prepareRimTable(
   ballRadius: number,
   options: { inertia?: number; rows?: 'now' | 'lazy' } = {},
 ): number {
-  const w = 'world' in target && 'config' in target.world ? target.world : (target as BallWorld)
+  const w = 'world' in target ? target.world : target
   if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
   if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
   const inertia = options.inertia ?? w.config.BALL_INERTIA
