@@ -12,10 +12,8 @@
 // average) per hero lip crossing; allocates only the reference's result object, once per crossing.
 // Reads Path, Ball, Hole, config; writes Ball, Path, RimContact (takes the ball's slot); emits the events above.
 import { PathEvent } from '../components/Path.js'
-import { applyRimOutcome } from '../src/motion/rimOutcome.js'
-import { pathOffset } from '../src/motion/rolling.js'
-import { RimKind, ROLL_TURN, referenceToOut, rimOut } from '../src/reference/rimTable.js'
-import { simulateScaled } from '../src/reference/sphereLip.js'
+import { decideByReference } from '../src/motion/rimOutcome.js'
+import { ROLL_TURN } from '../src/reference/rimTable.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (docs/reference-model.md: about 20°). */
@@ -23,22 +21,11 @@ export const HERO_ROLL_TURN = ROLL_TURN
 
 export function heroReferenceSystem(w: BallWorld): void {
   const P = w.Path
-  const H = w.Hole
   const B = w.Ball
   const list = w.marked
   for (let i = 0; i < list.count; i++) {
     const eid = list.ids[i]!
     if (B.hero[eid] !== 1 || P.mark[eid] !== PathEvent.Lip) continue
-    const hole = P.markHole[eid]!
-    const R = H.radius[hole]!
-    const r = B.radius[eid]!
-    const cross = pathOffset(w, eid, hole)
-    const delta = Math.abs(cross)
-    const v = P.speed[eid]!
-    if (!(r < R) || !(delta < R) || !(v > 0)) continue
-    const ds = delta / r
-    referenceToOut(simulateScaled(R / r, ds, v / Math.sqrt(w.config.GRAVITY * r), w.config.BALL_INERTIA, null), R / r, ds)
-    if (rimOut.kind === RimKind.Guarded) continue
-    applyRimOutcome(w, eid, hole, cross)
+    decideByReference(w, eid, false)
   }
 }

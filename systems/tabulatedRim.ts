@@ -11,21 +11,8 @@
 // ball not smaller than the hole, or a node where a guard stopped the reference, is left to the stages.
 // Reads Path, Ball, Hole, RimContact, config; writes Ball, Path, RimContact; emits the events above.
 import { PathEvent } from '../components/Path.js'
-import { applyRimOutcome, endRide, landCrossing } from '../src/motion/rimOutcome.js'
-import { pathOffset } from '../src/motion/rolling.js'
-import { RimKind, TABLE_TOP_SPEED, captureSpeedAt, outcomeAt, referenceToOut, rimOut, type RimTable } from '../src/reference/rimTable.js'
-import { simulateScaled } from '../src/reference/sphereLip.js'
+import { decideByReference, endRide, landCrossing } from '../src/motion/rimOutcome.js'
 import { type BallWorld } from '../src/world/createWorld.js'
-
-/** The world's table for this geometry, or null (then the live reference decides). */
-function tableFor(w: BallWorld, ratio: number, inertia: number): RimTable | null {
-  const tables = w.rimTables
-  for (let i = 0; i < tables.length; i++) {
-    const t = tables[i]!
-    if (t.ratio === ratio && t.inertia === inertia) return t
-  }
-  return null
-}
 
 export function tabulatedRimSystem(w: BallWorld): void {
   // (rides and carries also end here for hero balls, whose crossings the reference decided live)
@@ -38,39 +25,9 @@ export function tabulatedRimSystem(w: BallWorld): void {
     const eid = list.ids[i]!
     const mark = P.mark[eid]
     if (mark === PathEvent.Lip) {
-      if (tabulated) decideCrossing(w, eid)
+      if (tabulated) decideByReference(w, eid, true)
     }
     else if (mark === PathEvent.RollEnd && RC.ride[B.rim[eid]!] !== 0) endRide(w, eid)
     else if (mark === PathEvent.Landing) landCrossing(w, eid)
   }
-}
-
-/** Decides a lip crossing from the table (or the live reference above its top speed). */
-function decideCrossing(w: BallWorld, eid: number): void {
-  const P = w.Path
-  const H = w.Hole
-  const B = w.Ball
-  const hole = P.markHole[eid]!
-  const R = H.radius[hole]!
-  const r = B.radius[eid]!
-  const cross = pathOffset(w, eid, hole)
-  const delta = Math.abs(cross)
-  const v = P.speed[eid]!
-  if (!(r < R) || !(delta < R) || !(v > 0)) return
-  const g = w.config.GRAVITY
-  const j = w.config.BALL_INERTIA
-  const vScale = Math.sqrt(g * r)
-  const ds = delta / r
-  const vs = v / vScale
-  const o = rimOut
-  const table = vs > TABLE_TOP_SPEED ? null : tableFor(w, R / r, j)
-  if (table === null) {
-    // beyond the table's speeds (a fast ball, rare), or a geometry with no table built: the live reference
-    referenceToOut(simulateScaled(R / r, ds, vs, j, null), R / r, ds)
-    if (o.kind === RimKind.Guarded) return
-  } else {
-    outcomeAt(table, ds, vs, vs <= captureSpeedAt(table, ds))
-    if (o.kind === RimKind.Guarded) return
-  }
-  applyRimOutcome(w, eid, hole, cross)
 }

@@ -1,6 +1,6 @@
-// What the ball does once the rigid-sphere reference (live, or its table) has decided its lip crossing: the
-// outcome in rimOut (src/reference/rimTable.ts), applied with no jump. Shared by the tabulated rim model and
-// the hero ball (systems/tabulatedRim.ts, systems/heroReference.ts).
+// A lip crossing decided by the rigid-sphere reference (decideByReference: from the world's table, or by a
+// live run) and what the ball does then: the outcome in rimOut (src/reference/rimTable.ts), applied with no
+// jump. Shared by the tabulated rim model and the hero ball (systems/tabulatedRim.ts, systems/heroReference.ts).
 //   dropped in clean (turned less than ROLL_TURN): 'capture' (via 'clean') at the crossing
 //   rolled round the lip, captured or not: it rides the lip (mode rimRoll, a tabulated ride:
 //     src/motion/rimRoll.ts) for the reference's time, turning the reference's angle, from the crossing to
@@ -14,19 +14,55 @@ import { PathEvent } from '../../components/Path.js'
 import { RIDE_DROPS, RIDE_LEAVES, RimMode } from '../../components/RimContact.js'
 import { CaptureVia, EventType } from '../events.js'
 import { cogRadius } from '../geometry.js'
-import { RimKind, ROLL_TURN, rimOut } from '../reference/rimTable.js'
+import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, outcomeAt, referenceToOut, rimOut, type RimTable } from '../reference/rimTable.js'
+import { simulateScaled } from '../reference/sphereLip.js'
 import { lockAtLip } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { captureBall, emitHoleEvent } from './ballFate.js'
 import { leaveRim, planRimRoll, sampleRimRoll } from './rimRoll.js'
-import { planRolling, startPath } from './rolling.js'
+import { pathOffset, planRolling, startPath } from './rolling.js'
+
+/** The world's table for this geometry, or null (then the live reference decides). */
+function tableFor(w: BallWorld, ratio: number, inertia: number): RimTable | null {
+  const tables = w.rimTables
+  for (let i = 0; i < tables.length; i++) {
+    const t = tables[i]!
+    if (t.ratio === ratio && t.inertia === inertia) return t
+  }
+  return null
+}
+
+/**
+ * Decides ball eid's lip crossing (marked Lip this pass) by the rigid-sphere reference and applies it:
+ * from the world's table for the crossing's geometry when `tabulated` and one is there (and the speed is
+ * within it), else by a live run. A ball not smaller than the hole, or a run a guard stopped, is left
+ * marked for the six stages.
+ */
+export function decideByReference(w: BallWorld, eid: number, tabulated: boolean): void {
+  const hole = w.Path.markHole[eid]!
+  const R = w.Hole.radius[hole]!
+  const r = w.Ball.radius[eid]!
+  const cross = pathOffset(w, eid, hole)
+  const delta = Math.abs(cross)
+  const v = w.Path.speed[eid]!
+  if (!(r < R) || !(delta < R) || !(v > 0)) return
+  const j = w.config.BALL_INERTIA
+  const ds = delta / r
+  const vs = v / Math.sqrt(w.config.GRAVITY * r)
+  const table = tabulated && vs <= TABLE_TOP_SPEED ? tableFor(w, R / r, j) : null
+  // beyond the table's speeds (a fast ball, rare), a geometry with no table, or a hero ball: a live run
+  if (table === null) referenceToOut(simulateScaled(R / r, ds, vs, j, null), R / r, ds)
+  else outcomeAt(table, ds, vs, vs <= captureSpeedAt(table, ds))
+  if (rimOut.kind === RimKind.Guarded) return
+  applyRimOutcome(w, eid, hole, cross)
+}
 
 /**
  * Applies the outcome in rimOut (not RimKind.Guarded) to ball eid at its lip crossing of `hole` (marked Lip
  * this pass): `cross` is the path's signed offset from the hole centre (pathOffset).
  */
-export function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number): void {
+function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number): void {
   const delta = Math.abs(cross)
   const v = w.Path.speed[eid]!
   const P = w.Path
