@@ -54,8 +54,11 @@ export { planRimRoll, sampleRimRoll, startRimRoll } from './motion/rimRoll.js'
 export { captureBall, emitHoleEvent, launchBall, restBall } from './motion/ballFate.js'
 
 // systems, in the default schedule's order
+export { launcherSystem } from '../systems/launcher.js'
+export { fixedContactsSystem } from '../systems/fixedContacts.js'
 export { integrationSystem } from '../systems/integration.js'
 export { heroReferenceSystem } from '../systems/heroReference.js'
+export { tabulatedRimSystem } from '../systems/tabulatedRim.js'
 export { skipOverSystem } from '../systems/skipOver.js'
 export { captureSystem } from '../systems/capture.js'
 export { cogGateSystem } from '../systems/cogGate.js'

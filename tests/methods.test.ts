@@ -13,6 +13,13 @@ describe('METHOD and SUBSTEPS', () => {
     expect(createSchedule()).toEqual([...DEFAULT_SCHEDULE])
   })
 
+  it('every system of DEFAULT_SCHEDULE is exported from the ecs entry, so a game can build its own schedule from them', async () => {
+    const ecs = (await import('../src/ecs')) as Record<string, unknown>
+    const exported = new Set(Object.values(ecs))
+    const missing = DEFAULT_SCHEDULE.filter((e) => !exported.has(e.run)).map((e) => e.name)
+    expect(missing).toEqual([])
+  })
+
   it('a bad METHOD or SUBSTEPS throws a RangeError naming the key and the allowed values', () => {
     expect(() => resolveConfig({ METHOD: 'rk4' as never })).toThrow(RangeError)
     expect(() => resolveConfig({ METHOD: 'rk4' as never })).toThrow(/config\.METHOD must be one of 'exact', 'naive', 'v1', got 'rk4'/)
