@@ -3,7 +3,9 @@
 // Splitting is required, not an optimisation: a world made through `.` is handed to functions from
 // `./ecs`, so every module with module-level state (e.g. the WeakMap of stores in components/store.ts)
 // must exist once, in a shared chunk under dist/chunks/, not be copied into each entry.
-// bitecs stays external: it is the package's one runtime dependency. Declarations come from tsc
+// bitecs stays external: it is the package's one runtime dependency. The portable elementary functions
+// (src/math.ts, from @stdlib packages written as CommonJS, hence the main field) are bundled in, so a
+// user installs none of them. Declarations come from tsc
 // (tsconfig.build.json → dist/types/).
 import { build } from 'esbuild'
 import { rm } from 'node:fs/promises'
@@ -27,6 +29,7 @@ await build({
   splitting: true,
   format: 'esm',
   platform: 'neutral',
+  mainFields: ['module', 'main'],
   target: 'es2022',
   external: ['bitecs'],
   outdir: 'dist',

@@ -4,6 +4,7 @@
 // Notation (docs/design.md §1): R hole radius, r ball radius, δ offset of the ball's straight
 // path from the hole centre, v speed when the centre crosses the lip circle (radius R), g gravity.
 import type { CaptureWindowShape } from './config/design.js'
+import { exp, expm1, log, log1p } from './math.js'
 
 /**
  * Stage 5 skip speed: v_skip(δ) = R·√(2g/r)·√(1 − δ²/R²). A ball faster than this at the lip flies over
@@ -116,18 +117,18 @@ export function speedAtDistance(d: number, v0: number, decel: number): number {
 
 /** Arc length rolled on the rim after τ seconds. */
 export function rollArc(tau: number, vt0: number, friction: number): number {
-  return friction > 0 ? (vt0 * -Math.expm1(-friction * tau)) / friction : vt0 * tau
+  return friction > 0 ? (vt0 * -expm1(-friction * tau)) / friction : vt0 * tau
 }
 
 /** Rim-roll speed after τ seconds. */
 export function rollSpeed(tau: number, vt0: number, friction: number): number {
-  return vt0 * Math.exp(-friction * tau)
+  return vt0 * exp(-friction * tau)
 }
 
 /** Time for the rim-roll speed to fall to the drop speed (0 if it starts below; Infinity if μ = 0). */
 export function rollDropTime(vt0: number, friction: number, dropSpeed: number): number {
   if (vt0 <= dropSpeed) return 0
-  return friction > 0 ? Math.log(vt0 / dropSpeed) / friction : Infinity
+  return friction > 0 ? log(vt0 / dropSpeed) / friction : Infinity
 }
 
 /** Time to roll an arc of length `arc`, or Infinity if the decaying speed never covers it. */
@@ -135,7 +136,7 @@ export function rollPopTime(vt0: number, friction: number, arc: number): number 
   if (vt0 <= 0) return Infinity
   if (!(friction > 0)) return arc / vt0
   const q = (friction * arc) / vt0
-  return q < 1 ? -Math.log1p(-q) / friction : Infinity
+  return q < 1 ? -log1p(-q) / friction : Infinity
 }
 
 /**

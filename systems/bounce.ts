@@ -10,6 +10,7 @@ import { emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
 import { rimBounce } from '../src/geometry.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { hypot } from '../src/math.js'
 
 /** the bounced velocity, reused for every ball */
 const out = new Float64Array(2)
@@ -34,13 +35,13 @@ export function bounceSystem(w: BallWorld): void {
     const vy = B.vy[eid]!
     let nx = x - H.x[hole]!
     let ny = y - H.y[hole]!
-    const len = Math.hypot(nx, ny)
+    const len = hypot(nx, ny)
     if (len > 0) {
       nx /= len
       ny /= len
     } else {
       // centre exactly on the hole centre: no radial direction; take the contact as head-on
-      const sp = Math.hypot(vx, vy)
+      const sp = hypot(vx, vy)
       nx = sp > 0 ? -vx / sp : 1
       ny = sp > 0 ? -vy / sp : 0
     }

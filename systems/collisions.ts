@@ -23,6 +23,7 @@ import { launchBall } from '../src/motion/ballFate.js'
 import { pushId } from '../src/world/idLists.js'
 import type { CollisionState } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
+import { hypot } from '../src/math.js'
 
 export function collisionsSystem(w: BallWorld): void {
   const C = w.collide
@@ -108,7 +109,7 @@ function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
   let vx = px / m
   let vy = py / m
   // the impulse reported is the one on a
-  contactOut.impulse = C.mass[a]! * Math.hypot(vx - B.vx[a]!, vy - B.vy[a]!)
+  contactOut.impulse = C.mass[a]! * hypot(vx - B.vx[a]!, vy - B.vy[a]!)
   if (w.walls !== 0) {
     const W = w.Walls
     const e = w.walls

@@ -18,6 +18,7 @@ import { spotHeldByResting, spotTaken } from '../src/contacts/spot.js'
 import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import { createIdList } from '../src/world/idLists.js'
+import { hypot } from '../src/math.js'
 
 export function launcherSystem(w: BallWorld): void {
   if (w.pass !== 0 || w.held.count === 0) return
@@ -65,7 +66,7 @@ const blockers = createIdList(8)
 function kick(w: BallWorld, h: number, x: number, y: number): void {
   const B = w.Ball
   const mass = w.collide !== null ? w.collide.mass : w.fixed!.mass
-  const vh = Math.hypot(B.vx[h]!, B.vy[h]!)
+  const vh = hypot(B.vx[h]!, B.vy[h]!)
   const e = w.config.BALL_RESTITUTION
   for (let i = 0; i < blockers.count; i++) {
     const b = blockers.ids[i]!
@@ -73,7 +74,7 @@ function kick(w: BallWorld, h: number, x: number, y: number): void {
     if (!(speed >= w.config.BALL_SETTLE_SPEED)) continue
     let nx = B.x[b]! - x
     let ny = B.y[b]! - y
-    let d = Math.hypot(nx, ny)
+    let d = hypot(nx, ny)
     if (d === 0) {
       // on the spot's centre: along h's launch direction (or up the panel)
       nx = vh > 0 ? B.vx[h]! : 0

@@ -15,6 +15,7 @@ import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
 import { spotTaken } from '../contacts/spot.js'
 import { checkBall, checkHole, checkWorld, finite, flag, positive, readSpec, within } from './validate.js'
+import { cos, sin } from '../math.js'
 
 export interface BallSpec {
   x: number
@@ -110,7 +111,7 @@ export function addBall(world: BallWorld, spec: BallSpec): number {
 export function throwVelocity(world: BallWorld, power: number, angle: number): { vx: number; vy: number } {
   const cfg = world.config
   const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
-  return { vx: speed * Math.sin(angle), vy: -speed * Math.cos(angle) }
+  return { vx: speed * sin(angle), vy: -speed * cos(angle) }
 }
 
 /** Throws a ball from (x, y) with the meter's power and an aim; returns its entity id. */
@@ -126,7 +127,7 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const mass = massOf(w, 'throw.mass', s.mass, radius)
   const cfg = w.config
   const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
-  return newBall(w, x, y, speed * Math.sin(angle), -speed * Math.cos(angle), radius, hero, mass)
+  return newBall(w, x, y, speed * sin(angle), -speed * cos(angle), radius, hero, mass)
 }
 
 /**

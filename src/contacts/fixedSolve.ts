@@ -172,7 +172,7 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
   if (!(den > 0)) return false
   const m2a = ima > 0 ? 1 / ima : 0
   const m2b = imb > 0 ? 1 / imb : 0
-  const before = m2a * (F.vx[a]! ** 2 + F.vy[a]! ** 2) + m2b * (F.vx[b]! ** 2 + F.vy[b]! ** 2)
+  const before = m2a * (F.vx[a]! * F.vx[a]! + F.vy[a]! * F.vy[a]!) + m2b * (F.vx[b]! * F.vx[b]! + F.vy[b]! * F.vy[b]!)
   for (let pass = 0; pass < 2; pass++) {
     const target = pass === 0 ? separate : 0
     const j = (target + approach + c * u2) / den

@@ -8,6 +8,7 @@ import { HeapKind, heapPush } from './eventHeap.js'
 import { AT, E, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 import { RESULT, SearchResult, TIME, search, searchContact } from './search.js'
 import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, staleEntry, sweptCapsule } from './sweepGrid.js'
+import { sq } from '../math.js'
 
 /**
  * Predicts ball `a`'s contacts with every ball near its path over [C.now, tickEnd] and pushes them, and its
@@ -123,7 +124,7 @@ function restingCandidate(
   if (C.seen[b] === stamp) return
   C.seen[b] = stamp
   // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
-  if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > (rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE) ** 2) return
+  if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > sq(rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE)) return
   tryPair(w, a, b, startA, endA, tEnd)
 }
 

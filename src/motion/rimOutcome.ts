@@ -22,6 +22,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { captureBall, emitHoleEvent } from './ballFate.js'
 import { leaveRim, planRimRoll, sampleRimRoll } from './rimRoll.js'
 import { pathOffset, planRolling, startPath } from './rolling.js'
+import { atan2, cos, hypot, sin } from '../math.js'
 
 /** The world's table for this geometry, or null (then the live reference decides). */
 function tableFor(w: BallWorld, ratio: number, inertia: number): RimTable | null {
@@ -101,8 +102,8 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
     // exitSin·sin psi − exitCos·cos psi).
     const c0 = -Math.sqrt(R * R - delta * delta) / R
     const s0 = delta / R
-    const cT = Math.cos(o.exitTurn)
-    const sT = Math.sin(o.exitTurn)
+    const cT = cos(o.exitTurn)
+    const sT = sin(o.exitTurn)
     const cPsi = c0 * cT + s0 * sT
     const sPsi = s0 * cT - c0 * sT
     const ca = o.exitCos * sPsi + o.exitSin * cPsi
@@ -147,9 +148,9 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
   RC.ride[slot] = escapes ? RIDE_LEAVES : RIDE_DROPS
   RC.rideTurn[slot] = escapes ? o.exitTurn : o.turn
   RC.rideTime[slot] = duration
-  RC.rideFrom[slot] = Math.sqrt((B.x[eid]! - hx) ** 2 + (B.y[eid]! - hy) ** 2)
+  RC.rideFrom[slot] = hypot(B.x[eid]! - hx, B.y[eid]! - hy)
   RC.rideTo[slot] = escapes ? o.exitRadius * r : cogRadius(R, r)
-  RC.angle0[slot] = Math.atan2(B.y[eid]! - hy, B.x[eid]! - hx)
+  RC.angle0[slot] = atan2(B.y[eid]! - hy, B.x[eid]! - hx)
   RC.direction[slot] = side > 0 ? -1 : 1
   RC.time0[slot] = t
   RC.speed0[slot] = v

@@ -9,6 +9,7 @@ import { EventType } from '../events.js'
 import { emitHoleEvent } from './ballFate.js'
 import { planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
+import { atan2, cos, hypot, sin } from '../math.js'
 
 /** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
 export function planRimRoll(w: BallWorld, eid: number): void {
@@ -85,8 +86,8 @@ export function rimRollAt(w: BallWorld, eid: number, t: number): void {
   const v = rollSpeed(tau, vt0, mu)
   const dir = RC.direction[slot]!
   const phi = RC.angle0[slot]! + (dir * arc) / R
-  const c = Math.cos(phi)
-  const s = Math.sin(phi)
+  const c = cos(phi)
+  const s = sin(phi)
   const o = rimRollState
   o.x = w.Hole.x[hole]! + R * c
   o.y = w.Hole.y[hole]! + R * s
@@ -116,8 +117,8 @@ function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
   const to = RC.rideTo[slot]!
   const phi = RC.angle0[slot]! + dir * turn * f
   const rho = from + (to - from) * f
-  const c = Math.cos(phi)
-  const s = Math.sin(phi)
+  const c = cos(phi)
+  const s = sin(phi)
   // d(phi)/dt and d(rho)/dt
   const wPhi = T > 0 ? (dir * turn) / T : 0
   const wRho = T > 0 ? (to - from) / T : 0
@@ -158,9 +159,9 @@ export function startRimRoll(w: BallWorld, eid: number, hole: number, t: number)
   const rim = B.rim[eid]!
   const nx = B.x[eid]! - w.Hole.x[hole]!
   const ny = B.y[eid]! - w.Hole.y[hole]!
-  const len = Math.hypot(nx, ny)
+  const len = hypot(nx, ny)
   const vt = len > 0 ? (-B.vx[eid]! * ny + B.vy[eid]! * nx) / len : 0
-  const phi = Math.atan2(ny, nx)
+  const phi = atan2(ny, nx)
   RC.mode[rim] = RimMode.Rolling
   RC.angle0[rim] = phi
   RC.speed0[rim] = Math.abs(vt)

@@ -11,12 +11,13 @@ import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } fr
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { NEVER } from '../config/tolerances.js'
+import { hypot } from '../math.js'
 
 /** Starts a straight path at (x, y) with velocity (vx, vy) at time t, and sets the ball's state there. */
 export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
   const P = w.Path
   const B = w.Ball
-  const speed = Math.hypot(vx, vy)
+  const speed = hypot(vx, vy)
   P.x0[eid] = x
   P.y0[eid] = y
   P.t0[eid] = t

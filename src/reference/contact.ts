@@ -3,6 +3,7 @@
 // impact that turns a flying ball back into a lip state. Scaled units (r = g = 1).
 
 import { G, V, W } from './state.js'
+import { atan2, cos, hypot, sin } from '../math.js'
 
 /** Writes the centre, velocity and spin of the ball rolling on the lip in state y into G, V, W. */
 export function lipToCartesian(y: Float64Array, rs: number): void {
@@ -11,10 +12,10 @@ export function lipToCartesian(y: Float64Array, rs: number): void {
   const pd = y[2]!
   const td = y[3]!
   const wn = y[4]!
-  const cp = Math.cos(psi)
-  const sp = Math.sin(psi)
-  const st = Math.sin(th)
-  const ct = Math.cos(th)
+  const cp = cos(psi)
+  const sp = sin(psi)
+  const st = sin(th)
+  const ct = cos(th)
   const rho = rs + st
   // n = sinθ e_ρ + cosθ e_z, t_θ = cosθ e_ρ − sinθ e_z, e_ρ = (cp, sp, 0), e_ψ = (−sp, cp, 0)
   const nx = st * cp
@@ -42,8 +43,8 @@ export function impact(y: Float64Array, rs: number, j: number): void {
   const gx = G[0]!
   const gy = G[1]!
   const gz = G[2]!
-  const rhoG = Math.hypot(gx, gy)
-  const psi = Math.atan2(gy, gx)
+  const rhoG = hypot(gx, gy)
+  const psi = atan2(gy, gx)
   const cp = gx / rhoG
   const sp = gy / rhoG
   // n = (G − P)/|G − P|, with P = R e_ρ (|G − P| = r up to the rounding of the contact search)
@@ -69,9 +70,9 @@ export function impact(y: Float64Array, rs: number, j: number): void {
   const uz = wx * ny - wy * nx
   // tilt from n = sinθ e_ρ + cosθ e_z; θ̇ and ψ̇ from V⁺ = ρψ̇ e_ψ + r θ̇ t_θ
   const sinTh = nx * cp + ny * sp
-  const th = Math.atan2(sinTh, nz)
-  const st = Math.sin(th)
-  const ct = Math.cos(th)
+  const th = atan2(sinTh, nz)
+  const st = sin(th)
+  const ct = cos(th)
   const rho = rs + st
   y[0] = psi
   y[1] = th

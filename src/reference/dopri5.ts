@@ -62,6 +62,7 @@ import {
   P6,
   P7,
 } from './dopri5Tableau.js'
+import { pow } from '../math.js'
 
 /** Right-hand side: write dy/dt at (t, y) into `dydt`. Must not keep references to the arrays. */
 export type OdeRhs = (t: number, y: Float64Array, dydt: Float64Array) => void
@@ -236,7 +237,7 @@ function initialStep(ws: Dopri5Workspace, rhs: OdeRhs, t: number, y: Float64Arra
   for (let i = 0; i < n; i++) k2[i] = k2[i]! - k1[i]!
   const d2 = weightedNorm(k2, y, y, n, opts.rtol, opts.atol) / h0
   const dm = Math.max(d1, d2)
-  const h1 = dm <= 1e-15 ? Math.max(1e-6, h0 * 1e-3) : Math.pow(0.01 / dm, 1 / 5)
+  const h1 = dm <= 1e-15 ? Math.max(1e-6, h0 * 1e-3) : pow(0.01 / dm, 1 / 5)
   return Math.min(100 * h0, h1, hMax)
 }
 
@@ -323,8 +324,8 @@ export function dopri5(
     const err = weightedNorm(yStage, y, yNew, n, opts.rtol, opts.atol)
 
     // PI controller; a zero error would give an infinite factor, the clamp below handles it
-    const fac11 = Math.pow(err, expo)
-    let fac = fac11 / Math.pow(errOld, DOPRI5_PI_BETA) / DOPRI5_SAFETY // 1/fac = growth factor
+    const fac11 = pow(err, expo)
+    let fac = fac11 / pow(errOld, DOPRI5_PI_BETA) / DOPRI5_SAFETY // 1/fac = growth factor
     fac = Math.max(1 / DOPRI5_MAX_FACTOR, Math.min(1 / DOPRI5_MIN_FACTOR, fac))
 
     if (err <= 1) {

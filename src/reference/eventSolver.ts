@@ -24,6 +24,7 @@ import {
   timeToDistance,
   vSkip,
 } from '../geometry.js'
+import { atan2, cos, hypot, sin, sq } from '../math.js'
 
 export interface SolverHole {
   x: number
@@ -122,7 +123,7 @@ export function solveBall(
   let lock = 0
   let lip: { delta: number; speed: number } | undefined
   for (const h of holes) {
-    if ((ball.x - h.x) ** 2 + (ball.y - h.y) ** 2 < h.R * h.R) lock = h.id // added inside: in transit
+    if (sq(ball.x - h.x) + sq(ball.y - h.y) < h.R * h.R) lock = h.id // added inside: in transit
   }
 
   const holeEvent = (type: BallEventType, hole: number, time: number, via?: CaptureViaName): void => {
@@ -153,7 +154,7 @@ export function solveBall(
   let fromHole = 0
 
   for (let guard = 0; guard < maxEvents; guard++) {
-    const v0 = Math.hypot(vx0, vy0)
+    const v0 = hypot(vx0, vy0)
     const ux = v0 > 0 ? vx0 / v0 : 0
     const uy = v0 > 0 ? vy0 / v0 : 0
     const at = (s: number) => ({ x: x0 + ux * s, y: y0 + uy * s, v: speedAtDistance(s, v0, a) })
@@ -173,7 +174,7 @@ export function solveBall(
           else if (p > 0) list.push({ s: Math.max(0, p - half), kind: Kind.Lip, hole: h.id })
         } else if (h.id === lock) {
           list.push({ s: 0, kind: Kind.Exit, hole: h.id })
-        } else if (c * c < (h.R + r) ** 2 && p > 0 && h.id !== fromHole) {
+        } else if (c * c < sq(h.R + r) && p > 0 && h.id !== fromHole) {
           list.push({ s: p, kind: Kind.Near, hole: h.id })
         }
       }
@@ -243,11 +244,11 @@ export function solveBall(
         const vt = vx * ny - vy * nx
         if (Math.abs(vt) > config.RIM_ROLL_RATIO * Math.abs(vn)) {
           holeEvent('rimRoll', h.id, t)
-          const len = Math.hypot(nx, ny)
+          const len = hypot(nx, ny)
           const vtCcw = (-vx * ny + vy * nx) / len
           const vt0 = Math.abs(vtCcw)
           const dir = vtCcw >= 0 ? 1 : -1
-          const phi0 = Math.atan2(ny, nx)
+          const phi0 = atan2(ny, nx)
           const mu = config.RIM_ROLL_FRICTION
           const tDrop = rollDropTime(vt0, mu, config.RIM_ROLL_DROP_SPEED)
           const tPop = rollPopTime(vt0, mu, popArc(config.RIM_ROLL_MAX_TURNS, h.R))
@@ -265,10 +266,10 @@ export function solveBall(
           holeEvent('lipOut', h.id, tEnd)
           holeEvent('nearMiss', h.id, tEnd)
           fromHole = h.id
-          x0 = h.x + rho * Math.cos(phi)
-          y0 = h.y + rho * Math.sin(phi)
-          vx0 = -dir * Math.sin(phi) * v
-          vy0 = dir * Math.cos(phi) * v
+          x0 = h.x + rho * cos(phi)
+          y0 = h.y + rho * sin(phi)
+          vx0 = -dir * sin(phi) * v
+          vy0 = dir * cos(phi) * v
           t0 = tEnd
           newSegment = true
           continue
@@ -308,9 +309,9 @@ export function rimBounce(
   friction: number,
   out: [number, number],
 ): [number, number] {
-  let len = Math.hypot(nx, ny)
+  let len = hypot(nx, ny)
   if (!(len > 0)) {
-    const sp = Math.hypot(vx, vy)
+    const sp = hypot(vx, vy)
     nx = sp > 0 ? -vx / sp : 1
     ny = sp > 0 ? -vy / sp : 0
     len = 1
@@ -331,5 +332,5 @@ function bounce(nx: number, ny: number, vx: number, vy: number, config: Readonly
 /** Initial velocity of a throw, as the API maps it: power 0..1 onto MIN_VY..MAX_VY, angle 0 = up (−y). */
 export function throwVelocity(config: Readonly<BallPhysicsConfig>, power: number, angle: number): { vx: number; vy: number } {
   const speed = config.MIN_VY + power * (config.MAX_VY - config.MIN_VY)
-  return { vx: speed * Math.sin(angle), vy: -speed * Math.cos(angle) }
+  return { vx: speed * sin(angle), vy: -speed * cos(angle) }
 }

@@ -13,6 +13,7 @@ import {
   HOLD_PROBE_TIME,
   HOLD_RELEASE_TIME,
 } from './tolerances.js'
+import { hypot } from '../math.js'
 
 export type FlightEnd = 'impact' | 'landed' | 'droppedInFlight' | 'noClearance'
 
@@ -135,6 +136,6 @@ export function fly(rs: number): { end: FlightEnd; dt: number } {
   G[1] = G[1]! + V[1]! * tEvent
   G[2] = G[2]! + V[2]! * tEvent - 0.5 * tEvent * tEvent
   V[2] = V[2]! - tEvent
-  if (end === 'droppedInFlight' && Math.hypot(G[0]!, G[1]!) >= rs) end = 'landed' // cannot happen (see docs)
+  if (end === 'droppedInFlight' && hypot(G[0]!, G[1]!) >= rs) end = 'landed' // cannot happen (see docs)
   return { end, dt: tEvent }
 }

@@ -7,6 +7,7 @@ import { freePathClearance } from './flight.js'
 import { P, lip } from './state.js'
 import { LIP_ATOL, LIP_MAX_STEP, LIP_MAX_STEPS, LIP_RTOL } from './tolerances.js'
 import { validateReferenceInput, type LipState } from './types.js'
+import { cos, sin } from '../math.js'
 
 /** Lip ODEs (docs/reference-model.md, phase 2) in units r = g = 1; y = [ψ, θ, ψ̇, θ̇, ω_n]. */
 export const lipRhs: OdeRhs = (_t, y, dy) => {
@@ -14,8 +15,8 @@ export const lipRhs: OdeRhs = (_t, y, dy) => {
   const pd = y[2]!
   const td = y[3]!
   const wn = y[4]!
-  const s = Math.sin(th)
-  const c = Math.cos(th)
+  const s = sin(th)
+  const c = cos(th)
   const j = P.j
   const rho = P.rs + s
   dy[0] = pd
@@ -33,8 +34,8 @@ export function normalForce(y: Float64Array, rs: number): number {
   const th = y[1]!
   const pd = y[2]!
   const td = y[3]!
-  const s = Math.sin(th)
-  return Math.cos(th) - td * td - (rs + s) * pd * pd * s
+  const s = sin(th)
+  return cos(th) - td * td - (rs + s) * pd * pd * s
 }
 
 /** E/m on the lip in units g·r. */
@@ -43,8 +44,8 @@ export function lipEnergyScaled(y: Float64Array, rs: number, j: number): number 
   const pd = y[2]!
   const td = y[3]!
   const wn = y[4]!
-  const rho = rs + Math.sin(th)
-  return 0.5 * (1 + j) * (rho * rho * pd * pd + td * td) + 0.5 * j * wn * wn + Math.cos(th)
+  const rho = rs + sin(th)
+  return 0.5 * (1 + j) * (rho * rho * pd * pd + td * td) + 0.5 * j * wn * wn + cos(th)
 }
 
 export const EVENT_ROLLED_OUT = 0
@@ -76,12 +77,12 @@ export const ws = createDopri5Workspace(5, HELD_EVENTS.length)
 
 /** E/m of a ball rolling on the lip: ½(1+j)(ρ²ψ̇² + r²θ̇²) + ½ j r² ω_n² + g r cosθ, ρ = R + r sinθ. */
 export function lipEnergy(s: LipState, holeRadius: number, ballRadius: number, gravity: number, inertia: number): number {
-  const rho = holeRadius + ballRadius * Math.sin(s.theta)
+  const rho = holeRadius + ballRadius * sin(s.theta)
   const r = ballRadius
   return (
     0.5 * (1 + inertia) * (rho * rho * s.psiDot * s.psiDot + r * r * s.thetaDot * s.thetaDot) +
     0.5 * inertia * r * r * s.omegaN * s.omegaN +
-    gravity * r * Math.cos(s.theta)
+    gravity * r * cos(s.theta)
   )
 }
 

@@ -15,6 +15,7 @@
 // Above the table's top speed the caller asks the live reference (a rare, fast ball; see tabulatedRimSystem).
 import { simulateScaled } from './sphereLip.js'
 import type { ReferenceOutcome } from './types.js'
+import { atan2, cos, sin } from '../math.js'
 
 /** Outcome kinds stored per node. */
 export const RimKind = {
@@ -88,7 +89,7 @@ export function exitAngleFrom(relative: number, psi0: number, exitTurn: number):
  * y = δ): the exit point lies exitTurn radians further round (the angle falls), at distance exitRadius.
  */
 export function crossingAngle(ratio: number, ds: number): number {
-  return Math.atan2(ds, -Math.sqrt(ratio * ratio - ds * ds))
+  return atan2(ds, -Math.sqrt(ratio * ratio - ds * ds))
 }
 
 /**
@@ -111,14 +112,14 @@ export function referenceToOut(o: ReferenceOutcome, ratio: number, ds: number): 
   }
   out.kind = o.turnAngle >= ROLL_TURN ? RimKind.Rolled : o.impacts > 0 ? RimKind.Bounced : RimKind.Skipped
   const psi0 = crossingAngle(ratio, ds)
-  let turn = psi0 - Math.atan2(o.exitY!, o.exitX!)
+  let turn = psi0 - atan2(o.exitY!, o.exitX!)
   turn -= 2 * Math.PI * Math.floor(turn / (2 * Math.PI))
   while (turn + Math.PI < o.turnAngle) turn += 2 * Math.PI
   out.exitTurn = turn
   out.exitRadius = Math.sqrt(o.exitX! * o.exitX! + o.exitY! * o.exitY!)
   const rel = exitRelative(o.exitAngle!, psi0, turn)
-  out.exitCos = Math.cos(rel)
-  out.exitSin = Math.sin(rel)
+  out.exitCos = cos(rel)
+  out.exitSin = sin(rel)
   out.exitSpeed = o.exitSpeed!
 }
 

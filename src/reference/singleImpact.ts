@@ -5,6 +5,7 @@ import { brentRoot } from './brent.js'
 import { BISECTION_STEPS, CAPTURE_SPEED_GRID, SPEED_SCAN_TOP } from './captureSearch.js'
 import { FLIGHT_ROOT_TOL } from './tolerances.js'
 import { validateReferenceInput } from './types.js'
+import { atan2, cos, sin } from '../math.js'
 
 /** time grid for the first contact in the single-impact estimate (units √(r/g)) */
 const SINGLE_IMPACT_TIME_STEP = 1 / 256
@@ -29,9 +30,9 @@ export function singleImpactEscapes(vs: number, rs: number, j: number): boolean 
     if (fb <= 0) {
       const t = brentRoot(h, ta, tb, fa, fb, FLIGHT_ROOT_TOL, -1)
       if (t >= tFall) return false
-      const beta = Math.atan2(-(2 * rs - vs * t), 1 - 0.5 * t * t)
-      const L = vs * (Math.cos(beta) + j) + t * Math.sin(beta)
-      return L > 0 && (L * L) / (2 * (1 + j)) >= 1 - Math.cos(beta)
+      const beta = atan2(-(2 * rs - vs * t), 1 - 0.5 * t * t)
+      const L = vs * (cos(beta) + j) + t * sin(beta)
+      return L > 0 && (L * L) / (2 * (1 + j)) >= 1 - cos(beta)
     }
     ta = tb
     fa = fb

@@ -50,6 +50,7 @@ import {
   type ReferenceOutcome,
   type ReferenceTrace,
 } from './types.js'
+import { atan2, hypot } from '../math.js'
 
 /**
  * Runs the model in scaled units (r = g = 1): rs = R/r, ds = δ/r, vs = v/√(g r). `trace` (optional) receives
@@ -66,7 +67,7 @@ export function simulateScaled(rs: number, ds: number, vs: number, j: number, tr
   let mode: 'lip' | 'held' | 'flight'
   const y = lip
   // lip state at the crossing (also the state a held roll starts from if the flight below cannot clear)
-  y[0] = Math.atan2(ds, -rs * k)
+  y[0] = atan2(ds, -rs * k)
   y[1] = 0
   y[2] = (-vs * ds) / (rs * rs)
   y[3] = -vs * k
@@ -89,8 +90,8 @@ export function simulateScaled(rs: number, ds: number, vs: number, j: number, tr
   const result = (ending: ReferenceEnding, captured: boolean, exit?: { vx: number; vy: number }): ReferenceOutcome => {
     const out: ReferenceOutcome = { captured, turnAngle: Math.abs(turn), ending, impacts, phases, duration: t }
     if (exit !== undefined) {
-      out.exitSpeed = Math.hypot(exit.vx, exit.vy)
-      out.exitAngle = Math.atan2(exit.vy, exit.vx)
+      out.exitSpeed = hypot(exit.vx, exit.vy)
+      out.exitAngle = atan2(exit.vy, exit.vx)
       out.exitX = G[0]!
       out.exitY = G[1]!
     }

@@ -3,21 +3,26 @@
 import { MAX_RESTING_CELLS } from '../config/tolerances.js'
 import { BESIDE_GRID, RADIUS_CLASSES, appendId, type CollisionState } from './contactState.js'
 import type { BallWorld } from './createWorld.js'
+import { log, pow } from '../math.js'
 
 /** Radius classes: class k holds radii up to 2^((k − CLASS_OFFSET)/4) px. */
 const CLASS_OFFSET = 48
 
-/** The largest radius class k holds, px. */
+/** The largest radius each class holds, px (portable pow: the same classes on every engine). */
+const CLASS_BOUNDS = Float64Array.from({ length: RADIUS_CLASSES }, (_, k) => pow(2, (k - CLASS_OFFSET) / 4))
+
 function classBound(k: number): number {
-  return 2 ** ((k - CLASS_OFFSET) / 4)
+  return CLASS_BOUNDS[k]!
 }
 
-/** The class of radius r: the smallest whose bound is at least r. */
+/** The class of radius r: the smallest whose bound is at least r (a guess from the logarithm, then the bounds decide). */
 function radiusClass(r: number): number {
-  let k = Math.ceil(4 * Math.log2(r)) + CLASS_OFFSET
-  if (k < 0) k = 0
+  let k = Math.ceil((4 * log(r)) / Math.LN2) + CLASS_OFFSET
+  if (!(k >= 0)) k = 0
+  if (k > RADIUS_CLASSES - 1) k = RADIUS_CLASSES - 1
+  while (k > 0 && classBound(k - 1) >= r) k--
   while (k < RADIUS_CLASSES - 1 && classBound(k) < r) k++
-  return k < RADIUS_CLASSES ? k : RADIUS_CLASSES - 1
+  return k
 }
 
 function countIn(C: CollisionState, eid: number, r: number): void {

@@ -10,6 +10,7 @@ import { emitHoleEvent } from '../../../src/motion/ballFate.js'
 import { rimBounce } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { hypot } from '../../../src/math.js'
 
 /** the bounced velocity, reused for every ball */
 const out = new Float64Array(2)
@@ -30,7 +31,7 @@ export function naiveBounceSystem(w: BallWorld): void {
     const hole = P.markHole[eid]!
     let nx = B.x[eid]! - H.x[hole]!
     let ny = B.y[eid]! - H.y[hole]!
-    const len = Math.hypot(nx, ny)
+    const len = hypot(nx, ny)
     nx /= len
     ny /= len
     const vx = B.vx[eid]!

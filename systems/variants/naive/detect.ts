@@ -18,6 +18,7 @@ import { lockAtLip, releaseRim } from '../../../src/world/rimSlots.js'
 import { pushId } from '../../../src/world/idLists.js'
 import { type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { hypot } from '../../../src/math.js'
 
 export function naiveDetectSystem(w: BallWorld): void {
   const st = naiveState(w)
@@ -47,7 +48,7 @@ export function naiveDetectSystem(w: BallWorld): void {
     const y = B.y[eid]!
     const vx = B.vx[eid]!
     const vy = B.vy[eid]!
-    const speed = Math.hypot(vx, vy)
+    const speed = hypot(vx, vy)
     const foot = B.radius[eid]!
     let mark: number = PathEvent.None
     let markHole = 0

@@ -8,6 +8,7 @@ import { BallMode } from '../../../components/Ball.js'
 import { cogRadius } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { cos, hypot, sin } from '../../../src/math.js'
 
 /** One first-order step of the rim-roll decay: v·(1 − μ·h). Exported for the stability tests. */
 export function naiveRollDecay(v: number, friction: number, h: number): number {
@@ -39,8 +40,8 @@ export function naiveMoveSystem(w: BallWorld): void {
       RC.angle[rim] = phi
       const vNew = naiveRollDecay(v, mu, h)
       S.rollSpeed[eid] = vNew
-      const c = Math.cos(phi)
-      const s = Math.sin(phi)
+      const c = cos(phi)
+      const s = sin(phi)
       B.x[eid] = H.x[hole]! + R * c
       B.y[eid] = H.y[hole]! + R * s
       B.vx[eid] = -dir * s * vNew
@@ -49,7 +50,7 @@ export function naiveMoveSystem(w: BallWorld): void {
     }
     B.x[eid] = B.x[eid]! + vx * h
     B.y[eid] = B.y[eid]! + vy * h
-    const speed = Math.hypot(vx, vy)
+    const speed = hypot(vx, vy)
     const next = speed - decel * h
     if (next > 0) {
       const k = next / speed

@@ -14,6 +14,7 @@ import { cogRadius } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { setBallMode } from '../../../src/world/ballMode.js'
+import { cos, sin } from '../../../src/math.js'
 
 export function naiveRimRollSystem(w: BallWorld): void {
   const st = naiveState(w)
@@ -37,8 +38,8 @@ export function naiveRimRollSystem(w: BallWorld): void {
       const v = RC.speed0[rim]!
       const dir = RC.direction[rim]!
       S.rollSpeed[eid] = v
-      const c = Math.cos(phi)
-      const s = Math.sin(phi)
+      const c = cos(phi)
+      const s = sin(phi)
       B.x[eid] = H.x[hole]! + R * c
       B.y[eid] = H.y[hole]! + R * s
       B.vx[eid] = -dir * s * v

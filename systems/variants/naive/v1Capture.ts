@@ -10,6 +10,7 @@ import { captureBall, restBall } from '../../../src/motion/ballFate.js'
 import { lockAtLip } from '../../../src/world/rimSlots.js'
 import { type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { hypot } from '../../../src/math.js'
 
 export function v1CaptureSystem(w: BallWorld): void {
   const st = naiveState(w)
@@ -26,7 +27,7 @@ export function v1CaptureSystem(w: BallWorld): void {
     const y = B.y[eid]!
     const vx = B.vx[eid]!
     const vy = B.vy[eid]!
-    const speed = Math.hypot(vx, vy)
+    const speed = hypot(vx, vy)
     let captured = false
     if (speed < limit) {
       for (let j = 0, n = table.count; j < n; j++) {

@@ -1,0 +1,138 @@
+// Scenarios whose every bit must come out the same in every JavaScript engine (tests/engines.test.ts runs
+// them in Node's V8, Bun's JavaScriptCore and the SpiderMonkey shell and compares the hashes).
+//
+// Each scenario throws 1,000 balls at the default panel from its launch point, with powers and aims drawn
+// from a fixed-seed generator, a few of them hero balls (the live rigid-sphere reference: an ODE solver,
+// sin, cos, atan2, pow), and steps 1/60 s frames until every ball is captured, out or at rest, or 20 s.
+// The hash covers every event (type, ids, and the bits of every number) and, at the end, every ball's
+// position, velocity and mode. Plain arithmetic only: no Math function that engines may round differently.
+import {
+  addPanel,
+  BALL_MODE_NAMES,
+  createBallPhysics,
+  DEFAULT_PANEL,
+  PHYSICAL_CONFIG,
+  TABULATED_CONFIG,
+  type ConfigOverrides,
+  type EventView,
+} from '../../src/index.js'
+
+export interface ScenarioResult {
+  /** 64-bit FNV-1a hash of the event stream and the final state, as 16 hex digits */
+  hash: string
+  events: number
+  steps: number
+  captured: number
+}
+
+export const SCENARIOS: Readonly<Record<string, ConfigOverrides>> = {
+  design: {},
+  physical: PHYSICAL_CONFIG,
+  tabulated: TABULATED_CONFIG,
+  contactsExact: { BALL_COLLISIONS: 'on' },
+  contactsFixed: { BALL_COLLISIONS: 'fixed' },
+}
+
+const LITTLE = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1
+
+/** FNV-1a over 32-bit words, kept as two 32-bit halves (no BigInt: the same in every engine) */
+export class Hash {
+  private lo = 0x84222325
+  private hi = 0xcbf29ce4
+  private readonly f = new Float64Array(1)
+  private readonly u = new Uint32Array(this.f.buffer)
+
+  word(v: number): void {
+    // h ^= v; h *= 0x100000001b3 (mod 2^64), in 16-bit limbs so every product is exact
+    let lo = (this.lo ^ v) >>> 0
+    let hi = this.hi
+    const l0 = lo & 0xffff
+    const l1 = lo >>> 16
+    const h0 = hi & 0xffff
+    const h1 = hi >>> 16
+    // prime = 0x100_000001b3: low 32 bits 0x000001b3, high 32 bits 0x00000100
+    const p0 = 0x1b3
+    let c0 = l0 * p0
+    let c1 = l1 * p0 + (c0 >>> 16)
+    let c2 = h0 * p0 + (c1 >>> 16) + l0 * 0x100
+    let c3 = h1 * p0 + (c2 >>> 16) + l1 * 0x100
+    lo = ((c1 & 0xffff) << 16) | (c0 & 0xffff)
+    hi = ((c3 & 0xffff) << 16) | (c2 & 0xffff)
+    this.lo = lo >>> 0
+    this.hi = hi >>> 0
+  }
+
+  num(x: number): void {
+    this.f[0] = x
+    // the same word order on every host: the low word of the float first
+    this.word(this.u[LITTLE ? 0 : 1]!)
+    this.word(this.u[LITTLE ? 1 : 0]!)
+  }
+
+  hex(): string {
+    return this.hi.toString(16).padStart(8, '0') + this.lo.toString(16).padStart(8, '0')
+  }
+}
+
+function random(seed: number): () => number {
+  let s = seed
+  return () => {
+    s = (s * 16807) % 2147483647
+    return (s - 1) / 2147483646
+  }
+}
+
+export function runScenario(name: string, balls = 1000, seconds = 20): ScenarioResult {
+  const config = SCENARIOS[name]
+  if (config === undefined) throw new RangeError(`runScenario: unknown scenario ${name}`)
+  const sim = createBallPhysics(config, { capacity: balls + 64 })
+  addPanel(sim)
+  const { x, y } = DEFAULT_PANEL.launch
+  const r = random(20261123)
+  for (let i = 0; i < balls; i++) {
+    // spread across the launch band: the launch point ± 150 px, so throws do not start inside each other
+    sim.throwBall({ x: x - 150 + 300 * r(), y: y - 30 * r(), power: r(), angle: (r() - 0.5) * 1.2, hero: i % 100 === 7 })
+  }
+  const h = new Hash()
+  let events = 0
+  const visit = (e: EventView): void => {
+    events++
+    h.word(e.code)
+    h.word(e.ball)
+    h.word(e.hole)
+    h.word(e.other)
+    h.num(e.time)
+    h.num(e.delta)
+    h.num(e.speed)
+    h.num(e.impulse)
+  }
+  let steps = 0
+  const ids = sim.balls()
+  for (; steps < seconds * 60; steps++) {
+    sim.step(1 / 60)
+    sim.drainEventsWith(visit)
+    let moving = 0
+    for (const b of ids) {
+      const m = sim.ballState(b).mode
+      if (m === 'rolling' || m === 'rimRoll') moving++
+    }
+    if (moving === 0) break
+  }
+  let captured = 0
+  for (const b of ids) {
+    const s = sim.ballState(b)
+    if (s.mode === 'captured') captured++
+    h.num(s.x)
+    h.num(s.y)
+    h.num(s.vx)
+    h.num(s.vy)
+    h.word(BALL_MODE_NAMES.indexOf(s.mode))
+  }
+  return { hash: h.hex(), events, steps, captured }
+}
+
+export function runAll(balls?: number): Record<string, ScenarioResult> {
+  const out: Record<string, ScenarioResult> = {}
+  for (const name of Object.keys(SCENARIOS)) out[name] = runScenario(name, balls)
+  return out
+}
