@@ -62,7 +62,7 @@ import {
   P6,
   P7,
 } from './dopri5Tableau.js'
-import { pow } from '../math.js'
+import { exp, log, pow } from '../math.js'
 
 /** Right-hand side: write dy/dt at (t, y) into `dydt`. Must not keep references to the arrays. */
 export type OdeRhs = (t: number, y: Float64Array, dydt: Float64Array) => void
@@ -285,6 +285,7 @@ export function dopri5(
     evaluations++
   }
   let errOld = PREVIOUS_ERROR_FLOOR
+  let logErrOld = log(errOld)
   let lastRejected = false
   const expo = 0.2 - DOPRI5_PI_BETA * 0.75 // Hairer: 1/5 minus 0.75·β for the current-error exponent
 
@@ -324,13 +325,16 @@ export function dopri5(
     const err = weightedNorm(yStage, y, yNew, n, opts.rtol, opts.atol)
 
     // PI controller; a zero error would give an infinite factor, the clamp below handles it
-    const fac11 = pow(err, expo)
-    let fac = fac11 / pow(errOld, DOPRI5_PI_BETA) / DOPRI5_SAFETY // 1/fac = growth factor
+    // err^expo / errOld^β as one exp of logarithms (log errOld kept from the step that set it): two
+    // portable pows cost twice as much, and the factor needs no more digits than this gives
+    const logErr = log(err)
+    let fac = exp(expo * logErr - DOPRI5_PI_BETA * logErrOld) / DOPRI5_SAFETY // 1/fac = growth factor
     fac = Math.max(1 / DOPRI5_MAX_FACTOR, Math.min(1 / DOPRI5_MIN_FACTOR, fac))
 
     if (err <= 1) {
       accepted++
       errOld = Math.max(err, PREVIOUS_ERROR_FLOOR)
+      logErrOld = log(errOld)
       // event location on the dense output of this step
       let hit = -1
       let hitX = 2
@@ -375,7 +379,7 @@ export function dopri5(
       lastRejected = false
     } else {
       rejected++
-      h = h / Math.min(1 / DOPRI5_MIN_FACTOR, fac11 / DOPRI5_SAFETY)
+      h = h / Math.min(1 / DOPRI5_MIN_FACTOR, exp(expo * logErr) / DOPRI5_SAFETY)
       lastRejected = true
     }
   }
