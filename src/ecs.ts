@@ -33,6 +33,7 @@ export type { HoleSpec } from './commands/holes.js'
 export { clearWalls, setWalls } from './commands/walls.js'
 export type { WallsSpec } from './commands/walls.js'
 export { drainEvents, drainEventsWith } from './commands/events.js'
+export { SNAPSHOT_VERSION, restoreWorld, snapshotWorld } from './commands/snapshot.js'
 
 // components
 export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'

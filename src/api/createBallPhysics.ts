@@ -25,6 +25,7 @@ import { clearWalls, setWalls, type WallsSpec } from '../commands/walls.js'
 import { describe } from '../check.js'
 import { createSchedule, runSchedule, type ScheduleEntry } from '../schedule.js'
 import type { BallWorld, BallWorldOptions } from '../world/createWorld.js'
+import { restoreWorld, snapshotWorld } from '../commands/snapshot.js'
 
 export interface BallPhysics {
   readonly world: BallWorld
@@ -72,6 +73,17 @@ export interface BallPhysics {
   balls(): number[]
   /** ids of the holes (a new array) */
   holes(): number[]
+  /**
+   * The whole simulation state as bytes (compact, versioned; src/commands/snapshot.ts). A game's own
+   * components are not included. Not during a step.
+   */
+  snapshot(): Uint8Array
+  /**
+   * Gives this simulation — made with the same config, with no balls, holes or walls added yet — the
+   * state in `bytes` (from snapshot()); stepping on gives the same bits as the original would. Bad,
+   * truncated or mismatched bytes throw an error that says which, and change nothing.
+   */
+  restore(bytes: Uint8Array): void
 }
 
 /** Creates a simulation with the design's constants, changed by `overrides` (validated). */
@@ -110,5 +122,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     clearWalls: () => clearWalls(w),
     balls: () => listBalls(w),
     holes: () => listHoles(w),
+    snapshot: () => snapshotWorld(w),
+    restore: (bytes) => restoreWorld(w, bytes),
   }
 }

@@ -5,7 +5,7 @@
 // from a fixed-seed generator, a few of them hero balls (the live rigid-sphere reference: an ODE solver,
 // sin, cos, atan2, pow), and steps 1/60 s frames until every ball is captured, out or at rest, or 20 s.
 // The hash covers every event (type, ids, and the bits of every number) and, at the end, every ball's
-// position, velocity and mode. Plain arithmetic only: no Math function that engines may round differently.
+// position, velocity and mode, and the snapshot of the final world is hashed too. Plain arithmetic only: no Math function that engines may round differently.
 import {
   addPanel,
   BALL_MODE_NAMES,
@@ -23,6 +23,9 @@ export interface ScenarioResult {
   events: number
   steps: number
   captured: number
+  /** hash and length of the final world's snapshot */
+  snapshot: string
+  snapshotBytes: number
 }
 
 export const SCENARIOS: Readonly<Record<string, ConfigOverrides>> = {
@@ -128,7 +131,12 @@ export function runScenario(name: string, balls = 1000, seconds = 20): ScenarioR
     h.num(s.vy)
     h.word(BALL_MODE_NAMES.indexOf(s.mode))
   }
-  return { hash: h.hex(), events, steps, captured }
+  // the snapshot of the final world: the same bytes in every engine
+  const bytes = sim.snapshot()
+  const hs = new Hash()
+  for (let i = 0; i + 4 <= bytes.length; i += 4) hs.word((bytes[i]! | (bytes[i + 1]! << 8) | (bytes[i + 2]! << 16) | (bytes[i + 3]! << 24)) >>> 0)
+  for (let i = bytes.length & ~3; i < bytes.length; i++) hs.word(bytes[i]!)
+  return { hash: h.hex(), events, steps, captured, snapshot: hs.hex(), snapshotBytes: bytes.length }
 }
 
 export function runAll(balls?: number): Record<string, ScenarioResult> {

@@ -1,0 +1,269 @@
+// Snapshots: the whole simulation state of a world as bytes, and back.
+//
+// snapshotWorld(world) writes every field of the world's data — the component stores (Ball, Path,
+// RimContact, Hole, Walls), the moving set, the hole table and grid, the contact state of either contact
+// method, the event buffer (events not yet drained), the clock — and bitECS's entity index with which of
+// this module's components each entity has. restoreWorld(world, bytes) gives a world made with the same
+// config that state: stepping it then gives the same bits as stepping the original (tests/snapshot.test.ts).
+//
+// Format (all numbers little-endian): "PBSN", u16 format version, u32 length + the resolved config as
+// JSON (keys sorted), u32 length + the body, u32 FNV-1a checksum of everything before it. The body is the
+// world's data walked field by field: each value a tag byte, then a float64, a byte, a typed array (kind,
+// length, how many leading elements follow: trailing zeros are left out, which keeps a snapshot of a world
+// with spare capacity small), a list, an object (its keys, then its values), or a reference to an array or
+// object met before (so arrays the world shares between two fields stay shared).
+//
+// Not in a snapshot: a game's own components and stores (its own to save), the schedule (made from the
+// config), and the tabulated rim model's tables (named by their geometry, rebuilt or taken from the cache).
+import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
+import type { BallWorld } from '../world/createWorld.js'
+import { rimTableFor } from '../reference/rimTables.js'
+import { checkWorld } from './validate.js'
+import { checksum, configText, kindOf, readValue, Reader, SnapshotError, writeValue, Writer } from './snapshotCodec.js'
+
+/** Version of the byte format; restore refuses any other. */
+export const SNAPSHOT_VERSION = 1
+
+const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
+
+/** World fields kept out of the walked body (see the top of this file) */
+const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole'])
+
+/** Component membership bits, per entity */
+const BALL = 1
+const PATH = 2
+const RIM = 4
+const HOLE = 8
+const IS_HOLE = 16
+const WALLS = 32
+
+/** The world's data fields the body holds, in the order the world has them. */
+function bodyKeys(w: BallWorld): string[] {
+  return Object.keys(w).filter((k) => !SPECIAL.has(k))
+}
+
+/**
+ * The whole simulation state of the world as bytes (see the top of this file). Not during a step. A game's
+ * own components are not included.
+ */
+export function snapshotWorld(world: BallWorld): Uint8Array {
+  const w = checkWorld('snapshotWorld', world)
+  if (w.stepping) throw new Error('snapshotWorld: the world is in the middle of a step; take the snapshot between steps')
+  const out = new Writer()
+  for (const b of MAGIC) out.u8(b)
+  out.u16(SNAPSHOT_VERSION)
+  out.ascii(configText(w.config))
+  const bodyAt = out.at
+  out.u32(0) // body length, filled in below
+  // the entity index and which of this module's components each entity has
+  const E = w.entityIndex
+  out.u32(E.maxId)
+  out.u32(E.aliveCount)
+  out.u32(E.dense.length)
+  for (let i = 0; i < E.dense.length; i++) out.u32(E.dense[i]!)
+  for (let i = 0; i < E.aliveCount; i++) {
+    const e = E.dense[i]!
+    out.u8(
+      (hasComponent(w, e, w.Ball) ? BALL : 0) |
+        (hasComponent(w, e, w.Path) ? PATH : 0) |
+        (hasComponent(w, e, w.RimContact) ? RIM : 0) |
+        (hasComponent(w, e, w.Hole) ? HOLE : 0) |
+        (hasComponent(w, e, w.IsHole) ? IS_HOLE : 0) |
+        (hasComponent(w, e, w.Walls) ? WALLS : 0),
+    )
+  }
+  // the rim tables, by geometry
+  out.u32(w.rimTables.length)
+  for (const t of w.rimTables) {
+    out.f64(t.ratio)
+    out.f64(t.inertia)
+  }
+  // every other field
+  const seen = new Map<object, number>()
+  const keys = bodyKeys(w)
+  out.u32(keys.length)
+  for (const k of keys) {
+    out.ascii(k)
+    writeValue(out, seen, k, (w as unknown as Record<string, unknown>)[k])
+  }
+  out.view.setUint32(bodyAt, out.at - bodyAt - 4, true)
+  out.u32(checksum(out.bytes, out.at))
+  return out.bytes.slice(0, out.at)
+}
+
+interface Decoded {
+  maxId: number
+  aliveCount: number
+  dense: number[]
+  members: Uint8Array
+  tables: Array<[number, number]>
+  fields: Record<string, unknown>
+}
+
+function decode(bytes: Uint8Array, config: string): Decoded {
+  const r = new Reader(bytes)
+  for (let i = 0; i < MAGIC.length; i++) {
+    if (r.u8('the header') !== MAGIC[i]) throw new SnapshotError('restore: these bytes are not a snapshot (they do not start with "PBSN")')
+  }
+  const version = r.u16('the header')
+  if (version !== SNAPSHOT_VERSION) throw new SnapshotError(`restore: snapshot format version ${version}; this module reads version ${SNAPSHOT_VERSION}`)
+  const theirs = r.ascii('the config')
+  if (theirs !== config) {
+    let key = '(unreadable)'
+    try {
+      const a = JSON.parse(theirs) as Record<string, unknown>
+      const b = JSON.parse(config) as Record<string, unknown>
+      key = [...new Set([...Object.keys(a), ...Object.keys(b)])].sort().find((k) => JSON.stringify(a[k]) !== JSON.stringify(b[k])) ?? key
+      if (key !== '(unreadable)') key = `${key}: the snapshot's is ${JSON.stringify(a[key])}, this world's ${JSON.stringify(b[key])}`
+    } catch {
+      // fall through with the generic message
+    }
+    throw new SnapshotError(`restore: the snapshot was taken with another config (${key}); make the world with the snapshot's config`)
+  }
+  const bodyLength = r.u32('the header')
+  if (r.at + bodyLength + 4 !== bytes.length) {
+    throw new SnapshotError(`restore: the body should be ${bodyLength} bytes and end the snapshot with a 4-byte checksum; the snapshot has ${bytes.length} bytes (truncated or padded)`)
+  }
+  const sum = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).getUint32(bytes.length - 4, true)
+  if (sum !== checksum(bytes, bytes.length - 4)) throw new SnapshotError('restore: checksum mismatch (the bytes were changed after the snapshot was taken)')
+  const maxId = r.u32('the entity index')
+  const aliveCount = r.u32('the entity index')
+  const n = r.u32('the entity index')
+  if (aliveCount > n || n !== maxId) throw new SnapshotError(`restore: entity index with ${aliveCount} alive of ${n} ids, largest ${maxId} (malformed bytes)`)
+  r.need(4 * n, 'the entity index')
+  const dense: number[] = []
+  for (let i = 0; i < n; i++) {
+    const id = r.u32('the entity index')
+    if (id < 1 || id > maxId) throw new SnapshotError(`restore: entity id ${id} outside 1–${maxId} (malformed bytes)`)
+    dense.push(id)
+  }
+  if (new Set(dense).size !== n) throw new SnapshotError('restore: an entity id is listed twice (malformed bytes)')
+  r.need(aliveCount, 'the entity index')
+  const members = new Uint8Array(aliveCount)
+  for (let i = 0; i < aliveCount; i++) members[i] = r.u8('the entity index')
+  const tableCount = r.u32('the rim tables')
+  r.need(16 * tableCount, 'the rim tables')
+  const tables: Array<[number, number]> = []
+  for (let i = 0; i < tableCount; i++) {
+    const ratio = r.f64('the rim tables')
+    const inertia = r.f64('the rim tables')
+    if (!(ratio > 1 && ratio < 1e6) || !(inertia >= 0 && inertia <= 1)) throw new SnapshotError(`restore: rim table ${ratio}:${inertia} outside the geometry a table can have (malformed bytes)`)
+    tables.push([ratio, inertia])
+  }
+  const count = r.u32('the body')
+  const fields: Record<string, unknown> = {}
+  const seen: unknown[] = []
+  for (let i = 0; i < count; i++) {
+    const k = r.ascii('the body')
+    fields[k] = readValue(r, seen, k)
+  }
+  if (r.at !== bytes.length - 4) throw new SnapshotError(`restore: ${bytes.length - 4 - r.at} bytes left over after the body (malformed bytes)`)
+  return { maxId, aliveCount, dense, members, tables, fields }
+}
+
+/** Throws unless value `v` from the snapshot fits field `path` of the world, `t` (the same shape). */
+function checkShape(path: string, t: unknown, v: unknown): void {
+  if (t !== null && typeof t === 'object' && !ArrayBuffer.isView(t) && !Array.isArray(t)) {
+    if (v === null || typeof v !== 'object' || ArrayBuffer.isView(v) || Array.isArray(v)) {
+      throw new SnapshotError(`restore: ${path} is an object in this world, not in the snapshot (another version of the module?)`)
+    }
+    const tk = Object.keys(t)
+    const vk = Object.keys(v)
+    if (tk.length !== vk.length || tk.some((k, i) => k !== vk[i])) {
+      throw new SnapshotError(`restore: ${path} has fields ${tk.join(', ')} in this world and ${vk.join(', ')} in the snapshot (another version of the module?)`)
+    }
+    for (const k of tk) checkShape(`${path}.${k}`, (t as Record<string, unknown>)[k], (v as Record<string, unknown>)[k])
+    return
+  }
+  if (ArrayBuffer.isView(t)) {
+    if (!ArrayBuffer.isView(v) || kindOf(v) !== kindOf(t)) throw new SnapshotError(`restore: ${path} is a ${t.constructor.name} in this world, not in the snapshot`)
+    return
+  }
+  if (Array.isArray(t)) {
+    if (!Array.isArray(v)) throw new SnapshotError(`restore: ${path} is a list in this world, not in the snapshot`)
+    // lists of objects (the registered per-ball stores) keep their objects: the same count is needed
+    if (t.some((x) => x !== null && typeof x === 'object') || v.some((x) => x !== null && typeof x === 'object')) {
+      if (t.length !== v.length) throw new SnapshotError(`restore: ${path} has ${t.length} entries in this world and ${v.length} in the snapshot`)
+      for (let i = 0; i < t.length; i++) checkShape(`${path}[${i}]`, t[i], v[i])
+    }
+    return
+  }
+  if (t === null ? v !== null : typeof v !== typeof t) {
+    throw new SnapshotError(`restore: ${path} is ${t === null ? 'null' : `a ${typeof t}`} in this world and ${v === null ? 'null' : `a ${typeof v}`} in the snapshot`)
+  }
+}
+
+/** The component stores: they hold finite numbers only, in a snapshot as in a world */
+const STORES = ['Ball', 'Path', 'RimContact', 'Hole', 'Walls']
+
+function checkFinite(name: string, store: Record<string, unknown>): void {
+  for (const k of Object.keys(store)) {
+    const a = store[k]
+    if (!(a instanceof Float64Array || a instanceof Float32Array)) continue
+    for (let i = 0; i < a.length; i++) {
+      if (!Number.isFinite(a[i]!)) throw new SnapshotError(`restore: ${name}.${k}[${i}] is ${a[i]}; a store holds finite numbers only (malformed bytes)`)
+    }
+  }
+}
+
+/** Writes value `v` into field `key` of `parent` (objects kept and filled in, arrays and values replaced). */
+function apply(parent: Record<string, unknown>, key: string, v: unknown): void {
+  const t = parent[key]
+  if (t !== null && typeof t === 'object' && !ArrayBuffer.isView(t) && !Array.isArray(t)) {
+    const o = t as Record<string, unknown>
+    for (const k of Object.keys(o)) apply(o, k, (v as Record<string, unknown>)[k])
+    return
+  }
+  if (Array.isArray(t) && t.some((x) => x !== null && typeof x === 'object')) {
+    const list = v as unknown[]
+    for (let i = 0; i < t.length; i++) apply(t as unknown as Record<string, unknown>, String(i), list[i])
+    return
+  }
+  parent[key] = v
+}
+
+/**
+ * Gives `world` — made with the same config, and never given an entity — the state in `bytes` (from
+ * snapshotWorld). Bytes that are not a snapshot, are truncated or changed, or come from another config
+ * or format version throw a RangeError that says which, and leave the world as it was.
+ */
+export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
+  const w = checkWorld('restoreWorld', world)
+  if (!(bytes instanceof Uint8Array)) throw new TypeError(`restore: bytes must be a Uint8Array (from snapshot()), got ${bytes === null ? 'null' : typeof bytes}`)
+  if (w.stepping) throw new Error('restore: the world is in the middle of a step')
+  if (w.entityIndex.maxId !== 0) {
+    throw new Error('restore: the world already has entities; restore into a world just made with the snapshot\'s config (createBallPhysics(config)), then add the game\'s own components')
+  }
+  const d = decode(bytes, configText(w.config))
+  const keys = bodyKeys(w)
+  const theirs = Object.keys(d.fields)
+  if (keys.length !== theirs.length || keys.some((k, i) => k !== theirs[i])) {
+    throw new SnapshotError(`restore: the world has fields ${keys.join(', ')}, the snapshot ${theirs.join(', ')} (another version of the module?)`)
+  }
+  for (const k of keys) checkShape(k, (w as unknown as Record<string, unknown>)[k], d.fields[k])
+  for (const k of STORES) checkFinite(k, d.fields[k] as Record<string, unknown>)
+  const tables = d.tables.map(([ratio, inertia]) => rimTableFor(ratio, inertia))
+  // nothing below throws: the world changes only now
+  // ids 1..maxId made through bitECS, the ones not alive removed again; then the index's order (which id
+  // a new entity gets next) set to the snapshot's
+  for (let i = 0; i < d.maxId; i++) addEntity(w)
+  for (let i = d.aliveCount; i < d.dense.length; i++) removeEntity(w, d.dense[i]!)
+  const E = w.entityIndex
+  for (let i = 0; i < d.dense.length; i++) {
+    E.dense[i] = d.dense[i]!
+    E.sparse[d.dense[i]!] = i
+  }
+  for (let i = 0; i < d.aliveCount; i++) {
+    const e = d.dense[i]!
+    const m = d.members[i]!
+    if ((m & IS_HOLE) !== 0) addComponent(w, e, w.IsHole)
+    if ((m & HOLE) !== 0) addComponent(w, e, w.Hole)
+    if ((m & WALLS) !== 0) addComponent(w, e, w.Walls)
+    if ((m & BALL) !== 0) addComponent(w, e, w.Ball) // adoptBall runs (and adds Path); its rows are overwritten below
+    if ((m & PATH) !== 0 && !hasComponent(w, e, w.Path)) addComponent(w, e, w.Path)
+    if ((m & RIM) !== 0) addComponent(w, e, w.RimContact)
+  }
+  w.rimTables.length = 0
+  for (const t of tables) w.rimTables.push(t)
+  for (const k of keys) apply(w as unknown as Record<string, unknown>, k, d.fields[k])
+}

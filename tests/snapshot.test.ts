@@ -1,0 +1,155 @@
+// Snapshots (src/commands/snapshot.ts): a world restored from a snapshot taken mid-run continues with the
+// same events and states, bit for bit, in every contact mode and rim model; bad bytes are refused with a
+// message that says what is wrong, and the world they were given to is left as it was.
+import { describe, expect, it } from 'vitest'
+import { addPanel, createBallPhysics, PHYSICAL_CONFIG, SNAPSHOT_VERSION, TABULATED_CONFIG, type BallPhysics, type ConfigOverrides } from '../src/index.js'
+
+function random(seed: number): () => number {
+  let s = seed
+  return () => {
+    s = (s * 16807) % 2147483647
+    return (s - 1) / 2147483646
+  }
+}
+
+/** A busy panel: walls open at the bottom, 300 balls thrown (a few hero balls), run for `steps` frames. */
+function busy(config: ConfigOverrides, steps: number): BallPhysics {
+  const sim = createBallPhysics(config)
+  addPanel(sim)
+  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: { bottom: true } })
+  const r = random(5)
+  for (let i = 0; i < 300; i++) sim.throwBall({ x: 60 + 300 * r(), y: 450 - 30 * r(), power: r(), angle: (r() - 0.5) * 1.2, hero: i % 50 === 3 })
+  for (let s = 0; s < steps; s++) sim.step(1 / 60)
+  return sim
+}
+
+function everything(sim: BallPhysics) {
+  return { time: sim.time, balls: sim.balls().map((b) => ({ id: b, ...sim.ballState(b) })), holes: sim.holes().map((h) => sim.holeState(h)) }
+}
+
+/** the same bytes, every one */
+function same(a: Uint8Array, b: Uint8Array): boolean {
+  return a.length === b.length && a.every((x, i) => x === b[i])
+}
+
+const MODES: Array<[string, ConfigOverrides]> = [
+  ['the design, contacts off', {}],
+  ['contacts on (exact)', { BALL_COLLISIONS: 'on' }],
+  ['contacts fixed', { BALL_COLLISIONS: 'fixed' }],
+  ['PHYSICAL_CONFIG', PHYSICAL_CONFIG],
+  ['TABULATED_CONFIG, contacts on', { ...TABULATED_CONFIG, BALL_COLLISIONS: 'on' }],
+]
+
+describe('snapshot and restore', () => {
+  for (const [name, config] of MODES) {
+    it(`${name}: a restored world continues with every event and state bit-identical`, () => {
+      const a = busy(config, 25)
+      a.drainEvents()
+      a.step(1 / 60) // events left undrained: they are part of the state
+      const bytes = a.snapshot()
+      const b = createBallPhysics(config)
+      b.restore(bytes)
+      expect(same(b.snapshot(), bytes)).toBe(true)
+      expect(everything(b)).toEqual(everything(a))
+      for (let s = 0; s < 240; s++) {
+        a.step(1 / 60)
+        b.step(1 / 60)
+        expect(b.drainEvents()).toEqual(a.drainEvents())
+      }
+      expect(everything(b)).toEqual(everything(a))
+      // the run did something after the snapshot
+      expect(a.balls().filter((x) => a.ballState(x).mode === 'captured').length).toBeGreaterThan(10)
+    })
+  }
+
+  it('new balls and holes after a restore get the ids the original world would give them', () => {
+    const a = busy({ BALL_COLLISIONS: 'on' }, 10)
+    for (const x of a.balls().slice(0, 20)) a.removeBall(x)
+    const b = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    b.restore(a.snapshot())
+    expect(b.addBall({ x: 100, y: 100, vx: 10, vy: -300 })).toBe(a.addBall({ x: 100, y: 100, vx: 10, vy: -300 }))
+    expect(b.addHole({ x: 1000, y: 1000 })).toBe(a.addHole({ x: 1000, y: 1000 }))
+    for (let s = 0; s < 60; s++) {
+      a.step(1 / 60)
+      b.step(1 / 60)
+    }
+    expect(b.drainEvents()).toEqual(a.drainEvents())
+  })
+
+  it('is compact: a 300-ball world in a world made for 1,024 balls takes under 200 kB, and an empty one under 4 kB', () => {
+    expect(busy({}, 20).snapshot().length).toBeLessThan(200_000)
+    expect(createBallPhysics().snapshot().length).toBeLessThan(4_000)
+  })
+
+  describe('bad bytes are refused, and the world is left as it was', () => {
+    const good = busy({ BALL_COLLISIONS: 'on' }, 15).snapshot()
+    const fresh = createBallPhysics({ BALL_COLLISIONS: 'on' }).snapshot()
+
+    function refused(bytes: unknown, message: RegExp, config: ConfigOverrides = { BALL_COLLISIONS: 'on' }): void {
+      const sim = createBallPhysics(config)
+      const before = sim.snapshot()
+      expect(() => sim.restore(bytes as Uint8Array)).toThrow(message)
+      expect(same(sim.snapshot(), before)).toBe(true)
+      expect(sim.balls()).toEqual([])
+      // and it can still take a good snapshot afterwards
+      if (config.BALL_COLLISIONS === 'on' && Object.keys(config).length === 1) {
+        sim.restore(good)
+        expect(same(sim.snapshot(), good)).toBe(true)
+      }
+    }
+
+    it('not bytes', () => {
+      refused([1, 2, 3], /bytes must be a Uint8Array/)
+      refused(null, /bytes must be a Uint8Array/)
+    })
+
+    it('not a snapshot', () => {
+      refused(new TextEncoder().encode('hello world, not a snapshot'), /not a snapshot/)
+      refused(new Uint8Array(0), /end inside the header/)
+    })
+
+    it('truncated anywhere', () => {
+      const r = random(3)
+      for (let k = 0; k < 40; k++) {
+        const cut = 1 + Math.floor(r() * (good.length - 2))
+        refused(good.slice(0, cut), /truncated|end inside/)
+      }
+    })
+
+    it('a changed byte (the checksum)', () => {
+      for (const at of [20, Math.floor(good.length / 2), good.length - 5]) {
+        const bad = good.slice()
+        bad[at] = bad[at]! ^ 0x10
+        refused(bad, /checksum|config|malformed|truncated/)
+      }
+      const bad = good.slice()
+      bad[Math.floor(good.length / 2)] ^= 1
+      refused(bad, /checksum mismatch/)
+    })
+
+    it('another format version', () => {
+      const bad = good.slice()
+      new DataView(bad.buffer).setUint16(4, SNAPSHOT_VERSION + 1, true)
+      refused(bad, new RegExp(`format version ${SNAPSHOT_VERSION + 1}; this module reads version ${SNAPSHOT_VERSION}`))
+    })
+
+    it('another config, naming the setting that differs', () => {
+      refused(good, /another config \(BALL_COLLISIONS: the snapshot's is "on", this world's "off"\)/, {})
+      refused(good, /another config \(BALL_RESTITUTION/, { BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0.5 })
+    })
+
+    it('a world that already has entities', () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      sim.addHole({ x: 10, y: 10 })
+      const before = sim.snapshot()
+      expect(() => sim.restore(good)).toThrow(/already has entities/)
+      expect(same(sim.snapshot(), before)).toBe(true)
+    })
+
+    it('an empty world restores an empty world', () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      sim.restore(fresh)
+      expect(same(sim.snapshot(), fresh)).toBe(true)
+    })
+  })
+})
