@@ -34,6 +34,9 @@ export { clearWalls, setWalls } from './commands/walls.js'
 export type { WallsSpec } from './commands/walls.js'
 export { drainEvents, drainEventsWith } from './commands/events.js'
 export { SNAPSHOT_VERSION, restoreWorld, snapshotWorld } from './commands/snapshot.js'
+export { REPLAY_VERSION, createReplayPlayer, playReplay, replayFromJSON, replayToJSON, startReplay, takeReplay } from './commands/replay.js'
+export type { Replay, ReplayPlayer } from './commands/replay.js'
+export type { ReplayInput } from './world/recorder.js'
 
 // components
 export { BALL_MODE_NAMES, BallMode, BallSchema } from '../components/Ball.js'

@@ -24,6 +24,7 @@ import { checkWorld, describe } from './check.js'
 import { waitOutStep } from './motion/pause.js'
 import type { BallWorld } from './world/createWorld.js'
 import type { ScheduleEntry } from './world/system.js'
+import { record } from './world/recorder.js'
 
 export type { ScheduleEntry, System } from './world/system.js'
 /**
@@ -68,6 +69,7 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
   if (world.stepping) {
     throw new Error('runSchedule: the world is already stepping (called from inside a system?); a step cannot run inside a step')
   }
+  record(world, ['step', dt])
   world.stepping = true
   try {
     // contacts off: each ball's path is its own, so the order the moving balls are walked in changes no

@@ -9,7 +9,7 @@ import { tmpdir } from 'node:os'
 import { join, resolve } from 'node:path'
 import { build } from 'esbuild'
 import { afterAll, beforeAll, describe, expect, it } from 'vitest'
-import { Hash, runAll, SCENARIOS, type ScenarioResult } from './engines/scenarios.js'
+import { Hash, playSession, recordSession, runAll, SCENARIOS, type ScenarioResult } from './engines/scenarios.js'
 
 const root = resolve(import.meta.dirname, '..')
 const ENGINES: Record<string, { path: string; install: string }> = {
@@ -20,6 +20,9 @@ const ENGINES: Record<string, { path: string; install: string }> = {
 
 let dir = ''
 let bundle = ''
+let replayBundle = ''
+/** the session recorded in this process: its replay's JSON and the hash of its events */
+const session = recordSession()
 
 beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'engines-'))
@@ -36,17 +39,31 @@ beforeAll(async () => {
     logLevel: 'silent',
   })
   writeFileSync(bundle, out.outputFiles[0]!.text)
+  replayBundle = join(dir, 'replay.js')
+  const replay = await build({
+    absWorkingDir: root,
+    entryPoints: ['tests/engines/replayMain.ts'],
+    bundle: true,
+    format: 'iife',
+    platform: 'neutral',
+    mainFields: ['module', 'main'],
+    target: 'es2022',
+    define: { REPLAY_TEXT: JSON.stringify(session.text) },
+    write: false,
+    logLevel: 'silent',
+  })
+  writeFileSync(replayBundle, replay.outputFiles[0]!.text)
 })
 
 afterAll(() => {
   if (dir !== '') rmSync(dir, { recursive: true, force: true })
 })
 
-function runIn(engine: string): Record<string, ScenarioResult> {
+function runIn<T = Record<string, ScenarioResult>>(engine: string, file = bundle): T {
   const { path, install } = ENGINES[engine]!
   if (!existsSync(path)) throw new Error(`${engine} is not installed at ${path} (install: ${install})`)
-  const text = execFileSync(path, [bundle], { encoding: 'utf8', timeout: 120_000 })
-  return JSON.parse(text.trim().split('\n').pop()!) as Record<string, ScenarioResult>
+  const text = execFileSync(path, [file], { encoding: 'utf8', timeout: 120_000 })
+  return JSON.parse(text.trim().split('\n').pop()!) as T
 }
 
 describe('the same bits in every engine', () => {
@@ -74,6 +91,14 @@ describe('the same bits in every engine', () => {
       for (const name of Object.keys(SCENARIOS)) expect({ name, ...other[name] }).toEqual({ name, ...node[name] })
     })
   }
+
+  it('a replay recorded here plays back with every event bit-identical, here and in every engine', () => {
+    expect(session.events).toBeGreaterThan(500)
+    expect(playSession(session.text)).toEqual({ hash: session.hash, events: session.events })
+    for (const engine of Object.keys(ENGINES)) {
+      expect({ engine, ...runIn<{ hash: string; events: number }>(engine, replayBundle) }).toEqual({ engine, hash: session.hash, events: session.events })
+    }
+  })
 
   it('a hash changes with the last bit of one number', () => {
     const a = new Hash()

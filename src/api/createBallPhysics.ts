@@ -26,6 +26,7 @@ import { describe } from '../check.js'
 import { createSchedule, runSchedule, type ScheduleEntry } from '../schedule.js'
 import type { BallWorld, BallWorldOptions } from '../world/createWorld.js'
 import { restoreWorld, snapshotWorld } from '../commands/snapshot.js'
+import { startReplay, takeReplay, type Replay } from '../commands/replay.js'
 
 export interface BallPhysics {
   readonly world: BallWorld
@@ -84,11 +85,22 @@ export interface BallPhysics {
    * truncated or mismatched bytes throw an error that says which, and change nothing.
    */
   restore(bytes: Uint8Array): void
+  /**
+   * Starts recording a replay: every command and step from now on (src/commands/replay.ts). A world that
+   * already has balls or holes puts a snapshot of itself at the replay's start.
+   */
+  startRecording(): void
+  /** Stops recording and returns the replay (plain data; replayToJSON for text). */
+  stopRecording(): Replay
 }
 
 /** Creates a simulation with the design's constants, changed by `overrides` (validated). */
 export function createBallPhysics(overrides: ConfigOverrides = {}, options: BallWorldOptions = {}): BallPhysics {
-  const w = createBallWorld(overrides, options)
+  return physicsFor(createBallWorld(overrides, options))
+}
+
+/** The game API over an existing world (with its config's schedule). */
+export function physicsFor(w: BallWorld): BallPhysics {
   const cfg = w.config
   const schedule = createSchedule(cfg)
   return {
@@ -124,5 +136,7 @@ export function createBallPhysics(overrides: ConfigOverrides = {}, options: Ball
     holes: () => listHoles(w),
     snapshot: () => snapshotWorld(w),
     restore: (bytes) => restoreWorld(w, bytes),
+    startRecording: () => startReplay(w),
+    stopRecording: () => takeReplay(w),
   }
 }

@@ -16,6 +16,7 @@ import { pushId } from '../world/idLists.js'
 import { spotTaken } from '../contacts/spot.js'
 import { checkBall, checkHole, checkWorld, finite, flag, positive, readSpec, within } from './validate.js'
 import { cos, sin } from '../math.js'
+import { record, specOf } from '../world/recorder.js'
 
 export interface BallSpec {
   x: number
@@ -104,6 +105,7 @@ export function addBall(world: BallWorld, spec: BallSpec): number {
   const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
   const hero = flag('ball.hero', s.hero)
   const mass = massOf(w, 'ball.mass', s.mass, radius)
+  record(w, ['addBall', specOf(s)])
   return newBall(w, x, y, vx, vy, radius, hero, mass)
 }
 
@@ -125,6 +127,7 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
   const hero = flag('throw.hero', s.hero)
   const mass = massOf(w, 'throw.mass', s.mass, radius)
+  record(w, ['throwBall', specOf(s)])
   const cfg = w.config
   const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
   return newBall(w, x, y, speed * sin(angle), -speed * cos(angle), radius, hero, mass)
@@ -136,7 +139,9 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
  */
 export function removeBall(world: BallWorld, ball: number): void {
   const w = checkWorld('removeBall', world)
-  removeEntity(w, checkBall(w, 'ball', ball))
+  const b = checkBall(w, 'ball', ball)
+  record(w, ['removeBall', b])
+  removeEntity(w, b)
 }
 
 /**
@@ -149,6 +154,7 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
   const nvx = finite('vx', vx, MAX_SPEED)
   const nvy = finite('vy', vy, MAX_SPEED)
   const mode = w.Ball.mode[b]!
+  if (mode !== BallMode.Captured && mode !== BallMode.Out) record(w, ['setBallVelocity', b, nvx, nvy])
   if (mode === BallMode.Held) {
     // it leaves with this velocity when its spot is clear
     w.Ball.vx[b] = nvx
@@ -176,7 +182,9 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
 export function setHeroBall(world: BallWorld, ball: number, hero = true): void {
   const w = checkWorld('setHeroBall', world)
   const b = checkBall(w, 'ball', ball)
-  w.Ball.hero[b] = flag('hero', hero) ? 1 : 0
+  const on = flag('hero', hero)
+  record(w, ['setHeroBall', b, on])
+  w.Ball.hero[b] = on ? 1 : 0
 }
 
 /** True for a hero ball. */

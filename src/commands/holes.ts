@@ -17,6 +17,7 @@ import { addHoleToTable, overlappingHole, removeHoleFromTable } from '../world/h
 import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { replanRolling } from './replan.js'
 import { checkHole, checkWorld, describe, finite, positive, readSpec } from './validate.js'
+import { record } from '../world/recorder.js'
 
 export interface HoleSpec {
   x: number
@@ -87,6 +88,7 @@ export function addHole(world: BallWorld, spec: HoleSpec): number {
   const w = checkWorld('addHole', world)
   const h = readHole(w, 'hole', spec)
   checkClear(w, h)
+  record(w, ['addHole', { ...h }])
   const eid = placeHole(w, h)
   replanRolling(w)
   return eid
@@ -112,6 +114,7 @@ export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[]
       }
     }
   }
+  record(w, ['addHoles', list.map((h) => ({ ...h }))])
   const ids = list.map((h) => placeHole(w, h))
   replanRolling(w)
   return ids
@@ -121,6 +124,7 @@ export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[]
 export function removeHole(world: BallWorld, hole: number): void {
   const w = checkWorld('removeHole', world)
   const h = checkHole(w, 'hole', hole)
+  record(w, ['removeHole', h])
   removeEntity(w, h) // forgetHole runs here
 }
 

@@ -27,7 +27,7 @@ export const SNAPSHOT_VERSION = 1
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 
 /** World fields kept out of the walked body (see the top of this file) */
-const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole'])
+const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder'])
 
 /** Component membership bits, per entity */
 const BALL = 1

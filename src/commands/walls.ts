@@ -6,6 +6,7 @@ import { MAX_COORDINATE } from '../config/limits.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { replanRolling } from './replan.js'
 import { checkWorld, describe, finite, readSpec, within } from './validate.js'
+import { record } from '../world/recorder.js'
 
 export interface WallsSpec {
   /** inner faces of the rectangle, px (y down: top = minY); maxX > minX, maxY > minY */
@@ -50,6 +51,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
   if (!(maxY > minY)) throw new RangeError(`walls.maxY must be > walls.minY = ${minY}, got ${maxY}`)
   const e = s.restitution === undefined ? 0.5 : within('walls.restitution', s.restitution, 0, 1)
   const open = openMask(s.open)
+  record(w, ['setWalls', { minX, minY, maxX, maxY, restitution: e, open: { left: (open & WallEdge.Left) !== 0, right: (open & WallEdge.Right) !== 0, top: (open & WallEdge.Top) !== 0, bottom: (open & WallEdge.Bottom) !== 0 } }])
   if (w.walls === 0) {
     const eid = addEntity(w)
     fitStore(w.Walls, eid)
@@ -69,6 +71,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
 /** Removes the walls (a no-op without walls). */
 export function clearWalls(world: BallWorld): void {
   const w = checkWorld('clearWalls', world)
+  record(w, ['clearWalls'])
   if (w.walls !== 0) removeEntity(w, w.walls) // forgetWalls runs here
 }
 

@@ -29,7 +29,11 @@ export function prepareRimTable(
   const t0 = performance.now()
   const t = rimTableFor(holeRadius / ballRadius, inertia)
   if (rows === 'now') fillCaptureRows(t)
-  if (!w.rimTables.includes(t)) w.rimTables.push(t)
+  if (!w.rimTables.includes(t)) {
+    w.rimTables.push(t)
+    // a replay being recorded gives its world the same table (src/commands/replay.ts)
+    if (w.recorder !== null) w.recorder.inputs.push(['prepareRimTable', holeRadius, ballRadius, inertia])
+  }
   return performance.now() - t0
 }
 

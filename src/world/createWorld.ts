@@ -26,6 +26,7 @@ import { createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { createHoleTable, type HoleTable } from './holeTable.js'
 import { createIdList, type IdList, type MovingSet } from './idLists.js'
 import type { RimTable } from '../reference/rimTable.js'
+import type { Recorder } from './recorder.js'
 
 export type { HoleTable } from './holeTable.js'
 export type { IdList, MovingSet } from './idLists.js'
@@ -89,6 +90,8 @@ export interface BallWorldData {
   held: IdList
   /** balls the launcher has knocked off its spots since the world was made (systems/launcher.ts) */
   kicks: number
+  /** the inputs recorded for a replay while the world records (src/commands/replay.ts), else null */
+  recorder: Recorder | null
 }
 
 export type BallWorld = World<BallWorldData>
@@ -145,6 +148,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     ballStores: [],
     held: createIdList(16),
     kicks: 0,
+    recorder: null,
   }
   return createWorld<BallWorldData>(data, entityIndex)
 }

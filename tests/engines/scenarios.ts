@@ -10,7 +10,10 @@ import {
   addPanel,
   BALL_MODE_NAMES,
   createBallPhysics,
+  createReplayPlayer,
   DEFAULT_PANEL,
+  replayFromJSON,
+  replayToJSON,
   PHYSICAL_CONFIG,
   TABULATED_CONFIG,
   type ConfigOverrides,
@@ -77,6 +80,58 @@ export class Hash {
   }
 }
 
+/** A visitor that hashes every field of an event */
+export function eventHasher(h: Hash): (e: EventView) => void {
+  return (e) => {
+    h.word(e.code)
+    h.word(e.ball)
+    h.word(e.hole)
+    h.word(e.other)
+    h.num(e.time)
+    h.num(e.delta)
+    h.num(e.speed)
+    h.num(e.impulse)
+  }
+}
+
+/**
+ * A recorded session for the replay check: contacts on, walls, 300 throws over the first second, a few
+ * velocity changes, a removal, a hole added and one removed, 4 s in all. Returns the replay's JSON and
+ * the hash of every event of the recorded run.
+ */
+export function recordSession(): { text: string; hash: string; events: number } {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+  sim.startRecording()
+  addPanel(sim)
+  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.7, open: { bottom: true } })
+  const r = random(4242)
+  const h = new Hash()
+  const visit = eventHasher(h)
+  let events = 0
+  for (let step = 0; step < 240; step++) {
+    if (step < 60) for (let k = 0; k < 5; k++) sim.throwBall({ x: 60 + 300 * r(), y: 450 - 30 * r(), power: r(), angle: (r() - 0.5) * 1.2, hero: k === 0 && step % 20 === 0 })
+    if (step === 30) {
+      for (const b of sim.balls().slice(0, 10)) if (sim.ballState(b).mode === 'rolling') sim.setBallVelocity(b, -0, -200 * r())
+    }
+    if (step === 45) sim.removeBall(sim.balls()[3]!)
+    if (step === 50) sim.addHole({ x: 30, y: 30, radius: 12 })
+    if (step === 90) sim.removeHole(sim.holes()[7]!)
+    sim.step(1 / 60)
+    events += sim.drainEventsWith((e) => visit(e))
+  }
+  return { text: replayToJSON(sim.stopRecording()), hash: h.hex(), events }
+}
+
+/** Plays a replay's JSON and hashes every event, as recordSession did */
+export function playSession(text: string): { hash: string; events: number } {
+  const p = createReplayPlayer(replayFromJSON(text))
+  const h = new Hash()
+  const visit = eventHasher(h)
+  let events = 0
+  while (p.next()) events += p.sim.drainEventsWith((e) => visit(e))
+  return { hash: h.hex(), events }
+}
+
 function random(seed: number): () => number {
   let s = seed
   return () => {
@@ -98,16 +153,10 @@ export function runScenario(name: string, balls = 1000, seconds = 20): ScenarioR
   }
   const h = new Hash()
   let events = 0
+  const hashEvent = eventHasher(h)
   const visit = (e: EventView): void => {
     events++
-    h.word(e.code)
-    h.word(e.ball)
-    h.word(e.hole)
-    h.word(e.other)
-    h.num(e.time)
-    h.num(e.delta)
-    h.num(e.speed)
-    h.num(e.impulse)
+    hashEvent(e)
   }
   let steps = 0
   const ids = sim.balls()

@@ -1,0 +1,25 @@
+// Replay recording (src/commands/replay.ts): while a world records, every command that changes it appends
+// one input — its name and its checked arguments — after its checks pass, and every step its dt. A world
+// that does not record pays one null test per command.
+import type { BallWorld } from './createWorld.js'
+
+/** One recorded input: the command's name, then its arguments (plain numbers, booleans and objects) */
+export type ReplayInput = [string, ...unknown[]]
+
+export interface Recorder {
+  inputs: ReplayInput[]
+  /** the world when recording started, as a base64 snapshot; undefined when it had no entities */
+  start: string | undefined
+}
+
+/** Appends an input when the world records. */
+export function record(w: BallWorld, input: ReplayInput): void {
+  if (w.recorder !== null) w.recorder.inputs.push(input)
+}
+
+/** The fields of a checked spec that are set (undefined ones left out), as a plain object */
+export function specOf(s: Record<string, unknown>): Record<string, unknown> {
+  const out: Record<string, unknown> = {}
+  for (const k of Object.keys(s)) if (s[k] !== undefined) out[k] = s[k]
+  return out
+}

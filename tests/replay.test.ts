@@ -1,0 +1,147 @@
+// Replays (src/commands/replay.ts): a recorded session — every command and step — plays back with the
+// same events, states and snapshot, bit for bit, through JSON; recording can start mid-run; commands that
+// fail record nothing; bad replays are refused by name. (The cross-engine playback: tests/engines.test.ts.)
+import { describe, expect, it } from 'vitest'
+import {
+  addPanel,
+  createBallPhysics,
+  createReplayPlayer,
+  prepareRimTable,
+  replayFromJSON,
+  replayToJSON,
+  TABULATED_CONFIG,
+  type BallEvent,
+  type BallPhysics,
+  type ConfigOverrides,
+  type Replay,
+} from '../src/index.js'
+
+function random(seed: number): () => number {
+  let s = seed
+  return () => {
+    s = (s * 16807) % 2147483647
+    return (s - 1) / 2147483646
+  }
+}
+
+/** Every kind of input, at different steps; returns each step's drained events. */
+function session(sim: BallPhysics, steps: number, seed = 9): BallEvent[][] {
+  const r = random(seed)
+  const out: BallEvent[][] = []
+  for (let step = 0; step < steps; step++) {
+    if (step < 40 && step % 2 === 0) for (let k = 0; k < 6; k++) sim.throwBall({ x: 60 + 300 * r(), y: 450 - 30 * r(), power: r(), angle: (r() - 0.5) * 1.2 })
+    if (step === 10) sim.addBall({ x: 200, y: 300, vx: -0, vy: -350, radius: 9, mass: 0.5 })
+    if (step === 20) for (const b of sim.balls().slice(0, 8)) if (sim.ballState(b).mode === 'rolling') sim.setBallVelocity(b, 40 * r(), -250)
+    if (step === 25) sim.setHeroBall(sim.balls()[5]!, true)
+    if (step === 30) sim.removeBall(sim.balls()[2]!)
+    if (step === 35) sim.addHole({ x: 30, y: 30, radius: 12, value: 5 })
+    if (step === 50) sim.removeHole(sim.holes()[4]!)
+    if (step === 60) sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.3, open: { bottom: true, top: true } })
+    if (step === 80) sim.clearWalls()
+    sim.step(step % 3 === 0 ? 1 / 30 : 1 / 60)
+    out.push(sim.drainEvents())
+  }
+  return out
+}
+
+function states(sim: BallPhysics) {
+  return { time: sim.time, balls: sim.balls().map((b) => ({ b, ...sim.ballState(b) })), holes: sim.holes() }
+}
+
+function play(replay: Replay): { events: BallEvent[][]; sim: BallPhysics } {
+  const p = createReplayPlayer(replayFromJSON(replayToJSON(replay)))
+  const events: BallEvent[][] = []
+  while (p.next()) events.push(p.sim.drainEvents())
+  return { events, sim: p.sim }
+}
+
+const CONFIGS: Array<[string, ConfigOverrides]> = [
+  ['the design', {}],
+  ['contacts on', { BALL_COLLISIONS: 'on' }],
+  ['contacts fixed', { BALL_COLLISIONS: 'fixed' }],
+  ['the tabulated model', TABULATED_CONFIG],
+]
+
+describe('replays', () => {
+  for (const [name, config] of CONFIGS) {
+    it(`${name}: a recorded session plays back through JSON with every event, state and the snapshot bit-identical`, () => {
+      const sim = createBallPhysics(config)
+      sim.startRecording()
+      addPanel(sim)
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: { bottom: true } })
+      const events = session(sim, 150)
+      const replay = sim.stopRecording()
+      expect(replay.start).toBeUndefined()
+      expect(replay.inputs.filter((i) => i[0] === 'step')).toHaveLength(150)
+      const back = play(replay)
+      expect(back.events).toEqual(events)
+      expect(states(back.sim)).toEqual(states(sim))
+      expect(back.sim.snapshot()).toEqual(sim.snapshot())
+      expect(events.flat().length).toBeGreaterThan(100)
+    })
+  }
+
+  it('recording started mid-run carries a snapshot of the start, and plays back bit-identically', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    addPanel(sim)
+    session(sim, 30, 1)
+    sim.startRecording()
+    const events = session(sim, 60, 2)
+    const replay = sim.stopRecording()
+    expect(typeof replay.start).toBe('string')
+    const back = play(replay)
+    expect(back.events).toEqual(events)
+    expect(states(back.sim)).toEqual(states(sim))
+  })
+
+  it('a table prepared for another ball size is part of the replay', () => {
+    const sim = createBallPhysics(TABULATED_CONFIG)
+    sim.startRecording()
+    addPanel(sim)
+    prepareRimTable(sim, 18, 8, { rows: 'lazy' })
+    for (let i = 0; i < 40; i++) sim.throwBall({ x: 100 + 5 * i, y: 450, power: 0.02 * i, angle: 0.01 * i - 0.2, radius: 8 })
+    const events: BallEvent[][] = []
+    for (let s = 0; s < 120; s++) {
+      sim.step(1 / 60)
+      events.push(sim.drainEvents())
+    }
+    const replay = sim.stopRecording()
+    expect(replay.inputs.some((i) => i[0] === 'prepareRimTable')).toBe(true)
+    expect(play(replay).events).toEqual(events)
+  })
+
+  it('a command that fails records nothing', () => {
+    const sim = createBallPhysics()
+    sim.startRecording()
+    expect(() => sim.addBall({ x: Number.NaN, y: 0, vx: 0, vy: 0 })).toThrow(/ball\.x/)
+    expect(() => sim.step(-1)).toThrow(/dt/)
+    sim.addHole({ x: 100, y: 100 })
+    expect(() => sim.addHole({ x: 101, y: 100 })).toThrow(/overlaps/)
+    expect(sim.stopRecording().inputs).toEqual([['addHole', { x: 100, y: 100, radius: 18, value: 1 }]])
+  })
+
+  it('keeps −0 through JSON', () => {
+    const sim = createBallPhysics()
+    sim.startRecording()
+    const b = sim.addBall({ x: 0, y: 0, vx: -0, vy: 10 })
+    sim.setBallVelocity(b, -0, 5)
+    const back = replayFromJSON(replayToJSON(sim.stopRecording()))
+    expect(Object.is((back.inputs[0]![1] as { vx: number }).vx, -0)).toBe(true)
+    expect(Object.is(back.inputs[1]![2], -0)).toBe(true)
+  })
+
+  it('refuses a bad replay by name, and names the input that fails', () => {
+    const sim = createBallPhysics()
+    sim.startRecording()
+    sim.addBall({ x: 0, y: 0, vx: 0, vy: 10 })
+    sim.step(1 / 60)
+    const good = sim.stopRecording()
+    expect(() => createReplayPlayer(null as unknown as Replay)).toThrow(/replay must be a replay object/)
+    expect(() => createReplayPlayer({ ...good, format: 'x' } as unknown as Replay)).toThrow(/replay\.format/)
+    expect(() => createReplayPlayer({ ...good, version: 2 })).toThrow(/replay\.version 2/)
+    expect(() => createReplayPlayer({ ...good, inputs: [['step']] as unknown as Replay['inputs'] }).next()).toThrow(/replay input 0 \("step"\): dt must be a number/)
+    expect(() => createReplayPlayer({ ...good, inputs: [['fly', 1]] }).next()).toThrow(/replay input 0 \("fly"\): unknown command/)
+    expect(() => createReplayPlayer({ ...good, config: { ...good.config, BALL_RADIUS: -1 } })).toThrow(/BALL_RADIUS/)
+    expect(() => sim.stopRecording()).toThrow(/not recording/)
+  })
+})
