@@ -1,11 +1,14 @@
 // The game and its clock, without any drawing: one simulation of the built-in panel, the player's ten
 // balls and score, the multi-ball bursts and the stress mode, a 120 Hz fixed-step loop with render
 // interpolation, and the per-frame event feed. Everything that changes the physics goes through the
-// public API (createBallPhysics, addPanel, throwBall, step, drainEvents, bitECS removeEntity); the world's
-// typed arrays are only read. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
+// public API (createBallPhysics, addPanel, throwBall, step, drainEvents, removeBall); the world's typed
+// arrays are only read.
+// Rounds: a throw or burst on a quiet panel starts recording a replay (sim.startRecording), and the
+// panel falling quiet again ends it; "Replay" plays the last round back on a world of its own, step for
+// step at the same 120 Hz, and then the live game resumes where it was. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
 // component of its own, DemoBall, on the simulation's ball entities: its balls are query([Ball, DemoBall]).
-import { addComponent, query, removeEntity } from 'bitecs'
-import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout } from '../src/index'
+import { addComponent, hasComponent, query } from 'bitecs'
+import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
 import { isHoleEvent } from './theme'
@@ -122,6 +125,20 @@ export class Game {
   private playerMoving = 0
   private random = rng(0x5eed)
 
+  /** the last finished round, and the kinds of its balls by id */
+  lastRound: Replay | null = null
+  private lastRoundKinds = new Map<number, number>()
+  /** a round being recorded: the kinds of its balls by id */
+  private roundKinds: Map<number, number> | null = null
+  /** while a round plays back: the player, the live game set aside, and the round's events so far */
+  replaying: { player: ReplayPlayer; live: BallPhysics; kinds: Map<number, number>; kind: Uint8Array; doneAt: Float64Array } | null = null
+  /** (type, ball, time) of every event of the last recorded round, and of the last replay, for checks */
+  roundEvents: Array<[string, number, number]> = []
+  replayEvents: Array<[string, number, number]> = []
+  private recordingEvents: Array<[string, number, number]> = []
+  /** rounds finished since the page loaded */
+  roundsRecorded = 0
+
   constructor(overrides: ConfigOverrides = {}) {
     this.overrides = { ...overrides }
     this.sim = this.rebuild()
@@ -173,6 +190,8 @@ export class Game {
   }
 
   private rebuild(): BallPhysics {
+    this.endReplay()
+    this.roundKinds = null
     const sim = createBallPhysics(this.overrides)
     this.holes = addPanel(sim, this.panel)
     sim.setWalls(wallsFor(this.panel))
@@ -218,8 +237,9 @@ export class Game {
 
   /** One of the player's throws from the launch point. Returns false when no balls are left. */
   throwPlayer(request: ThrowRequest): boolean {
-    if (this.ballsLeft <= 0) return false
+    if (this.ballsLeft <= 0 || this.replaying !== null) return false
     this.applyPending()
+    this.beginRound()
     if (this.gameCaptures.length !== this.holes.length) this.gameCaptures = this.holes.map(() => 0)
     const { x, y } = this.panel.launch
     this.spawn(Kind.Player, x, y, request.power, request.angle)
@@ -231,13 +251,18 @@ export class Game {
 
   /** n balls thrown at once from along the bottom edge toward random points of the hole field. */
   burst(n: number): void {
+    if (this.replaying !== null) return
     this.applyPending()
+    this.beginRound()
     for (let i = 0; i < n; i++) this.spawnRandom(Kind.Burst)
   }
 
   /** Keeps `n` balls in play (0 = off): finished ones are removed and thrown again. */
   setStress(n: number): void {
+    if (this.replaying !== null) return
     this.applyPending()
+    // the stress mode's endless recycling is no round: a recording under way is dropped
+    if (n > 0) this.dropRound()
     this.stressTarget = n
     if (n === 0) this.removeWhere((k) => k === Kind.Stress)
   }
@@ -282,6 +307,7 @@ export class Game {
     this.prevY[id] = B.y[id]!
     D.kind[id] = kind
     D.doneAt[id] = 0
+    this.roundKinds?.set(id, kind)
     if (kind === Kind.Stress) this.stressLive++
     if (kind === Kind.Player) this.playerMoving++
     return id
@@ -292,8 +318,8 @@ export class Game {
     const k = D.kind[id]!
     if (k === Kind.Stress) this.stressLive--
     if (k === Kind.Player && D.doneAt[id] === 0) this.playerMoving--
-    // the simulation forgets the ball, and DemoBall goes with the entity
-    removeEntity(this.sim.world, id)
+    // the simulation forgets the ball, and DemoBall goes with the entity (removeBall: a replay records it)
+    this.sim.removeBall(id)
     D.kind[id] = 0
     D.doneAt[id] = 0
   }
@@ -314,6 +340,7 @@ export class Game {
   frame(frameSeconds: number): FrameResult {
     const dt = Number.isFinite(frameSeconds) && frameSeconds > 0 ? Math.min(frameSeconds, MAX_FRAME_SECONDS) : 0
     this.time += dt
+    if (this.replaying !== null) return this.replayFrame(dt)
     let physicsMs = 0
     const sim = this.sim
     this.clock.advance(dt, (h) => {
@@ -328,6 +355,7 @@ export class Game {
     })
     const events = this.takeEvents()
     this.retire()
+    this.endRoundIfQuiet()
     if (this.stressTarget > this.stressLive) {
       const n = this.stressTarget - this.stressLive
       for (let i = 0; i < n; i++) this.spawnRandom(Kind.Stress)
@@ -335,8 +363,7 @@ export class Game {
     return { events, steps: this.clock.steps, physicsMs }
   }
 
-  private takeEvents(): DemoEvent[] {
-    const raw = this.sim.drainEvents()
+  private takeEvents(raw: BallEvent[] = this.sim.drainEvents()): DemoEvent[] {
     const out = new Array<DemoEvent>(raw.length)
     for (let i = 0; i < raw.length; i++) {
       const e = raw[i]!
@@ -346,6 +373,11 @@ export class Game {
       const player = this.DemoBall.kind[e.ball] === Kind.Player
       const d: DemoEvent = { ...e, holeIndex, value, player }
       out[i] = d
+      if (this.replaying !== null) {
+        this.replayEvents.push([e.type, e.ball, e.time])
+        continue
+      }
+      if (this.roundKinds !== null) this.recordingEvents.push([e.type, e.ball, e.time])
       this.eventsSeen++
       this.eventCounts[e.type] = (this.eventCounts[e.type] ?? 0) + 1
       // the player's throws and the multi-ball bursts score (the stress mode's recycled balls do not)
@@ -398,6 +430,118 @@ export class Game {
         this.remove(id)
       }
     }
+  }
+
+  /** A throw or burst on a quiet panel starts recording a round. */
+  private beginRound(): void {
+    if (this.roundKinds !== null || this.stressTarget > 0) return
+    this.sim.startRecording()
+    this.roundKinds = new Map()
+    this.recordingEvents = []
+    for (const id of this.live) this.roundKinds.set(id, this.DemoBall.kind[id]!)
+  }
+
+  private dropRound(): void {
+    if (this.roundKinds === null) return
+    this.sim.stopRecording()
+    this.roundKinds = null
+  }
+
+  /** The round ends when no ball is rolling, on a rim or held. */
+  private endRoundIfQuiet(): void {
+    if (this.roundKinds === null) return
+    const M = this.sim.world.Ball.mode
+    for (const id of this.live) {
+      const m = M[id]
+      if (m === BallMode.Rolling || m === BallMode.RimRoll || m === BallMode.Held) return
+    }
+    this.lastRound = this.sim.stopRecording()
+    this.roundsRecorded++
+    this.lastRoundKinds = this.roundKinds
+    this.roundKinds = null
+    this.roundEvents = this.recordingEvents
+    this.recordingEvents = []
+  }
+
+  /** Steps of the last round (0 when there is none). */
+  get lastRoundSteps(): number {
+    return this.lastRound === null ? 0 : this.lastRound.inputs.filter((i) => i[0] === 'step').length
+  }
+
+  /**
+   * Plays the last round back from its start on a world of its own; the live game waits (no throws) and
+   * resumes when the replay ends. Returns false when there is no round to play.
+   */
+  replayLastRound(): boolean {
+    if (this.lastRound === null || this.replaying !== null) return false
+    this.dropRound()
+    const player = createReplayPlayer(this.lastRound)
+    const D = this.DemoBall
+    this.replaying = { player, live: this.sim, kinds: this.lastRoundKinds, kind: D.kind.slice(), doneAt: D.doneAt.slice() }
+    this.replayEvents = []
+    this.sim = player.sim
+    D.doneAt.fill(0)
+    this.tagReplayBalls()
+    this.generation++
+    return true
+  }
+
+  /** The replayed world's balls of the round get the demo's component (their ids are the recorded ones). */
+  private tagReplayBalls(): void {
+    const R = this.replaying!
+    const w = this.sim.world
+    const D = this.DemoBall
+    for (const [id, kind] of R.kinds) {
+      if (w.Ball.live[id] !== 1 || hasComponent(w, id, D)) continue
+      if (D.kind.length < id + 1) {
+        D.kind = grow(D.kind, id + 1)
+        D.doneAt = grow(D.doneAt, id + 1)
+      }
+      addComponent(w, id, D)
+      D.kind[id] = kind
+      D.doneAt[id] = 0
+      this.ensurePrev()
+      this.prevX[id] = w.Ball.x[id]!
+      this.prevY[id] = w.Ball.y[id]!
+    }
+  }
+
+  private replayFrame(dt: number): FrameResult {
+    const R = this.replaying!
+    let physicsMs = 0
+    let more = true
+    // drained after every step: the round's removals come between steps, and removing a ball drops its
+    // undrained events (the live game drained them at the end of the frame, before it removed the ball)
+    const raw: BallEvent[] = []
+    this.clock.advance(dt, () => {
+      if (!more) return
+      this.ensurePrev()
+      const B = this.sim.world.Ball
+      this.prevX.set(B.x)
+      this.prevY.set(B.y)
+      const t0 = performance.now()
+      more = R.player.next()
+      physicsMs += performance.now() - t0
+      for (const e of this.sim.drainEvents()) raw.push(e)
+      this.tagReplayBalls()
+    })
+    const events = this.takeEvents(raw)
+    if (!more) this.endReplay()
+    return { events, steps: this.clock.steps, physicsMs }
+  }
+
+  /** Back to the live game, as it was when the replay began. */
+  endReplay(): void {
+    const R = this.replaying
+    if (R === null) return
+    this.replaying = null
+    this.sim = R.live
+    this.DemoBall.kind = R.kind
+    this.DemoBall.doneAt = R.doneAt
+    this.ensurePrev()
+    this.prevX.set(R.live.world.Ball.x)
+    this.prevY.set(R.live.world.Ball.y)
+    this.generation++
   }
 
   /** Opacity of a live ball (resting balls fade before they are removed). */

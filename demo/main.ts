@@ -207,6 +207,9 @@ async function main(): Promise<void> {
       case 'KeyS':
         setStress(game.stressTarget === 0)
         break
+      case 'KeyP':
+        game.replayLastRound()
+        break
       case 'KeyV':
         showVectors.checked = !showVectors.checked
         syncOpts()
@@ -234,6 +237,16 @@ async function main(): Promise<void> {
     game.clearExtra()
     stressBtn.setAttribute('aria-pressed', 'false')
   })
+  const replayBtn = el<HTMLButtonElement>('replay')
+  button('replay', () => game.replayLastRound())
+  const syncReplay = (): void => {
+    const can = game.lastRound !== null && game.replaying === null
+    if (replayBtn.disabled === can) replayBtn.disabled = !can
+    const pressed = String(game.replaying !== null)
+    if (replayBtn.getAttribute('aria-pressed') !== pressed) replayBtn.setAttribute('aria-pressed', pressed)
+    const label = game.replaying !== null ? 'Replaying…' : 'Replay round'
+    if (replayBtn.textContent !== label) replayBtn.textContent = label
+  }
 
   const tuning = createTuning(el('gui'), el('tuning-status'), game)
   // ball-ball contacts, beside the multi-ball buttons: the same key as the tuning panel's drop-down
@@ -318,6 +331,7 @@ async function main(): Promise<void> {
     setText(hud.score, String(game.score))
     setText(hud.ballsLeft, String(game.ballsLeft))
     setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
+    syncReplay()
     if (meter.frame(t, result.physicsMs, result.steps, performance.now() - t)) slowHud(meter)
   })
 
@@ -376,6 +390,23 @@ async function main(): Promise<void> {
     },
     get simTime() {
       return game.sim.time
+    },
+    /** the round replay: steps of the last round, whether one plays now, and (type, ball, time) of every
+     * event of the recorded round and of the last replay */
+    get lastRoundSteps() {
+      return game.lastRoundSteps
+    },
+    get roundsRecorded() {
+      return game.roundsRecorded
+    },
+    get replaying() {
+      return game.replaying !== null
+    },
+    get roundEvents() {
+      return game.roundEvents.map((e) => [...e])
+    },
+    get replayEvents() {
+      return game.replayEvents.map((e) => [...e])
     },
     get playerInPlay() {
       return game.playerInPlay

@@ -26,10 +26,21 @@ async function run(code: string, name: string): Promise<unknown[][]> {
 }
 
 describe('README examples', () => {
-  it('has the two examples (the game API and the ecs entry)', () => {
-    expect(blocks.length).toBe(2)
+  it('has the three examples (the game API, snapshots and replays, the ecs entry)', () => {
+    expect(blocks.length).toBe(3)
     expect(blocks[0]).toContain('createBallPhysics')
-    expect(blocks[1]).toContain("from 'positron-ball-physics/ecs'")
+    expect(blocks[1]).toContain('createReplayPlayer')
+    expect(blocks[2]).toContain("from 'positron-ball-physics/ecs'")
+  })
+
+  it('the snapshot and replay example runs: the replay and the restored copy give the recorded events', async () => {
+    const logs = await run(blocks[1]!, 'replay')
+    expect(logs).toHaveLength(1)
+    const [events, replayedSame, bytes, copySame] = logs[0] as [number, boolean, number, boolean]
+    expect(events).toBeGreaterThan(50)
+    expect(replayedSame).toBe(true)
+    expect(bytes).toBeGreaterThan(1000)
+    expect(copySame).toBe(true)
   })
 
   it('the game API example runs and reports events', async () => {
@@ -43,7 +54,7 @@ describe('README examples', () => {
   })
 
   it('the ecs example runs: its own system counts lip crossings, its own component is queried with Ball', async () => {
-    const logs = await run(blocks[1]!, 'ecs')
+    const logs = await run(blocks[2]!, 'ecs')
     expect(logs).toHaveLength(1)
     const [lipCrossings, trail] = logs[0] as [number, number]
     expect(lipCrossings).toBeGreaterThan(0)
@@ -52,7 +63,8 @@ describe('README examples', () => {
 
   it('the examples typecheck (strict, the names resolved to the sources)', async () => {
     await run(blocks[0]!, 'use')
-    await run(blocks[1]!, 'ecs')
+    await run(blocks[1]!, 'replay')
+    await run(blocks[2]!, 'ecs')
     const dir = resolve(root, 'test-artifacts/readme')
     writeFileSync(
       resolve(dir, 'tsconfig.json'),
@@ -67,7 +79,7 @@ describe('README examples', () => {
             'positron-ball-physics/reference': ['../../src/reference/index.ts'],
           },
         },
-        include: ['use.ts', 'ecs.ts'],
+        include: ['use.ts', 'replay.ts', 'ecs.ts'],
       }),
     )
     let out = ''

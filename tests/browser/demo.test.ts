@@ -48,6 +48,11 @@ interface DemoHook {
   simTime: number
   worstOverlap: number
   lipRiders: { ball: number; distance: number; angle: number }[]
+  roundsRecorded: number
+  lastRoundSteps: number
+  replaying: boolean
+  roundEvents: [string, number, number][]
+  replayEvents: [string, number, number][]
   toPage(x: number, y: number): { x: number; y: number }
   aim(angle: number): void
   charge(power: number): void
@@ -331,6 +336,37 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     // back to the design values for the tests after this one
     await page.click('#contacts')
     expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('false')
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
+    expect(problems).toEqual([])
+  })
+
+  it('the last round plays back: a 100-ball burst with contacts on, then Replay round gives the same events at the same times', async () => {
+    await page.click('#contacts')
+    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe('on')
+    const rounds = await page.evaluate(() => window.__demo.roundsRecorded)
+    await page.click('#multi-100')
+    await page.waitForFunction((n) => window.__demo.roundsRecorded > n, rounds, { timeout: 60_000 })
+    const recorded = await page.evaluate(() => window.__demo.roundEvents)
+    expect(recorded.filter((e) => e[0] === 'collision').length).toBeGreaterThan(0)
+    expect(recorded.filter((e) => e[0] === 'capture').length).toBeGreaterThan(0)
+    expect(await page.evaluate(() => window.__demo.lastRoundSteps)).toBeGreaterThan(60)
+    expect(await page.isDisabled('#replay')).toBe(false)
+    await page.click('#replay')
+    await page.waitForFunction(() => window.__demo.replaying, null, { timeout: 5_000 })
+    expect(await page.textContent('#replay')).toBe('Replaying…')
+    expect(await page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThan(0)
+    await page.waitForFunction(() => !window.__demo.replaying, null, { timeout: 60_000 })
+    const replayed = await page.evaluate(() => window.__demo.replayEvents)
+    // where they part, if they do (a readable failure): the same events, in the same order, at the same times
+    let first = -1
+    for (let i = 0; i < Math.max(recorded.length, replayed.length) && first < 0; i++) if (JSON.stringify(recorded[i]) !== JSON.stringify(replayed[i])) first = i
+    expect({ first, recorded: recorded.slice(first, first + 3), replayed: replayed.slice(first, first + 3) }).toEqual({ first: -1, recorded: [], replayed: [] })
+    expect(replayed).toEqual(recorded)
+    // back to contacts off for the tests after this one
+    await page.click('#contacts')
+    await page.click('#contacts')
+    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS ?? 'off')).toBe('off')
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
     await page.click('#clear-balls')
     expect(problems).toEqual([])
