@@ -33,6 +33,8 @@ export { REPLAY_VERSION, replayFromJSON, replayToJSON } from './commands/replay.
 export type { Replay } from './commands/replay.js'
 export type { ReplayInput } from './world/recorder.js'
 export { createReplayPlayer } from './api/replayPlayer.js'
+export { solveThrow } from './api/solveThrow.js'
+export type { ThrowFailure, ThrowOutcome, ThrowRequest, ThrowSolution } from './api/solveThrow.js'
 export type { ReplayPlayer } from './api/replayPlayer.js'
 export { EVENT_TYPE_NAMES } from './events.js'
 export type { BallEvent, BallEventType, CaptureViaName, EventView } from './events.js'

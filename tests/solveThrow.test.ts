@@ -1,0 +1,110 @@
+// The throw solver (src/api/solveThrow.ts): every answer checked by simulating it in a world of its own.
+import { describe, expect, it } from 'vitest'
+import { addPanel, createBallPhysics, DEFAULT_PANEL, solveThrow, type BallPhysics, type ConfigOverrides, type ThrowOutcome, type ThrowSolution } from '../src/index.js'
+
+const WALLS = { minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5, open: { bottom: true } }
+
+function panel(config: ConfigOverrides = {}): { sim: BallPhysics; holes: number[] } {
+  const sim = createBallPhysics(config)
+  const holes = addPanel(sim)
+  sim.setWalls(WALLS)
+  return { sim, holes }
+}
+
+/** The first decisive event (capture, skip, lipOut, bounce) of the thrown ball at `hole`, in a copy of `sim` made by snapshot. */
+function outcomeOf(sim: BallPhysics, hole: number, s: { from: { x: number; y: number }; power: number; angle: number }): ThrowOutcome | null {
+  const copy = createBallPhysics(sim.config)
+  copy.restore(sim.snapshot())
+  copy.drainEvents()
+  const b = copy.throwBall({ x: s.from.x, y: s.from.y, power: s.power, angle: s.angle })
+  for (let t = 0; t < 20; t += 1 / 60) {
+    copy.step(1 / 60) // another step than the solver's: the outcome does not depend on it
+    for (const e of copy.drainEvents()) {
+      if (e.ball !== b || e.hole !== hole) continue
+      if (e.type === 'capture' || e.type === 'skip' || e.type === 'lipOut' || e.type === 'bounce') return e.type
+    }
+    const m = copy.ballState(b).mode
+    if (m === 'captured' || m === 'out' || m === 'resting') return null
+  }
+  return null
+}
+
+describe('solveThrow', () => {
+  it('finds a capture for every hole of the default panel from the launch line, and each one captures when thrown', () => {
+    const { sim, holes } = panel()
+    for (const hole of holes) {
+      const s = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole, along: 160 })
+      expect(s.found, `hole ${hole}`).toBe(true)
+      const t = s as ThrowSolution
+      expect(outcomeOf(sim, hole, t), `hole ${hole}`).toBe('capture')
+      expect(t.power).toBeGreaterThanOrEqual(0)
+      expect(t.power).toBeLessThanOrEqual(1)
+      expect(t.time).toBeGreaterThan(0)
+      // the margin is a margin: half of it either way still captures
+      expect(t.margin.power + t.margin.angle).toBeGreaterThan(0)
+      for (const k of [-0.5, 0.5]) {
+        const p = Math.min(1, Math.max(0, t.power + k * t.margin.power))
+        expect(outcomeOf(sim, hole, { ...t, power: p }), `hole ${hole} power ${k}`).toBe('capture')
+        expect(outcomeOf(sim, hole, { ...t, angle: t.angle + k * t.margin.angle }), `hole ${hole} angle ${k}`).toBe('capture')
+      }
+    }
+  })
+
+  it('from the launch point alone: the holes straight behind the first row cannot be reached, and it says why', () => {
+    const { sim, holes } = panel()
+    const behind = holes[12]! // the middle of the middle row, behind two holes in line
+    const s = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: behind })
+    expect(s.found).toBe(false)
+    if (!s.found) {
+      expect(s.reason).toMatch(new RegExp(`no throw from \\(210, 450\\) gives capture at hole ${behind}`))
+      expect(s.trials).toBeGreaterThan(1000)
+      expect(s.power).toBeNull()
+    }
+    // and a hole of the first row is
+    const first = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[1]! })
+    expect(first.found).toBe(true)
+    expect((first as ThrowSolution).from).toEqual(DEFAULT_PANEL.launch)
+  })
+
+  for (const outcome of ['skip', 'lipOut', 'bounce'] as const) {
+    it(`${outcome}: found for holes of each row, and each one gives ${outcome} there when thrown`, () => {
+      const { sim, holes } = panel()
+      for (const i of [0, 6, 12, 18, 24]) {
+        const s = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[i]!, outcome, along: 160 })
+        expect(s.found, `hole ${holes[i]}`).toBe(true)
+        expect(outcomeOf(sim, holes[i]!, s as ThrowSolution), `hole ${holes[i]}`).toBe(outcome)
+      }
+    })
+  }
+
+  it('solves from the world as it is: its time, and with contacts on, the balls already on the panel', () => {
+    const { sim, holes } = panel({ BALL_COLLISIONS: 'on' })
+    // balls resting in the launch lane, and time on the clock
+    for (let i = 0; i < 6; i++) sim.addBall({ x: 150 + 24 * i, y: 405, vx: 0, vy: 0 })
+    for (let i = 0; i < 30; i++) sim.step(1 / 60)
+    for (const i of [2, 7, 11, 22]) {
+      const s = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[i]!, along: 160 })
+      expect(s.found, `hole ${holes[i]}`).toBe(true)
+      expect(outcomeOf(sim, holes[i]!, s as ThrowSolution), `hole ${holes[i]}`).toBe('capture')
+    }
+  })
+
+  it('is deterministic, and leaves the world untouched', () => {
+    const { sim, holes } = panel()
+    const before = sim.snapshot()
+    const a = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[17]!, along: 160 })
+    const b = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[17]!, along: 160 })
+    expect(b).toEqual(a)
+    expect(sim.snapshot()).toEqual(before)
+  })
+
+  it('refuses bad requests by name', () => {
+    const { sim, holes } = panel()
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: 9999 })).toThrow(/request\.hole 9999 is not a live hole/)
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, outcome: 'drop' as ThrowOutcome })).toThrow(/request\.outcome must be one of capture, skip, lipOut, bounce/)
+    expect(() => solveThrow(sim, { from: { x: Number.NaN, y: 450 }, hole: holes[0]! })).toThrow(/request\.from\.x/)
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, along: -1 })).toThrow(/request\.along/)
+    const inside = solveThrow(sim, { from: { x: 50, y: 370 }, hole: holes[0]! })
+    expect(inside.found).toBe(false)
+  })
+})
