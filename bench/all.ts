@@ -1,5 +1,5 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
-// contact-accuracy, piles, the adversarial suite's long version, resting, recycling, dense), then
+// contact-accuracy, piles, the adversarial suite's long version, resting, recycling, dense, solver), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
 // assertions (the machine is shared and noisy), so the exit status only says whether every benchmark ran.
 //
@@ -28,6 +28,7 @@ const benches: [string, string[]][] = [
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
   ['bench/dense.ts', []],
+  ['bench/solver.ts', []],
 ]
 const failed: string[] = []
 for (const [entry, args] of benches) {

@@ -8,7 +8,7 @@
 // step at the same 120 Hz, and then the live game resumes where it was. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
 // component of its own, DemoBall, on the simulation's ball entities: its balls are query([Ball, DemoBall]).
 import { addComponent, hasComponent, query } from 'bitecs'
-import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
+import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
 import { isHoleEvent } from './theme'
@@ -235,14 +235,13 @@ export class Game {
     return c.MIN_VY + power * (c.MAX_VY - c.MIN_VY)
   }
 
-  /** One of the player's throws from the launch point. Returns false when no balls are left. */
-  throwPlayer(request: ThrowRequest): boolean {
+  /** One of the player's throws from the launch point (or `from`). Returns false when no balls are left. */
+  throwPlayer(request: ThrowRequest, from: { x: number; y: number } = this.panel.launch): boolean {
     if (this.ballsLeft <= 0 || this.replaying !== null) return false
     this.applyPending()
     this.beginRound()
     if (this.gameCaptures.length !== this.holes.length) this.gameCaptures = this.holes.map(() => 0)
-    const { x, y } = this.panel.launch
-    this.spawn(Kind.Player, x, y, request.power, request.angle)
+    this.spawn(Kind.Player, from.x, from.y, request.power, request.angle)
     this.ballsLeft--
     this.throwsMade++
     this.lastThrow = { ...request, speed: this.speedFor(request.power) }
@@ -461,6 +460,24 @@ export class Game {
     this.roundKinds = null
     this.roundEvents = this.recordingEvents
     this.recordingEvents = []
+  }
+
+  /** The last called shot: the hole (layout index), and the solver's answer */
+  lastCall: { holeIndex: number; answer: ThrowSolution | ThrowFailure; ms: number } | null = null
+
+  /**
+   * Call your shot: the solver finds a throw from the launch line (±160 px) that drops the player's next
+   * ball into the hole at `holeIndex` (layout order) in this world as it is, and throws it. Returns the
+   * solver's answer (null when no ball is left or a replay plays).
+   */
+  callShot(holeIndex: number): ThrowSolution | ThrowFailure | null {
+    if (this.ballsLeft <= 0 || this.replaying !== null) return null
+    this.applyPending()
+    const t0 = performance.now()
+    const answer = solveThrow(this.sim, { from: this.panel.launch, hole: this.holes[holeIndex]!, outcome: 'capture', along: 160 })
+    this.lastCall = { holeIndex, answer, ms: performance.now() - t0 }
+    if (answer.found) this.throwPlayer({ power: answer.power, angle: answer.angle }, answer.from)
+    return answer
   }
 
   /** Steps of the last round (0 when there is none). */

@@ -148,9 +148,38 @@ async function main(): Promise<void> {
     const m = panel.meter
     return p.x >= m.x - 8 && p.x <= m.x + m.w + 8 && p.y >= m.y - 8 && p.y <= m.y + m.h + 24
   }
+  // call your shot: while on, a click on a hole throws the player's next ball into it (the throw solver)
+  let calling = false
+  const callBtn = el<HTMLButtonElement>('call-shot')
+  const callStatus = el('call-status')
+  const setCalling = (on: boolean): void => {
+    calling = on
+    callBtn.setAttribute('aria-pressed', String(on))
+    callStatus.textContent = on ? 'Click a hole: your next ball is thrown to drop in it.' : ''
+  }
+  const holeAt = (p: { x: number; y: number }): number => {
+    const r = game.config.HOLE_RADIUS + 8
+    return game.panel.holes.findIndex((h) => (h.x - p.x) ** 2 + (h.y - p.y) ** 2 <= r * r)
+  }
+  const callAt = (p: { x: number; y: number }): boolean => {
+    const i = holeAt(p)
+    if (i < 0) return false
+    const answer = game.callShot(i)
+    const ms = game.lastCall?.ms ?? 0
+    if (answer === null) callStatus.textContent = game.ballsLeft <= 0 ? 'No balls left: start a new game.' : ''
+    else if (answer.found) {
+      const deg = (answer.angle * 180) / Math.PI
+      callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: power ${answer.power.toFixed(3)}, aim ${deg.toFixed(1)}°, from x = ${answer.from.x.toFixed(0)}; margin ±${answer.margin.power.toFixed(3)} power, ±${((answer.margin.angle * 180) / Math.PI).toFixed(2)}° (solved in ${ms.toFixed(0)} ms)`
+    } else callStatus.textContent = `No throw: ${answer.reason}`
+    return true
+  }
   canvas.addEventListener('pointerdown', (e) => {
     if (e.button !== 0) return
     const p = local(e)
+    if (calling && inPanel(p) && callAt(p)) {
+      e.preventDefault()
+      return
+    }
     if (!inPanel(p) && !inMeter(p)) return
     e.preventDefault()
     canvas.setPointerCapture(e.pointerId)
@@ -210,6 +239,9 @@ async function main(): Promise<void> {
       case 'KeyP':
         game.replayLastRound()
         break
+      case 'KeyC':
+        setCalling(!calling)
+        break
       case 'KeyV':
         showVectors.checked = !showVectors.checked
         syncOpts()
@@ -237,6 +269,7 @@ async function main(): Promise<void> {
     game.clearExtra()
     stressBtn.setAttribute('aria-pressed', 'false')
   })
+  button('call-shot', () => setCalling(!calling))
   const replayBtn = el<HTMLButtonElement>('replay')
   button('replay', () => game.replayLastRound())
   const syncReplay = (): void => {
@@ -395,6 +428,10 @@ async function main(): Promise<void> {
      * event of the recorded round and of the last replay */
     get lastRoundSteps() {
       return game.lastRoundSteps
+    },
+    /** the last called shot: the hole (layout order), the solver's answer, ms */
+    get lastCall() {
+      return game.lastCall === null ? null : JSON.parse(JSON.stringify(game.lastCall))
     },
     get roundsRecorded() {
       return game.roundsRecorded

@@ -41,7 +41,8 @@ interface DemoHook {
   physicsMs: number
   eventCounts: Record<string, number>
   input: { angle: number; power: number; charging: boolean }
-  recent: { type: string; player: boolean; value: number; delta?: number; speed?: number }[]
+  recent: { type: string; player: boolean; value: number; holeIndex: number; delta?: number; speed?: number }[]
+  lastCall: { holeIndex: number; answer: { found: boolean; power: number | null; reason?: string }; ms: number } | null
   renderer: { type: string; software: boolean; antialias: boolean }
   pending: Record<string, unknown> | null
   config: Record<string, unknown>
@@ -369,6 +370,24 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS ?? 'off')).toBe('off')
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
     await page.click('#clear-balls')
+    expect(problems).toEqual([])
+  })
+
+  it('call your shot: a click on a hole throws the next ball, and it drops in that hole', async () => {
+    await page.click('#reset')
+    await page.click('#call-shot')
+    expect(await page.getAttribute('#call-shot', 'aria-pressed')).toBe('true')
+    // the middle of the middle row (behind two holes in line with the launch point) and a corner of the top row
+    for (const i of [12, 20]) {
+      const hole = DEFAULT_PANEL.holes[i]!
+      const at = await page.evaluate(({ x, y }) => window.__demo.toPage(x, y), hole)
+      await page.mouse.click(at.x, at.y)
+      await expect.poll(() => page.evaluate(() => window.__demo.lastCall?.holeIndex)).toBe(i)
+      expect(await page.evaluate(() => window.__demo.lastCall?.answer.found)).toBe(true)
+      expect(await page.textContent('#call-status')).toMatch(/power .* aim .* margin/)
+      await page.waitForFunction((k) => window.__demo.recent.some((e) => e.type === 'capture' && e.player && e.holeIndex === k), i, { timeout: 20_000 })
+    }
+    await page.click('#call-shot')
     expect(problems).toEqual([])
   })
 
