@@ -1,0 +1,244 @@
+// Outcome maps and Monte Carlo outcome estimates: which hole a throw ends in, over a grid of throws or a
+// distribution of them, for return-to-player figures and for showing a player where their throws go.
+//
+// A scene is plain data (config, holes, walls), so that worker threads can each build it. Every throw is
+// simulated alone on the panel (ball-ball contacts off: throws are independent draws), many at once in
+// one world — without contacts a ball's path depends on nothing but its own throw, the holes and the
+// walls, so a throw ends the same in any batch. Throw k of a distribution draws its power, angle and start
+// point from its own generator, seeded by (seed, k): a run split into chunks, on any number of workers,
+// gives the same counts as one run (tests/outcomes.test.ts). Counts are integers and payouts are applied
+// to them at the end, so merged results are exact.
+import type { ConfigOverrides } from '../config/design.js'
+import type { HoleSpec } from '../commands/holes.js'
+import type { WallsSpec } from '../commands/walls.js'
+import { BallMode } from '../../components/Ball.js'
+import { EventType } from '../events.js'
+import { cos, log, sin } from '../math.js'
+import { createBallPhysics, type BallPhysics } from './createBallPhysics.js'
+
+export interface OutcomeScene {
+  config?: ConfigOverrides
+  holes: readonly HoleSpec[]
+  walls?: WallsSpec
+}
+
+/** A throw distribution: each part a mean and a normal spread (power is clipped to [0, 1]). */
+export interface ThrowDistribution {
+  power: { mean: number; sd?: number }
+  /** rad, as throwBall's */
+  angle: { mean: number; sd?: number }
+  from: { x: number; y: number; sdX?: number; sdY?: number }
+}
+
+/** Integer counts over a set of throws; merge with mergeTallies, read with summarizeOutcomes. */
+export interface OutcomeTally {
+  throws: number
+  /** throws captured in each hole (the scene's order) */
+  captures: number[]
+  /** throws never captured (out through an open edge, at rest, or still moving after the time limit) */
+  missed: number
+  /** lip events at each hole over all throws (a throw may meet a hole more than once) */
+  skips: number[]
+  bounces: number[]
+  lipOuts: number[]
+}
+
+/** simulated time after which a throw still moving counts as missed, s */
+const LIMIT = 30
+/** throws simulated together in one world */
+const BATCH = 2048
+
+function emptyTally(holes: number): OutcomeTally {
+  const z = (): number[] => new Array<number>(holes).fill(0)
+  return { throws: 0, captures: z(), missed: 0, skips: z(), bounces: z(), lipOuts: z() }
+}
+
+export function mergeTallies(a: OutcomeTally, b: OutcomeTally): OutcomeTally {
+  if (a.captures.length !== b.captures.length) throw new RangeError(`mergeTallies: tallies of ${a.captures.length} and ${b.captures.length} holes`)
+  const add = (x: number[], y: number[]): number[] => x.map((v, i) => v + y[i]!)
+  return {
+    throws: a.throws + b.throws,
+    captures: add(a.captures, b.captures),
+    missed: a.missed + b.missed,
+    skips: add(a.skips, b.skips),
+    bounces: add(a.bounces, b.bounces),
+    lipOuts: add(a.lipOuts, b.lipOuts),
+  }
+}
+
+/** The scene's world (contacts off), its hole ids in the scene's order. */
+function build(scene: OutcomeScene, capacity: number): { sim: BallPhysics; index: Map<number, number> } {
+  const sim = createBallPhysics({ ...scene.config, BALL_COLLISIONS: 'off' }, { capacity })
+  const index = new Map<number, number>()
+  scene.holes.forEach((h, i) => index.set(sim.addHole(h), i))
+  if (scene.walls !== undefined) sim.setWalls(scene.walls)
+  return { sim, index }
+}
+
+/**
+ * Simulates throws given as (x, y, power, angle) quadruples, all at once in a fresh world; calls
+ * `fate(k, holeIndex)` for each (−1: missed) and counts lip events into `tally` when given.
+ */
+function simulate(scene: OutcomeScene, throws: Float64Array, n: number, fate: (k: number, hole: number) => void, tally?: OutcomeTally): void {
+  const { sim, index } = build(scene, n + scene.holes.length + 8)
+  const first = sim.throwBall({ x: throws[0]!, y: throws[1]!, power: throws[2]!, angle: throws[3]! })
+  for (let k = 1; k < n; k++) sim.throwBall({ x: throws[4 * k]!, y: throws[4 * k + 1]!, power: throws[4 * k + 2]!, angle: throws[4 * k + 3]! })
+  const captured = new Int32Array(n).fill(-1)
+  const visit = (e: { code: number; ball: number; hole: number }): void => {
+    const h = index.get(e.hole)
+    if (h === undefined) return
+    if (e.code === EventType.Capture) captured[e.ball - first] = h
+    else if (tally !== undefined) {
+      if (e.code === EventType.Skip) tally.skips[h]!++
+      else if (e.code === EventType.Bounce) tally.bounces[h]!++
+      else if (e.code === EventType.LipOut) tally.lipOuts[h]!++
+    }
+  }
+  const mode = sim.world.Ball.mode
+  const dt = sim.config.MAX_STEP
+  for (let t = 0; t < LIMIT; t += dt) {
+    sim.step(dt)
+    sim.drainEventsWith(visit)
+    let moving = false
+    for (let k = 0; k < n && !moving; k++) {
+      const m = mode[first + k]
+      moving = m === BallMode.Rolling || m === BallMode.RimRoll || m === BallMode.Held
+    }
+    if (!moving) break
+  }
+  for (let k = 0; k < n; k++) fate(k, captured[k]!)
+}
+
+/** A generator of its own for throw k of a run seeded `seed` (mulberry32 on a mix of the two). */
+function throwRandom(seed: number, k: number): () => number {
+  let a = (Math.imul(seed ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(k + 1, 0xc2b2ae35)) >>> 0
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0
+    let t = a
+    t = Math.imul(t ^ (t >>> 15), t | 1)
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
+  }
+}
+
+/** Two standard normal draws (Box–Muller, portable functions), into pair */
+const pair = [0, 0]
+function normals(r: () => number): void {
+  const u = 1 - r() // (0, 1]
+  const v = r()
+  const m = Math.sqrt(-2 * log(u))
+  pair[0] = m * cos(2 * Math.PI * v)
+  pair[1] = m * sin(2 * Math.PI * v)
+}
+
+/**
+ * Throws `count` throws of the distribution — throws first … first + count − 1 of the run seeded `seed` —
+ * and counts where they end (see the top of this file).
+ */
+export function sampleThrows(scene: OutcomeScene, dist: ThrowDistribution, count: number, seed: number, first = 0): OutcomeTally {
+  if (!Number.isInteger(count) || count < 0) throw new RangeError(`count must be a non-negative integer, got ${count}`)
+  if (!Number.isInteger(first) || first < 0) throw new RangeError(`first must be a non-negative integer, got ${first}`)
+  const tally = emptyTally(scene.holes.length)
+  const buf = new Float64Array(4 * Math.min(BATCH, Math.max(1, count)))
+  for (let done = 0; done < count; ) {
+    const n = Math.min(BATCH, count - done)
+    for (let k = 0; k < n; k++) {
+      const r = throwRandom(seed, first + done + k)
+      normals(r)
+      const p = dist.power.mean + (dist.power.sd ?? 0) * pair[0]!
+      const a = dist.angle.mean + (dist.angle.sd ?? 0) * pair[1]!
+      normals(r)
+      buf[4 * k] = dist.from.x + (dist.from.sdX ?? 0) * pair[0]!
+      buf[4 * k + 1] = dist.from.y + (dist.from.sdY ?? 0) * pair[1]!
+      buf[4 * k + 2] = p < 0 ? 0 : p > 1 ? 1 : p
+      buf[4 * k + 3] = a
+    }
+    simulate(scene, buf, n, (_k, h) => {
+      if (h < 0) tally.missed++
+      else tally.captures[h]!++
+    }, tally)
+    tally.throws += n
+    done += n
+  }
+  return tally
+}
+
+export interface OutcomeMapSpec {
+  from: { x: number; y: number }
+  power: { min: number; max: number; steps: number }
+  angle: { min: number; max: number; steps: number }
+}
+
+/**
+ * Which hole each throw of a (power, angle) grid from one point ends in: the scene's hole index, −1 for
+ * none; row-major by power (rows) then angle (columns). `rows` limits the work to powers [from, to).
+ */
+export function outcomeMap(scene: OutcomeScene, spec: OutcomeMapSpec, rows: { from: number; to: number } = { from: 0, to: spec.power.steps }): Int16Array {
+  const P = spec.power
+  const A = spec.angle
+  if (!(P.steps >= 1 && A.steps >= 1 && Number.isInteger(P.steps) && Number.isInteger(A.steps))) throw new RangeError('power.steps and angle.steps must be integers ≥ 1')
+  const r0 = Math.max(0, rows.from)
+  const r1 = Math.min(P.steps, rows.to)
+  const out = new Int16Array(Math.max(0, r1 - r0) * A.steps)
+  const per = Math.max(1, Math.floor(BATCH / A.steps))
+  const buf = new Float64Array(4 * per * A.steps)
+  for (let r = r0; r < r1; r += per) {
+    const nr = Math.min(per, r1 - r)
+    for (let i = 0; i < nr; i++) {
+      const power = P.steps === 1 ? P.min : P.min + ((P.max - P.min) * (r + i)) / (P.steps - 1)
+      for (let j = 0; j < A.steps; j++) {
+        const k = i * A.steps + j
+        buf[4 * k] = spec.from.x
+        buf[4 * k + 1] = spec.from.y
+        buf[4 * k + 2] = power
+        buf[4 * k + 3] = A.steps === 1 ? A.min : A.min + ((A.max - A.min) * j) / (A.steps - 1)
+      }
+    }
+    simulate(scene, buf, nr * A.steps, (k, h) => {
+      out[(r - r0) * A.steps + k] = h
+    })
+  }
+  return out
+}
+
+export interface OutcomeSummary {
+  throws: number
+  /** per hole: the capture probability and its 95 % Wilson interval */
+  holes: Array<{ p: number; low: number; high: number }>
+  missed: { p: number; low: number; high: number }
+  /** mean payout per throw under `payouts` (per hole; default the holes' values), with its 95 % interval */
+  payout: { mean: number; low: number; high: number }
+  /** return to player: mean payout / stake */
+  rtp: number
+}
+
+/** Probabilities with 95 % intervals, and the payout per throw for a payout table (see OutcomeSummary). */
+export function summarizeOutcomes(tally: OutcomeTally, payouts: readonly number[], stake = 1): OutcomeSummary {
+  const n = tally.throws
+  if (payouts.length !== tally.captures.length) throw new RangeError(`payouts has ${payouts.length} entries; the tally has ${tally.captures.length} holes`)
+  const z = 1.959963984540054
+  const wilson = (c: number): { p: number; low: number; high: number } => {
+    if (n === 0) return { p: 0, low: 0, high: 1 }
+    const p = c / n
+    const d = 1 + (z * z) / n
+    const centre = (p + (z * z) / (2 * n)) / d
+    const half = (z * Math.sqrt((p * (1 - p)) / n + (z * z) / (4 * n * n))) / d
+    return { p, low: Math.max(0, centre - half), high: Math.min(1, centre + half) }
+  }
+  let sum = 0
+  let sum2 = 0
+  tally.captures.forEach((c, i) => {
+    sum += c * payouts[i]!
+    sum2 += c * payouts[i]! * payouts[i]!
+  })
+  const mean = n > 0 ? sum / n : 0
+  const variance = n > 1 ? (sum2 - n * mean * mean) / (n - 1) : 0
+  const half = n > 0 ? (z * Math.sqrt(Math.max(0, variance))) / Math.sqrt(n) : 0
+  return {
+    throws: n,
+    holes: tally.captures.map(wilson),
+    missed: wilson(tally.missed),
+    payout: { mean, low: mean - half, high: mean + half },
+    rtp: mean / stake,
+  }
+}
