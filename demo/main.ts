@@ -6,6 +6,7 @@ import { Game, STRESS_BALLS, type DemoEvent } from './game'
 import { ThrowInput } from './input'
 import { PanelView, type InspectorOptions } from './panelView'
 import { RegimeView } from './regimeView'
+import { MAP_SPEC, OutcomeView } from './outcomeView'
 import { BALL_MODE_NAMES, EVENT_TYPE_NAMES } from '../src/index'
 import { eventColor, hex, modeColor } from './theme'
 import { createTuning } from './tuning'
@@ -93,6 +94,7 @@ async function main(): Promise<void> {
   game.reset()
   const panel = new PanelView(game)
   const regime = new RegimeView()
+  const outcomes = new OutcomeView(el<HTMLCanvasElement>('outcome-map'), game)
   const world = new Container()
   panel.root.position.set(PANEL_AT.x, PANEL_AT.y)
   regime.root.position.set(REGIME_AT.x, REGIME_AT.y)
@@ -360,6 +362,7 @@ async function main(): Promise<void> {
     regime.onEvents(result.events)
     panel.draw(game.clock.alpha, input, opts)
     regime.draw()
+    outcomes.frame(input.power, input.angle)
     frames++
     setText(hud.score, String(game.score))
     setText(hud.ballsLeft, String(game.ballsLeft))
@@ -432,6 +435,13 @@ async function main(): Promise<void> {
     /** the last called shot: the hole (layout order), the solver's answer, ms */
     get lastCall() {
       return game.lastCall === null ? null : JSON.parse(JSON.stringify(game.lastCall))
+    },
+    /** the outcome map view: rows computed, its grid, and the hole (layout order, −1 none) of a cell */
+    get outcomeMap() {
+      return { rows: outcomes.rows, done: outcomes.done, spec: MAP_SPEC }
+    },
+    outcomeCell(row: number, col: number): number {
+      return outcomes.cells[row * MAP_SPEC.angle.steps + col]!
     },
     get roundsRecorded() {
       return game.roundsRecorded

@@ -10,7 +10,7 @@ import { join, resolve } from 'node:path'
 import { chromium, type Browser, type Page } from 'playwright-core'
 import { afterAll, beforeAll, describe, expect, it } from 'vitest'
 import { wallsFor } from '../../demo/game'
-import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../../src/index'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, outcomeMap } from '../../src/index'
 
 const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium'
 const ARGS = [
@@ -42,6 +42,8 @@ interface DemoHook {
   eventCounts: Record<string, number>
   input: { angle: number; power: number; charging: boolean }
   recent: { type: string; player: boolean; value: number; holeIndex: number; delta?: number; speed?: number }[]
+  outcomeMap: { rows: number; done: boolean; spec: { from: { x: number; y: number }; power: { min: number; max: number; steps: number }; angle: { min: number; max: number; steps: number } } }
+  outcomeCell(row: number, col: number): number
   lastCall: { holeIndex: number; answer: { found: boolean; power: number | null; reason?: string }; ms: number } | null
   renderer: { type: string; software: boolean; antialias: boolean }
   pending: Record<string, unknown> | null
@@ -388,6 +390,21 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.waitForFunction((k) => window.__demo.recent.some((e) => e.type === 'capture' && e.player && e.holeIndex === k), i, { timeout: 20_000 })
     }
     await page.click('#call-shot')
+    expect(problems).toEqual([])
+  })
+
+  it('the outcome map view: every cell is the hole the engine gives that throw (the same map computed here)', async () => {
+    await page.waitForFunction(() => window.__demo.outcomeMap.done, null, { timeout: 30_000 })
+    const { spec } = await page.evaluate(() => window.__demo.outcomeMap)
+    const config = await page.evaluate(() => window.__demo.config)
+    const here = outcomeMap({ config, holes: DEFAULT_PANEL.holes.map((h) => ({ ...h })), walls: wallsFor(DEFAULT_PANEL) }, spec)
+    const cells = await page.evaluate(({ rows, cols }) => {
+      const out: number[] = []
+      for (let r = 0; r < rows; r++) for (let c = 0; c < cols; c++) out.push(window.__demo.outcomeCell(r, c))
+      return out
+    }, { rows: spec.power.steps, cols: spec.angle.steps })
+    expect(cells).toEqual([...here])
+    expect(new Set(cells).size).toBeGreaterThan(20) // most holes appear on it
     expect(problems).toEqual([])
   })
 
