@@ -210,6 +210,8 @@ export interface OutcomeSummary {
   payout: { mean: number; low: number; high: number }
   /** return to player: mean payout / stake */
   rtp: number
+  /** per hole: skips, bounces and lip-outs there per throw (a throw may meet a hole more than once) */
+  lipEvents: Array<{ skip: number; bounce: number; lipOut: number }>
 }
 
 /** Probabilities with 95 % intervals, and the payout per throw for a payout table (see OutcomeSummary). */
@@ -240,5 +242,6 @@ export function summarizeOutcomes(tally: OutcomeTally, payouts: readonly number[
     missed: wilson(tally.missed),
     payout: { mean, low: mean - half, high: mean + half },
     rtp: mean / stake,
+    lipEvents: tally.captures.map((_c, i) => ({ skip: n > 0 ? tally.skips[i]! / n : 0, bounce: n > 0 ? tally.bounces[i]! / n : 0, lipOut: n > 0 ? tally.lipOuts[i]! / n : 0 })),
   }
 }

@@ -9,8 +9,8 @@
 //      would have at the lip. Each throw is simulated in a trial world (the world's config, holes and
 //      walls; one ball alone, contacts off), with MAX_STEP steps (the result does not depend on the step).
 //      With `along`, the same from other start points on the launch segment, nearest first; when no
-//      direct throw has room, bank shots off each closed wall (the aim whose path, reflected with the
-//      walls' restitution, runs to the hole's centre).
+//      direct throw gives the outcome, bank shots off each closed wall (the aim whose path, reflected with
+//      the walls' restitution, runs to the hole's centre).
 //   2. Of the throws with the outcome, the one deepest inside its region (the most grid steps to the
 //      nearest throw without it) is taken, and its margin measured by bisection along ±power and ±angle.
 //   3. That throw is simulated once more in an exact copy of the world (a snapshot restored: its time,
@@ -97,7 +97,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const hy = H.y[hole]!
   const R = H.radius[hole]!
   // 1–2. direct throws from the start points, nearest from.x first, until one has room on every side (two
-  // grid steps) or three points have given any; then bank shots off the closed walls from from.x
+  // grid steps) or three points have given any; bank shots off the closed walls from from.x when none did
   const found: Candidate[] = []
   const starts = along > 0 ? [0, 1, -1, 2, -2, 3, -3, 4, -4].map((k) => fx + (k * along) / 4) : [fx]
   for (let n = 0; n < starts.length; n++) {
@@ -107,7 +107,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
     // enough: a throw with room on every side, or any throw once three points have been searched
     if (found.some((c) => c.depth >= 2) || (found.length > 0 && n >= 2)) break
   }
-  if (!found.some((c) => c.depth >= 2) && hypot(hx - fx, hy - fy) > R) {
+  if (found.length === 0 && hypot(hx - fx, hy - fy) > R) {
     for (const cone of bankCones(world, fx, fy, hx, hy, R)) searchCone(trial, fx, fy, outcome, cone, found)
   }
   if (found.length === 0) {
