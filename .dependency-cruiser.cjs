@@ -4,7 +4,7 @@
  *
  * Layers, lowest first; a module may import only from its own layer or lower:
  *   1a components/, src/config/, src/check.ts, src/events.ts, src/geometry.ts,
- *      src/clock.ts, src/math.ts  (leaf utilities)
+ *      src/clock.ts, src/math.ts, src/random.ts  (leaf utilities)
  *   1b src/reference/        (the rigid-sphere reference; may use 1a)
  *   2  src/world/
  *   3  src/motion/
@@ -27,7 +27,7 @@
 
 /** One alternative per layer, so the rules below read as "layer N -> above N". */
 const L = {
-  leaf: '^(components/|src/config/|src/(check|events|geometry|clock|math)\\.)',
+  leaf: '^(components/|src/config/|src/(check|events|geometry|clock|math|random)\\.)',
   reference: '^src/reference/',
   world: '^src/world/',
   motion: '^src/motion/',

@@ -8,7 +8,7 @@
 // step at the same 120 Hz, and then the live game resumes where it was. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
 // component of its own, DemoBall, on the simulation's ball entities: its balls are query([Ball, DemoBall]).
 import { addComponent, hasComponent, query } from 'bitecs'
-import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
+import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, mulberry32, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
 import { isHoleEvent } from './theme'
@@ -66,18 +66,6 @@ export function wallsFor(panel: Readonly<PanelLayout>): WallsSpec {
   return { minX: 0, minY: 0, maxX: panel.width, maxY: panel.height, restitution: 0.5, open: { bottom: true } }
 }
 
-/** Small deterministic PRNG (mulberry32) for the multi-ball throws. */
-function rng(seed: number): () => number {
-  let a = seed >>> 0
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0
-    let t = a
-    t = Math.imul(t ^ (t >>> 15), t | 1)
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
-  }
-}
-
 function grow<T extends Float64Array | Uint8Array | Int32Array>(a: T, n: number, fill = 0): T {
   if (a.length >= n) return a
   let cap = Math.max(1024, a.length)
@@ -123,7 +111,7 @@ export class Game {
   stressTarget = 0
   private stressLive = 0
   private playerMoving = 0
-  private random = rng(0x5eed)
+  private random = mulberry32(0x5eed)
 
   /** the last finished round, and the kinds of its balls by id */
   lastRound: Replay | null = null

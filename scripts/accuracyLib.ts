@@ -4,6 +4,7 @@
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type SimulationMethod } from '../src/index'
 import { solveBall, throwVelocity, type SolverEvent, type SolverResult } from '../src/reference/eventSolver'
 import { resolveConfig } from '../src/config/design'
+import { mulberry32 } from '../src/random'
 
 export interface Throw {
   x: number
@@ -12,17 +13,8 @@ export interface Throw {
   angle: number
 }
 
-/** mulberry32, as tests/helpers.ts */
-export function rng(seed: number): () => number {
-  let a = seed >>> 0
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0
-    let t = a
-    t = Math.imul(t ^ (t >>> 15), t | 1)
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
-  }
-}
+/** mulberry32 (src/random.ts) */
+export const rng = mulberry32
 
 /** The throw distribution of tests/multiball.test.ts: x spread ±150 px about the launch point, any power, ±0.7 rad. */
 export function panelThrows(seed: number, n: number): Throw[] {

@@ -43,17 +43,8 @@ export function sequence(events: BallEvent[], ball?: number): string[] {
     .map((e) => (e.via ? `${e.type}:${e.via}` : e.type))
 }
 
-/** A small seeded generator (mulberry32) for reproducible random scenes. */
-export function rng(seed: number): () => number {
-  let a = seed >>> 0
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0
-    let t = a
-    t = Math.imul(t ^ (t >>> 15), t | 1)
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
-  }
-}
+/** A small seeded generator (mulberry32, src/random.ts) for reproducible random scenes. */
+export { mulberry32 as rng } from '../src/random.js'
 
 /** Named tolerances. */
 export const EXACT = 1e-9

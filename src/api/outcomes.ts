@@ -14,6 +14,7 @@ import type { WallsSpec } from '../commands/walls.js'
 import { BallMode } from '../../components/Ball.js'
 import { EventType } from '../events.js'
 import { cos, log, sin } from '../math.js'
+import { mulberry32 } from '../random.js'
 import { createBallPhysics, type BallPhysics } from './createBallPhysics.js'
 
 export interface OutcomeScene {
@@ -111,14 +112,7 @@ function simulate(scene: OutcomeScene, throws: Float64Array, n: number, fate: (k
 
 /** A generator of its own for throw k of a run seeded `seed` (mulberry32 on a mix of the two). */
 function throwRandom(seed: number, k: number): () => number {
-  let a = (Math.imul(seed ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(k + 1, 0xc2b2ae35)) >>> 0
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0
-    let t = a
-    t = Math.imul(t ^ (t >>> 15), t | 1)
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61)
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296
-  }
+  return mulberry32(Math.imul(seed ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(k + 1, 0xc2b2ae35))
 }
 
 /** Two standard normal draws (Box–Muller, portable functions), into pair */
