@@ -24,35 +24,29 @@ let replayBundle = ''
 /** the session recorded in this process: its replay's JSON and the hash of its events */
 const session = recordSession()
 
-beforeAll(async () => {
-  dir = mkdtempSync(join(tmpdir(), 'engines-'))
-  bundle = join(dir, 'engines.js')
+/** Bundles a test entry into one script with no imports (an IIFE), the way every engine can run it. */
+async function bundleFile(entry: string, name: string, define: Record<string, string> = {}): Promise<string> {
   const out = await build({
     absWorkingDir: root,
-    entryPoints: ['tests/engines/main.ts'],
+    entryPoints: [entry],
     bundle: true,
     format: 'iife',
     platform: 'neutral',
     mainFields: ['module', 'main'],
     target: 'es2022',
+    define,
     write: false,
     logLevel: 'silent',
   })
-  writeFileSync(bundle, out.outputFiles[0]!.text)
-  replayBundle = join(dir, 'replay.js')
-  const replay = await build({
-    absWorkingDir: root,
-    entryPoints: ['tests/engines/replayMain.ts'],
-    bundle: true,
-    format: 'iife',
-    platform: 'neutral',
-    mainFields: ['module', 'main'],
-    target: 'es2022',
-    define: { REPLAY_TEXT: JSON.stringify(session.text) },
-    write: false,
-    logLevel: 'silent',
-  })
-  writeFileSync(replayBundle, replay.outputFiles[0]!.text)
+  const file = join(dir, name)
+  writeFileSync(file, out.outputFiles[0]!.text)
+  return file
+}
+
+beforeAll(async () => {
+  dir = mkdtempSync(join(tmpdir(), 'engines-'))
+  bundle = await bundleFile('tests/engines/main.ts', 'engines.js')
+  replayBundle = await bundleFile('tests/engines/replayMain.ts', 'replay.js', { REPLAY_TEXT: JSON.stringify(session.text) })
 })
 
 afterAll(() => {
