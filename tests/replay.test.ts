@@ -60,11 +60,12 @@ const CONFIGS: Array<[string, ConfigOverrides]> = [
   ['contacts on', { BALL_COLLISIONS: 'on' }],
   ['contacts fixed', { BALL_COLLISIONS: 'fixed' }],
   ['the tabulated model', TABULATED_CONFIG],
+  ['the tick-sampled naive method', { METHOD: 'naive' }],
 ]
 
 describe('replays', () => {
   for (const [name, config] of CONFIGS) {
-    it(`${name}: a recorded session plays back through JSON with every event, state and the snapshot bit-identical`, () => {
+    it(`${name}: a recorded session plays back through JSON with every event, state and (exact method) the snapshot bit-identical`, () => {
       const sim = createBallPhysics(config)
       sim.startRecording()
       addPanel(sim)
@@ -76,7 +77,7 @@ describe('replays', () => {
       const back = play(replay)
       expect(back.events).toEqual(events)
       expect(states(back.sim)).toEqual(states(sim))
-      expect(back.sim.snapshot()).toEqual(sim.snapshot())
+      if (sim.config.METHOD === 'exact') expect(back.sim.snapshot()).toEqual(sim.snapshot())
       expect(events.flat().length).toBeGreaterThan(100)
     })
   }

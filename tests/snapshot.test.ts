@@ -146,6 +146,16 @@ describe('snapshot and restore', () => {
       expect(same(sim.snapshot(), before)).toBe(true)
     })
 
+    it('the tick-sampled comparison methods, whose sub-step state is outside the world', () => {
+      for (const METHOD of ['naive', 'v1'] as const) {
+        const sim = createBallPhysics({ METHOD })
+        sim.addBall({ x: 0, y: 0, vx: 10, vy: 0 })
+        sim.step(1 / 60)
+        expect(() => sim.snapshot()).toThrow(new RegExp(`snapshots need METHOD 'exact'; this world runs '${METHOD}'`))
+        expect(() => createBallPhysics({ METHOD }).restore(good)).toThrow(/snapshots need METHOD 'exact'/)
+      }
+    })
+
     it('an empty world restores an empty world', () => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
       sim.restore(fresh)

@@ -15,6 +15,8 @@
 //
 // Not in a snapshot: a game's own components and stores (its own to save), the schedule (made from the
 // config), and the tabulated rim model's tables (named by their geometry, rebuilt or taken from the cache).
+// Snapshots need METHOD 'exact': the tick-sampled comparison methods ('naive', 'v1') keep their sub-step
+// state outside the world, and are refused.
 import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimTableFor } from '../reference/rimTables.js'
@@ -37,6 +39,13 @@ const HOLE = 8
 const IS_HOLE = 16
 const WALLS = 32
 
+/** Snapshots hold the exact method's state; the tick-sampled variants keep theirs outside the world. */
+function exactOnly(name: string, w: BallWorld): void {
+  if (w.config.METHOD !== 'exact') {
+    throw new RangeError(`${name}: snapshots need METHOD 'exact'; this world runs '${w.config.METHOD}' (a tick-sampled comparison method, whose sub-step state is not part of a snapshot)`)
+  }
+}
+
 /** The world's data fields the body holds, in the order the world has them. */
 function bodyKeys(w: BallWorld): string[] {
   return Object.keys(w).filter((k) => !SPECIAL.has(k))
@@ -49,6 +58,7 @@ function bodyKeys(w: BallWorld): string[] {
 export function snapshotWorld(world: BallWorld): Uint8Array {
   const w = checkWorld('snapshotWorld', world)
   if (w.stepping) throw new Error('snapshotWorld: the world is in the middle of a step; take the snapshot between steps')
+  exactOnly('snapshotWorld', w)
   const out = new Writer()
   for (const b of MAGIC) out.u8(b)
   out.u16(SNAPSHOT_VERSION)
@@ -231,6 +241,7 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   const w = checkWorld('restoreWorld', world)
   if (!(bytes instanceof Uint8Array)) throw new TypeError(`restore: bytes must be a Uint8Array (from snapshot()), got ${bytes === null ? 'null' : typeof bytes}`)
   if (w.stepping) throw new Error('restore: the world is in the middle of a step')
+  exactOnly('restore', w)
   if (w.entityIndex.maxId !== 0) {
     throw new Error('restore: the world already has entities; restore into a world just made with the snapshot\'s config (createBallPhysics(config)), then add the game\'s own components')
   }
