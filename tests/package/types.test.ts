@@ -38,7 +38,7 @@ async function sh(cmd: string, args: string[], cwd: string): Promise<Result> {
 }
 
 const CONSUMER = `
-import { createBallPhysics, DEFAULT_CONFIG, addPanel, DEFAULT_PANEL, type BallEvent, type BallPhysics, type EventView } from '${PKG}'
+import { createBallPhysics, DEFAULT_CONFIG, addPanel, DEFAULT_PANEL, solveThrow, createReplayPlayer, replayFromJSON, replayToJSON, sampleThrows, type BallEvent, type BallPhysics, type EventView, type Replay, type ThrowSolution, type ThrowFailure } from '${PKG}'
 import { createBallWorld, runSchedule, DEFAULT_SCHEDULE, BallMode, type BallWorld } from '${PKG}/ecs'
 import { referenceOutcome, type ReferenceOutcome } from '${PKG}/reference'
 
@@ -58,7 +58,15 @@ const drained: number = sim.drainEventsWith((e: EventView) => {
 const rolling: 0 = BallMode.Rolling
 const outcome: ReferenceOutcome = referenceOutcome({ delta: 5, speed: 300, holeRadius: 18, ballRadius: 11, gravity: 6953, inertia: 0.4 })
 const captured: boolean = outcome.captured
-export const used = [holes, kinds, rolling, captured, drained, latest]
+const shot: ThrowSolution | ThrowFailure = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, outcome: 'skip' })
+const power: number | null = shot.power
+const bytes: Uint8Array = sim.snapshot()
+sim.startRecording()
+const replay: Replay = sim.stopRecording()
+const player = createReplayPlayer(replayFromJSON(replayToJSON(replay)))
+const more: boolean = player.next()
+const tally = sampleThrows({ holes: DEFAULT_PANEL.holes }, { power: { mean: 0.5 }, angle: { mean: 0 }, from: DEFAULT_PANEL.launch }, 10, 1)
+export const used = [holes, kinds, rolling, captured, drained, latest, power, bytes, more, tally.throws]
 
 // Each line below is an error only while the types are real: were any of them \`any\`, the directive would
 // be unused (TS2578) and the check would fail.
@@ -74,6 +82,10 @@ export const never: BallEvent['type'] = 'explosion'
 BallMode.Rolling = 1
 // @ts-expect-error the outcome is not a number
 export const notNumber: number = outcome
+// @ts-expect-error an outcome is one of capture, skip, lipOut, bounce
+solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: 1, outcome: 'drop' })
+// @ts-expect-error a snapshot is restored from bytes
+sim.restore('snapshot')
 // @ts-expect-error an event view's hole is a number (0: none), not optional
 sim.drainEventsWith((e) => { const h: undefined = e.hole })
 `
@@ -106,6 +118,9 @@ console.log(JSON.stringify({
   sameModeNames: main.BALL_MODE_NAMES === ecs.BALL_MODE_NAMES,
   mainHasNoEcsInternals: !('createBallWorld' in main) && !('runSchedule' in main),
   captured: typeof out.captured,
+  // the portable functions are bundled in: a snapshot restores in a copy, and the solver runs
+  restored: (() => { const c = main.createBallPhysics(sim.config, { capacity: 8 }); c.restore(sim.snapshot()); return c.balls().length })(),
+  solved: main.solveThrow(sim, { from: main.DEFAULT_PANEL.launch, hole: sim.holes()[0], outcome: 'skip' }).found,
 }))
 `
 
@@ -223,7 +238,7 @@ describe('published package', () => {
     expect(out.time).toBeGreaterThan(0)
     expect(out.ownTime).toBeGreaterThan(0)
     expect(out.balls).toBe(41)
-    expect(out).toMatchObject({ sameModeNames: true, mainHasNoEcsInternals: true, captured: 'boolean' })
+    expect(out).toMatchObject({ sameModeNames: true, mainHasNoEcsInternals: true, captured: 'boolean', restored: 41, solved: true })
   })
 
   it('@arethetypeswrong/cli finds no problem in the tarball', async () => {
