@@ -1,5 +1,6 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
-// contact-accuracy, piles, the adversarial suite's long version, resting, recycling, dense, solver), then
+// contact-accuracy, piles, the adversarial suite's long version, resting, recycling, dense, solver, then
+// the physical reference's fidelity against cost and the tick-sampled methods' accuracy), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
 // assertions (the machine is shared and noisy), so the exit status only says whether every benchmark ran.
 //
@@ -29,6 +30,10 @@ const benches: [string, string[]][] = [
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
   ['bench/dense.ts', []],
   ['bench/solver.ts', []],
+  // the physical reference against the game models (fidelity against cost), and the tick-sampled methods'
+  // accuracy against speed: scripts, also run on their own (npm run physical, npm run accuracy)
+  ['scripts/physical.ts', []],
+  ['scripts/accuracy.ts', []],
 ]
 const failed: string[] = []
 for (const [entry, args] of benches) {

@@ -1,8 +1,11 @@
 // Speed against accuracy: every method at 30, 60, 120, 240 Hz on 10,000 seeded throws at the default panel,
-// against the exact event-driven reference (src/eventSolver.ts). Writes docs/results/accuracy.json and
-// docs/figures/accuracy-vs-speed.svg, and prints the README table.
+// against the exact event-driven reference (src/reference/eventSolver.ts). Writes docs/results/accuracy.json and
+// docs/figures/accuracy-vs-speed.svg (under DIR with --out DIR; npm run bench runs it), and prints the
+// README table.
 //   npm run accuracy
 import { mkdirSync, writeFileSync } from 'node:fs'
+import { join } from 'node:path'
+import { outDir } from '../bench/lib'
 import { cpus } from 'node:os'
 import type { TopLevelSpec } from 'vega-lite'
 import { METHOD_SPECS, measureAccuracy, panelThrows, referenceRuns, runMethod, type Accuracy } from './accuracyLib'
@@ -69,10 +72,10 @@ function paretoFront(get: (r: Row) => number): Set<Row> {
 const frontSeq = paretoFront((r) => r.sequenceDiffers)
 const frontPos = paretoFront((r) => r.posErrP95)
 
-mkdirSync('docs/results', { recursive: true })
-mkdirSync('docs/figures', { recursive: true })
+mkdirSync(join(outDir(), 'results'), { recursive: true })
+mkdirSync(join(outDir(), 'figures'), { recursive: true })
 writeFileSync(
-  'docs/results/accuracy.json',
+  join(outDir(), 'results', 'accuracy.json'),
   JSON.stringify(
     {
       generated: new Date().toISOString(),
@@ -163,7 +166,7 @@ const spec = {
   resolve: { scale: { color: 'shared', shape: 'shared' } },
   config: { font: 'sans-serif', background: 'white' },
 } as unknown as TopLevelSpec
-writeFileSync('docs/figures/accuracy-vs-speed.svg', await renderSvg(spec))
+writeFileSync(join(outDir(), 'figures', 'accuracy-vs-speed.svg'), await renderSvg(spec))
 
 const f = (x: number, d = 2) => (x === 0 ? '0' : Math.abs(x) < 1e-3 ? x.toExponential(0) : x.toFixed(d))
 console.log('\n| method | Hz | events differ | outcome differs | δ err mean / max, px | v err mean / max, px/s | final pos err mean / p95 / max, px | ns per ball-step | × exact | µs per ball-second |')

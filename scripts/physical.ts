@@ -1,12 +1,15 @@
 // Physical accuracy (docs/physical.md): the game model against the rigid-sphere reference on the fine
 // (δ, v) grid, the fit of the physical preset, and fidelity against cost. Writes docs/results/physical.json,
-// docs/figures/reference-vs-game.svg and docs/figures/fidelity-cost.svg.
+// docs/figures/reference-vs-game.svg and docs/figures/fidelity-cost.svg (under DIR with --out DIR; npm run
+// bench runs it).
 //
 //   npm run physical
 //
 // Times are hrtime medians over interleaved batches in this one run (the machine is shared and noisy:
 // compare the models side by side, not across runs).
 import { mkdirSync, writeFileSync } from 'node:fs'
+import { join } from 'node:path'
+import { outDir } from '../bench/lib'
 import * as vega from 'vega'
 import * as vegaLite from 'vega-lite'
 import { DEFAULT_CONFIG, resolveConfig, type ConfigOverrides } from '../src/config/design'
@@ -378,15 +381,16 @@ const result = {
   scene: sceneCost,
   rimTable: { gridBuildMs: table0.buildMs, rowsMs, rowsShippedIdentical: rowsSame, escapes: exitErrors },
 }
-mkdirSync('docs/results', { recursive: true })
-writeFileSync('docs/results/physical.json', JSON.stringify(result, null, 2) + '\n')
-log('wrote docs/results/physical.json')
+mkdirSync(join(outDir(), 'results'), { recursive: true })
+writeFileSync(join(outDir(), 'results', 'physical.json'), JSON.stringify(result, null, 2) + '\n')
+log(`wrote ${join(outDir(), 'results', 'physical.json')}`)
 
 // ---- figures ----
 type Spec = Record<string, unknown>
 async function svg(spec: Spec, file: string): Promise<void> {
   const compiled = vegaLite.compile(spec as never).spec
   const view = new vega.View(vega.parse(compiled), { renderer: 'none' })
+  mkdirSync(join(file, '..'), { recursive: true })
   writeFileSync(file, await view.toSVG())
   log(`wrote ${file}`)
 }
@@ -474,7 +478,7 @@ await svg(
     ],
     config: { legend: { labelFontSize: 11 } },
   },
-  'docs/figures/reference-vs-game.svg',
+  join(outDir(), 'figures', 'reference-vs-game.svg'),
 )
 
 const points = [
@@ -536,5 +540,5 @@ await svg(
       })),
     ],
   },
-  'docs/figures/fidelity-cost.svg',
+  join(outDir(), 'figures', 'fidelity-cost.svg'),
 )
