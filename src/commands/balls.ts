@@ -105,7 +105,7 @@ export function addBall(world: BallWorld, spec: BallSpec): number {
   const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
   const hero = flag('ball.hero', s.hero)
   const mass = massOf(w, 'ball.mass', s.mass, radius)
-  record(w, ['addBall', specOf(s)])
+  if (w.recorder !== null) record(w, ['addBall', specOf(s)])
   return newBall(w, x, y, vx, vy, radius, hero, mass)
 }
 
@@ -127,7 +127,7 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
   const hero = flag('throw.hero', s.hero)
   const mass = massOf(w, 'throw.mass', s.mass, radius)
-  record(w, ['throwBall', specOf(s)])
+  if (w.recorder !== null) record(w, ['throwBall', specOf(s)])
   const cfg = w.config
   const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
   return newBall(w, x, y, speed * sin(angle), -speed * cos(angle), radius, hero, mass)
@@ -140,7 +140,7 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
 export function removeBall(world: BallWorld, ball: number): void {
   const w = checkWorld('removeBall', world)
   const b = checkBall(w, 'ball', ball)
-  record(w, ['removeBall', b])
+  if (w.recorder !== null) record(w, ['removeBall', b])
   removeEntity(w, b)
 }
 
@@ -154,7 +154,7 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
   const nvx = finite('vx', vx, MAX_SPEED)
   const nvy = finite('vy', vy, MAX_SPEED)
   const mode = w.Ball.mode[b]!
-  if (mode !== BallMode.Captured && mode !== BallMode.Out) record(w, ['setBallVelocity', b, nvx, nvy])
+  if (w.recorder !== null && mode !== BallMode.Captured && mode !== BallMode.Out) record(w, ['setBallVelocity', b, nvx, nvy])
   if (mode === BallMode.Held) {
     // it leaves with this velocity when its spot is clear
     w.Ball.vx[b] = nvx
@@ -183,7 +183,7 @@ export function setHeroBall(world: BallWorld, ball: number, hero = true): void {
   const w = checkWorld('setHeroBall', world)
   const b = checkBall(w, 'ball', ball)
   const on = flag('hero', hero)
-  record(w, ['setHeroBall', b, on])
+  if (w.recorder !== null) record(w, ['setHeroBall', b, on])
   w.Ball.hero[b] = on ? 1 : 0
 }
 

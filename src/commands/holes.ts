@@ -88,7 +88,7 @@ export function addHole(world: BallWorld, spec: HoleSpec): number {
   const w = checkWorld('addHole', world)
   const h = readHole(w, 'hole', spec)
   checkClear(w, h)
-  record(w, ['addHole', { ...h }])
+  if (w.recorder !== null) record(w, ['addHole', { ...h }])
   const eid = placeHole(w, h)
   replanRolling(w)
   return eid
@@ -114,7 +114,7 @@ export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[]
       }
     }
   }
-  record(w, ['addHoles', list.map((h) => ({ ...h }))])
+  if (w.recorder !== null) record(w, ['addHoles', list.map((h) => ({ ...h }))])
   const ids = list.map((h) => placeHole(w, h))
   replanRolling(w)
   return ids
@@ -124,7 +124,7 @@ export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[]
 export function removeHole(world: BallWorld, hole: number): void {
   const w = checkWorld('removeHole', world)
   const h = checkHole(w, 'hole', hole)
-  record(w, ['removeHole', h])
+  if (w.recorder !== null) record(w, ['removeHole', h])
   removeEntity(w, h) // forgetHole runs here
 }
 

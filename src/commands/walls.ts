@@ -51,7 +51,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
   if (!(maxY > minY)) throw new RangeError(`walls.maxY must be > walls.minY = ${minY}, got ${maxY}`)
   const e = s.restitution === undefined ? 0.5 : within('walls.restitution', s.restitution, 0, 1)
   const open = openMask(s.open)
-  record(w, ['setWalls', { minX, minY, maxX, maxY, restitution: e, open: { left: (open & WallEdge.Left) !== 0, right: (open & WallEdge.Right) !== 0, top: (open & WallEdge.Top) !== 0, bottom: (open & WallEdge.Bottom) !== 0 } }])
+  if (w.recorder !== null) record(w, ['setWalls', { minX, minY, maxX, maxY, restitution: e, open: { left: (open & WallEdge.Left) !== 0, right: (open & WallEdge.Right) !== 0, top: (open & WallEdge.Top) !== 0, bottom: (open & WallEdge.Bottom) !== 0 } }])
   if (w.walls === 0) {
     const eid = addEntity(w)
     fitStore(w.Walls, eid)
@@ -71,7 +71,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
 /** Removes the walls (a no-op without walls). */
 export function clearWalls(world: BallWorld): void {
   const w = checkWorld('clearWalls', world)
-  record(w, ['clearWalls'])
+  if (w.recorder !== null) record(w, ['clearWalls'])
   if (w.walls !== 0) removeEntity(w, w.walls) // forgetWalls runs here
 }
 

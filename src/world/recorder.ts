@@ -1,6 +1,7 @@
 // Replay recording (src/commands/replay.ts): while a world records, every command that changes it appends
-// one input — its name and its checked arguments — after its checks pass, and every step its dt. A world
-// that does not record pays one null test per command.
+// one input — its name and its checked arguments — after its checks pass, and every step its dt. Callers
+// test w.recorder before they build the input, so a world that does not record pays one null test per
+// command and allocates nothing for it.
 import type { BallWorld } from './createWorld.js'
 
 /** One recorded input: the command's name, then its arguments (plain numbers, booleans and objects) */
@@ -12,9 +13,9 @@ export interface Recorder {
   start: string | undefined
 }
 
-/** Appends an input when the world records. */
+/** Appends an input (the caller has checked that the world records). */
 export function record(w: BallWorld, input: ReplayInput): void {
-  if (w.recorder !== null) w.recorder.inputs.push(input)
+  w.recorder?.inputs.push(input)
 }
 
 /** The fields of a checked spec that are set (undefined ones left out), as a plain object */
