@@ -153,3 +153,27 @@ describe('stores are sized per component', () => {
     expect(bytes / cap).toBeLessThanOrEqual(160)
   })
 })
+
+describe('holeAt', () => {
+  it('the hole grid gives the same hole for a point as the scan of every hole', async () => {
+    const { createBallWorld, addHoles } = await import('../src/ecs.js')
+    const { holeAt } = await import('../src/world/holeTable.js')
+    const specs = []
+    for (let i = 0; i < 30; i++) for (let j = 0; j < 20; j++) specs.push({ x: 40 * i + (j % 3), y: 41 * j, radius: 12 + ((i * 7 + j) % 8) })
+    const grid = createBallWorld({}, { broadphase: 'grid' })
+    const scan = createBallWorld({}, { broadphase: 'scan' })
+    addHoles(grid, specs)
+    addHoles(scan, specs)
+    let s = 7
+    const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+    let inside = 0
+    for (let k = 0; k < 20000; k++) {
+      const x = -50 + 1300 * r()
+      const y = -50 + 900 * r()
+      const h = holeAt(scan, x, y)
+      expect(holeAt(grid, x, y)).toBe(h)
+      if (h !== 0) inside++
+    }
+    expect(inside).toBeGreaterThan(2000)
+  })
+})
