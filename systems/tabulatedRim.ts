@@ -26,8 +26,7 @@ export function tabulatedRimSystem(w: BallWorld): void {
     const mark = P.mark[eid]
     if (mark === PathEvent.Lip) {
       if (tabulated) decideByReference(w, eid, true)
-    }
-    else if (mark === PathEvent.RollEnd && RC.ride[B.rim[eid]!] !== 0) endRide(w, eid)
+    } else if (mark === PathEvent.RollEnd && RC.ride[B.rim[eid]!] !== 0) endRide(w, eid)
     else if (mark === PathEvent.Landing) landCrossing(w, eid)
   }
 }

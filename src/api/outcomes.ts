@@ -11,7 +11,6 @@
 import type { ConfigOverrides } from '../config/design.js'
 import type { HoleSpec } from '../commands/holes.js'
 import type { WallsSpec } from '../commands/walls.js'
-import { BallMode } from '../../components/Ball.js'
 import { EventType } from '../events.js'
 import { cos, log, sin } from '../math.js'
 import { mulberry32 } from '../random.js'
@@ -95,17 +94,11 @@ function simulate(scene: OutcomeScene, throws: Float64Array, n: number, fate: (k
       else if (e.code === EventType.LipOut) tally.lipOuts[h]!++
     }
   }
-  const mode = sim.world.Ball.mode
   const dt = sim.config.MAX_STEP
-  for (let t = 0; t < LIMIT; t += dt) {
+  // the world's moving set holds its rolling and rim-rolling balls (contacts off: none is ever held)
+  for (let t = 0; t < LIMIT && sim.world.moving.count > 0; t += dt) {
     sim.step(dt)
     sim.drainEventsWith(visit)
-    let moving = false
-    for (let k = 0; k < n && !moving; k++) {
-      const m = mode[first + k]
-      moving = m === BallMode.Rolling || m === BallMode.RimRoll || m === BallMode.Held
-    }
-    if (!moving) break
   }
   for (let k = 0; k < n; k++) fate(k, captured[k]!)
 }

@@ -23,6 +23,7 @@ import { checkHole, checkWorld, describe, finite, readSpec } from '../commands/v
 import { MAX_COORDINATE } from '../config/limits.js'
 import { atan2, hypot } from '../math.js'
 import type { BallPhysics } from './createBallPhysics.js'
+import { WallEdge } from '../../components/Walls.js'
 import { ExactCheck, Trial, type ThrowOutcome } from './throwTrials.js'
 
 export type { ThrowOutcome } from './throwTrials.js'
@@ -192,10 +193,10 @@ function bankCones(world: BallWorld, fx: number, fy: number, hx: number, hy: num
     if (uf * uh <= 0) return
     add((fx * uh + k * uf * hx) / (uh + k * uf), c, Math.sqrt(k))
   }
-  if ((open & 1) === 0) side(W.minX[e]! + r)
-  if ((open & 4) === 0) side(W.maxX[e]! - r)
-  if ((open & 2) === 0) end(W.minY[e]! + r)
-  if ((open & 8) === 0) end(W.maxY[e]! - r)
+  if ((open & WallEdge.Left) === 0) side(W.minX[e]! + r)
+  if ((open & WallEdge.Right) === 0) side(W.maxX[e]! - r)
+  if ((open & WallEdge.Top) === 0) end(W.minY[e]! + r)
+  if ((open & WallEdge.Bottom) === 0) end(W.maxY[e]! - r)
   return cones
 }
 

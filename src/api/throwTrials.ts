@@ -1,7 +1,9 @@
 // The throw solver's simulations (src/api/solveThrow.ts): a trial world for the grid's throws, and the
 // exact copy of the world that checks the chosen one.
 import type { BallWorld } from '../world/createWorld.js'
-import { createBallPhysics, physicsFor, type BallPhysics } from './createBallPhysics.js'
+import { createBallPhysics, type BallPhysics } from './createBallPhysics.js'
+import { snapshotWorld } from '../commands/snapshot.js'
+import { openSpec } from '../commands/walls.js'
 import { EventType } from '../events.js'
 import { BallMode } from '../../components/Ball.js'
 import { forEachBall } from '../world/balls.js'
@@ -22,6 +24,28 @@ function outcomeAt(type: number, eventHole: number, hole: number): ThrowOutcome 
 }
 
 /**
+ * Steps `sim` (MAX_STEP at a time, up to HORIZON) until ball `b` meets `hole` decisively or stops; the
+ * outcome there (null: none) and its time after `t0`, s.
+ */
+function follow(sim: BallPhysics, b: number, hole: number, t0: number): { outcome: ThrowOutcome | null; at: number } {
+  const found = { outcome: null as ThrowOutcome | null, at: -1 }
+  const visit = (e: { code: number; ball: number; hole: number; time: number }): void => {
+    if (found.outcome !== null || e.ball !== b) return
+    found.outcome = outcomeAt(e.code, e.hole, hole)
+    if (found.outcome !== null) found.at = e.time - t0
+  }
+  const mode = sim.world.Ball.mode
+  const dt = sim.config.MAX_STEP
+  for (let t = 0; t < HORIZON && found.outcome === null; t += dt) {
+    sim.step(dt)
+    sim.drainEventsWith(visit)
+    const m = mode[b]
+    if (m === BallMode.Captured || m === BallMode.Out || m === BallMode.Resting) break
+  }
+  return found
+}
+
+/**
  * A world with the config, holes and walls of the solved one, for one throw at a time. With contacts off
  * the thrown ball is alone (the others cannot touch it); with contacts on, the balls on the panel are put
  * down again for each throw where they are now, with their velocities, radii and masses.
@@ -30,8 +54,6 @@ export class Trial {
   readonly sim: BallPhysics
   readonly hole: number
   count = 0
-  private result: ThrowOutcome | null = null
-  private ball = 0
   /** x, y, vx, vy, radius, mass of each ball on the panel (contacts on) */
   private readonly others: number[] = []
 
@@ -53,24 +75,12 @@ export class Trial {
   run(x: number, y: number, power: number, angle: number): ThrowOutcome | null {
     this.count++
     const sim = this.sim
-    this.result = null
     const o = this.others
     for (let i = 0; i < o.length; i += 6) sim.addBall({ x: o[i]!, y: o[i + 1]!, vx: o[i + 2]!, vy: o[i + 3]!, radius: o[i + 4]!, mass: o[i + 5]! })
-    this.ball = sim.throwBall({ x, y, power, angle })
-    const b = this.ball
-    const mode = sim.world.Ball.mode
-    const visit = (e: { code: number; ball: number; hole: number }): void => {
-      if (this.result === null && e.ball === b) this.result = outcomeAt(e.code, e.hole, this.hole)
-    }
-    for (let t = 0; t < HORIZON && this.result === null; t += sim.config.MAX_STEP) {
-      sim.step(sim.config.MAX_STEP)
-      sim.drainEventsWith(visit)
-      const m = mode[b]
-      if (m === BallMode.Captured || m === BallMode.Out || m === BallMode.Resting) break
-    }
+    const { outcome } = follow(sim, sim.throwBall({ x, y, power, angle }), this.hole, sim.time)
     for (const id of sim.balls()) sim.removeBall(id)
     sim.drainEvents()
-    return this.result
+    return outcome
   }
 }
 
@@ -82,7 +92,7 @@ export class ExactCheck {
     private readonly world: BallWorld,
     private readonly hole: number,
   ) {
-    this.bytes = physicsFor(world).snapshot()
+    this.bytes = snapshotWorld(world)
   }
 
   /** The time from the throw to the outcome, s, or −1 when this run does not give it. */
@@ -91,22 +101,8 @@ export class ExactCheck {
     const copy = createBallPhysics(this.world.config)
     copy.restore(this.bytes)
     copy.drainEvents()
-    const t0 = copy.time
-    const b = copy.throwBall({ x, y, power, angle })
-    let result: ThrowOutcome | null = null
-    let at = -1
-    const mode = copy.world.Ball.mode
-    for (let t = 0; t < HORIZON && result === null; t += copy.config.MAX_STEP) {
-      copy.step(copy.config.MAX_STEP)
-      copy.drainEventsWith((e) => {
-        if (result !== null || e.ball !== b) return
-        result = outcomeAt(e.code, e.hole, this.hole)
-        if (result !== null) at = e.time - t0
-      })
-      const m = mode[b]
-      if (m === BallMode.Captured || m === BallMode.Out || m === BallMode.Resting) break
-    }
-    return result === outcome ? at : -1
+    const found = follow(copy, copy.throwBall({ x, y, power, angle }), this.hole, copy.time)
+    return found.outcome === outcome ? found.at : -1
   }
 }
 
@@ -122,16 +118,7 @@ function copyPanel(world: BallWorld, sim: BallPhysics): Map<number, number> {
   if (world.walls !== 0) {
     const W = world.Walls
     const e = world.walls
-    const open = W.open[e]!
-    sim.setWalls({
-      minX: W.minX[e]!,
-      minY: W.minY[e]!,
-      maxX: W.maxX[e]!,
-      maxY: W.maxY[e]!,
-      restitution: W.restitution[e]!,
-      open: { left: (open & 1) !== 0, top: (open & 2) !== 0, right: (open & 4) !== 0, bottom: (open & 8) !== 0 },
-    })
+    sim.setWalls({ minX: W.minX[e]!, minY: W.minY[e]!, maxX: W.maxX[e]!, maxY: W.maxY[e]!, restitution: W.restitution[e]!, open: openSpec(W.open[e]!) })
   }
   return ids
 }
-

@@ -22,6 +22,11 @@ export interface WallsSpec {
 
 const EDGES = { left: WallEdge.Left, top: WallEdge.Top, right: WallEdge.Right, bottom: WallEdge.Bottom } as const
 
+/** The open edges of a mask (WallEdge bits) as a spec's `open` */
+export function openSpec(mask: number): { left: boolean; top: boolean; right: boolean; bottom: boolean } {
+  return { left: (mask & WallEdge.Left) !== 0, top: (mask & WallEdge.Top) !== 0, right: (mask & WallEdge.Right) !== 0, bottom: (mask & WallEdge.Bottom) !== 0 }
+}
+
 function openMask(value: unknown): number {
   if (value === undefined) return 0
   if (value === null || typeof value !== 'object' || Array.isArray(value)) {
@@ -51,7 +56,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
   if (!(maxY > minY)) throw new RangeError(`walls.maxY must be > walls.minY = ${minY}, got ${maxY}`)
   const e = s.restitution === undefined ? 0.5 : within('walls.restitution', s.restitution, 0, 1)
   const open = openMask(s.open)
-  if (w.recorder !== null) record(w, ['setWalls', { minX, minY, maxX, maxY, restitution: e, open: { left: (open & WallEdge.Left) !== 0, right: (open & WallEdge.Right) !== 0, top: (open & WallEdge.Top) !== 0, bottom: (open & WallEdge.Bottom) !== 0 } }])
+  if (w.recorder !== null) record(w, ['setWalls', { minX, minY, maxX, maxY, restitution: e, open: openSpec(open) }])
   if (w.walls === 0) {
     const eid = addEntity(w)
     fitStore(w.Walls, eid)
