@@ -83,8 +83,8 @@ export function collisionsSystem(w: BallWorld): void {
 
 /** Counts a contact of ball eid in this step; returns its contacts in the step so far. */
 function countContact(C: CollisionState, eid: number): number {
-  if (C.stepContactsAt[eid] !== C.stamp) {
-    C.stepContactsAt[eid] = C.stamp
+  if (C.stepContactsAt[eid] !== C.step) {
+    C.stepContactsAt[eid] = C.step
     C.stepContacts[eid] = 0
   }
   return ++C.stepContacts[eid]!

@@ -15,7 +15,7 @@ import { EventType, pushEvent } from '../src/events.js'
 import { planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
 import { HeapKind, heapPop, heapTopLive } from '../src/contacts/eventHeap.js'
-import { beginCollisionStep } from '../src/contacts/sweepGrid.js'
+import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
@@ -93,11 +93,14 @@ export function integrationSystem(w: BallWorld): void {
 }
 
 /**
- * With ball-ball contacts on: one event per pass, in global time order (src/collide.ts). Pass 0 predicts
- * every moving ball's contacts; later passes predict again for the balls the systems just moved. Then the
- * earliest live event is taken: a ball's own event is advanced to exactly as without contacts (bookkeeping
- * handled inline, decisions marked); a contact samples both balls and marks them for the collisions system.
- * When no event is left before the step's end, every moving ball is sampled there.
+ * With ball-ball contacts on: one event per pass, in global time order (src/collide.ts). Predictions live
+ * in a window that may outlast the step (C.until, config.PREDICTION_HORIZON ahead, or to the step's end): the first step past
+ * a window's end starts another and predicts every moving ball; other passes predict again only the balls
+ * the systems just moved and those whose paths changed since (pathChanged: commands, the launcher). Then
+ * the earliest live event is taken: a ball's own event is advanced to exactly as without contacts
+ * (bookkeeping handled inline, decisions marked); a contact samples both balls and marks them for the
+ * collisions system. When no event is left before the step's end, every moving ball is sampled there; the
+ * window's later events wait in the heap for the next steps.
  */
 function orderedIntegration(w: BallWorld): void {
   const C = w.collide!
@@ -105,9 +108,16 @@ function orderedIntegration(w: BallWorld): void {
   const P = w.Path
   if (w.pass === 0) {
     w.marked.count = 0
-    beginCollisionStep(w)
-    const balls = w.moving.dense
-    for (let i = 0, n = w.moving.count; i < n; i++) predictBall(w, balls[i]!)
+    if (++C.step === 0xffffffff) {
+      C.stepContactsAt.fill(0)
+      C.step = 1
+    }
+    if (tEnd > C.until) {
+      const ahead = C.now + w.config.PREDICTION_HORIZON
+      beginWindow(w, ahead > tEnd ? ahead : tEnd)
+      const balls = w.moving.dense
+      for (let i = 0, n = w.moving.count; i < n; i++) predictBall(w, balls[i]!)
+    }
   } else {
     const todo = takeMarked(w)
     for (let i = 0, n = todo.count; i < n; i++) {
@@ -116,6 +126,7 @@ function orderedIntegration(w: BallWorld): void {
       predictBall(w, eid)
     }
   }
+  if (C.dirtyCount > 0) predictChanged(w)
   while (C.heapCount > 0) {
     const t = C.hT[0]!
     if (t > tEnd) break
@@ -149,6 +160,18 @@ function orderedIntegration(w: BallWorld): void {
     else sampleRolling(w, eid, tEnd)
   }
   C.now = tEnd
+}
+
+/** Predicts again the balls whose paths changed since they were last predicted (their old entries go stale). */
+function predictChanged(w: BallWorld): void {
+  const C = w.collide!
+  for (let i = 0; i < C.dirtyCount; i++) {
+    const eid = C.dirty[i]!
+    if (C.isDirty[eid] === 0 || w.Ball.live[eid] !== 1) continue
+    bumpVersion(w, eid)
+    predictBall(w, eid)
+  }
+  C.dirtyCount = 0
 }
 
 /** The balls marked in the last pass, handed over for this one; `marked` starts empty. */

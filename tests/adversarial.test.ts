@@ -69,6 +69,8 @@ type Contacts = 'off' | 'on' | 'fixed'
 
 interface Cfg {
   contacts: Contacts
+  /** PREDICTION_HORIZON (absent: the default) */
+  horizon?: number
   /** the rim model (absent: the design's stages) */
   rim?: 'tabulated'
   e: number
@@ -265,9 +267,18 @@ function worstOverlap(sim: BallPhysics): { depth: number; a: number; b: number }
 }
 
 /** Applies `ops` (then SETTLE_STEPS steps of 1/60 s) and checks `checks` after every call; throws on a violation. */
-function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonly Check[]): void {
+/** Runs the calls with the checks; returns the run's trace (every drained event and, at the end, every ball's state, as JSON). */
+function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonly Check[]): string {
   const on = (c: Check) => checks.includes(c)
-  const overrides = { METHOD: 'exact', BALL_COLLISIONS: cfg.contacts, BALL_RESTITUTION: cfg.e, ROLLING_DECEL: cfg.decel, ...(cfg.rim === undefined ? {} : { RIM_MODEL: cfg.rim }) } as const
+  const overrides = {
+    METHOD: 'exact',
+    BALL_COLLISIONS: cfg.contacts,
+    BALL_RESTITUTION: cfg.e,
+    ROLLING_DECEL: cfg.decel,
+    ...(cfg.rim === undefined ? {} : { RIM_MODEL: cfg.rim }),
+    ...(cfg.horizon === undefined ? {} : { PREDICTION_HORIZON: cfg.horizon }),
+  } as const
+  const trace: string[] = []
   const sim = createBallPhysics(overrides)
   const calls: string[] = []
   const log = (s: string) => {
@@ -479,6 +490,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
     }
     const t1 = sim.time
     const events: BallEvent[] = sim.drainEvents()
+    trace.push(JSON.stringify(events))
     if (op.t === 'step') stats.steps++
     stats.balls = Math.max(stats.balls, sim.balls().length)
     for (const e of events) stats.events[e.type] = (stats.events[e.type] ?? 0) + 1
@@ -518,6 +530,8 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (o.depth > 1e-3) fail(`overlap: balls ${o.a} and ${o.b} overlap by ${o.depth} px at t = ${sim.time} (last spawn at ${lastSpawn})`)
     }
   }
+  for (const b of sim.balls()) trace.push(JSON.stringify(sim.ballState(b)))
+  return trace.join('\n')
 }
 
 /** A property over `arb`: checks `checks`; a run over budget fails 'time' and is discarded by the others. */
@@ -614,6 +628,38 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
   it('contacts on: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
     property('overlap', scenario(NO_RUNAWAY, ['on']), ['overlap'], 100, SEED + 7)
   }, 120_000 * SCALE)
+})
+
+// ---------------------------------------------------------------- the prediction horizon
+
+/**
+ * Contacts on: every sequence of calls run twice, predicting one step at a time (PREDICTION_HORIZON 0) and
+ * keeping predictions for half a second across steps, gives the same trace bit for bit (every event, every
+ * final state). A prediction kept after a command changed a path it depends on would show here.
+ */
+describe('contacts on: predictions kept across steps', () => {
+  it('any API sequence gives the same events and states, bit for bit, with PREDICTION_HORIZON 0 and 0.5 s', () => {
+    const name = 'horizon'
+    fc.assert(
+      fc.property(scenario(NO_RUNAWAY, ['on']), ([cfg, ops]) => {
+        try {
+          const stepwise = runScenario(name, { ...cfg, horizon: 0 }, ops, [])
+          const kept = runScenario(name, { ...cfg, horizon: 0.5 }, ops, [])
+          if (kept !== stepwise) {
+            const a = stepwise.split('\n')
+            const b = kept.split('\n')
+            const i = a.findIndex((line, k) => line !== b[k])
+            throw new Error(`traces differ at line ${i}:\n  horizon 0:   ${a[i]?.slice(0, 400)}\n  horizon 0.5: ${b[i]?.slice(0, 400)}`)
+          }
+        } catch (err) {
+          if (err instanceof OverBudget) fc.pre(false)
+          throw err
+        }
+      }),
+      { seed: SEED + 31 + SEED_SHIFT, numRuns: 60 * SCALE, interruptAfterTimeLimit: 120_000 * SCALE, markInterruptAsFailure: true },
+    )
+    console.info(`horizon: exercised ${JSON.stringify(seen[name])}`)
+  }, 150_000 * SCALE)
 })
 
 // ---------------------------------------------------------------- shrunk counterexamples

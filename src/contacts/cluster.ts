@@ -79,6 +79,7 @@ function consider(w: BallWorld, list: Uint32Array, n: number, c: number, m: numb
  * still within the touch gap) is not part of the cluster: merging it would stop it dead.
  */
 function touches(w: BallWorld, c: number, m: number, t: number): boolean {
+  if (w.Ball.live[c] !== 1) return false
   const mode = w.Ball.mode[c]
   if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return false
   const B = w.Ball

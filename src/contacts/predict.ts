@@ -11,15 +11,17 @@ import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsul
 import { sq } from '../math.js'
 
 /**
- * Predicts ball `a`'s contacts with every ball near its path over [C.now, tickEnd] and pushes them, and its
- * own next event, into the heap; then enters its capsule into the hash. A step's first build calls this once
- * per moving ball, so each pair is tried once (by the later of the two); later calls try every neighbour.
+ * Predicts ball `a`'s contacts with every ball near its path over [C.now, C.until] (the prediction window)
+ * and pushes them, and its own next event, into the heap; then enters its capsule into the hash. A window's
+ * first build calls this once per moving ball, so each pair is tried once (by the later of the two); later
+ * calls try every neighbour.
  */
 export function predictBall(w: BallWorld, a: number): void {
   const C = w.collide!
+  C.isDirty[a] = 0
   const mode = w.Ball.mode[a]
   if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return
-  const tEnd = w.tickEnd
+  const tEnd = C.until
   if (mode !== BallMode.Resting) {
     const own = w.Path.nextT[a]!
     if (own <= tEnd) heapPush(C, own, HeapKind.Own, a, 0)
@@ -40,7 +42,10 @@ export function predictBall(w: BallWorld, a: number): void {
   const stamp = C.seenStamp
   C.seen[a] = stamp
 
-  if (mode !== BallMode.Resting) C.predicted[a] = C.stamp
+  if (mode !== BallMode.Resting) {
+    C.predicted[a] = C.stamp
+    C.predictions++
+  }
 
   // moving balls' capsules: through the hash, or, for a ball too big or fast for it, directly
   const big = capsuleCellEstimate(C, x1, y1, x2, y2, rho) > MAX_CAPSULE_CELLS
@@ -60,7 +65,7 @@ export function predictBall(w: BallWorld, a: number): void {
     }
   }
   if (big) {
-    // every moving ball predicted before it this step that can reach its capsule (the others pair with
+    // every moving ball predicted before it in this window that can reach its capsule (the others pair with
     // it when they are predicted, through the big list)
     const balls = w.moving.dense
     const span = tEnd - now
@@ -75,7 +80,7 @@ export function predictBall(w: BallWorld, a: number): void {
   } else {
     for (let i = 0; i < C.bigCount; i++) {
       const b = C.big[i]!
-      if (C.seen[b] === stamp) continue
+      if (C.seen[b] === stamp || w.Ball.live[b] !== 1) continue
       const mb = w.Ball.mode[b]
       if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
       C.seen[b] = stamp
@@ -161,8 +166,9 @@ function tryPair(w: BallWorld, a: number, b: number, startA: number, endA: numbe
 
 /** Continues a search that ran out of steps, from where it stopped. */
 export function resumeSearch(w: BallWorld, a: number, b: number, from: number): void {
-  const endA = motionEnd(w, a, w.tickEnd)
-  const endB = motionEnd(w, b, w.tickEnd)
+  const C = w.collide!
+  const endA = motionEnd(w, a, C.until)
+  const endB = motionEnd(w, b, C.until)
   searchAndPush(w, a, b, from, endA < endB ? endA : endB)
 }
 

@@ -1,4 +1,4 @@
-// The swept-capsule hash of a contacts-on step: each moving ball's capsule over the rest of the step,
+// The swept-capsule hash of a prediction window: each moving ball's capsule over the rest of the window,
 // rasterised into a uniform grid of hash buckets, so a ball meets only the balls near its path.
 import { BallMode } from '../../components/Ball.js'
 import { grown, type CollisionState } from '../world/contactState.js'
@@ -50,13 +50,20 @@ export function capsuleCells(C: CollisionState, x1: number, y1: number, x2: numb
   return n
 }
 
-/** Starts a step: empties the heap and the swept-capsule hash (sized for the moving balls). */
-export function beginCollisionStep(w: BallWorld): void {
+/**
+ * Starts a prediction window ending at `until`: empties the heap and the swept-capsule hash (sized for the
+ * moving balls), and the list of changed paths (every moving ball is predicted now; resting ones are found
+ * through the resting grid).
+ */
+export function beginWindow(w: BallWorld, until: number): void {
   const C = w.collide!
+  C.until = until
   C.heapCount = 0
   C.entCount = 0
   C.entLive = 0
   C.bigCount = 0
+  for (let i = 0; i < C.dirtyCount; i++) C.isDirty[C.dirty[i]!] = 0
+  C.dirtyCount = 0
   let size = C.sweepHead.length
   while (size < 4 * w.moving.count) size *= 2
   if (size !== C.sweepHead.length) {
@@ -68,15 +75,18 @@ export function beginCollisionStep(w: BallWorld): void {
   if (C.stamp === 0xffffffff) {
     C.sweepStamp.fill(0)
     C.entStep.fill(0)
-    C.stepContactsAt.fill(0)
+    C.predicted.fill(0)
     C.stamp = 1
   }
 }
 
-/** True when hash entry e belongs to an older capsule of its ball (skipped: the ball has a newer one). */
+/**
+ * True when hash entry e belongs to an older capsule of its ball (skipped: the ball has a newer one), or to
+ * a ball that has left the world since.
+ */
 export function staleEntry(C: CollisionState, e: number): boolean {
   const b = C.entBall[e]!
-  return C.entStep[b] === C.stamp && e < C.entStart[b]!
+  return C.entStep[b] !== C.stamp || e < C.entStart[b]!
 }
 
 /**

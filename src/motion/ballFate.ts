@@ -12,6 +12,7 @@ import { NEVER } from '../config/tolerances.js'
 import { startPath, planRolling } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { touchBall } from '../world/fixedState.js'
+import { pathChanged } from '../world/contactState.js'
 
 /** Emits a hole event carrying the lip crossing's (δ, v) when the ball has one for this hole. */
 export function emitHoleEvent(
@@ -59,8 +60,10 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
   w.Path.nextT[eid] = NEVER
   w.Path.nextKind[eid] = PathEvent.None
   removeMoving(w, eid)
-  // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid
+  // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid, and looks
+  // for the moving ones already predicted to pass its spot
   restingInsert(w, eid)
+  pathChanged(w, eid)
   // fixed-tick contacts: it may have stopped inside another (between ticks); the next tick looks
   if (w.fixed !== null) touchBall(w.fixed, eid)
 }

@@ -6,6 +6,7 @@
 // than the passes allow (a 1e5 px/s ball in a 60 px box) waits, and only for the part of the step it had left.
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
+import { dropPredictions } from '../world/contactState.js'
 import { sampleRimRoll } from './rimRoll.js'
 import { sampleRolling } from './rolling.js'
 import { timeToDistance } from '../geometry.js'
@@ -48,6 +49,8 @@ export function waitOutStep(w: BallWorld): void {
     }
     C.now = tEnd
     w.marked.count = 0
+    // every path moved in time: the next step predicts them all again
+    dropPredictions(w)
     return
   }
   const list = w.marked

@@ -10,6 +10,7 @@ import { WallEdge } from '../../components/Walls.js'
 import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } from '../geometry.js'
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
+import { pathChanged } from '../world/contactState.js'
 import { NEVER } from '../config/tolerances.js'
 import { hypot } from '../math.js'
 
@@ -129,6 +130,7 @@ function considerWalls(w: BallWorld, e: number): void {
  * rests there: its centre is not inside).
  */
 export function planRolling(w: BallWorld, eid: number): void {
+  if (w.collide !== null) pathChanged(w, eid)
   const P = w.Path
   const RC = w.RimContact
   const v0 = P.v0[eid]!

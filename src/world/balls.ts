@@ -11,7 +11,7 @@ import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
 import { BallMode } from '../../components/Ball.js'
 import { clearSlot } from '../../components/store.js'
 import { cutEvents } from '../events.js'
-import { NO_CONTACT, bumpVersion } from './contactState.js'
+import { NO_CONTACT, forgetPredictions } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
 import { removeMoving } from './idLists.js'
 import { restingRemove } from './restingGrid.js'
@@ -52,7 +52,7 @@ export function forgetBall(world: BallWorld, eid: number): void {
   removeMoving(world, eid)
   releaseRim(world, eid)
   restingRemove(world, eid)
-  if (world.collide !== null) bumpVersion(world, eid)
+  forgetPredictions(world, eid)
   cutEvents(world.events, eid)
   clearSlot(world.Ball, eid)
   clearSlot(world.Path, eid)

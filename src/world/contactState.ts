@@ -11,6 +11,9 @@ export const BESIDE_GRID = -2
 /** Radius classes of the resting grid (a quarter octave each, from about 2⁻¹² to 2²⁰ px). */
 export const RADIUS_CLASSES = 128
 
+/** `until` of a state with no predictions (the next step builds them): before any step's end */
+export const NO_WINDOW = -1
+
 /** lastContact of a ball that has touched nothing yet: long before any simulated time */
 export const NO_CONTACT = -1e300
 
@@ -31,11 +34,22 @@ export interface CollisionState {
   /** resting balls too wide for the grid (MAX_RESTING_CELLS), beside it; their restBucket is BESIDE_GRID */
   bigRest: Uint32Array
   bigRestCount: number
-  /** moving balls too big or too fast for the swept-capsule hash this step (MAX_CAPSULE_CELLS) */
+  /** moving balls too big or too fast for the swept-capsule hash in this window (MAX_CAPSULE_CELLS) */
   big: Uint32Array
   bigCount: number
-  /** the sweep stamp at which each ball was last predicted (it has been predicted this step when equal) */
+  /** the sweep stamp at which each ball was last predicted (it has been predicted in this window when equal) */
   predicted: Uint32Array
+  /**
+   * End of the prediction window, s: the heap and the swept-capsule hash hold every contact before it of
+   * the paths they were made with (docs/decisions.md §11); NO_WINDOW when they must be built again
+   */
+  until: number
+  /** balls whose path changed since they were last predicted (set by pathChanged), each listed once */
+  dirty: Uint32Array
+  dirtyCount: number
+  isDirty: Uint8Array
+  /** stamp of the current step (for stepContacts) */
+  step: number
   /** resting balls per radius class (restingGrid.ts), each ball's class, and the highest class in use */
   restClassCount: Uint32Array
   restClass: Uint8Array
@@ -94,13 +108,15 @@ export interface CollisionState {
   spotTime: number
   spotMaxR: number
   spotBuilt: boolean
-  /** contacts each ball took in this step (valid where stepContactsAt[ball] === stamp) */
+  /** contacts each ball took in this step (valid where stepContactsAt[ball] === step) */
   stepContacts: Uint32Array
   stepContactsAt: Uint32Array
   /** time of the last event handled, s */
   now: number
   /** contacts resolved since the world was made */
   contacts: number
+  /** predictions of a moving ball's contacts since the world was made (a window's build predicts every moving ball) */
+  predictions: number
 }
 
 export function createCollisionState(capacity: number, ballRadius: number): CollisionState {
@@ -121,6 +137,11 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     big: new Uint32Array(16),
     bigCount: 0,
     predicted: new Uint32Array(capacity),
+    until: NO_WINDOW,
+    dirty: new Uint32Array(16),
+    dirtyCount: 0,
+    isDirty: new Uint8Array(capacity),
+    step: 0,
     restClassCount: new Uint32Array(RADIUS_CLASSES),
     restClass: new Uint8Array(capacity),
     restTopClass: -1,
@@ -160,6 +181,7 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     spotBuilt: false,
     now: 0,
     contacts: 0,
+    predictions: 0,
   }
 }
 
@@ -183,6 +205,7 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.restPrev = grown(C.restPrev, capacity)
   C.restClass = grown(C.restClass, capacity)
   C.predicted = grown(C.predicted, capacity)
+  C.isDirty = grown(C.isDirty, capacity)
   C.seen = grown(C.seen, capacity)
   C.spotNext = grown(C.spotNext, capacity)
   C.spotIn = grown(C.spotIn, capacity)
@@ -197,6 +220,34 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
 export function bumpVersion(w: BallWorld, eid: number): void {
   const C = w.collide!
   C.ver[eid] = (C.ver[eid]! + 1) >>> 0
+}
+
+/**
+ * A ball's path changed (planned again, stopped, put down): its contacts are predicted again at the next
+ * pass of the integration system. Called by the path planner itself, so a command, a system or a game's
+ * own code that moves a ball through the motion functions cannot leave a stale prediction behind.
+ */
+export function pathChanged(w: BallWorld, eid: number): void {
+  const C = w.collide
+  if (C === null || C.isDirty[eid] === 1) return
+  C.isDirty[eid] = 1
+  C.dirty = appendId(C.dirty, C.dirtyCount++, eid)
+}
+
+/** A ball leaves the world: its heap entries, its capsule in the hash and its listing as changed go stale. */
+export function forgetPredictions(w: BallWorld, eid: number): void {
+  const C = w.collide
+  if (C === null) return
+  bumpVersion(w, eid)
+  C.isDirty[eid] = 0
+  if (C.entStep[eid] === C.stamp) C.entLive -= C.entLen[eid]!
+  C.entStep[eid] = 0
+}
+
+/** Drops every prediction: the next step predicts every moving ball again (after a change to all paths). */
+export function dropPredictions(w: BallWorld): void {
+  const C = w.collide
+  if (C !== null) C.until = NO_WINDOW
 }
 
 /** Appends an id to one of the state's id arrays (grown by doubling); returns the array (it may be new). */
