@@ -92,7 +92,7 @@ export function flightDerivative(p: SphereLip, y: Float64Array, out: Float64Arra
  * point P; then a plastic, no-slip impulse at P: the angular momentum about P, L = (G − P) × V + j·r²·ω, is
  * kept, and V = ω × (G − P). Its normal part gives ω·n = L·n/(j·r²), its tangential part (1+j)·r²·ω_t = L_t.
  * This is the impact at a re-touch, and after every step on the lip it is the projection back onto the
- * constraint (an impulse at P is the smallest change of kinetic energy that restores the constraint).
+ * constraint (an impulse at P gives the state on the constraint nearest in the kinetic-energy norm).
  */
 export function projectOntoLip(p: SphereLip, y: Float64Array): void {
   const rho = Math.sqrt(y[0]! * y[0]! + y[1]! * y[1]!)
