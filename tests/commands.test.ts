@@ -8,6 +8,7 @@ import {
   PathEvent,
   addBall,
   addHole,
+  addHoles,
   ballState,
   createBallWorld,
   createSchedule,
@@ -23,7 +24,7 @@ import {
   throwBall,
   type BallWorld,
 } from '../src/ecs'
-import { rng, stepWorld } from './helpers'
+import { rng, stepWorld, timeBudget } from './helpers'
 
 interface Driver {
   world: BallWorld
@@ -172,6 +173,55 @@ function removeHoleScene(how: 'removeHole' | 'removeEntity' | 'none') {
   const after = stepN(w, 360)
   return { w, hole, other, roller, captured, transit, toward, away, before, at, after }
 }
+
+describe('holes added one by one or as a set: the overlap check', () => {
+  it('refuses exactly the holes a scan of every hole refuses, through additions and removals of 2,000 holes of mixed radii', () => {
+    const r = rng(31)
+    const sim = createBallPhysics({}, { capacity: 4096 })
+    const live: number[] = []
+    let refused = 0
+    for (let i = 0; i < 4000; i++) {
+      if (live.length > 40 && r() < 0.25) {
+        const k = Math.floor(r() * live.length)
+        sim.removeHole(live[k]!)
+        live.splice(k, 1)
+        continue
+      }
+      const spec = { x: r() * 3000, y: r() * 3000, radius: r() < 0.05 ? 40 + 60 * r() : 5 + 20 * r() }
+      const clash = live.some((h) => {
+        const s = sim.holeState(h)
+        return Math.hypot(s.x - spec.x, s.y - spec.y) < s.radius + spec.radius
+      })
+      if (clash) {
+        expect(() => sim.addHole(spec)).toThrow(/overlaps hole/)
+        refused++
+      } else live.push(sim.addHole(spec))
+    }
+    expect(refused).toBeGreaterThan(100)
+    expect(live.length).toBeGreaterThan(800)
+    expect(sim.holes()).toEqual(live)
+  })
+
+  it('builds a 40,000-hole field in time linear in the holes (a hash of cells, not a scan of every hole per hole)', () => {
+    const field = (n: number) => Array.from({ length: n }, (_, i) => ({ x: 80 * (i % 200), y: 80 * Math.floor(i / 200) }))
+    const time = (build: (sim: ReturnType<typeof createBallPhysics>, specs: { x: number; y: number }[]) => void) => {
+      const specs = field(40_000)
+      const sim = createBallPhysics({}, { capacity: 40_100 })
+      const t0 = performance.now()
+      build(sim, specs)
+      const ms = performance.now() - t0
+      expect(sim.holes()).toHaveLength(40_000)
+      return ms
+    }
+    // a scan per hole was 8·10⁸ distance tests for either, and the set's own check as many again: 2.6 s one
+    // by one and 3.6 s as a set on the development machine, against 0.18 s and 0.12 s through the cells
+    expect(time((sim, specs) => specs.forEach((s) => sim.addHole(s)))).toBeLessThan(timeBudget(1000))
+    expect(time((sim, specs) => addHoles(sim.world, specs))).toBeLessThan(timeBudget(1000))
+    // one hole too close to another in a set is still named
+    const sim = createBallPhysics()
+    expect(() => addHoles(sim.world, [...field(300), { x: 80 * 123 + 5, y: 0 }])).toThrow(/holes\[300\].*overlaps holes\[123\]/)
+  })
+})
 
 describe('removeHole', () => {
   it('a rim roller leaves on the tangent; transit rolls on; captured stays; no later event names the hole', () => {

@@ -13,7 +13,7 @@ import { sampleRimRoll } from '../motion/rimRoll.js'
 import { sampleRolling } from '../motion/rolling.js'
 import { forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { addHoleToTable, overlappingHole, removeHoleFromTable } from '../world/holeTable.js'
+import { addHoleToTable, cellKey, overlappingHole, removeHoleFromTable } from '../world/holeTable.js'
 import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { replanRolling } from './replan.js'
 import { checkHole, checkWorld, describe, finite, positive, readSpec } from './validate.js'
@@ -46,13 +46,52 @@ function readHole(w: BallWorld, name: string, spec: unknown): CheckedHole {
 }
 
 function checkClear(w: BallWorld, h: CheckedHole): void {
-  const i = overlappingHole(w, h.x, h.y, h.radius)
-  if (i < 0) return
-  const min = h.radius + w.holes.xyr[3 * i + 2]!
+  const other = overlappingHole(w, h.x, h.y, h.radius)
+  if (other === 0) return
+  const min = h.radius + w.Hole.radius[other]!
   throw new RangeError(
-    `hole at (${h.x}, ${h.y}) with radius ${h.radius} overlaps hole ${w.holes.ids[i]}: lip circles may not overlap ` +
+    `hole at (${h.x}, ${h.y}) with radius ${h.radius} overlaps hole ${other}: lip circles may not overlap ` +
       `(centres at least ${min} px apart)`,
   )
+}
+
+/** Throws for the first spec (in order) whose lip circle overlaps an earlier one's: through a hash of cells. */
+function checkApart(list: readonly CheckedHole[]): void {
+  let maxR = 0
+  for (const h of list) if (h.radius > maxR) maxR = h.radius
+  const cell = 4 * maxR
+  const byCell = new Map<number, number[]>()
+  for (let i = 0; i < list.length; i++) {
+    const h = list[i]!
+    const reach = h.radius + maxR
+    const cx0 = Math.floor((h.x - reach) / cell)
+    const cx1 = Math.floor((h.x + reach) / cell)
+    const cy0 = Math.floor((h.y - reach) / cell)
+    const cy1 = Math.floor((h.y + reach) / cell)
+    // the earliest overlapping spec, as a scan of the earlier ones would name it
+    let first = -1
+    for (let cy = cy0; cy <= cy1; cy++) {
+      for (let cx = cx0; cx <= cx1; cx++) {
+        const bucket = byCell.get(cellKey(cx, cy))
+        if (bucket === undefined) continue
+        for (const j of bucket) {
+          const o = list[j]!
+          const dx = h.x - o.x
+          const dy = h.y - o.y
+          const min = h.radius + o.radius
+          if (dx * dx + dy * dy < min * min && (first < 0 || j < first)) first = j
+        }
+      }
+    }
+    if (first >= 0) {
+      const o = list[first]!
+      throw new RangeError(`holes[${i}] at (${h.x}, ${h.y}) overlaps holes[${first}]: lip circles may not overlap (centres at least ${h.radius + o.radius} px apart)`)
+    }
+    const key = cellKey(Math.floor(h.x / cell), Math.floor(h.y / cell))
+    const bucket = byCell.get(key)
+    if (bucket === undefined) byCell.set(key, [i])
+    else bucket.push(i)
+  }
 }
 
 function placeHole(w: BallWorld, h: CheckedHole): number {
@@ -104,16 +143,7 @@ export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[]
   const list: CheckedHole[] = []
   for (let i = 0; i < specs.length; i++) list.push(readHole(w, `holes[${i}]`, specs[i]))
   for (const h of list) checkClear(w, h)
-  for (let i = 0; i < list.length; i++) {
-    for (let j = 0; j < i; j++) {
-      const dx = list[i]!.x - list[j]!.x
-      const dy = list[i]!.y - list[j]!.y
-      const min = list[i]!.radius + list[j]!.radius
-      if (dx * dx + dy * dy < min * min) {
-        throw new RangeError(`holes[${i}] at (${list[i]!.x}, ${list[i]!.y}) overlaps holes[${j}]: lip circles may not overlap (centres at least ${min} px apart)`)
-      }
-    }
-  }
+  checkApart(list)
   if (w.recorder !== null) record(w, ['addHoles', list.map((h) => ({ ...h }))])
   const ids = list.map((h) => placeHole(w, h))
   replanRolling(w)

@@ -23,13 +23,13 @@ import { rimTableFor } from '../reference/rimTables.js'
 import { checkWorld } from './validate.js'
 import { checksum, configText, kindOf, readValue, Reader, SnapshotError, writeValue, Writer } from './snapshotCodec.js'
 
-/** Version of the byte format; restore refuses any other. */
-export const SNAPSHOT_VERSION = 1
+/** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps). */
+export const SNAPSHOT_VERSION = 2
 
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 
 /** World fields kept out of the walked body (see the top of this file) */
-const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder'])
+const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells'])
 
 /** Component membership bits, per entity */
 const BALL = 1

@@ -1,4 +1,4 @@
-// Contact prediction: a ball's contacts with every ball near its path over the rest of the step, and its
+// Contact prediction: a ball's contacts with every ball near its path over the prediction window, and its
 // own next event, pushed into the event heap.
 import { BallMode } from '../../components/Ball.js'
 import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'

@@ -28,6 +28,7 @@ export function addBallEntity(world: BallWorld): number {
 export function adoptBall(world: BallWorld, eid: number): void {
   ensureCapacity(world, eid)
   if (!hasComponent(world, eid, world.Path)) addComponent(world, eid, world.Path)
+  if (world.Ball.live[eid] !== 1) world.ballCount++
   clearSlot(world.Ball, eid)
   clearSlot(world.Path, eid)
   const B = world.Ball
@@ -48,6 +49,7 @@ export function adoptBall(world: BallWorld, eid: number): void {
 /** onRemove(Ball): the simulation forgets the ball (see the top of this file). */
 export function forgetBall(world: BallWorld, eid: number): void {
   if (!isBall(world, eid)) return
+  world.ballCount--
   if (world.Ball.mode[eid] === BallMode.Held) dropHeld(world, eid)
   removeMoving(world, eid)
   releaseRim(world, eid)
@@ -68,6 +70,7 @@ export function isBall(world: BallWorld, eid: number): boolean {
 
 /** Calls `fn` for every live ball, in ascending id order. */
 export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
+  if (world.ballCount === 0) return
   const live = world.Ball.live
   for (let eid = 1, n = Math.min(live.length, world.entityIndex.maxId + 1); eid < n; eid++) if (live[eid] === 1) fn(eid)
 }

@@ -23,7 +23,7 @@ import { createCollisionState, growCollisionState, type CollisionState } from '.
 import { createFixedState, growFixedMass, type FixedContactState } from './fixedState.js'
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { createHoleGrid, type HoleGrid } from './holeGrid.js'
-import { createHoleTable, type HoleTable } from './holeTable.js'
+import { createHoleTable, type HoleCells, type HoleTable } from './holeTable.js'
 import { createIdList, type IdList, type MovingSet } from './idLists.js'
 import type { RimTable } from '../reference/rimTable.js'
 import type { Recorder } from './recorder.js'
@@ -65,6 +65,10 @@ export interface BallWorldData {
   /** event pass within the step being run (0 = the pass over every moving ball) */
   pass: number
   holes: HoleTable
+  /** the holes by cell, for overlap checks (derived from `holes` when first needed; not in snapshots) */
+  holeCells: HoleCells | null
+  /** live balls (forEachBall walks no ids when there are none: a panel of holes is built in linear time) */
+  ballCount: number
   /** broadphase over `holes`, rebuilt when they change */
   holeGrid: HoleGrid
   /** hole count from which the planner walks the grid (0: always; Infinity: never) */
@@ -137,6 +141,8 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     tickEnd: 0,
     pass: 0,
     holes: createHoleTable(),
+    holeCells: null,
+    ballCount: 0,
     holeGrid: createHoleGrid(),
     gridFrom,
     marked: createIdList(),

@@ -10,8 +10,44 @@ export interface HoleTable {
   ids: Uint32Array
 }
 
+/**
+ * The holes by cell (entity ids in a hash of cells `cell` px wide), for the overlap check of a hole being
+ * added: derived from the table when first needed (not part of a snapshot), then kept up to date.
+ */
+export interface HoleCells {
+  cell: number
+  byCell: Map<number, number[]>
+  /** the largest lip radius among the holes put in (a lookup widens by it), px */
+  maxR: number
+}
+
+/** Below this many holes an overlap check scans them all. */
+const SCAN_BELOW = 32
+
 export function createHoleTable(): HoleTable {
   return { count: 0, xyr: new Float64Array(3 * 16), ids: new Uint32Array(16) }
+}
+
+function cellsOf(world: BallWorld): HoleCells {
+  if (world.holeCells !== null) return world.holeCells
+  const t = world.holes
+  const cells: HoleCells = { cell: 4 * world.config.HOLE_RADIUS, byCell: new Map(), maxR: 0 }
+  world.holeCells = cells
+  for (let i = 0; i < t.count; i++) putInCell(cells, t.ids[i]!, t.xyr[3 * i]!, t.xyr[3 * i + 1]!, t.xyr[3 * i + 2]!)
+  return cells
+}
+
+function putInCell(cells: HoleCells, eid: number, x: number, y: number, R: number): void {
+  const key = cellKey(Math.floor(x / cells.cell), Math.floor(y / cells.cell))
+  const bucket = cells.byCell.get(key)
+  if (bucket === undefined) cells.byCell.set(key, [eid])
+  else bucket.push(eid)
+  if (R > cells.maxR) cells.maxR = R
+}
+
+/** The hash key of cell (cx, cy); cells far apart may share one (a lookup checks distances). */
+export function cellKey(cx: number, cy: number): number {
+  return Math.imul(cx | 0, 73856093) ^ Math.imul(cy | 0, 19349663)
 }
 
 /** Appends a hole to the planner's table. */
@@ -30,6 +66,7 @@ export function addHoleToTable(world: BallWorld, eid: number): void {
   t.xyr[3 * i + 1] = world.Hole.y[eid]!
   t.xyr[3 * i + 2] = world.Hole.radius[eid]!
   t.ids[i] = eid
+  if (world.holeCells !== null) putInCell(world.holeCells, eid, world.Hole.x[eid]!, world.Hole.y[eid]!, world.Hole.radius[eid]!)
   world.holeGrid.dirty = true
 }
 
@@ -39,6 +76,13 @@ export function removeHoleFromTable(world: BallWorld, eid: number): void {
   let i = 0
   while (i < t.count && t.ids[i] !== eid) i++
   if (i === t.count) return
+  const cells = world.holeCells
+  if (cells !== null) {
+    const key = cellKey(Math.floor(t.xyr[3 * i]! / cells.cell), Math.floor(t.xyr[3 * i + 1]! / cells.cell))
+    const bucket = cells.byCell.get(key)!
+    bucket.splice(bucket.indexOf(eid), 1)
+    if (bucket.length === 0) cells.byCell.delete(key)
+  }
   t.ids.copyWithin(i, i + 1, t.count)
   t.xyr.copyWithin(3 * i, 3 * (i + 1), 3 * t.count)
   t.count--
@@ -80,14 +124,41 @@ export function holeAt(world: BallWorld, x: number, y: number): number {
   return 0
 }
 
-/** Index in the table of the first hole whose lip circle overlaps the circle (x, y, radius), or −1. */
+/**
+ * A hole whose lip circle overlaps the circle (x, y, radius) (entity id), or 0: from the cells within
+ * radius + the largest lip radius of the point, or, when those are more than the holes, every hole.
+ */
 export function overlappingHole(world: BallWorld, x: number, y: number, radius: number): number {
   const t = world.holes
-  for (let i = 0; i < t.count; i++) {
-    const dx = x - t.xyr[3 * i]!
-    const dy = y - t.xyr[3 * i + 1]!
-    const min = radius + t.xyr[3 * i + 2]!
-    if (dx * dx + dy * dy < min * min) return i
+  const cells = t.count < SCAN_BELOW ? null : cellsOf(world)
+  const reach = cells === null ? 0 : radius + cells.maxR
+  const c = cells === null ? 1 : cells.cell
+  const cx0 = Math.floor((x - reach) / c)
+  const cx1 = Math.floor((x + reach) / c)
+  const cy0 = Math.floor((y - reach) / c)
+  const cy1 = Math.floor((y + reach) / c)
+  if (cells === null || (cx1 - cx0 + 1) * (cy1 - cy0 + 1) > t.count) {
+    for (let i = 0; i < t.count; i++) {
+      const dx = x - t.xyr[3 * i]!
+      const dy = y - t.xyr[3 * i + 1]!
+      const min = radius + t.xyr[3 * i + 2]!
+      if (dx * dx + dy * dy < min * min) return t.ids[i]!
+    }
+    return 0
   }
-  return -1
+  const H = world.Hole
+  for (let cy = cy0; cy <= cy1; cy++) {
+    for (let cx = cx0; cx <= cx1; cx++) {
+      const bucket = cells.byCell.get(cellKey(cx, cy))
+      if (bucket === undefined) continue
+      for (let k = 0; k < bucket.length; k++) {
+        const h = bucket[k]!
+        const dx = x - H.x[h]!
+        const dy = y - H.y[h]!
+        const min = radius + H.radius[h]!
+        if (dx * dx + dy * dy < min * min) return h
+      }
+    }
+  }
+  return 0
 }
