@@ -69,6 +69,31 @@ describe('contacts on: predictions kept across steps', () => {
     }
   })
 
+  it('a pile pressed into a corner with e = 0 settles the same clusters at any horizon (members gathered in id order, not the hash order)', () => {
+    // a 12 × 12 pile in a corner struck by 8 balls a step at 1,500 px/s: settling clusters of many balls,
+    // whose order once followed the order the hash held the balls in, and so when they had been predicted
+    const pile = (h: number) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0, PREDICTION_HORIZON: h }, { capacity: 1024 })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 3000, maxY: 3000, restitution: 0 })
+      for (let i = 0; i < 12; i++) for (let j = 0; j < 12; j++) sim.addBall({ x: 12 + 22.5 * i, y: 12 + 22.5 * j, vx: 0, vy: 0 })
+      return sim
+    }
+    const stream = (seed: number) => {
+      const r = rng(seed)
+      return (sim: BallPhysics) => {
+        for (let k = 0; k < 8; k++) {
+          const x = 22.5 * 12 + 60 + 300 * r()
+          const y = 22.5 * 12 + 60 + 300 * r()
+          const d = Math.hypot(x, y)
+          sim.addBall({ x, y, vx: (-1500 * x) / d, vy: (-1500 * y) / d })
+        }
+      }
+    }
+    const base = trace(pile(0), 40, 1 / 60, stream(99))
+    expect(base).toContain('"collision"')
+    expect(trace(pile(0.1), 40, 1 / 60, stream(99))).toBe(base)
+  }, 30_000)
+
   it('commands between steps inside a window are seen: balls added, thrown, stopped, sped up and removed give the same run as predicting every step', () => {
     const commands = (sim: BallPhysics, step: number) => {
       const balls = sim.balls().filter((b) => ['rolling', 'rimRoll', 'resting'].includes(sim.ballState(b).mode))

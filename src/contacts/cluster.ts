@@ -2,12 +2,16 @@
 import { BallMode } from '../../components/Ball.js'
 import { APPROACH_EPSILON, MAX_CAPSULE_CELLS, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
+import { appendId } from '../world/contactState.js'
 import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
 import { capsuleCellEstimate, capsuleCells, staleEntry } from './sweepGrid.js'
 
 /**
  * Gathers into C.cluster the balls touching a or b (gap ≤ TOUCH_GAP at time t), and those touching
- * them, breadth first, up to MAX_CLUSTER balls; a and b come first. Members are sampled into Ball at t.
+ * them, breadth first, up to MAX_CLUSTER balls; a and b come first, and the balls each member adds follow
+ * in id order, so the cluster (its members, their order, and where MAX_CLUSTER cuts it) depends on the
+ * balls alone, never on the order the grids hold them in (which depends on when balls were predicted).
+ * Members are sampled into Ball at t.
  */
 export function collectCluster(w: BallWorld, a: number, b: number, t: number): void {
   const C = w.collide!
@@ -16,60 +20,71 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     C.seenStamp = 1
   }
   const stamp = C.seenStamp
-  const list = C.cluster
-  list[0] = a
-  list[1] = b
+  C.cluster[0] = a
+  C.cluster[1] = b
   C.seen[a] = stamp
   C.seen[b] = stamp
   let n = 2
   const B = w.Ball
   for (let head = 0; head < n && n < MAX_CLUSTER; head++) {
-    const m = list[head]!
+    const m = C.cluster[head]!
     const x = B.x[m]!
     const y = B.y[m]!
     const r = B.radius[m]!
+    const first = n
     // moving balls: through the hash (or all of them, for a member too wide for it), then the big ones
     if (capsuleCellEstimate(C, x, y, x, y, r) > MAX_CAPSULE_CELLS) {
       const balls = w.moving.dense
-      for (let i = 0, k = w.moving.count; i < k && n < MAX_CLUSTER; i++) n = consider(w, list, n, balls[i]!, m, t, stamp)
+      for (let i = 0, k = w.moving.count; i < k; i++) n = consider(w, n, balls[i]!, m, t, stamp)
     } else {
       const sMask = C.sweepHead.length - 1
       const k = capsuleCells(C, x, y, x, y, r, sMask)
-      for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
+      for (let i = 0; i < k; i++) {
         const bucket = C.cells[i]!
         if (C.sweepStamp[bucket] !== C.stamp) continue
-        for (let e = C.sweepHead[bucket]!; e >= 0 && n < MAX_CLUSTER; e = C.entNext[e]!) {
-          if (!staleEntry(C, e)) n = consider(w, list, n, C.entBall[e]!, m, t, stamp)
+        for (let e = C.sweepHead[bucket]!; e >= 0; e = C.entNext[e]!) {
+          if (!staleEntry(C, e)) n = consider(w, n, C.entBall[e]!, m, t, stamp)
         }
       }
     }
-    for (let i = 0; i < C.bigCount && n < MAX_CLUSTER; i++) n = consider(w, list, n, C.big[i]!, m, t, stamp)
+    for (let i = 0; i < C.bigCount; i++) n = consider(w, n, C.big[i]!, m, t, stamp)
     // resting balls: through the grid (or every bucket, when that is cheaper), then those beside it
     if (C.restCount > 0) {
       const rMask = C.restHead.length - 1
       const reach = r + C.maxRadius
       if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
-        for (let i = 0; i <= rMask && n < MAX_CLUSTER; i++) {
-          for (let c = C.restHead[i]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) n = consider(w, list, n, c, m, t, stamp)
+        for (let i = 0; i <= rMask; i++) {
+          for (let c = C.restHead[i]!; c !== 0; c = C.restNext[c]!) n = consider(w, n, c, m, t, stamp)
         }
       } else {
         const k = capsuleCells(C, x, y, x, y, reach, rMask)
-        for (let i = 0; i < k && n < MAX_CLUSTER; i++) {
-          for (let c = C.restHead[C.cells[i]!]!; c !== 0 && n < MAX_CLUSTER; c = C.restNext[c]!) n = consider(w, list, n, c, m, t, stamp)
+        for (let i = 0; i < k; i++) {
+          for (let c = C.restHead[C.cells[i]!]!; c !== 0; c = C.restNext[c]!) n = consider(w, n, c, m, t, stamp)
         }
       }
     }
-    for (let i = 0; i < C.bigRestCount && n < MAX_CLUSTER; i++) n = consider(w, list, n, C.bigRest[i]!, m, t, stamp)
+    for (let i = 0; i < C.bigRestCount; i++) n = consider(w, n, C.bigRest[i]!, m, t, stamp)
+    // this member's new neighbours in id order (an insertion sort: a ball touches a few others)
+    const list = C.cluster
+    for (let i = first + 1; i < n; i++) {
+      const v = list[i]!
+      let j = i - 1
+      while (j >= first && list[j]! > v) {
+        list[j + 1] = list[j]!
+        j--
+      }
+      list[j + 1] = v
+    }
   }
-  C.clusterCount = n
+  C.clusterCount = n < MAX_CLUSTER ? n : MAX_CLUSTER
 }
 
 /** Adds ball c to the cluster when it touches member m (and is not in it yet); returns the new count. */
-function consider(w: BallWorld, list: Uint32Array, n: number, c: number, m: number, t: number, stamp: number): number {
+function consider(w: BallWorld, n: number, c: number, m: number, t: number, stamp: number): number {
   const C = w.collide!
   if (C.seen[c] === stamp || !touches(w, c, m, t)) return n
   C.seen[c] = stamp
-  list[n] = c
+  C.cluster = appendId(C.cluster, n, c)
   return n + 1
 }
 
