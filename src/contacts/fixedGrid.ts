@@ -58,17 +58,22 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
   acc.big = 0
   F.nearCount = 0
   F.freshCount = 0
-  if (++F.ordStamp === 0xffffffff) {
-    F.ostamp.fill(0)
-    F.ordStamp = 1
-  }
   const nMov = readMoving(w, F)
   F.n = 0
   if (lookup) seedAll(w, F)
-  const kept = sortOrd(w, F, allRest, lookup)
+  let kept = sortOrd(w, F, allRest, lookup)
+  if (counts.moving !== nMov - F.freshCount) {
+    // a ball of ord moving but not in the moving set (whose key was not written): every key again
+    for (let p = 0; p < F.ordCount; p++) F.inOrd[F.ord[p]!] = 0
+    F.ordCount = 0
+    F.freshCount = 0
+    F.nearCount = 0
+    readMoving(w, F)
+    kept = sortOrd(w, F, allRest, lookup)
+  }
   const nRest = kept + joinResting(w, F, allRest, lookup, restTotal - kept)
   F.touchedCount = 0
-  mergeFresh(w, F)
+  mergeFresh(F)
   const n = nMov + nRest
   F.full = n
   F.n = 0
@@ -95,8 +100,8 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
 }
 
 /**
- * Every moving ball's record, in the moving set's order (the order the integration just walked the
- * per-ball arrays in), written at its place in ord (F.orec); a ball not in ord yet joins it. Returns how
+ * Every moving ball's reach and key, in the moving set's order (the order the integration just walked the
+ * per-ball arrays in), the key written at its place in ord; a ball not in ord yet joins it. Returns how
  * many.
  */
 function readMoving(w: BallWorld, F: FixedContactState): number {
@@ -111,9 +116,7 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
   const reachOf = F.reachOf
   const inOrd = F.inOrd
   const posOf = F.posOf
-  const orec = F.orec
-  const ostamp = F.ostamp
-  const stamp = F.ordStamp
+  const okey = F.okey
   const tick = F.tick
   const half = F.sweepCell / 2
   const inv = F.sweepInv
@@ -165,13 +168,7 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
       addFresh(F, e, key)
       continue
     }
-    const p = posOf[e]!
-    const o = 4 * p
-    orec[o] = key
-    orec[o + 1] = x
-    orec[o + 2] = y
-    orec[o + 3] = reach
-    ostamp[p] = stamp
+    okey[posOf[e]!] = key
   }
   acc.sum = sum
   acc.max = max
@@ -185,64 +182,55 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
   return n
 }
 
+/** The balls of ord kept by sortOrd: moving, resting. */
+const counts = { moving: 0, resting: 0 }
+
 /**
  * Puts ord back in key order by insertion (the order of the last tick is nearly right), dropping the balls
- * that are no longer candidates; the resting candidates' records are written here. Returns how many rest.
+ * that are no longer candidates; the resting candidates' keys are found here. Returns how many rest.
  */
 function sortOrd(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: boolean): number {
   const B = w.Ball
+  const live = B.live
+  const mode = B.mode
   const seen = F.rest.seen
   const seenStamp = F.rest.seenStamp
-  const stamp = F.ordStamp
-  const ostamp = F.ostamp
-  const orec = F.orec
+  const okey = F.okey
   const ord = F.ord
   const posOf = F.posOf
   const N = F.ordCount
+  let nMov = 0
   let nRest = 0
   let out = 0
   for (let p = 0; p < N; p++) {
     const e = ord[p]!
-    const o = 4 * p
-    let k = orec[o]!
-    let x = orec[o + 1]!
-    let y = orec[o + 2]!
-    let reach = orec[o + 3]!
-    if (ostamp[p] !== stamp) {
-      if (B.live[e] === 1 && B.mode[e] === BallMode.Resting && (allRest || (lookup && seen[e] === seenStamp))) {
-        if (allRest) seen[e] = seenStamp
-        x = B.x[e]!
-        y = B.y[e]!
-        reach = B.radius[e]! + TOUCH_GAP
-        k = restingKey(w, F, e, x, y, reach)
-        nRest++
-      } else {
-        F.inOrd[e] = 0
-        continue
-      }
+    const m = mode[e]!
+    let k = okey[p]!
+    if (live[e] === 1 && (m === BallMode.Rolling || m === BallMode.RimRoll)) nMov++
+    else if (live[e] === 1 && m === BallMode.Resting && (allRest || (lookup && seen[e] === seenStamp))) {
+      if (allRest) seen[e] = seenStamp
+      k = restingKey(w, F, e, B.x[e]!, B.y[e]!, B.radius[e]! + TOUCH_GAP)
+      nRest++
+    } else {
+      F.inOrd[e] = 0
+      continue
     }
     let j = out
-    while (j > 0 && orec[4 * j - 4]! > k) {
-      const a = 4 * j
-      orec[a] = orec[a - 4]!
-      orec[a + 1] = orec[a - 3]!
-      orec[a + 2] = orec[a - 2]!
-      orec[a + 3] = orec[a - 1]!
+    while (j > 0 && okey[j - 1]! > k) {
       const f = ord[j - 1]!
+      okey[j] = okey[j - 1]!
       ord[j] = f
       posOf[f] = j
       j--
     }
-    const a = 4 * j
-    orec[a] = k
-    orec[a + 1] = x
-    orec[a + 2] = y
-    orec[a + 3] = reach
+    okey[j] = k
     ord[j] = e
     posOf[e] = j
     out++
   }
   F.ordCount = out
+  counts.moving = nMov
+  counts.resting = nRest
   return nRest
 }
 

@@ -42,7 +42,7 @@ export function addFresh(F: FixedContactState, eid: number, key: number): void {
 }
 
 /** Sorts the balls joining ord by key and merges them in (from the back, in place); every ball's place is set again. */
-export function mergeFresh(w: BallWorld, F: FixedContactState): void {
+export function mergeFresh(F: FixedContactState): void {
   const m = F.freshCount
   if (m === 0) return
   F.freshCount = 0
@@ -57,27 +57,18 @@ export function mergeFresh(w: BallWorld, F: FixedContactState): void {
   const n = F.ordCount
   reserveOrd(F, n + m)
   const ord = F.ord
-  const orec = F.orec
+  const okey = F.okey
   let i = n - 1
   let j = m - 1
   for (let o = n + m - 1; j >= 0; o--) {
     const f = perm[j]!
-    const a = 4 * o
-    if (i >= 0 && orec[4 * i]! > keys[f]!) {
-      const b = 4 * i
-      orec[a] = orec[b]!
-      orec[a + 1] = orec[b + 1]!
-      orec[a + 2] = orec[b + 2]!
-      orec[a + 3] = orec[b + 3]!
+    if (i >= 0 && okey[i]! > keys[f]!) {
+      okey[o] = okey[i]!
       ord[o] = ord[i]!
       i--
     } else {
-      const e = F.fresh[f]!
-      orec[a] = keys[f]!
-      orec[a + 1] = w.Ball.x[e]!
-      orec[a + 2] = w.Ball.y[e]!
-      orec[a + 3] = F.reachOf[e]!
-      ord[o] = e
+      okey[o] = keys[f]!
+      ord[o] = F.fresh[f]!
       j--
     }
   }
@@ -135,56 +126,34 @@ function after(k1: Float64Array, k2: Float64Array, two: boolean, p: number, q: n
  */
 export function sweepPairs(w: BallWorld, F: FixedContactState): void {
   const N = F.ordCount
-  const rec = F.orec
+  const key = F.okey
+  const ord = F.ord
+  const X = w.Ball.x
+  const Y = w.Ball.y
+  const reach = F.reachOf
   F.peCount = 0
   F.sweepBigCount = 0
   let b = 0
   for (let p = 0; p < N; p++) {
-    const o = 4 * p
-    const k = rec[o]!
+    const k = key[p]!
     if (k !== Math.floor(k)) {
-      F.sweepBig = pushListed(F.sweepBig, F.sweepBigCount++, F.ord[p]!)
+      F.sweepBig = pushListed(F.sweepBig, F.sweepBigCount++, ord[p]!)
       continue
     }
     // the rest of its cell and the next cell in its row
-    let q = p + 1
-    if (q < N && rec[4 * q]! <= k + 1) {
-      const x = rec[o + 1]!
-      const y = rec[o + 2]!
-      const r = rec[o + 3]!
-      for (; q < N && rec[4 * q]! <= k + 1; q++) {
-        const c = 4 * q
-        const kq = rec[c]!
-        if (kq !== Math.floor(kq)) continue
-        const dx = rec[c + 1]! - x
-        const dy = rec[c + 2]! - y
-        const s = r + rec[c + 3]!
-        if (dx * dx + dy * dy < s * s) pushPair(F, F.ord[p]!, F.ord[q]!)
-      }
+    for (let q = p + 1; q < N && key[q]! <= k + 1; q++) {
+      const kq = key[q]!
+      if (kq === Math.floor(kq)) test(F, X, Y, reach, ord[p]!, ord[q]!)
     }
     // the three cells below
     const lo = k + ROW - 1
-    while (b < N && rec[4 * b]! < lo) b++
-    q = b
-    if (q < N && rec[4 * q]! <= lo + 2) {
-      const x = rec[o + 1]!
-      const y = rec[o + 2]!
-      const r = rec[o + 3]!
-      for (; q < N && rec[4 * q]! <= lo + 2; q++) {
-        const c = 4 * q
-        const kq = rec[c]!
-        if (kq !== Math.floor(kq)) continue
-        const dx = rec[c + 1]! - x
-        const dy = rec[c + 2]! - y
-        const s = r + rec[c + 3]!
-        if (dx * dx + dy * dy < s * s) pushPair(F, F.ord[p]!, F.ord[q]!)
-      }
+    while (b < N && key[b]! < lo) b++
+    for (let q = b; q < N && key[q]! <= lo + 2; q++) {
+      const kq = key[q]!
+      if (kq === Math.floor(kq)) test(F, X, Y, reach, ord[p]!, ord[q]!)
     }
   }
   // each big ball against every ball in the cells within its reach (two big ones once)
-  const X = w.Ball.x
-  const Y = w.Ball.y
-  const reach = F.reachOf
   const half = F.sweepCell / 2
   for (let k = 0; k < F.sweepBigCount; k++) {
     const e = F.sweepBig[k]!
@@ -198,6 +167,14 @@ export function sweepPairs(w: BallWorld, F: FixedContactState): void {
       if (dx * dx + dy * dy < s * s) pushPair(F, e, f)
     }
   }
+}
+
+/** Lists the pair (e, f) if their centres are closer than the sum of their reaches. */
+function test(F: FixedContactState, X: Float64Array, Y: Float64Array, reach: Float64Array, e: number, f: number): void {
+  const dx = X[f]! - X[e]!
+  const dy = Y[f]! - Y[e]!
+  const s = reach[e]! + reach[f]!
+  if (dx * dx + dy * dy < s * s) pushPair(F, e, f)
 }
 
 function pushPair(F: FixedContactState, e: number, f: number): void {
@@ -243,12 +220,12 @@ export function queryBox(F: FixedContactState, x: number, y: number, R: number):
   const y0 = cellIndex(v - R, inv)
   const y1 = cellIndex(v + R, inv)
   const N = F.ordCount
-  const orec = F.orec
+  const okey = F.okey
   F.foundCount = 0
   if ((y1 - y0 + 1) * 2 * Math.log2(N + 2) > N) {
     // a box as tall as the field: one pass over every ball
     for (let q = 0; q < N; q++) {
-      const k = orec[4 * q]!
+      const k = okey[q]!
       const gy = Math.floor(k / ROW + 0.5)
       const gx = k - gy * ROW
       if (gy >= y0 && gy <= y1 && gx >= x0 && gx <= x1) F.found = pushListed(F.found, F.foundCount++, F.ord[q]!)
@@ -263,9 +240,9 @@ export function queryBox(F: FixedContactState, x: number, y: number, R: number):
     let hi = N
     while (lo < hi) {
       const mid = (lo + hi) >> 1
-      if (orec[4 * mid]! < from) lo = mid + 1
+      if (okey[mid]! < from) lo = mid + 1
       else hi = mid
     }
-    for (let q = lo; q < N && orec[4 * q]! <= to; q++) F.found = pushListed(F.found, F.foundCount++, F.ord[q]!)
+    for (let q = lo; q < N && okey[q]! <= to; q++) F.found = pushListed(F.found, F.foundCount++, F.ord[q]!)
   }
 }

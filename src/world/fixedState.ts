@@ -32,13 +32,8 @@ export interface FixedContactState {
    * arrays below.
    */
   ord: Uint32Array
-  /**
-   * the balls of ord, in its order, 4 numbers each: key, x, y, reach (written by the gather at each ball's
-   * place of the last tick, read in order by the insertion sort and the sweep); the gather that wrote each
-   */
-  orec: Float64Array
-  ostamp: Uint32Array
-  ordStamp: number
+  /** the keys of ord's balls, in its order (written by the gather at each ball's place of the last tick) */
+  okey: Float64Array
   ordCount: number
   /** sweep cell, px (at least twice the reach of every ball but the "big" ones), and its inverse; the cell wanted from the next tick (0: keep) */
   sweepCell: number
@@ -173,9 +168,7 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     nextTick: 1,
     due: false,
     ord: new Uint32Array(n),
-    orec: new Float64Array(4 * n),
-    ostamp: new Uint32Array(n),
-    ordStamp: 0,
+    okey: new Float64Array(n),
     ordCount: 0,
     sweepCell: 4 * config.BALL_RADIUS,
     sweepInv: 1 / (4 * config.BALL_RADIUS),
@@ -327,8 +320,7 @@ export function reserveOrd(F: FixedContactState, n: number): void {
   let len = F.ord.length
   while (len < n) len *= 2
   F.ord = grownTo(F.ord, len)
-  F.orec = grownTo(F.orec, 4 * len)
-  F.ostamp = grownTo(F.ostamp, len)
+  F.okey = grownTo(F.okey, len)
 }
 
 /** Makes room in the sort scratch for n keys (contents not kept). */
