@@ -87,7 +87,7 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
   // that a tick's speed-ups do not make it change at once; coarser cells (the balls slowed down) or many
   // big balls (sped up) ask for a new one
   const want = 1.1 * F.cell
-  if (n > 0 && (F.sweepCell > 1.25 * want || acc.big > 8 + n / 16)) F.sweepNext = want
+  if (n > 0 && (F.sweepCell > 1.15 * want || acc.big > 8 + n / 16)) F.sweepNext = want
   // a ball that changes row passes the balls of a row (as many as the field's width holds), one that
   // changes column those of a column: the order that moves fewer, when it moves half as many
   const rows = acc.vy * (acc.maxX - acc.minX)
