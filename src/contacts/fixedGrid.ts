@@ -19,7 +19,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, pushListed, type FixedContactState } from '../world/fixedState.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
-import { addFresh, mergeFresh, sweepKey } from './fixedSweep.js'
+import { addFresh, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 
 /** The tick's reductions over the candidates: sum and largest reach, bounding box, balls big for the sweep cell. */
 const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0 }
@@ -118,7 +118,7 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
   const posOf = F.posOf
   const okey = F.okey
   const tick = F.tick
-  const half = F.sweepCell / 2
+  const half = smallReach(F)
   const inv = F.sweepInv
   const near = w.walls !== 0
   const wx0 = walls.minX
@@ -245,7 +245,7 @@ function restingKey(w: BallWorld, F: FixedContactState, e: number, x: number, y:
   if (y > acc.maxY) acc.maxY = y
   if (w.walls !== 0 && !(x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY)) nearWall(F, e)
   let key = sweepKey(F.sweepInv, F.sweepCols, x, y)
-  if (reach > F.sweepCell / 2) {
+  if (reach > smallReach(F)) {
     key += 0.5
     acc.big++
   }

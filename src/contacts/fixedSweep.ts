@@ -29,6 +29,14 @@ export function sweepKey(inv: number, cols: number, x: number, y: number): numbe
   return cols === 1 ? cellIndex(x, inv) * ROW + cellIndex(y, inv) : cellIndex(y, inv) * ROW + cellIndex(x, inv)
 }
 
+/**
+ * The widest reach of a small ball (a little under half the sweep cell: two small balls within reach are
+ * less than a cell apart on each axis, so in neighbouring cells, even after the rounding of x / cell).
+ */
+export function smallReach(F: FixedContactState): number {
+  return F.sweepCell * 0.499999
+}
+
 /** Adds ball eid (not in ord) with key `key` to the balls joining ord this tick. */
 export function addFresh(F: FixedContactState, eid: number, key: number): void {
   if (F.freshCount === F.freshKey.length) {
@@ -153,19 +161,16 @@ export function sweepPairs(w: BallWorld, F: FixedContactState): void {
       if (kq === Math.floor(kq)) test(F, X, Y, reach, ord[p]!, ord[q]!)
     }
   }
-  // each big ball against every ball in the cells within its reach (two big ones once)
-  const half = F.sweepCell / 2
+  // each big ball against the small ones in the cells within its reach, and against the other big ones
+  const half = smallReach(F)
   for (let k = 0; k < F.sweepBigCount; k++) {
     const e = F.sweepBig[k]!
     queryBox(F, X[e]!, Y[e]!, reach[e]! + half)
     for (let m = 0; m < F.foundCount; m++) {
       const f = F.found[m]!
-      if (f === e || (reach[f]! > half && f < e)) continue
-      const dx = X[f]! - X[e]!
-      const dy = Y[f]! - Y[e]!
-      const s = reach[e]! + reach[f]!
-      if (dx * dx + dy * dy < s * s) pushPair(F, e, f)
+      if (reach[f]! <= half) test(F, X, Y, reach, e, f)
     }
+    for (let m = k + 1; m < F.sweepBigCount; m++) test(F, X, Y, reach, e, F.sweepBig[m]!)
   }
 }
 
@@ -227,14 +232,14 @@ export function queryBox(F: FixedContactState, x: number, y: number, R: number):
     for (let q = 0; q < N; q++) {
       const k = okey[q]!
       const gy = Math.floor(k / ROW + 0.5)
-      const gx = k - gy * ROW
+      const gx = Math.floor(k - gy * ROW)
       if (gy >= y0 && gy <= y1 && gx >= x0 && gx <= x1) F.found = pushListed(F.found, F.foundCount++, F.ord[q]!)
     }
     return
   }
   for (let gy = y0; gy <= y1; gy++) {
     const from = gy * ROW + x0
-    const to = gy * ROW + x1
+    const to = gy * ROW + x1 + 0.5 // a big ball's key is half a cell on
     // first entry with key ≥ from
     let lo = 0
     let hi = N
