@@ -3,11 +3,12 @@
 // those pairs, and those near a closed wall, are copied into the packed arrays the solve works on, moving
 // balls by id, then resting ones by id (the candidates' order: a ball's index decides which ball of a pair
 // is `a`). The solve is Gauss-Seidel, so its result depends on the order of the pairs: they are taken in
-// the order of a grid fixed by the tick's candidates alone (cell twice the largest reach, at least the
+// the order of the dense broadphase's grid (src/contacts/fixedDense.ts), which the tick's candidates alone
+// fix (cell twice the largest reach, at least the
 // side that holds one candidate on average over their bounding box, at most 4n + 64 cells), row by row,
 // by index within a cell, each pair from the ball met first; a pair with a "big" ball (reach over half a
 // cell) after all the others, by the big ball's index, then the other ball's place. How the pairs were
-// found has no part in it.
+// found has no part in it: both broadphases give the same pairs in the same order.
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'

@@ -1,14 +1,15 @@
-// The fixed-tick method's broadphase structure (config.BALL_COLLISIONS = 'fixed'): the tick's candidates
-// kept from tick to tick in the order of a uniform grid's cells, row by row (a key per ball: row·ROW +
-// column), or column by column when the balls move more up and down than across (fewer of them then
-// change places in the order). Between two ticks a ball moves a few px, so few change cell, and an insertion sort puts the order
-// right again in about one comparison a ball (src/contacts/fixedGrid.ts, as it reads the balls). The pairs
-// are then found in one pass: each ball against the rest of its cell and the next (the entries after it
-// with a key at most one more), and against the three cells below (a second pointer that only moves on),
-// so the cost is a few comparisons a ball whatever the size of the field, with no per-cell work. Balls
-// whose reach exceeds half a cell ("big") look up the cells within their reach by binary search. The grid
-// only finds the pairs: which pairs, and in which order the solve takes them, is decided elsewhere
-// (src/contacts/fixedOrder.ts), so nothing here changes a result.
+// The fixed-tick method's sweep (config.BALL_COLLISIONS = 'fixed', on ticks where the balls are spread out):
+// the tick's candidates kept from tick to tick in the order of a uniform grid's cells, row by row (a key per
+// ball: row·ROW + column), or column by column when the balls move more up and down than across (fewer of
+// them then change places in the order). Between two ticks a ball moves a few px, so few change cell, and
+// an insertion sort puts the order right again in about one comparison a ball (src/contacts/fixedGrid.ts,
+// as it reads the balls). The pairs are then found in one pass over the keys: each ball against the rest of
+// its cell and the next (the entries after it with a key at most one more), and against the three cells of
+// the next row (a second pointer that only moves on), so the cost is a few comparisons a ball whatever the
+// size of the field, with no per-cell work. Balls whose reach exceeds about half a cell ("big") look up the
+// small balls in the cells within their reach by binary search, and are tested against each other
+// directly. The sweep only finds the pairs: which balls the solve works on, and in which order it takes the
+// pairs, is decided by src/contacts/fixedOrder.ts, so nothing here changes a result.
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, reserveOrd, reserveSort, type FixedContactState } from '../world/fixedState.js'
 
@@ -153,7 +154,7 @@ export function sweepPairs(w: BallWorld, F: FixedContactState): void {
       const kq = key[q]!
       if (kq === Math.floor(kq)) test(F, X, Y, reach, ord[p]!, ord[q]!)
     }
-    // the three cells below
+    // the three cells of the next row
     const lo = k + ROW - 1
     while (b < N && key[b]! < lo) b++
     for (let q = b; q < N && key[q]! <= lo + 2; q++) {
