@@ -17,7 +17,7 @@ import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { pushCandidate, pushListed, type FixedContactState } from '../world/fixedState.js'
+import { pushCandidate, pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 import { addFresh, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 
@@ -29,6 +29,7 @@ const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, m
  * a closed wall (F.near), and the tick's cell for the pairs' order (F.cell, fixedOrder.ts).
  */
 export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
+  sweepStores(F)
   const C = F.rest
   readWalls(w)
   const moving = w.moving.count

@@ -197,8 +197,6 @@ function addResting(w: BallWorld, F: FixedContactState, from: number): void {
     F.reach[k] = B.radius[eid]! + TOUCH_GAP
     F.changed[k] = 0
     F.grown[k] = 0
-    F.packMark[eid] = F.markStamp
-    F.packAt[eid] = k
     markWall(F, k)
     for (let m = 0; m < F.widenedCount; m++) {
       const g = F.widened[m]!

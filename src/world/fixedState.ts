@@ -175,12 +175,12 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     sweepNext: 0,
     sweepCols: 0,
     sweepColsNext: 0,
-    inOrd: new Uint8Array(capacity),
-    posOf: new Int32Array(capacity),
-    reachOf: new Float64Array(capacity),
-    packMark: new Uint32Array(capacity),
-    nearMark: new Uint32Array(capacity),
-    packAt: new Int32Array(capacity),
+    inOrd: new Uint8Array(0),
+    posOf: new Int32Array(0),
+    reachOf: new Float64Array(0),
+    packMark: new Uint32Array(0),
+    nearMark: new Uint32Array(0),
+    packAt: new Int32Array(0),
     markStamp: 0,
     full: 0,
     reachMax: 0,
@@ -289,6 +289,13 @@ export function growFixedMass(F: FixedContactState, cap: number): void {
   const m = new Float64Array(cap).fill(1)
   m.set(F.mass)
   F.mass = m
+  if (F.inOrd.length > 0) sweepStores(F)
+}
+
+/** The sweep's stores by ball id, made (or grown) to the mass store's size: a world whose ticks all take the dense broadphase never has them. */
+export function sweepStores(F: FixedContactState): void {
+  const cap = F.mass.length
+  if (F.inOrd.length >= cap) return
   F.inOrd = grownTo(F.inOrd, cap)
   F.posOf = grownTo(F.posOf, cap)
   F.reachOf = grownTo(F.reachOf, cap)
