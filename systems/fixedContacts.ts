@@ -1,18 +1,23 @@
 // Ball-ball contacts by the fixed-tick method (not a design stage; opt-in with config.BALL_COLLISIONS =
 // 'fixed'). Contacts are solved at the times k·CONTACT_TICK of the world's clock, whatever the frame rate:
 // the step is split at those times, and at the first pass after each one this system pairs the balls that
-// can touch within a tick (src/contacts/fixedGrid.ts), solves their velocities (src/contacts/fixedSolve.ts)
+// can touch within a tick (where the balls crowd, src/contacts/fixedDense.ts; where they are spread out, the
+// sweep of src/contacts/fixedGrid.ts, fixedSweep.ts and fixedOrder.ts: the same pairs in the same order),
+// solves their velocities (src/contacts/fixedSolve.ts)
 // and separates overlaps (src/contacts/fixedProject.ts), pairing again the balls the solve sped up
 // (src/contacts/fixedReach.ts). Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
-import { findPairs, gatherCandidates } from '../src/contacts/fixedGrid.js'
+import { gatherCandidates } from '../src/contacts/fixedGrid.js'
+import { findPairs } from '../src/contacts/fixedOrder.js'
+import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { MAX_WIDEN_ROUNDS } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import type { FixedContactState } from '../src/world/fixedState.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
   const F = w.fixed
@@ -20,9 +25,22 @@ export function fixedContactsSystem(w: BallWorld): void {
   F.due = false
   const t = w.time
   F.ticks++
-  gatherCandidates(w, F)
-  if (F.n < 2) return
-  findPairs(F)
+  if (F.broadphase >= 0) F.denseNext = F.broadphase
+  if (F.dense !== F.denseNext) {
+    F.dense = F.denseNext
+    // back to the sweep: its order is rebuilt
+    if (F.dense === 0) F.sweepNext = F.sweepCell
+  }
+  if (F.dense === 1) {
+    gatherDense(w, F)
+    if (F.full < 2) return
+    findPairsDense(F)
+  } else {
+    gatherCandidates(w, F)
+    if (F.full < 2) return
+    findPairs(w, F)
+  }
+  chooseBroadphase(F)
   if (F.pairCount === 0) return
   const iterations = w.config.CONTACT_ITERATIONS
   F.hitCount = 0
@@ -31,4 +49,23 @@ export function fixedContactsSystem(w: BallWorld): void {
   for (let round = 0; round < MAX_WIDEN_ROUNDS && widenReach(w, F); round++) solveVelocities(w, F, t, iterations)
   solvePositions(w, F)
   applyChanges(w, F, t)
+}
+
+/**
+ * The broadphase for the next tick (both give the same pairs in the same order): the dense one where the
+ * balls crowd, the sweep where they are spread out. Crowding is measured two ways: the balls per square of
+ * side twice the largest reach over the candidates' bounding box (a gas at area fraction 0.2 has about
+ * 0.5, a burst spread over the panel's tiles less than 0.15), and the pairs per candidate (a pile at rest
+ * has several). The sweep's order is rebuilt after dense ticks.
+ */
+function chooseBroadphase(F: FixedContactState): void {
+  if (F.broadphase >= 0) {
+    F.denseNext = F.broadphase
+    return
+  }
+  const area = (F.maxX - F.minX) * (F.maxY - F.minY)
+  const crowd = area > 0 ? (F.full * F.cell * F.cell) / area : Infinity
+  const share = F.pairCount / F.full
+  if (F.dense === 1 && crowd < 0.25 && share < 0.25) F.denseNext = 0
+  else if (F.dense === 0 && (crowd > 0.3 || share > 0.3)) F.denseNext = 1
 }

@@ -1,115 +1,338 @@
-// The fixed-tick method's broadphase (config.BALL_COLLISIONS = 'fixed'): at a contact tick, the balls on
-// the panel (rolling, on a rim or resting; not held, captured or out) are gathered in ascending id order
-// and paired when they are close enough to touch within one tick: centre distance below the sum of their
-// reaches, a reach being the radius plus the distance the ball covers in a tick. So no pair can pass
-// through each other between two ticks (the swept test), whatever the speed.
-// A uniform grid holds the balls whose reach is at most half a cell; the cell is twice the largest reach,
-// or four times the mean reach when the largest is more than four times the mean (then the wider or
-// faster balls are "big": each scans the grid rows within its reach, and the big balls are paired with
-// each other directly). Work per tick: O(ball ids in use (a scan of the mode bytes) + grid cells (at most
-// 4 per candidate + 64) + pairs + big·(balls in reach, at most all) + big²).
+// The fixed-tick method's gather on a sweep tick (config.BALL_COLLISIONS = 'fixed'; systems/fixedContacts.ts
+// takes the dense broadphase of src/contacts/fixedDense.ts instead where the balls crowd): at a contact
+// tick, the balls on the panel (rolling, on a rim or resting; not held, captured or out) that can take part:
+// every moving ball, and the resting balls within reach of one (or overlapping one, or moved or come to rest
+// since the last tick), found through the resting grid, or every resting ball when there are few. A reach is
+// the radius plus the distance the ball covers in a tick; two balls are paired when their centres are closer
+// than the sum of their reaches, so no pair can pass through each other between two ticks (the swept test),
+// whatever the speed.
+// The candidates are kept from tick to tick in the sweep order of src/contacts/fixedSweep.ts: a pass over the
+// moving set writes each moving ball's record (key, position, reach) at its place of the last tick, a pass
+// over the order drops the balls that left and sorts it by insertion, and the balls that joined are merged
+// in. No scan of the ids in use (a ball that starts moving is found in the world's moving set, one that comes
+// to rest among the balls touched since the last tick), no copy of a ball that touches nothing. Work per
+// tick: O(candidates + places changed), plus the resting-grid lookups when resting balls outnumber a quarter
+// of the moving ones. Also here: the resting-grid lookup and the walls of the tick, which both broadphases use.
 import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { pushCandidate, pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
+import { pushCandidate, pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
+import { addFresh, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 
-function onPanel(mode: number): boolean {
-  return mode === BallMode.Rolling || mode === BallMode.RimRoll || mode === BallMode.Resting
+/** The tick's reductions over the candidates: sum and largest reach, bounding box, balls big for the sweep cell. */
+const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0 }
+
+/**
+ * Gathers the candidates of a tick into F.ord (F.full of them) with their reaches (F.reachOf), the balls near
+ * a closed wall (F.near), and the tick's cell for the pairs' order (F.cell, fixedOrder.ts).
+ */
+export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
+  sweepStores(F)
+  const C = F.rest
+  readWalls(w)
+  const moving = w.moving.count
+  const restTotal = C.restCount + C.bigRestCount
+  // few resting balls: all of them are candidates (pairing them costs less than a lookup per moving ball)
+  const allRest = restTotal > 0 && 4 * restTotal <= moving
+  const lookup = restTotal > 0 && !allRest
+  if (restTotal > 0 && ++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  if (F.sweepNext !== 0) {
+    // a new sweep cell or cell order: every key changes, the order is sorted again from scratch
+    F.sweepCell = F.sweepNext
+    F.sweepInv = 1 / F.sweepNext
+    F.sweepCols = F.sweepColsNext
+    F.sweepNext = 0
+    for (let p = 0; p < F.ordCount; p++) F.inOrd[F.ord[p]!] = 0
+    F.ordCount = 0
+  }
+  acc.sum = 0
+  acc.max = 0
+  acc.minX = Infinity
+  acc.minY = Infinity
+  acc.maxX = -Infinity
+  acc.maxY = -Infinity
+  acc.big = 0
+  F.nearCount = 0
+  F.freshCount = 0
+  const nMov = readMoving(w, F)
+  F.n = 0
+  if (lookup) seedAll(w, F)
+  let kept = sortOrd(w, F, allRest, lookup)
+  if (counts.moving !== nMov - F.freshCount) {
+    // a ball of ord moving but not in the moving set (whose key was not written): every key again
+    for (let p = 0; p < F.ordCount; p++) F.inOrd[F.ord[p]!] = 0
+    F.ordCount = 0
+    F.freshCount = 0
+    F.nearCount = 0
+    readMoving(w, F)
+    kept = sortOrd(w, F, allRest, lookup)
+  }
+  const nRest = kept + joinResting(w, F, allRest, lookup, restTotal - kept)
+  F.touchedCount = 0
+  mergeFresh(F)
+  const n = nMov + nRest
+  F.full = n
+  F.n = 0
+  F.reachMax = acc.max
+  F.minX = acc.minX
+  F.minY = acc.minY
+  F.maxX = acc.maxX
+  F.maxY = acc.maxY
+  F.cell = n === 0 ? 1 : orderCell(w, F, n)
+  // the sweep cell for the next ticks: twice the reach that the order's cell allows, a little more so
+  // that a tick's speed-ups do not make it change at once; coarser cells (the balls slowed down) or many
+  // big balls (sped up) ask for a new one
+  const want = 1.1 * F.cell
+  if (n > 0 && (F.sweepCell > 1.15 * want || acc.big > 8 + n / 16)) F.sweepNext = want
+  // a ball that changes row passes the balls of a row (as many as the field's width holds), one that
+  // changes column those of a column: the order that moves fewer, when it moves half as many
+  const rows = acc.vy * (acc.maxX - acc.minX)
+  const cols = acc.vx * (acc.maxY - acc.minY)
+  const better = F.sweepCols === 1 ? rows < cols / 2 : cols < rows / 2
+  if (n > 0 && better) {
+    F.sweepColsNext = 1 - F.sweepCols
+    if (F.sweepNext === 0) F.sweepNext = F.sweepCell
+  } else F.sweepColsNext = F.sweepCols
 }
 
 /**
- * Gathers the candidates of a tick: the moving balls in id order, then the resting balls within reach of
- * one of them (or of a resting ball the last tick's projection moved), in id order, found through the
- * resting grid. Sets their reaches, the grid cell and the near-wall list.
+ * Every moving ball's reach and key, in the moving set's order (the order the integration just walked the
+ * per-ball arrays in), the key written at its place in ord; a ball not in ord yet joins it. Returns how
+ * many.
  */
-export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
+function readMoving(w: BallWorld, F: FixedContactState): number {
   const B = w.Ball
   const live = B.live
   const mode = B.mode
-  const top = Math.min(live.length, w.entityIndex.maxId + 1)
-  F.n = 0
-  for (let eid = 1; eid < top; eid++) {
-    if (live[eid] === 1 && (mode[eid] === BallMode.Rolling || mode[eid] === BallMode.RimRoll)) pushCandidate(F, eid)
-  }
-  F.restFrom = F.n
-  gatherResting(w, F)
-  const n = F.n
-  reserveCandidates(F, n)
+  const X = B.x
+  const Y = B.y
+  const VX = B.vx
+  const VY = B.vy
+  const rad = B.radius
+  const reachOf = F.reachOf
+  const inOrd = F.inOrd
+  const posOf = F.posOf
+  const okey = F.okey
   const tick = F.tick
+  const half = smallReach(F)
+  const inv = F.sweepInv
+  const near = w.walls !== 0
+  const wx0 = walls.minX
+  const wx1 = walls.maxX
+  const wy0 = walls.minY
+  const wy1 = walls.maxY
+  const dense = w.moving.dense
+  const count = w.moving.count
   let sum = 0
   let max = 0
   let minX = Infinity
   let minY = Infinity
   let maxX = -Infinity
   let maxY = -Infinity
-  for (let k = 0; k < n; k++) {
-    const eid = F.id[k]!
-    const r = B.radius[eid]!
-    const resting = k >= F.restFrom
-    const vx = resting ? 0 : B.vx[eid]!
-    const vy = resting ? 0 : B.vy[eid]!
-    const x = B.x[eid]!
-    const y = B.y[eid]!
-    F.x[k] = x
-    F.y[k] = y
-    F.r[k] = r
-    F.vx[k] = vx
-    F.vy[k] = vy
-    F.im[k] = 1 / F.mass[eid]!
-    const reach = r + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
-    F.reach[k] = reach
-    F.changed[k] = 0
+  let big = 0
+  let n = 0
+  let svx = 0
+  let svy = 0
+  const cols = F.sweepCols
+  for (let i = 0; i < count; i++) {
+    const e = dense[i]!
+    const m = mode[e]!
+    if (live[e] !== 1 || (m !== BallMode.Rolling && m !== BallMode.RimRoll)) continue
+    const x = X[e]!
+    const y = Y[e]!
+    const vx = VX[e]!
+    const vy = VY[e]!
+    const reach = rad[e]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
+    n++
+    svx += Math.abs(vx)
+    svy += Math.abs(vy)
+    reachOf[e] = reach
     sum += reach
     if (reach > max) max = reach
     if (x < minX) minX = x
     if (x > maxX) maxX = x
     if (y < minY) minY = y
     if (y > maxY) maxY = y
+    if (near && !(x - reach > wx0 && x + reach < wx1 && y - reach > wy0 && y + reach < wy1)) nearWall(F, e)
+    // a ball too wide or fast for the sweep cell has a key half a cell on (fixedSweep.ts)
+    let key = sweepKey(inv, cols, x, y)
+    if (reach > half) {
+      key += 0.5
+      big++
+    }
+    if (inOrd[e] !== 1) {
+      addFresh(F, e, key)
+      continue
+    }
+    okey[posOf[e]!] = key
   }
-  F.cell = n === 0 ? 1 : max <= (4 * sum) / n ? 2 * max : (4 * sum) / n
-  F.minX = minX
-  F.minY = minY
-  F.maxX = maxX
-  F.maxY = maxY
-  F.nearWallCount = 0
-  readWalls(w)
-  if (w.walls !== 0) for (let i = 0; i < n; i++) markWall(F, i)
+  acc.sum = sum
+  acc.max = max
+  acc.minX = minX
+  acc.minY = minY
+  acc.maxX = maxX
+  acc.maxY = maxY
+  acc.big = big
+  acc.vx = svx
+  acc.vy = svy
+  return n
+}
+
+/** The balls of ord kept by sortOrd: moving, resting. */
+const counts = { moving: 0, resting: 0 }
+
+/**
+ * Puts ord back in key order by insertion (the order of the last tick is nearly right), dropping the balls
+ * that are no longer candidates; the resting candidates' keys are found here. Returns how many rest.
+ */
+function sortOrd(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: boolean): number {
+  const B = w.Ball
+  const live = B.live
+  const mode = B.mode
+  const seen = F.rest.seen
+  const seenStamp = F.rest.seenStamp
+  const okey = F.okey
+  const ord = F.ord
+  const posOf = F.posOf
+  const N = F.ordCount
+  let nMov = 0
+  let nRest = 0
+  let out = 0
+  for (let p = 0; p < N; p++) {
+    const e = ord[p]!
+    const m = mode[e]!
+    let k = okey[p]!
+    if (live[e] === 1 && (m === BallMode.Rolling || m === BallMode.RimRoll)) nMov++
+    else if (live[e] === 1 && m === BallMode.Resting && (allRest || (lookup && seen[e] === seenStamp))) {
+      if (allRest) seen[e] = seenStamp
+      k = restingKey(w, F, e, B.x[e]!, B.y[e]!, B.radius[e]! + TOUCH_GAP)
+      nRest++
+    } else {
+      F.inOrd[e] = 0
+      continue
+    }
+    let j = out
+    while (j > 0 && okey[j - 1]! > k) {
+      const f = ord[j - 1]!
+      okey[j] = okey[j - 1]!
+      ord[j] = f
+      posOf[f] = j
+      j--
+    }
+    okey[j] = k
+    ord[j] = e
+    posOf[e] = j
+    out++
+  }
+  F.ordCount = out
+  counts.moving = nMov
+  counts.resting = nRest
+  return nRest
+}
+
+/** A resting candidate's reach and its part of the reductions; returns its key. */
+function restingKey(w: BallWorld, F: FixedContactState, e: number, x: number, y: number, reach: number): number {
+  F.reachOf[e] = reach
+  acc.sum += reach
+  if (reach > acc.max) acc.max = reach
+  if (x < acc.minX) acc.minX = x
+  if (x > acc.maxX) acc.maxX = x
+  if (y < acc.minY) acc.minY = y
+  if (y > acc.maxY) acc.maxY = y
+  if (w.walls !== 0 && !(x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY)) nearWall(F, e)
+  let key = sweepKey(F.sweepInv, F.sweepCols, x, y)
+  if (reach > smallReach(F)) {
+    key += 0.5
+    acc.big++
+  }
+  return key
+}
+
+function nearWall(F: FixedContactState, e: number): void {
+  F.near = pushListed(F.near, F.nearCount++, e)
+}
+
+/** Resting ball e joins ord this tick. */
+function join(w: BallWorld, F: FixedContactState, e: number): void {
+  const x = w.Ball.x[e]!
+  const y = w.Ball.y[e]!
+  addFresh(F, e, restingKey(w, F, e, x, y, w.Ball.radius[e]! + TOUCH_GAP))
 }
 
 /**
- * Appends the resting balls within reach of the seeds (moving candidates, touched resting balls), sorted by
- * id; or, when there are no more resting balls than moving ones, every resting ball.
+ * Resting candidates not yet in ord join it: with every resting ball a candidate, those come to rest since
+ * the last tick (they are among the touched balls; any other, when `missing` are not found so, by a scan
+ * of the ids); else those the lookups found (F.id[0..F.n)). Returns how many.
  */
-function gatherResting(w: BallWorld, F: FixedContactState): void {
-  const C = F.rest
-  if (C.restCount === 0 && C.bigRestCount === 0) {
-    F.touchedCount = 0
-    return
-  }
+function joinResting(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: boolean, missing: number): number {
   const B = w.Ball
-  if (++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
-  const moving = F.n
-  if (4 * (C.restCount + C.bigRestCount) <= moving) {
-    // few resting balls: all of them join, in id order (pairing them costs less than a lookup per moving ball)
-    const live = B.live
-    const mode = B.mode
-    const top = Math.min(live.length, w.entityIndex.maxId + 1)
-    for (let eid = 1; eid < top; eid++) {
-      if (live[eid] === 1 && mode[eid] === BallMode.Resting) {
-        C.seen[eid] = C.seenStamp
-        pushCandidate(F, eid)
+  const C = F.rest
+  let added = 0
+  if (allRest) {
+    for (let k = 0; k < F.touchedCount; k++) {
+      const e = F.touched[k]!
+      if (B.live[e] === 1 && B.mode[e] === BallMode.Resting && F.inOrd[e] !== 1) {
+        C.seen[e] = C.seenStamp
+        join(w, F, e)
+        added++
       }
     }
-    F.touchedCount = 0
-    return
+    if (added === missing) return added
+    const top = Math.min(B.live.length, w.entityIndex.maxId + 1)
+    for (let e = 1; e < top; e++) {
+      if (B.live[e] === 1 && B.mode[e] === BallMode.Resting && F.inOrd[e] !== 1) {
+        C.seen[e] = C.seenStamp
+        join(w, F, e)
+        added++
+      }
+    }
+  } else if (lookup) {
+    for (let k = 0; k < F.n; k++) {
+      const e = F.id[k]!
+      if (F.inOrd[e] !== 1) {
+        join(w, F, e)
+        added++
+      }
+    }
   }
-  for (let k = 0; k < moving; k++) {
-    const eid = F.id[k]!
+  return added
+}
+
+/**
+ * The grid cell that orders the tick's pairs (fixedOrder.ts): twice the largest reach, or four times the
+ * mean reach when the largest is more than four times the mean (then the wider or faster balls are "big").
+ * The mean is that of the reaches summed in candidate order (moving by id, then resting by id); the sum in
+ * ord's order gives the same choice unless the two are within rounding of each other, and then the sum is
+ * taken again in that order.
+ */
+function orderCell(w: BallWorld, F: FixedContactState, n: number): number {
+  const max = acc.max
+  if (max <= ((4 * acc.sum) / n) * (1 - (n + 4) * 4.5e-16)) return 2 * max
+  const B = w.Ball
+  const top = Math.min(B.live.length, w.entityIndex.maxId + 1)
+  let sum = 0
+  for (let eid = 1; eid < top; eid++) {
+    const m = B.mode[eid]
+    if (F.inOrd[eid] === 1 && (m === BallMode.Rolling || m === BallMode.RimRoll)) sum += F.reachOf[eid]!
+  }
+  for (let eid = 1; eid < top; eid++) if (F.inOrd[eid] === 1 && B.mode[eid] === BallMode.Resting) sum += F.reachOf[eid]!
+  return max <= (4 * sum) / n ? 2 * max : (4 * sum) / n
+}
+
+/**
+ * The resting balls within reach of a moving ball (or of a resting ball the last tick's projection moved),
+ * and every resting ball that overlaps one of those, transitively, into F.id (F.n of them; marked seen).
+ */
+function seedAll(w: BallWorld, F: FixedContactState): void {
+  const B = w.Ball
+  const dense = w.moving.dense
+  for (let i = 0; i < w.moving.count; i++) {
+    const eid = dense[i]!
     const vx = B.vx[eid]!
     const vy = B.vy[eid]!
     seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP)
@@ -118,32 +341,15 @@ function gatherResting(w: BallWorld, F: FixedContactState): void {
     const eid = F.touched[k]!
     if (B.live[eid] === 1 && B.mode[eid] === BallMode.Resting) seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + TOUCH_GAP)
   }
-  F.touchedCount = 0
-  // and every resting ball that overlaps a resting candidate, transitively: the projection sees the whole
-  // overlapping cluster at once (a push crosses a jammed pile in one tick, not one ball a tick)
-  for (let k = moving; k < F.n; k++) {
+  // the projection sees the whole overlapping cluster at once (a push crosses a jammed pile in one tick,
+  // not one ball a tick)
+  for (let k = 0; k < F.n; k++) {
     const eid = F.id[k]!
     seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! - PROJECTION_SLOP)
   }
-  // ids in ascending order, whatever order the grid gave them in (the same candidates in the same order
-  // at every frame rate)
-  const ids = F.id
-  if (F.n - moving > 64) {
-    ids.subarray(moving, F.n).sort()
-    return
-  }
-  for (let i = moving + 1; i < F.n; i++) {
-    const v = ids[i]!
-    let j = i - 1
-    while (j >= moving && ids[j]! > v) {
-      ids[j + 1] = ids[j]!
-      j--
-    }
-    ids[j + 1] = v
-  }
 }
 
-/** Adds the resting balls the circle (x, y, reach) reaches, once each (the seen stamp). */
+/** Adds the resting balls the circle (x, y, reach) reaches, once each (the seen stamp), to F.id. */
 export function seedResting(w: BallWorld, F: FixedContactState, x: number, y: number, reach: number): void {
   const C = F.rest
   for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!, x, y, reach)
@@ -176,7 +382,7 @@ function addResting(w: BallWorld, F: FixedContactState, e: number, x: number, y:
  */
 export const walls = { minX: -Infinity, maxX: Infinity, minY: -Infinity, maxY: Infinity, e: 0 }
 
-function readWalls(w: BallWorld): void {
+export function readWalls(w: BallWorld): void {
   const W = w.Walls
   const e = w.walls
   const open = e === 0 ? 15 : W.open[e]!
@@ -187,7 +393,7 @@ function readWalls(w: BallWorld): void {
   walls.e = e === 0 ? 0 : W.restitution[e]!
 }
 
-/** Lists candidate i among those near a closed wall when its reach meets one within the tick. */
+/** Lists packed candidate i among those near a closed wall when its reach meets one within the tick. */
 export function markWall(F: FixedContactState, i: number): void {
   const x = F.x[i]!
   const y = F.y[i]!
@@ -195,160 +401,4 @@ export function markWall(F: FixedContactState, i: number): void {
   // far from every wall: the common case
   if (x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY) return
   F.nearWall[F.nearWallCount++] = i
-}
-
-function close(F: FixedContactState, i: number, j: number): boolean {
-  const dx = F.x[j]! - F.x[i]!
-  const dy = F.y[j]! - F.y[i]!
-  const s = F.reach[i]! + F.reach[j]!
-  return dx * dx + dy * dy < s * s
-}
-
-/**
- * Pairs every two candidates that can touch within the tick. The small candidates are counting-sorted
- * into a dense grid over their bounding box (at most 4n + 64 cells: the cell grows for a sparse scene),
- * each cell is paired with itself and four neighbours ahead of it, and the big candidates scan the cells
- * in their reach. Deterministic order: cells in row order, candidates by index within a cell.
- */
-export function findPairs(F: FixedContactState): void {
-  const n = F.n
-  const half = F.cell / 2
-  F.pairCount = 0
-  F.bigCount = 0
-  // the bounding box of every candidate (the big ones included: a box a little larger at most)
-  const minX = F.minX
-  const minY = F.minY
-  const maxX = F.maxX
-  const maxY = F.maxY
-  let cell = F.cell
-  let cols = 1
-  let rows = 1
-  if (n > 0) {
-    // about one ball a cell at least (more, emptier cells cost more in the sort than the tests they save)
-    const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / n)
-    if (even > cell) cell = even
-    const most = 4 * n + 64
-    for (;;) {
-      cols = Math.floor((maxX - minX) / cell) + 1
-      rows = Math.floor((maxY - minY) / cell) + 1
-      if (cols * rows <= most) break
-      // a sparse scene: coarser cells (still at least twice every small reach); again while a long thin box
-      // (one row or column) still has too many
-      cell *= Math.sqrt((cols * rows) / most) * 1.001
-    }
-  }
-  const cells = cols * rows
-  const start = reserveCells(F, cells)
-  start.fill(0, 0, cells + 1)
-  let small = 0
-  for (let i = 0; i < n; i++) {
-    if (F.reach[i]! > half) {
-      F.big[F.bigCount++] = i
-      continue
-    }
-    small++
-    const c = cellOf(F.x[i]! - minX, F.y[i]! - minY, cell, cols, rows)
-    F.next[i] = c
-    start[c + 1]!++
-  }
-  F.gridCell = cell
-  F.cols = small > 0 ? cols : 0
-  F.rows = small > 0 ? rows : 0
-  for (let c = 0; c < cells; c++) start[c + 1]! += start[c]!
-  // counting sort, stable: candidates by cell, by index within a cell; their data copied in that order
-  const sx = F.sx
-  const sy = F.sy
-  const sr = F.sr
-  const si = F.si
-  for (let i = 0; i < n; i++) {
-    if (F.reach[i]! > half) continue
-    const k = F.fill[F.next[i]!]!++ + start[F.next[i]!]!
-    sx[k] = F.x[i]!
-    sy[k] = F.y[i]!
-    sr[k] = F.reach[i]!
-    si[k] = i
-  }
-  F.fill.fill(0, 0, cells)
-  // each sorted entry against the rest of its cell and the next cell in its row (one run of entries),
-  // then the three cells below (another); cells visited in row order, so no division per entry
-  for (let gy = 0, c = 0; gy < rows; gy++) {
-    const below = gy + 1 < rows
-    for (let gx = 0; gx < cols; gx++, c++) {
-      const from = start[c]!
-      const to = start[c + 1]!
-      if (from === to) continue
-      const run = start[gx + 1 < cols ? c + 2 : c + 1]!
-      const d = c + cols
-      const lo = below ? start[gx > 0 ? d - 1 : d]! : 0
-      const hi = below ? start[gx + 1 < cols ? d + 2 : d + 1]! : 0
-      for (let p = from; p < to; p++) {
-        scan(F, p, p + 1, run)
-        if (below) scan(F, p, lo, hi)
-      }
-    }
-  }
-  for (let k = 0; k < F.bigCount; k++) {
-    const i = F.big[k]!
-    pairBig(F, i, small, minX, minY, cell, cols, rows)
-    for (let m = k + 1; m < F.bigCount; m++) {
-      const j = F.big[m]!
-      if (close(F, i, j)) pushPair(F, i, j)
-    }
-  }
-}
-
-function cellOf(dx: number, dy: number, cell: number, cols: number, rows: number): number {
-  let gx = Math.floor(dx / cell)
-  let gy = Math.floor(dy / cell)
-  if (gx >= cols) gx = cols - 1
-  if (gy >= rows) gy = rows - 1
-  return gy * cols + gx
-}
-
-/** Pairs sorted entry p with those of the sorted entries [from, to) within reach. */
-function scan(F: FixedContactState, p: number, from: number, to: number): void {
-  const sx = F.sx
-  const sy = F.sy
-  const sr = F.sr
-  const x = sx[p]!
-  const y = sy[p]!
-  const r = sr[p]!
-  for (let q = from; q < to; q++) {
-    const dx = sx[q]! - x
-    const dy = sy[q]! - y
-    const s = r + sr[q]!
-    if (dx * dx + dy * dy >= s * s) continue
-    const i = F.si[p]!
-    const j = F.si[q]!
-    pushPair(F, i < j ? i : j, i < j ? j : i)
-  }
-}
-
-/** Pairs big candidate i with the small candidates within its reach. */
-function pairBig(F: FixedContactState, i: number, small: number, minX: number, minY: number, cell: number, cols: number, rows: number): void {
-  if (small === 0) return
-  const R = F.reach[i]! + F.cell / 2
-  const x0 = Math.max(0, Math.floor((F.x[i]! - R - minX) / cell))
-  const x1 = Math.min(cols - 1, Math.floor((F.x[i]! + R - minX) / cell))
-  const y0 = Math.max(0, Math.floor((F.y[i]! - R - minY) / cell))
-  const y1 = Math.min(rows - 1, Math.floor((F.y[i]! + R - minY) / cell))
-  if (x1 < x0 || y1 < y0) return
-  const start = F.start
-  for (let gy = y0; gy <= y1; gy++) {
-    for (let q = start[gy * cols + x0]!, e = start[gy * cols + x1 + 1]!; q < e; q++) {
-      const j = F.si[q]!
-      if (close(F, i, j)) pushPair(F, i < j ? i : j, i < j ? j : i)
-    }
-  }
-}
-
-/** The cell-start array for `cells` cells (and the per-cell fill counters). */
-function reserveCells(F: FixedContactState, cells: number): Int32Array {
-  if (F.start.length < cells + 2) {
-    let len = F.start.length
-    while (len < cells + 2) len *= 2
-    F.start = new Int32Array(len)
-    F.fill = new Int32Array(len)
-  }
-  return F.start
 }

@@ -1,17 +1,45 @@
 // Fixed-tick contacts: a ball the velocity solve made faster than it was when the tick's pairs were found
 // (a struck ball at rest, the last ball of a row) can now reach balls it was not paired with, and would
 // move into them before the next tick. After each solve round, every such ball's reach is widened to its
-// new speed and it is paired again: with the candidates in the tick's grid and the big ones, and with the
-// resting balls now in its reach (they join the candidates). The solve then runs again over all pairs.
-// At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts): a chain longer than that is caught
-// at the next tick, by the projection.
+// new speed and it is paired again: with the tick's candidates in the ordering grid's cells within its new
+// reach (src/contacts/fixedOrder.ts; found through the sweep order, fixedSweep.ts, and packed if they were
+// not), with the big ones, and with the resting balls now in its reach (they join the candidates). The
+// solve then runs again over all pairs. At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts):
+// a chain longer than that is caught at the next tick, by the projection.
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
+import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { markWall, seedResting } from './fixedGrid.js'
+import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
+import { queryBox } from './fixedSweep.js'
 
 /** Widens the reach of the candidates the last round sped up and pairs them again; false when none did. */
 export function widenReach(w: BallWorld, F: FixedContactState): boolean {
+  const widest = widenHits(F)
+  if (F.widenedCount === 0) return false
+  const smallReach = Math.max(F.cell / 2, widest)
+  const restFrom = F.n
+  if (F.dense === 1) {
+    for (let k = 0; k < F.widenedCount; k++) {
+      const g = F.widened[k]!
+      pairInGrid(F, g, F.wide[g]! + smallReach)
+      for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
+      // resting balls not yet candidates (the gather's seen stamps skip those that are)
+      seedResting(w, F, F.x[g]!, F.y[g]!, F.wide[g]!)
+    }
+    addResting(w, F, restFrom)
+  } else widenSwept(w, F, smallReach, widest)
+  for (let k = 0; k < F.widenedCount; k++) {
+    const g = F.widened[k]!
+    F.reach[g] = F.wide[g]!
+    F.grown[g] = 0
+    markWall(F, g)
+  }
+  return true
+}
+
+/** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); returns the widest new reach. */
+function widenHits(F: FixedContactState): number {
   const tick = F.tick
   F.widenedCount = 0
   let widest = 0
@@ -28,27 +56,102 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
     F.widened[F.widenedCount++] = i
     if (wide > widest) widest = wide
   }
-  if (F.widenedCount === 0) return false
-  const smallReach = Math.max(F.cell / 2, widest)
+  return widest
+}
+
+/**
+ * The widening on a sweep tick (only the balls that touch are packed): each widened candidate's partners
+ * in the ordering grid's cells within its reach (packed first if they were not), by place; the big ones;
+ * the resting balls now in its reach.
+ */
+function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, widest: number): void {
+  if (widest > F.reachMax) F.reachMax = widest
+  gridPartners(w, F, smallReach)
+  reserveSort(F, F.peCount)
   const restFrom = F.n
-  for (let k = 0; k < F.widenedCount; k++) {
+  for (let k = 0, t = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
-    pairInGrid(F, g, F.wide[g]! + smallReach)
+    // its partners in the grid's cells, by place (cell, then index)
+    const from = t
+    for (; t < F.peCount && F.pe1[t] === k; t++) {
+      const j = F.packAt[F.pe2[t]!]!
+      F.key1[t - from] = (orderRow(F, F.y[j]!) * F.cols + orderCol(F, F.x[j]!)) * F.n + j
+    }
+    for (let a = 1; a < t - from; a++) {
+      const v = F.key1[a]!
+      let b = a - 1
+      while (b >= 0 && F.key1[b]! > v) {
+        F.key1[b + 1] = F.key1[b]!
+        b--
+      }
+      F.key1[b + 1] = v
+    }
+    for (let a = 0; a < t - from; a++) {
+      const j = F.key1[a]! % F.n
+      pushPair(F, g < j ? g : j, g < j ? j : g)
+    }
     for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
     // resting balls not yet candidates (the gather's seen stamps skip those that are)
     seedResting(w, F, F.x[g]!, F.y[g]!, F.wide[g]!)
   }
   addResting(w, F, restFrom)
-  for (let k = 0; k < F.widenedCount; k++) {
-    const g = F.widened[k]!
-    F.reach[g] = F.wide[g]!
-    F.grown[g] = 0
-    markWall(F, g)
-  }
-  return true
 }
 
-/** Pairs widened candidate g with the small candidates of the grid cells within `range` of it. */
+/**
+ * For each widened candidate (k-th), the gather's small candidates (reach at most half the ordering cell)
+ * in the ordering grid's cells within wide + smallReach of it that it now reaches and did not before, into
+ * F.pe1 (k) and F.pe2 (id), in widened order; those not packed are packed first.
+ */
+function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): void {
+  const B = w.Ball
+  const half = F.cell / 2
+  const st = F.markStamp
+  const cell = F.gridCell
+  let joining = 0
+  F.peCount = 0
+  for (let k = 0; k < F.widenedCount; k++) {
+    const g = F.widened[k]!
+    const x = F.x[g]!
+    const y = F.y[g]!
+    const range = F.wide[g]! + smallReach
+    const x0 = Math.max(0, Math.floor((x - range - F.minX) / cell))
+    const x1 = Math.min(F.cols - 1, Math.floor((x + range - F.minX) / cell))
+    const y0 = Math.max(0, Math.floor((y - range - F.minY) / cell))
+    const y1 = Math.min(F.rows - 1, Math.floor((y + range - F.minY) / cell))
+    if (x1 < x0 || y1 < y0) continue
+    // every candidate it can reach is within its reach plus the widest reach of any
+    queryBox(F, x, y, F.wide[g]! + F.reachMax)
+    for (let q = 0; q < F.foundCount; q++) {
+      const e = F.found[q]!
+      if (F.reachOf[e]! > half) continue
+      const ex = B.x[e]!
+      const ey = B.y[e]!
+      const gx = orderCol(F, ex)
+      const gy = orderRow(F, ey)
+      if (gx < x0 || gx > x1 || gy < y0 || gy > y1) continue
+      const packed = F.packMark[e] === st && F.packAt[e]! >= 0
+      const j = packed ? F.packAt[e]! : -1
+      if (packed && (j === g || (F.grown[j] === 1 && j < g))) continue
+      const dx = ex - x
+      const dy = ey - y
+      const d2 = dx * dx + dy * dy
+      const rj = packed ? F.reach[j]! : F.reachOf[e]!
+      const now = F.wide[g]! + (packed && F.grown[j] === 1 ? F.wide[j]! : rj)
+      const before = F.reach[g]! + rj
+      if (d2 >= now * now || d2 < before * before) continue
+      F.pe1 = pushListed(F.pe1, F.peCount, k)
+      F.pe2 = pushListed(F.pe2, F.peCount++, e)
+      if (F.packMark[e] !== st) {
+        F.packMark[e] = st
+        F.packAt[e] = -1
+        F.fresh = pushListed(F.fresh, joining++, e)
+      }
+    }
+  }
+  if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
+}
+
+/** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within `range` of it. */
 function pairInGrid(F: FixedContactState, g: number, range: number): void {
   if (F.cols === 0) return
   const cell = F.gridCell

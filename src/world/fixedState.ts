@@ -1,6 +1,7 @@
 // State of the fixed-tick contact method (config.BALL_COLLISIONS = 'fixed'): each ball's mass, the contact
-// clock, and the per-tick working arrays of src/contacts/fixedGrid.ts, fixedSolve.ts and fixedProject.ts, packed by
-// candidate (the balls on the panel at one contact tick) and grown by doubling, so a tick allocates nothing
+// clock, the sweep order kept from tick to tick (src/contacts/fixedSweep.ts), and the per-tick working arrays
+// of src/contacts/fixedGrid.ts, fixedDense.ts, fixedOrder.ts, fixedSolve.ts and fixedProject.ts, packed by
+// candidate (the balls of a contact tick that can touch) and grown by doubling, so a tick allocates nothing
 // once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
 import type { BallPhysicsConfig } from '../config/design.js'
 import { appendId, createCollisionState, type CollisionState } from './contactState.js'
@@ -16,7 +17,7 @@ export interface FixedContactState {
   /** balls moved by the last tick's projection or come to rest since: next tick, they and the resting balls they touch are candidates */
   touched: Uint32Array
   touchedCount: number
-  /** candidates of a tick that rest (sorted by id before the solve) start at this index */
+  /** packed candidates from this index on rest (the resting ones the gather found, then those the widening added) */
   restFrom: number
   /** contact tick, s (config.CONTACT_TICK); contacts are solved at the times k·tick, k = 1, 2, … */
   tick: number
@@ -24,8 +25,71 @@ export interface FixedContactState {
   nextTick: number
   /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
   due: boolean
-  // candidates of the tick being solved, in ascending id order
+  /**
+   * The tick's candidates (the moving balls, and the resting balls that can be touched), kept from tick to
+   * tick sorted by sweep cell (src/contacts/fixedSweep.ts): ids and cell keys. A ball moves a few px a tick,
+   * so the order needs few changes; only the balls that can touch another are then copied into the packed
+   * arrays below.
+   */
+  ord: Uint32Array
+  /** the keys of ord's balls, in its order (written by the gather at each ball's place of the last tick) */
+  okey: Float64Array
+  ordCount: number
+  /** sweep cell, px (at least twice the reach of every ball but the "big" ones), and its inverse; the cell wanted from the next tick (0: keep) */
+  sweepCell: number
+  sweepInv: number
+  sweepNext: number
+  /** 1: the sweep's cells go column by column (keys column·ROW + row), for balls that move mostly up and down; the order wanted from the next tick */
+  sweepCols: number
+  sweepColsNext: number
+  /** by ball id: 1 while in ord, and its place there; its reach at this tick's gather; stamps of the packed balls and of those near a closed wall; index in the packed arrays */
+  inOrd: Uint8Array
+  posOf: Int32Array
+  reachOf: Float64Array
+  packMark: Uint32Array
+  nearMark: Uint32Array
+  packAt: Int32Array
+  markStamp: number
+  /** candidates of the tick (moving, then resting) before packing, and the largest reach among them and those widened */
+  full: number
+  reachMax: number
+  /** balls joining ord this tick and their keys; resting candidates found through the resting grid (scratch) */
+  fresh: Uint32Array
+  freshKey: Float64Array
+  freshCount: number
+  /** ids near a closed wall this tick; sweep cells' big balls; balls found by a box query */
+  near: Uint32Array
+  nearCount: number
+  sweepBig: Uint32Array
+  sweepBigCount: number
+  found: Uint32Array
+  foundCount: number
+  /** pairs found by the sweep, as ids */
+  pe1: Uint32Array
+  pe2: Uint32Array
+  peCount: number
+  /** 1: this tick takes the dense broadphase (src/contacts/fixedDense.ts), 0: the sweep; the next tick's (the share of candidates in pairs decides) */
+  dense: number
+  denseNext: number
+  /** −1: the broadphase is chosen tick by tick (the default); 0: always the sweep, 1: always the dense grid (tests compare the two) */
+  broadphase: number
+  /** dense broadphase: first sorted entry of each grid cell (cells + 1 entries), fill counters, and the candidates sorted by cell: position, reach and index */
+  start: Int32Array
+  fill: Int32Array
+  sx: Float64Array
+  sy: Float64Array
+  sr: Float64Array
+  si: Int32Array
+  /** sort scratch: two keys and a permutation (and its merge buffer) */
+  key1: Float64Array
+  key2: Float64Array
+  perm: Int32Array
+  permTmp: Int32Array
+  // the balls that can touch within the tick, packed (moving by id, then resting by id, then those the
+  // widening added): the tick's pairs, walls and widening are solved over these
   n: number
+  /** packed balls that were candidates at the gather (the rest were added by the widening) */
+  gathered: number
   id: Uint32Array
   x: Float64Array
   y: Float64Array
@@ -47,19 +111,11 @@ export interface FixedContactState {
   /** candidates widened in this round */
   widened: Int32Array
   widenedCount: number
-  /** grid cell of a small candidate */
+  /** grid cell of a packed ball in the grid that orders the pairs (fixedOrder.ts); scratch for the solve after */
   next: Int32Array
   /** what the solve changed: 1 velocity, 2 position */
   changed: Uint8Array
-  /** grid: first sorted entry of each cell (cells + 1 entries), and fill counters */
-  start: Int32Array
-  fill: Int32Array
-  /** the small candidates sorted by cell: position, reach and candidate index */
-  sx: Float64Array
-  sy: Float64Array
-  sr: Float64Array
-  si: Int32Array
-  /** candidates too wide or too fast for the grid this tick, paired through cell ranges or directly */
+  /** packed balls too wide or too fast for the ordering grid (its "big" balls) */
   big: Int32Array
   bigCount: number
   /** candidates near a closed wall this tick */
@@ -76,7 +132,7 @@ export interface FixedContactState {
   minY: number
   maxX: number
   maxY: number
-  /** the sorted grid of the tick: its cell (px), columns and rows */
+  /** the grid that orders the tick's pairs (fixedOrder.ts): its cell (px), columns and rows */
   gridCell: number
   cols: number
   rows: number
@@ -164,6 +220,43 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     contacts: 0,
     ticks: 0,
     capped: 0,
+    ord: new Uint32Array(n),
+    okey: new Float64Array(n),
+    ordCount: 0,
+    sweepCell: 4 * config.BALL_RADIUS,
+    sweepInv: 1 / (4 * config.BALL_RADIUS),
+    sweepNext: 0,
+    sweepCols: 0,
+    sweepColsNext: 0,
+    inOrd: new Uint8Array(0),
+    posOf: new Int32Array(0),
+    reachOf: new Float64Array(0),
+    packMark: new Uint32Array(0),
+    nearMark: new Uint32Array(0),
+    packAt: new Int32Array(0),
+    markStamp: 0,
+    full: 0,
+    reachMax: 0,
+    fresh: new Uint32Array(n),
+    freshKey: new Float64Array(n),
+    freshCount: 0,
+    near: new Uint32Array(n),
+    nearCount: 0,
+    sweepBig: new Uint32Array(n),
+    sweepBigCount: 0,
+    found: new Uint32Array(n),
+    foundCount: 0,
+    pe1: new Uint32Array(n),
+    pe2: new Uint32Array(n),
+    peCount: 0,
+    dense: 1,
+    denseNext: 1,
+    broadphase: -1,
+    key1: new Float64Array(n),
+    key2: new Float64Array(n),
+    perm: new Int32Array(n),
+    permTmp: new Int32Array(n),
+    gathered: 0,
   }
 }
 
@@ -190,12 +283,62 @@ export function reserveSweeps(F: FixedContactState, n: number, pairs: number): v
   }
 }
 
-/** Grows the per-ball mass store so that ball id cap − 1 fits. */
+/** Grows the per-ball stores (mass, and the sweep's marks by id) so that ball id cap − 1 fits. */
 export function growFixedMass(F: FixedContactState, cap: number): void {
   if (F.mass.length >= cap) return
   const m = new Float64Array(cap).fill(1)
   m.set(F.mass)
   F.mass = m
+  if (F.inOrd.length > 0) sweepStores(F)
+}
+
+/** The sweep's stores by ball id, made (or grown) to the mass store's size: a world whose ticks all take the dense broadphase never has them. */
+export function sweepStores(F: FixedContactState): void {
+  const cap = F.mass.length
+  if (F.inOrd.length >= cap) return
+  F.inOrd = grownTo(F.inOrd, cap)
+  F.posOf = grownTo(F.posOf, cap)
+  F.reachOf = grownTo(F.reachOf, cap)
+  F.packMark = grownTo(F.packMark, cap)
+  F.nearMark = grownTo(F.nearMark, cap)
+  F.packAt = grownTo(F.packAt, cap)
+}
+
+/** A fresh stamp for packMark and nearMark (cleared when the stamps wrap). */
+export function nextMark(F: FixedContactState): number {
+  if (F.markStamp === 0xffffffff) {
+    F.packMark.fill(0)
+    F.nearMark.fill(0)
+    F.markStamp = 0
+  }
+  return ++F.markStamp
+}
+
+/** List `list` with eid at index `count`: the same array, or a copy twice as long when it is full. */
+export function pushListed(list: Uint32Array, count: number, eid: number): Uint32Array {
+  const out = count === list.length ? grownTo(list, 2 * count) : list
+  out[count] = eid
+  return out
+}
+
+/** Makes room in the ordered sweep arrays for n balls (keeping their contents). */
+export function reserveOrd(F: FixedContactState, n: number): void {
+  if (F.ord.length >= n) return
+  let len = F.ord.length
+  while (len < n) len *= 2
+  F.ord = grownTo(F.ord, len)
+  F.okey = grownTo(F.okey, len)
+}
+
+/** Makes room in the sort scratch for n keys (contents not kept). */
+export function reserveSort(F: FixedContactState, n: number): void {
+  if (F.perm.length >= n) return
+  let len = F.perm.length
+  while (len < n) len *= 2
+  F.key1 = new Float64Array(len)
+  F.key2 = new Float64Array(len)
+  F.perm = new Int32Array(len)
+  F.permTmp = new Int32Array(len)
 }
 
 /** Appends ball eid to the candidate ids (F.n counts them); the other candidate arrays follow in reserveCandidates. */
@@ -210,6 +353,11 @@ export function pushCandidate(F: FixedContactState, eid: number): void {
 
 /** Makes room in every per-candidate array (keeping their contents) for n candidates. */
 export function reserveCandidates(F: FixedContactState, n: number): void {
+  if (F.id.length < n) {
+    let len = F.id.length
+    while (len < n) len *= 2
+    F.id = grownTo(F.id, len)
+  }
   if (F.x.length >= n) return
   let len = F.x.length
   while (len < n) len *= 2
@@ -234,7 +382,7 @@ export function reserveCandidates(F: FixedContactState, n: number): void {
   F.hit = grownTo(F.hit, len)
 }
 
-function grownTo<T extends Float64Array | Int32Array | Uint8Array>(a: T, n: number): T {
+function grownTo<T extends Float64Array | Int32Array | Uint8Array | Uint32Array>(a: T, n: number): T {
   const next = new (a.constructor as new (n: number) => T)(n)
   next.set(a)
   return next
