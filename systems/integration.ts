@@ -113,8 +113,14 @@ function orderedIntegration(w: BallWorld): void {
       C.step = 1
     }
     if (tEnd > C.until) {
-      const ahead = C.now + w.config.PREDICTION_HORIZON
+      // a window whose balls were predicted again more than CHURN times each on average (a pile, whose
+      // paths change many times a step) gains nothing from its length and pays for longer capsules: the
+      // next one ends with the step
+      const churn = C.predictions - C.windowPredictions > CHURN * (C.windowBalls + 1)
+      const ahead = C.now + (churn ? 0 : w.config.PREDICTION_HORIZON)
       beginWindow(w, ahead > tEnd ? ahead : tEnd)
+      C.windowPredictions = C.predictions
+      C.windowBalls = w.moving.count
       const balls = w.moving.dense
       for (let i = 0, n = w.moving.count; i < n; i++) predictBall(w, balls[i]!)
     }
@@ -161,6 +167,9 @@ function orderedIntegration(w: BallWorld): void {
   }
   C.now = tEnd
 }
+
+/** Predictions per moving ball in a window above which the next window ends with its step. */
+const CHURN = 4
 
 /** Predicts again the balls whose paths changed since they were last predicted (their old entries go stale). */
 function predictChanged(w: BallWorld): void {

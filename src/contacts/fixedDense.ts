@@ -148,17 +148,12 @@ function close(F: FixedContactState, i: number, j: number): boolean {
 }
 
 /**
- * Pairs every two candidates that can touch within the tick. The small candidates are counting-sorted
- * into a dense grid over their bounding box (at most 4n + 64 cells: the cell grows for a sparse scene),
- * each cell is paired with itself and four neighbours ahead of it, and the big candidates scan the cells
- * in their reach. Deterministic order: cells in row order, candidates by index within a cell.
+ * The dense grid's shape for n candidates over their bounding box (F.minX … F.maxY): its cell, F.cell or
+ * the side that holds one candidate on average if that is wider, grown until the grid has at most 4n + 64
+ * cells (F.gridCell), and its columns and rows (F.cols, F.rows). Both broadphases take the pairs in this
+ * grid's order (src/contacts/fixedOrder.ts), so both call this.
  */
-export function findPairsDense(F: FixedContactState): void {
-  const n = F.n
-  const half = F.cell / 2
-  F.pairCount = 0
-  F.bigCount = 0
-  // the bounding box of every candidate (the big ones included: a box a little larger at most)
+export function gridShape(F: FixedContactState, n: number): void {
   const minX = F.minX
   const minY = F.minY
   const maxX = F.maxX
@@ -180,6 +175,29 @@ export function findPairsDense(F: FixedContactState): void {
       cell *= Math.sqrt((cols * rows) / most) * 1.001
     }
   }
+  F.gridCell = cell
+  F.cols = cols
+  F.rows = rows
+}
+
+/**
+ * Pairs every two candidates that can touch within the tick. The small candidates are counting-sorted
+ * into a dense grid over their bounding box (at most 4n + 64 cells: the cell grows for a sparse scene),
+ * each cell is paired with itself and four neighbours ahead of it, and the big candidates scan the cells
+ * in their reach. Deterministic order: cells in row order, candidates by index within a cell.
+ */
+export function findPairsDense(F: FixedContactState): void {
+  const n = F.n
+  const half = F.cell / 2
+  F.pairCount = 0
+  F.bigCount = 0
+  // the bounding box of every candidate (the big ones included: a box a little larger at most)
+  const minX = F.minX
+  const minY = F.minY
+  gridShape(F, n)
+  const cell = F.gridCell
+  const cols = F.cols
+  const rows = F.rows
   const cells = cols * rows
   const start = reserveCells(F, cells)
   start.fill(0, 0, cells + 1)

@@ -12,6 +12,7 @@
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
+import { gridShape } from './fixedDense.js'
 import { radixSort, sortByKeys, sweepPairs } from './fixedSweep.js'
 
 /** Finds the tick's pairs (F.pairA, F.pairB, F.pairCount, in solve order) and packs their balls. */
@@ -19,35 +20,9 @@ export function findPairs(w: BallWorld, F: FixedContactState): void {
   sweepPairs(w, F)
   F.pairCount = 0
   if (F.peCount === 0) return
-  orderGrid(F)
+  gridShape(F, F.full)
   pack(w, F)
   orderPairs(F)
-}
-
-/** The ordering grid: its cell, columns and rows (from F.cell, the candidates' count and bounding box). */
-function orderGrid(F: FixedContactState): void {
-  const n = F.full
-  const minX = F.minX
-  const minY = F.minY
-  const maxX = F.maxX
-  const maxY = F.maxY
-  let cell = F.cell
-  let cols = 1
-  let rows = 1
-  // about one ball a cell at least
-  const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / n)
-  if (even > cell) cell = even
-  const most = 4 * n + 64
-  for (;;) {
-    cols = Math.floor((maxX - minX) / cell) + 1
-    rows = Math.floor((maxY - minY) / cell) + 1
-    if (cols * rows <= most) break
-    // a sparse scene: coarser cells; again while a long thin box (one row or column) still has too many
-    cell *= Math.sqrt((cols * rows) / most) * 1.001
-  }
-  F.gridCell = cell
-  F.cols = cols
-  F.rows = rows
 }
 
 /** The ordering grid's column of x (clamped to the grid). */

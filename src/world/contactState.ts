@@ -117,6 +117,9 @@ export interface CollisionState {
   contacts: number
   /** predictions of a moving ball's contacts since the world was made (a window's build predicts every moving ball) */
   predictions: number
+  /** `predictions` and the moving balls when the current window was built (for the next window's length) */
+  windowPredictions: number
+  windowBalls: number
 }
 
 export function createCollisionState(capacity: number, ballRadius: number): CollisionState {
@@ -182,6 +185,8 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     now: 0,
     contacts: 0,
     predictions: 0,
+    windowPredictions: 0,
+    windowBalls: 0,
   }
 }
 
