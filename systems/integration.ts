@@ -176,7 +176,7 @@ function predictChanged(w: BallWorld): void {
   const C = w.collide!
   for (let i = 0; i < C.dirtyCount; i++) {
     const eid = C.dirty[i]!
-    if (C.isDirty[eid] === 0 || w.Ball.live[eid] !== 1) continue
+    if (C.isDirty[eid] === 0) continue
     bumpVersion(w, eid)
     predictBall(w, eid)
   }

@@ -39,7 +39,7 @@ export const MAX_SEARCH_STEPS = 512
 /** Bookkeeping events (exits, near misses) one ball may take in one pass of the integration system, each consuming a hole ahead. */
 export const MAX_INLINE_EVENTS = 1 << 16
 
-/** Below this many holes the planner scans them all (no grid to keep); from it on, it walks the hole grid. */
+/** Below this many holes the planner scans them all (no grid to keep), and so does the overlap check of a hole being added; from it on, they use the hole grid and the holes by cell. */
 export const GRID_MIN_HOLES = 32
 
 /** Largest number of cells the hole grid may have; a sparser grid is made coarser to stay under it. */

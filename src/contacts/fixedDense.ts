@@ -9,10 +9,10 @@
 // candidate on average (at most 4n + 64 cells). Work per tick: O(ball ids in use (a scan of the mode
 // bytes) + grid cells + pairs + big·(balls in reach, at most all) + big²).
 import { BallMode } from '../../components/Ball.js'
-import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import { TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
-import { markWall, readWalls, seedResting } from './fixedGrid.js'
+import { markWall, readWalls, seedAround, seedOverlapping, seedTouched } from './fixedGrid.js'
 
 /**
  * Gathers the candidates of a dense tick: the moving balls in id order, then the resting balls within reach of
@@ -105,23 +105,11 @@ function gatherRestingDense(w: BallWorld, F: FixedContactState): void {
     F.touchedCount = 0
     return
   }
-  for (let k = 0; k < moving; k++) {
-    const eid = F.id[k]!
-    const vx = B.vx[eid]!
-    const vy = B.vy[eid]!
-    seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP)
-  }
-  for (let k = 0; k < F.touchedCount; k++) {
-    const eid = F.touched[k]!
-    if (B.live[eid] === 1 && B.mode[eid] === BallMode.Resting) seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + TOUCH_GAP)
-  }
+  for (let k = 0; k < moving; k++) seedAround(w, F, F.id[k]!)
+  seedTouched(w, F)
   F.touchedCount = 0
-  // and every resting ball that overlaps a resting candidate, transitively: the projection sees the whole
-  // overlapping cluster at once (a push crosses a jammed pile in one tick, not one ball a tick)
-  for (let k = moving; k < F.n; k++) {
-    const eid = F.id[k]!
-    seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! - PROJECTION_SLOP)
-  }
+  // and every resting ball that overlaps a resting candidate, transitively
+  seedOverlapping(w, F, moving)
   // ids in ascending order, whatever order the grid gave them in (the same candidates in the same order
   // at every frame rate)
   const ids = F.id

@@ -329,21 +329,37 @@ function orderCell(w: BallWorld, F: FixedContactState, n: number): number {
  * and every resting ball that overlaps one of those, transitively, into F.id (F.n of them; marked seen).
  */
 function seedAll(w: BallWorld, F: FixedContactState): void {
-  const B = w.Ball
+  const from = F.n
   const dense = w.moving.dense
-  for (let i = 0; i < w.moving.count; i++) {
-    const eid = dense[i]!
-    const vx = B.vx[eid]!
-    const vy = B.vy[eid]!
-    seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP)
-  }
+  for (let i = 0; i < w.moving.count; i++) seedAround(w, F, dense[i]!)
+  seedTouched(w, F)
+  seedOverlapping(w, F, from)
+}
+
+/** Adds the resting balls moving ball eid can reach within the tick (its radius plus a tick's travel). */
+export function seedAround(w: BallWorld, F: FixedContactState, eid: number): void {
+  const B = w.Ball
+  const vx = B.vx[eid]!
+  const vy = B.vy[eid]!
+  seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP)
+}
+
+/** Adds the resting balls touching a resting ball the last tick's projection moved (F.touched). */
+export function seedTouched(w: BallWorld, F: FixedContactState): void {
+  const B = w.Ball
   for (let k = 0; k < F.touchedCount; k++) {
     const eid = F.touched[k]!
     if (B.live[eid] === 1 && B.mode[eid] === BallMode.Resting) seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + TOUCH_GAP)
   }
-  // the projection sees the whole overlapping cluster at once (a push crosses a jammed pile in one tick,
-  // not one ball a tick)
-  for (let k = 0; k < F.n; k++) {
+}
+
+/**
+ * Adds every resting ball overlapping a resting candidate from F.id[from] on, transitively: the projection
+ * sees the whole overlapping cluster at once (a push crosses a jammed pile in one tick, not a ball a tick).
+ */
+export function seedOverlapping(w: BallWorld, F: FixedContactState, from: number): void {
+  const B = w.Ball
+  for (let k = from; k < F.n; k++) {
     const eid = F.id[k]!
     seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! - PROJECTION_SLOP)
   }

@@ -13,6 +13,7 @@
 //   flight is integrated like everything else (RK4 is exact on a parabola);
 // - the roll that cannot let go (N < 0 while the free path would cut into the lip) is kept on the lip by
 //   its own rule: the ball leaves only when its free path stays clear of the lip for LOOK_AHEAD.
+import type { ReferenceInput } from '../reference/types.js'
 import { STATE_SIZE, energy, flightDerivative, lipDerivative, lipGap, lipGapRate, projectOntoLip, type SphereLip } from './independentSphere.js'
 
 /** RK4 step, in units of √(r/g) (1/200: halving it changes no cell of the game's map; docs/physical.md). */
@@ -24,14 +25,8 @@ export const MAX_TIME = 2000
 /** Runs that have not decided after this many rolls and flights stop and count as escapes. */
 export const MAX_PHASES = 2000
 
-export interface IndependentInput {
-  delta: number
-  speed: number
-  holeRadius: number
-  ballRadius: number
-  gravity: number
-  inertia: number
-}
+/** The same input as the reference's (only the type is shared: none of the reference's code). */
+export type IndependentInput = ReferenceInput
 
 export interface IndependentOptions {
   /** RK4 step in √(r/g) (default INDEPENDENT_STEP) */

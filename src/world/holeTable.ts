@@ -1,6 +1,7 @@
 // The holes packed for the planner's scan: x, y, R per hole and the entity ids, in the order they were
 // added (events at equal distances are ordered by hole id, so the order here never decides an outcome).
 import type { BallWorld } from './createWorld.js'
+import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { buildHoleGrid } from './holeGrid.js'
 
 /** Holes packed for the planner's scan: x, y, R per hole, and the entity ids in the same order. */
@@ -20,9 +21,6 @@ export interface HoleCells {
   /** the largest lip radius among the holes put in (a lookup widens by it), px */
   maxR: number
 }
-
-/** Below this many holes an overlap check scans them all. */
-const SCAN_BELOW = 32
 
 export function createHoleTable(): HoleTable {
   return { count: 0, xyr: new Float64Array(3 * 16), ids: new Uint32Array(16) }
@@ -130,7 +128,7 @@ export function holeAt(world: BallWorld, x: number, y: number): number {
  */
 export function overlappingHole(world: BallWorld, x: number, y: number, radius: number): number {
   const t = world.holes
-  const cells = t.count < SCAN_BELOW ? null : cellsOf(world)
+  const cells = t.count < GRID_MIN_HOLES ? null : cellsOf(world)
   const reach = cells === null ? 0 : radius + cells.maxR
   const c = cells === null ? 1 : cells.cell
   const cx0 = Math.floor((x - reach) / c)
