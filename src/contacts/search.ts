@@ -2,6 +2,7 @@
 // their closed-form motions (no step can pass a contact, at any dt).
 import { APPROACH_EPSILON, GAP_TOLERANCE, MAX_SEARCH_STEPS, MIN_ADVANCE, SETTLE_FLOOR } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
+import { BallMode } from '../../components/Ball.js'
 import { ACC, AT, AX, AY, E, EXACT, NEXT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 
 export const SearchResult = { None: 0, Contact: 1, Resume: 2 } as const
@@ -19,6 +20,11 @@ export const TIME = 1
 export function searchContact(w: BallWorld, a: number, b: number, from: number, to: number): void {
   search[RESULT] = SearchResult.None
   if (!(from <= to)) return
+  const mode = w.Ball.mode
+  if (mode[a] !== BallMode.RimRoll && mode[b] !== BallMode.RimRoll) {
+    searchStraight(w, a, b, from, to)
+    return
+  }
   const S = w.Ball.radius[a]! + w.Ball.radius[b]!
   const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
   let t = from
@@ -76,6 +82,140 @@ export function searchContact(w: BallWorld, a: number, b: number, from: number, 
     if (pieceEnd > t && next > pieceEnd) next = pieceEnd
     if (next > to) return
     if (!(next > t)) next = t + MIN_ADVANCE // h below the time resolution at t
+    t = next
+  }
+  search[RESULT] = SearchResult.Resume
+  search[TIME] = t
+}
+
+/** the constants of a ball on a straight path or at rest, read once per search: x0, y0, ux, uy, v0, t0 */
+const K = new Float64Array(12)
+
+function loadStraight(w: BallWorld, eid: number, o: number): void {
+  if (w.Ball.mode[eid] === BallMode.Resting) {
+    K[o] = w.Ball.x[eid]!
+    K[o + 1] = w.Ball.y[eid]!
+    K[o + 2] = NaN // marks a ball at rest
+    return
+  }
+  const P = w.Path
+  K[o] = P.x0[eid]!
+  K[o + 1] = P.y0[eid]!
+  K[o + 2] = P.ux[eid]!
+  K[o + 3] = P.uy[eid]!
+  K[o + 4] = P.v0[eid]!
+  K[o + 5] = P.t0[eid]!
+}
+
+/**
+ * searchContact for two balls neither of which is on a rim (the common case): the same steps, with each
+ * ball's state computed in place from its path's constants, term for term as evalBall computes it.
+ */
+function searchStraight(w: BallWorld, a: number, b: number, from: number, to: number): void {
+  const S = w.Ball.radius[a]! + w.Ball.radius[b]!
+  const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
+  const decel = w.config.ROLLING_DECEL
+  loadStraight(w, a, 0)
+  loadStraight(w, b, 6)
+  const restA = K[2] !== K[2]
+  const restB = K[8] !== K[8]
+  let t = from
+  for (let iter = 0; iter < MAX_SEARCH_STEPS; iter++) {
+    let xa: number, ya: number, vxa: number, vya: number, axa: number, aya: number, na: number
+    if (restA) {
+      xa = K[0]!
+      ya = K[1]!
+      vxa = vya = axa = aya = 0
+      na = Infinity
+    } else {
+      const v0 = K[4]!
+      const t0 = K[5]!
+      let tau = t - t0
+      if (tau < 0) tau = 0
+      let moving = v0 > 0
+      if (decel > 0 && tau * decel > v0) {
+        tau = v0 / decel
+        moving = false
+      }
+      const d = v0 * tau - 0.5 * decel * tau * tau
+      const v = v0 - decel * tau
+      const ux = K[2]!
+      const uy = K[3]!
+      xa = K[0]! + ux * d
+      ya = K[1]! + uy * d
+      vxa = ux * v
+      vya = uy * v
+      if (moving && decel > 0) {
+        axa = -decel * ux
+        aya = -decel * uy
+        na = t0 + v0 / decel
+      } else {
+        axa = aya = 0
+        na = Infinity
+      }
+    }
+    let xb: number, yb: number, vxb: number, vyb: number, axb: number, ayb: number, nb: number
+    if (restB) {
+      xb = K[6]!
+      yb = K[7]!
+      vxb = vyb = axb = ayb = 0
+      nb = Infinity
+    } else {
+      const v0 = K[10]!
+      const t0 = K[11]!
+      let tau = t - t0
+      if (tau < 0) tau = 0
+      let moving = v0 > 0
+      if (decel > 0 && tau * decel > v0) {
+        tau = v0 / decel
+        moving = false
+      }
+      const d = v0 * tau - 0.5 * decel * tau * tau
+      const v = v0 - decel * tau
+      const ux = K[8]!
+      const uy = K[9]!
+      xb = K[6]! + ux * d
+      yb = K[7]! + uy * d
+      vxb = ux * v
+      vyb = uy * v
+      if (moving && decel > 0) {
+        axb = -decel * ux
+        ayb = -decel * uy
+        nb = t0 + v0 / decel
+      } else {
+        axb = ayb = 0
+        nb = Infinity
+      }
+    }
+    const dx = xb - xa
+    const dy = yb - ya
+    const dvx = vxb - vxa
+    const dvy = vyb - vya
+    const dist = Math.sqrt(dx * dx + dy * dy)
+    const g = dist - S
+    const vrel = Math.sqrt(dvx * dvx + dvy * dvy)
+    const vn = dist > 0 ? (dx * dvx + dy * dvy) / dist : -vrel
+    if (g <= GAP_TOLERANCE && vn < -(floor + APPROACH_EPSILON * (1 + vrel))) {
+      search[RESULT] = SearchResult.Contact
+      search[TIME] = t
+      return
+    }
+    // both accelerations exact and piecewise constant (as in searchContact)
+    const rx = axb - axa
+    const ry = ayb - aya
+    const A = Math.sqrt(rx * rx + ry * ry)
+    const pieceEnd = na < nb ? na : nb
+    const gg = g > 0 ? g : 0
+    let h: number
+    if (vn < 0) h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
+    else {
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
+      if (h < MIN_ADVANCE) h = MIN_ADVANCE
+    }
+    let next = t + h
+    if (pieceEnd > t && next > pieceEnd) next = pieceEnd
+    if (next > to) return
+    if (!(next > t)) next = t + MIN_ADVANCE
     t = next
   }
   search[RESULT] = SearchResult.Resume
