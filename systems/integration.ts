@@ -11,6 +11,7 @@
 // Reads Path, RimContact, Hole; writes Ball (x, y, vx, vy), Path (speed, s, mark), RimContact (angle, arc).
 import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
+import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, pushEvent } from '../src/events.js'
 import { planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
@@ -212,8 +213,11 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
     }
     const kind = P.nextKind[eid]!
     const hole = P.nextHole[eid]!
-    if (kind === PathEvent.RollEnd) sampleRimRoll(w, eid, t)
-    else {
+    if (kind === PathEvent.RollEnd) {
+      // (a tabulated ride that drops in is not sampled at its end: the capture puts the ball at the hole's
+      // centre, at rest, and gives its RimContact row back before anything reads them)
+      if (w.RimContact.ride[w.Ball.rim[eid]!] !== RIDE_DROPS) sampleRimRoll(w, eid, t)
+    } else {
       sampleAtDistance(w, eid, P.nextS[eid]!)
       P.s[eid] = P.nextS[eid]!
       P.sHole[eid] = hole

@@ -155,7 +155,10 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
   RC.time0[slot] = t
   RC.speed0[slot] = v
   setBallMode(w, eid, BallMode.RimRoll)
-  sampleRimRoll(w, eid, t)
+  // the ride is not sampled at its start without ball-ball contacts: nothing reads the ball's state before
+  // the next pass's integration samples the ride again (at its end or the step's, or the pause when the
+  // passes run out); a sine and a cosine fewer per ride. With contacts the launcher and the predictions may.
+  if (w.collide !== null || w.fixed !== null) sampleRimRoll(w, eid, t)
   planRimRoll(w, eid)
   emitHoleEvent(w, EventType.RimRoll, eid, hole, t)
 }
