@@ -20,6 +20,7 @@ import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId } from '../src/world/idLists.js'
+import { HOT, H_NEXT_T, H_RIM, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
@@ -30,27 +31,27 @@ export function integrationSystem(w: BallWorld): void {
     return
   }
   const tEnd = w.tickEnd
-  const P = w.Path
-  const nextT = P.nextT
   const mode = w.Ball.mode
   if (w.pass === 0) {
     w.marked.count = 0
-    // from the end: a ball that stops or falls in is swapped out of the set behind the cursor
+    // from the end: a ball that stops or falls in is swapped out of the set behind the cursor. The path's
+    // fields are read from its row in world.pathHot (src/world/pathHot.ts: one cache line a ball)
     const balls = w.moving.dense
     const B = w.Ball
     const { x, y, vx, vy } = B
-    const { x0, y0, ux, uy, v0, t0 } = P
+    const H = w.pathHot
     const decel = w.config.ROLLING_DECEL
     if (decel === 0) {
       // without rolling deceleration a ball's velocity is its path's, ux·v0, written when the path began:
       // only the position moves (the same bits as the general form below: d = v0·τ, x = x0 + ux·d)
       for (let i = w.moving.count - 1; i >= 0; i--) {
         const eid = balls[i]!
-        if (nextT[eid]! > tEnd) {
-          if (mode[eid] === BallMode.Rolling) {
-            const d = v0[eid]! * (tEnd - t0[eid]!)
-            x[eid] = x0[eid]! + ux[eid]! * d
-            y[eid] = y0[eid]! + uy[eid]! * d
+        const h = eid * HOT
+        if (H[h + H_NEXT_T]! > tEnd) {
+          if (H[h + H_RIM] === 0) {
+            const d = H[h + H_V0]! * (tEnd - H[h + H_T0]!)
+            x[eid] = H[h + H_X0]! + H[h + H_UX]! * d
+            y[eid] = H[h + H_Y0]! + H[h + H_UY]! * d
           } else sampleRimRoll(w, eid, tEnd)
           continue
         }
@@ -60,18 +61,19 @@ export function integrationSystem(w: BallWorld): void {
     }
     for (let i = w.moving.count - 1; i >= 0; i--) {
       const eid = balls[i]!
-      if (nextT[eid]! > tEnd) {
-        if (mode[eid] === BallMode.Rolling) {
+      const h = eid * HOT
+      if (H[h + H_NEXT_T]! > tEnd) {
+        if (H[h + H_RIM] === 0) {
           // the common case, inlined: no event this step, evaluate the path at the step's end
-          const v = v0[eid]!
-          let tau = tEnd - t0[eid]!
+          const v = H[h + H_V0]!
+          let tau = tEnd - H[h + H_T0]!
           if (decel > 0 && tau * decel > v) tau = v / decel
           const d = v * tau - 0.5 * decel * tau * tau
           const vNow = v - decel * tau
-          const dx = ux[eid]!
-          const dy = uy[eid]!
-          x[eid] = x0[eid]! + dx * d
-          y[eid] = y0[eid]! + dy * d
+          const dx = H[h + H_UX]!
+          const dy = H[h + H_UY]!
+          x[eid] = H[h + H_X0]! + dx * d
+          y[eid] = H[h + H_Y0]! + dy * d
           vx[eid] = dx * vNow
           vy[eid] = dy * vNow
         } else {
@@ -197,7 +199,7 @@ function markContact(w: BallWorld, eid: number, other: number, t: number): void 
   sampleForContact(w, eid, t)
   P.mark[eid] = PathEvent.Collide
   P.markOther[eid] = other
-  P.nextT[eid] = t
+  setNextT(w, eid, t)
   pushId(w.marked, eid)
 }
 

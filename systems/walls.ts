@@ -13,6 +13,7 @@ import { releaseRim } from '../src/world/rimSlots.js'
 import { removeMoving } from '../src/world/idLists.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { setBallMode } from '../src/world/ballMode.js'
+import { setNextT } from '../src/world/pathHot.js'
 
 export function wallsSystem(w: BallWorld): void {
   if (w.walls === 0) return
@@ -51,7 +52,7 @@ export function wallsSystem(w: BallWorld): void {
       B.vx[eid] = 0
       B.vy[eid] = 0
       P.speed[eid] = 0
-      P.nextT[eid] = NEVER
+      setNextT(w, eid, NEVER)
       P.nextKind[eid] = PathEvent.None
       releaseRim(w, eid)
       removeMoving(w, eid)

@@ -21,6 +21,7 @@ import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimTableFor } from '../reference/rimTables.js'
 import { checkWorld } from './validate.js'
+import { rebuildPathHot } from '../world/pathHot.js'
 import { checksum, configText, kindOf, readValue, Reader, SnapshotError, writeValue, Writer } from './snapshotCodec.js'
 
 /** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps). */
@@ -29,7 +30,7 @@ export const SNAPSHOT_VERSION = 2
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 
 /** World fields kept out of the walked body (see the top of this file) */
-const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells'])
+const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells', 'pathHot'])
 
 /** Component membership bits, per entity */
 const BALL = 1
@@ -277,4 +278,5 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   w.rimTables.length = 0
   for (const t of tables) w.rimTables.push(t)
   for (const k of keys) apply(w as unknown as Record<string, unknown>, k, d.fields[k])
+  rebuildPathHot(w)
 }

@@ -10,6 +10,7 @@ import { dropPredictions } from '../world/contactState.js'
 import { sampleRimRoll } from './rimRoll.js'
 import { sampleRolling } from './rolling.js'
 import { timeToDistance } from '../geometry.js'
+import { setNextT, setPathT0 } from '../world/pathHot.js'
 
 /** Shifts a moving ball's current motion `delta` seconds later (its path, its rim roll, its next event). */
 export function delayMotion(w: BallWorld, eid: number, delta: number): void {
@@ -18,9 +19,9 @@ export function delayMotion(w: BallWorld, eid: number, delta: number): void {
   if (mode === BallMode.RimRoll) {
     w.RimContact.time0[w.Ball.rim[eid]!]! += delta
   } else if (mode === BallMode.Rolling) {
-    P.t0[eid]! += delta
+    setPathT0(w, eid, P.t0[eid]! + delta)
   } else return
-  P.nextT[eid]! += delta
+  setNextT(w, eid, P.nextT[eid]! + delta)
 }
 
 /** The time a moving ball's stored state is at: its last event on the current path (or rim roll). */

@@ -11,6 +11,7 @@ import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } fr
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
+import { setNextT, setPathStart } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
 import { hypot } from '../math.js'
 
@@ -19,14 +20,9 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   const P = w.Path
   const B = w.Ball
   const speed = hypot(vx, vy)
-  P.x0[eid] = x
-  P.y0[eid] = y
-  P.t0[eid] = t
-  P.v0[eid] = speed
   const ux = speed > 0 ? vx / speed : 0
   const uy = speed > 0 ? vy / speed : 0
-  P.ux[eid] = ux
-  P.uy[eid] = uy
+  setPathStart(w, eid, x, y, ux, uy, speed, t)
   P.speed[eid] = speed
   P.s[eid] = 0
   P.sHole[eid] = 0
@@ -206,10 +202,10 @@ export function planRolling(w: BallWorld, eid: number): void {
   P.nextEdge[eid] = bestKind === PathEvent.Wall || bestKind === PathEvent.Gutter ? bestEdge : 0
   if (bestKind === PathEvent.None) {
     P.nextS[eid] = 0
-    P.nextT[eid] = NEVER
+    setNextT(w, eid, NEVER)
   } else {
     P.nextS[eid] = Q.best
-    P.nextT[eid] = t
+    setNextT(w, eid, t)
   }
 }
 
