@@ -20,7 +20,7 @@ import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId } from '../src/world/idLists.js'
-import { HOT, H_NEXT_T, H_RIM, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
+import { setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
@@ -35,7 +35,8 @@ export function integrationSystem(w: BallWorld): void {
   if (w.pass === 0) {
     w.marked.count = 0
     // from the end: a ball that stops or falls in is swapped out of the set behind the cursor. The path's
-    // fields are read from its row in world.pathHot (src/world/pathHot.ts: one cache line a ball)
+    // fields are read from its row in world.pathHot (src/world/pathHot.ts: one cache line a ball; the offsets are
+    // written out as numbers, which V8 folds into the loads: x0, y0, ux, uy, v0, t0, nextT, rim flag)
     const balls = w.moving.dense
     const B = w.Ball
     const { x, y, vx, vy } = B
@@ -46,12 +47,12 @@ export function integrationSystem(w: BallWorld): void {
       // only the position moves (the same bits as the general form below: d = v0·τ, x = x0 + ux·d)
       for (let i = w.moving.count - 1; i >= 0; i--) {
         const eid = balls[i]!
-        const h = eid * HOT
-        if (H[h + H_NEXT_T]! > tEnd) {
-          if (H[h + H_RIM] === 0) {
-            const d = H[h + H_V0]! * (tEnd - H[h + H_T0]!)
-            x[eid] = H[h + H_X0]! + H[h + H_UX]! * d
-            y[eid] = H[h + H_Y0]! + H[h + H_UY]! * d
+        const h = eid << 3
+        if (H[h + 6]! > tEnd) {
+          if (H[h + 7] === 0) {
+            const d = H[h + 4]! * (tEnd - H[h + 5]!)
+            x[eid] = H[h]! + H[h + 2]! * d
+            y[eid] = H[h + 1]! + H[h + 3]! * d
           } else sampleRimRoll(w, eid, tEnd)
           continue
         }
@@ -61,19 +62,19 @@ export function integrationSystem(w: BallWorld): void {
     }
     for (let i = w.moving.count - 1; i >= 0; i--) {
       const eid = balls[i]!
-      const h = eid * HOT
-      if (H[h + H_NEXT_T]! > tEnd) {
-        if (H[h + H_RIM] === 0) {
+      const h = eid << 3
+      if (H[h + 6]! > tEnd) {
+        if (H[h + 7] === 0) {
           // the common case, inlined: no event this step, evaluate the path at the step's end
-          const v = H[h + H_V0]!
-          let tau = tEnd - H[h + H_T0]!
+          const v = H[h + 4]!
+          let tau = tEnd - H[h + 5]!
           if (decel > 0 && tau * decel > v) tau = v / decel
           const d = v * tau - 0.5 * decel * tau * tau
           const vNow = v - decel * tau
-          const dx = H[h + H_UX]!
-          const dy = H[h + H_UY]!
-          x[eid] = H[h + H_X0]! + dx * d
-          y[eid] = H[h + H_Y0]! + dy * d
+          const dx = H[h + 2]!
+          const dy = H[h + 3]!
+          x[eid] = H[h]! + dx * d
+          y[eid] = H[h + 1]! + dy * d
           vx[eid] = dx * vNow
           vy[eid] = dy * vNow
         } else {
