@@ -20,7 +20,7 @@ import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId } from '../src/world/idLists.js'
-import { setNextT } from '../src/world/pathHot.js'
+import { HOT, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
@@ -206,8 +206,9 @@ function markContact(w: BallWorld, eid: number, other: number, t: number): void 
 
 function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
   const P = w.Path
+  const H = w.pathHot
   for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {
-    const t = P.nextT[eid]!
+    const t = H[eid * HOT + H_NEXT_T]!
     if (t > tEnd) {
       if (w.Ball.mode[eid] === BallMode.RimRoll) sampleRimRoll(w, eid, tEnd)
       else sampleRolling(w, eid, tEnd)
@@ -227,7 +228,8 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
       continue
     }
     if (kind === PathEvent.Near) {
-      const c = (w.Hole.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (w.Hole.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+      const h = eid * HOT
+      const c = (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
       pushEvent(w.events, EventType.NearMiss, eid, hole, t, true, Math.abs(c), P.speed[eid]!)
       planRolling(w, eid)
       continue
