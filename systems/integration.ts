@@ -20,7 +20,7 @@ import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId } from '../src/world/idLists.js'
-import { HOT, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
@@ -36,7 +36,7 @@ export function integrationSystem(w: BallWorld): void {
     w.marked.count = 0
     // from the end: a ball that stops or falls in is swapped out of the set behind the cursor. The path's
     // fields are read from its row in world.pathHot (src/world/pathHot.ts: one cache line a ball; the offsets are
-    // written out as numbers, which V8 folds into the loads: x0, y0, ux, uy, v0, t0, nextT, rim flag)
+    // written out as numbers, which V8 folds into the loads: x0, y0, ux, uy, v0, t0, nextT, nextS)
     const balls = w.moving.dense
     const B = w.Ball
     const { x, y, vx, vy } = B
@@ -49,7 +49,7 @@ export function integrationSystem(w: BallWorld): void {
         const eid = balls[i]!
         const h = eid << 3
         if (H[h + 6]! > tEnd) {
-          if (H[h + 7] === 0) {
+          if (mode[eid] === BallMode.Rolling) {
             const d = H[h + 4]! * (tEnd - H[h + 5]!)
             x[eid] = H[h]! + H[h + 2]! * d
             y[eid] = H[h + 1]! + H[h + 3]! * d
@@ -64,7 +64,7 @@ export function integrationSystem(w: BallWorld): void {
       const eid = balls[i]!
       const h = eid << 3
       if (H[h + 6]! > tEnd) {
-        if (H[h + 7] === 0) {
+        if (mode[eid] === BallMode.Rolling) {
           // the common case, inlined: no event this step, evaluate the path at the step's end
           const v = H[h + 4]!
           let tau = tEnd - H[h + 5]!
@@ -218,8 +218,9 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
     const hole = P.nextHole[eid]!
     if (kind === PathEvent.RollEnd) sampleRimRoll(w, eid, t)
     else {
-      sampleAtDistance(w, eid, P.nextS[eid]!)
-      P.s[eid] = P.nextS[eid]!
+      const s = H[eid * HOT + H_NEXT_S]!
+      sampleAtDistance(w, eid, s)
+      P.s[eid] = s
       P.sHole[eid] = hole
     }
     if (kind === PathEvent.Exit) {

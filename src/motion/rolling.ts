@@ -11,7 +11,7 @@ import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } fr
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
-import { HOT, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setNextT, setPathStart } from '../world/pathHot.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setPathStart } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
 import { hypot } from '../math.js'
 
@@ -204,11 +204,11 @@ export function planRolling(w: BallWorld, eid: number): void {
   P.nextHole[eid] = bestKind === PathEvent.None ? 0 : bestHole
   P.nextEdge[eid] = bestKind === PathEvent.Wall || bestKind === PathEvent.Gutter ? bestEdge : 0
   if (bestKind === PathEvent.None) {
-    P.nextS[eid] = 0
-    setNextT(w, eid, NEVER)
+    H[h + H_NEXT_S] = 0
+    H[h + H_NEXT_T] = NEVER
   } else {
-    P.nextS[eid] = Q.best
-    setNextT(w, eid, t)
+    H[h + H_NEXT_S] = Q.best
+    H[h + H_NEXT_T] = t
   }
 }
 
@@ -217,8 +217,9 @@ export function planRolling(w: BallWorld, eid: number): void {
  * offset·(−uy, ux) from the centre; |offset| is the δ of a lip crossing.
  */
 export function pathOffset(w: BallWorld, eid: number, hole: number): number {
-  const P = w.Path
-  return (w.Hole.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (w.Hole.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+  const H = w.pathHot
+  const h = eid * HOT
+  return (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
 }
 
 /** Ball state at time t on its straight path (clamped at its stop). */

@@ -6,7 +6,6 @@
 import { addComponent, removeComponent } from 'bitecs'
 import { BallMode, type BallModeCode } from '../../components/Ball.js'
 import type { BallWorld } from './createWorld.js'
-import { setHotMode } from './pathHot.js'
 
 /** Sets a ball's mode, adding or removing its RimContact component when it starts or stops rolling on a rim. */
 export function setBallMode(world: BallWorld, eid: number, mode: BallModeCode): void {
@@ -14,7 +13,6 @@ export function setBallMode(world: BallWorld, eid: number, mode: BallModeCode): 
   const was = B.mode[eid]
   if (was === mode) return
   B.mode[eid] = mode
-  setHotMode(world, eid, mode)
   if (mode === BallMode.RimRoll) addComponent(world, eid, world.RimContact)
   else if (was === BallMode.RimRoll) removeComponent(world, eid, world.RimContact)
 }

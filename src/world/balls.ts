@@ -14,7 +14,7 @@ import { cutEvents } from '../events.js'
 import { NO_CONTACT, forgetPredictions } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
 import { removeMoving } from './idLists.js'
-import { clearPathHot, setHotMode } from './pathHot.js'
+import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
 
@@ -37,7 +37,6 @@ export function adoptBall(world: BallWorld, eid: number): void {
   B.live[eid] = 1
   B.radius[eid] = world.config.BALL_RADIUS
   B.mode[eid] = BallMode.Out
-  setHotMode(world, eid, BallMode.Out)
   const C = world.collide
   if (C !== null) {
     // a reused id starts with no contact history (its version is not reset: stale heap entries stay stale)

@@ -42,7 +42,7 @@ export interface BallWorldData {
   /** pooled: indexed by a ball's slot (Ball.rim), not by its id */
   RimContact: RimContactStore
   Path: PathStore
-  /** the path's hot fields interleaved, a copy kept by src/world/pathHot.ts (not in snapshots) */
+  /** each ball's path and next event's time and distance, one interleaved row an id (src/world/pathHot.ts) */
   pathHot: Float64Array
   Walls: WallsStore
   /** the entity carrying this world's Walls, 0 when the panel has none */
