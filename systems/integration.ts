@@ -48,7 +48,7 @@ export function integrationSystem(w: BallWorld): void {
       // only the position moves (the same bits as the general form below: d = v0·τ, x = x0 + ux·d)
       for (let i = w.moving.count - 1; i >= 0; i--) {
         const eid = balls[i]!
-        const h = eid << 3
+        const h = eid << 3 // ids stay below 2^28: the rows would pass 2 GiB first
         if (H[h + 6]! > tEnd) {
           if (mode[eid] === BallMode.Rolling) {
             const d = H[h + 4]! * (tEnd - H[h + 5]!)
