@@ -2,8 +2,8 @@
 // 400 × 400 panel (contacts off); every 10 steps the captured and stopped balls are removed and as many new
 // ones thrown in, so ids are recycled and the moving set churns. ns per ball-step: the median of steps
 // 200–599 (performance.now() around each step, the refill outside it), at 1,000, 10,000 and 100,000 balls,
-// twice in the same run: as the schedule runs it (the moving balls put back in id order once a quarter of
-// them have changed: src/world/idLists.ts, orderMoving), and with that ordering held off (the scattered
+// twice in the same run: as the schedule runs it (the moving balls put back in id order once a sixteenth
+// of them have changed: src/world/idLists.ts, orderMoving), and with that ordering held off (the scattered
 // order swap-removals and recycled ids leave). Prints and writes docs/results/dense.json; asserts nothing.
 //
 //   npm run bench:dense

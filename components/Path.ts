@@ -32,17 +32,9 @@ export const PathEvent = {
 } as const
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
 
+// The path itself (origin, direction, speed v0 and time t0 at the origin) and the next event's time and
+// distance live in the world's interleaved rows, world.pathHot (src/world/pathHot.ts); the rest is here.
 export const PathSchema = {
-  /** origin of the straight path, px */
-  x0: Float64Array,
-  y0: Float64Array,
-  /** unit direction */
-  ux: Float64Array,
-  uy: Float64Array,
-  /** speed at the origin, px/s */
-  v0: Float64Array,
-  /** time at the origin, s */
-  t0: Float64Array,
   /** speed at the ball's last event, from the closed form (so (δ, v) at an event is exact, not a hypot of components) */
   speed: Float64Array,
   /**
@@ -53,9 +45,7 @@ export const PathSchema = {
   sHole: Uint32Array,
   /** hole this path leaves after a bounce or a pop-off: its near miss is already reported */
   fromHole: Uint32Array,
-  /** time, distance, kind and hole of the next event on the current path */
-  nextT: Float64Array,
-  nextS: Float64Array,
+  /** kind and hole of the next event on the current path (its time and distance: world.pathHot) */
   nextKind: Uint8Array,
   nextHole: Uint32Array,
   /** the WallEdge bit of a Wall or Gutter event (0 for other kinds) */

@@ -47,6 +47,8 @@ export { RIM_MODE_NAMES, RimContactSchema, RimMode } from '../components/RimCont
 export type { RimContactStore, RimModeCode } from '../components/RimContact.js'
 export { PathEvent, PathSchema } from '../components/Path.js'
 export type { PathEventCode, PathStore } from '../components/Path.js'
+/** a ball's path and next event's time and distance: world.pathHot[eid * HOT + H_X0], and so on */
+export { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from './world/pathHot.js'
 export { WallEdge, WallsSchema } from '../components/Walls.js'
 export type { WallsStore } from '../components/Walls.js'
 

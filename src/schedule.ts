@@ -15,7 +15,7 @@ import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { orderMoving } from './world/idLists.js'
-import { MOVING_ORDER_MIN } from './config/tolerances.js'
+import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN } from './config/tolerances.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
@@ -75,7 +75,7 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
     // contacts off: each ball's path is its own, so the order the moving balls are walked in changes no
     // result, and walking them in id order keeps the per-ball arrays in cache
     const m = world.moving
-    if (world.collide === null && world.fixed === null && m.churn * 4 > m.count && m.count > MOVING_ORDER_MIN) orderMoving(world)
+    if (world.collide === null && world.fixed === null && m.churn * MOVING_ORDER_CHURN > m.count && m.count > MOVING_ORDER_MIN) orderMoving(world)
     runPasses(world, schedule, dt)
   } finally {
     world.stepping = false

@@ -10,6 +10,7 @@ import { emitHoleEvent } from '../src/motion/ballFate.js'
 import { planRolling, startPath } from '../src/motion/rolling.js'
 import { rimBounce } from '../src/geometry.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { hotNextT } from '../src/world/pathHot.js'
 import { hypot } from '../src/math.js'
 
 /** the bounced velocity, reused for every ball */
@@ -28,7 +29,7 @@ export function bounceSystem(w: BallWorld): void {
     if (P.mark[eid] !== PathEvent.Bounce) continue
     P.mark[eid] = PathEvent.None
     const hole = P.markHole[eid]!
-    const t = P.nextT[eid]!
+    const t = hotNextT(w, eid)
     const x = B.x[eid]!
     const y = B.y[eid]!
     const vx = B.vx[eid]!

@@ -10,6 +10,7 @@ import { CaptureVia } from '../src/events.js'
 import { capturesClean } from '../src/geometry.js'
 import { captureBall, restBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { hotNextT } from '../src/world/pathHot.js'
 
 export function captureSystem(w: BallWorld): void {
   const P = w.Path
@@ -25,13 +26,13 @@ export function captureSystem(w: BallWorld): void {
       const hole = P.markHole[eid]!
       if (capturesClean(RC.delta[rim]!, RC.speed[rim]!, w.Hole.radius[hole]!, vMax, shape)) {
         P.mark[eid] = PathEvent.None
-        captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Clean)
+        captureBall(w, eid, hole, hotNextT(w, eid), CaptureVia.Clean)
       }
     } else if (mark === PathEvent.Stop) {
       P.mark[eid] = PathEvent.None
       const hole = RC.hole[rim]!
-      if (hole !== 0) captureBall(w, eid, hole, P.nextT[eid]!, CaptureVia.Rest)
-      else restBall(w, eid, P.nextT[eid]!)
+      if (hole !== 0) captureBall(w, eid, hole, hotNextT(w, eid), CaptureVia.Rest)
+      else restBall(w, eid, hotNextT(w, eid))
     }
   }
 }

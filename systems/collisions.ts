@@ -24,6 +24,7 @@ import { pushId } from '../src/world/idLists.js'
 import type { CollisionState } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
+import { HOT, H_NEXT_T } from '../src/world/pathHot.js'
 
 export function collisionsSystem(w: BallWorld): void {
   const C = w.collide
@@ -41,7 +42,7 @@ export function collisionsSystem(w: BallWorld): void {
     }
     P.mark[a] = PathEvent.None
     P.mark[b] = PathEvent.None
-    const t = P.nextT[a]!
+    const t = w.pathHot[a * HOT + H_NEXT_T]!
     let nx = B.x[b]! - B.x[a]!
     let ny = B.y[b]! - B.y[a]!
     const d = Math.sqrt(nx * nx + ny * ny)

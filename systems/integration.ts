@@ -21,6 +21,7 @@ import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
 import { sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId } from '../src/world/idLists.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
@@ -31,48 +32,53 @@ export function integrationSystem(w: BallWorld): void {
     return
   }
   const tEnd = w.tickEnd
-  const P = w.Path
-  const nextT = P.nextT
   const mode = w.Ball.mode
   if (w.pass === 0) {
     w.marked.count = 0
-    // from the end: a ball that stops or falls in is swapped out of the set behind the cursor
+    // from the end: a ball that stops or falls in is swapped out of the set behind the cursor. The path's
+    // fields are read from its row in world.pathHot (src/world/pathHot.ts: one cache line a ball; the offsets are
+    // written out as numbers, which V8 folds into the loads: x0, y0, ux, uy, v0, t0, nextT, nextS)
     const balls = w.moving.dense
     const B = w.Ball
     const { x, y, vx, vy } = B
-    const { x0, y0, ux, uy, v0, t0 } = P
+    const H = w.pathHot
     const decel = w.config.ROLLING_DECEL
+    let nd = 0
     if (decel === 0) {
       // without rolling deceleration a ball's velocity is its path's, ux·v0, written when the path began:
       // only the position moves (the same bits as the general form below: d = v0·τ, x = x0 + ux·d)
       for (let i = w.moving.count - 1; i >= 0; i--) {
         const eid = balls[i]!
-        if (nextT[eid]! > tEnd) {
+        const h = eid << 3 // ids stay below 2^28: the rows would pass 2 GiB first
+        if (H[h + 6]! > tEnd) {
           if (mode[eid] === BallMode.Rolling) {
-            const d = v0[eid]! * (tEnd - t0[eid]!)
-            x[eid] = x0[eid]! + ux[eid]! * d
-            y[eid] = y0[eid]! + uy[eid]! * d
+            const d = H[h + 4]! * (tEnd - H[h + 5]!)
+            x[eid] = H[h]! + H[h + 2]! * d
+            y[eid] = H[h + 1]! + H[h + 3]! * d
           } else sampleRimRoll(w, eid, tEnd)
           continue
         }
-        advanceThroughEvents(w, eid, tEnd)
+        if (nd === due.length) due = grown(due)
+        due[nd++] = eid
       }
+      advanceDue(w, nd, tEnd)
       return
     }
     for (let i = w.moving.count - 1; i >= 0; i--) {
       const eid = balls[i]!
-      if (nextT[eid]! > tEnd) {
+      const h = eid << 3
+      if (H[h + 6]! > tEnd) {
         if (mode[eid] === BallMode.Rolling) {
           // the common case, inlined: no event this step, evaluate the path at the step's end
-          const v = v0[eid]!
-          let tau = tEnd - t0[eid]!
+          const v = H[h + 4]!
+          let tau = tEnd - H[h + 5]!
           if (decel > 0 && tau * decel > v) tau = v / decel
           const d = v * tau - 0.5 * decel * tau * tau
           const vNow = v - decel * tau
-          const dx = ux[eid]!
-          const dy = uy[eid]!
-          x[eid] = x0[eid]! + dx * d
-          y[eid] = y0[eid]! + dy * d
+          const dx = H[h + 2]!
+          const dy = H[h + 3]!
+          x[eid] = H[h]! + dx * d
+          y[eid] = H[h + 1]! + dy * d
           vx[eid] = dx * vNow
           vy[eid] = dy * vNow
         } else {
@@ -80,8 +86,10 @@ export function integrationSystem(w: BallWorld): void {
         }
         continue
       }
-      advanceThroughEvents(w, eid, tEnd)
+      if (nd === due.length) due = grown(due)
+      due[nd++] = eid
     }
+    advanceDue(w, nd, tEnd)
   } else {
     // continue the balls the decision systems handled in the last pass
     const todo = takeMarked(w)
@@ -169,6 +177,36 @@ function orderedIntegration(w: BallWorld): void {
   C.now = tEnd
 }
 
+/** the balls with an event in the step, listed by the pass over the moving balls (in its order) */
+let due: Uint32Array = new Uint32Array(256)
+const sink = { v: 0 }
+
+function grown(a: Uint32Array): Uint32Array {
+  const next = new Uint32Array(a.length * 2)
+  next.set(a)
+  return next
+}
+
+/**
+ * Advances the listed balls through their events, in the pass's order. Their rows of the Path and Ball
+ * arrays the events read are loaded first, all at once: the loads of one ball do not wait for another's, so
+ * their cache misses overlap (with 100,000 balls each row is a miss), where the event code met them one by
+ * one.
+ */
+function advanceDue(w: BallWorld, n: number, tEnd: number): void {
+  const P = w.Path
+  const B = w.Ball
+  const { nextKind, nextHole, s, sHole, speed, fromHole, nextEdge, mark } = P
+  const { radius, rim } = B
+  let acc = 0
+  for (let k = 0; k < n; k++) {
+    const e = due[k]!
+    acc += nextKind[e]! + nextHole[e]! + s[e]! + sHole[e]! + speed[e]! + fromHole[e]! + nextEdge[e]! + mark[e]! + radius[e]! + rim[e]!
+  }
+  sink.v = acc
+  for (let k = 0; k < n; k++) advanceThroughEvents(w, due[k]!, tEnd)
+}
+
 /** Predictions per moving ball in a window above which the next window ends with its step. */
 const CHURN = 4
 
@@ -198,14 +236,15 @@ function markContact(w: BallWorld, eid: number, other: number, t: number): void 
   sampleForContact(w, eid, t)
   P.mark[eid] = PathEvent.Collide
   P.markOther[eid] = other
-  P.nextT[eid] = t
+  setNextT(w, eid, t)
   pushId(w.marked, eid)
 }
 
 function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
   const P = w.Path
+  const H = w.pathHot
   for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {
-    const t = P.nextT[eid]!
+    const t = H[eid * HOT + H_NEXT_T]!
     if (t > tEnd) {
       if (w.Ball.mode[eid] === BallMode.RimRoll) sampleRimRoll(w, eid, tEnd)
       else sampleRolling(w, eid, tEnd)
@@ -218,8 +257,9 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
       // centre, at rest, and gives its RimContact row back before anything reads them)
       if (w.RimContact.ride[w.Ball.rim[eid]!] !== RIDE_DROPS) sampleRimRoll(w, eid, t)
     } else {
-      sampleAtDistance(w, eid, P.nextS[eid]!)
-      P.s[eid] = P.nextS[eid]!
+      const s = H[eid * HOT + H_NEXT_S]!
+      sampleAtDistance(w, eid, s)
+      P.s[eid] = s
       P.sHole[eid] = hole
     }
     if (kind === PathEvent.Exit) {
@@ -228,7 +268,8 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
       continue
     }
     if (kind === PathEvent.Near) {
-      const c = (w.Hole.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (w.Hole.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+      const h = eid * HOT
+      const c = (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
       pushEvent(w.events, EventType.NearMiss, eid, hole, t, true, Math.abs(c), P.speed[eid]!)
       planRolling(w, eid)
       continue

@@ -12,6 +12,7 @@ import { CaptureVia, EventType } from '../src/events.js'
 import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { leaveRim, planRimRoll, rollPopsOff, sampleRimRoll, startRimRoll } from '../src/motion/rimRoll.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { hotNextT } from '../src/world/pathHot.js'
 
 export function rimRollSystem(w: BallWorld): void {
   const P = w.Path
@@ -23,7 +24,7 @@ export function rimRollSystem(w: BallWorld): void {
     if (mark === PathEvent.Roll) {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
-      const t = P.nextT[eid]!
+      const t = hotNextT(w, eid)
       startRimRoll(w, eid, hole, t)
       sampleRimRoll(w, eid, t)
       planRimRoll(w, eid)
@@ -31,7 +32,7 @@ export function rimRollSystem(w: BallWorld): void {
     } else if (mark === PathEvent.RollEnd) {
       P.mark[eid] = PathEvent.None
       const hole = P.markHole[eid]!
-      const t = P.nextT[eid]!
+      const t = hotNextT(w, eid)
       if (rollPopsOff(w, eid)) {
         // leave along the tangent; the state at t was set by the integration system
         leaveRim(w, eid, hole, B.vx[eid]!, B.vy[eid]!, t)

@@ -12,6 +12,7 @@ import { emitHoleEvent } from '../src/motion/ballFate.js'
 import { pathOffset, planRolling } from '../src/motion/rolling.js'
 import { lockAtLip } from '../src/world/rimSlots.js'
 import { type BallWorld } from '../src/world/createWorld.js'
+import { hotNextT } from '../src/world/pathHot.js'
 
 export function skipOverSystem(w: BallWorld): void {
   const P = w.Path
@@ -26,7 +27,7 @@ export function skipOverSystem(w: BallWorld): void {
     // (δ, v) at the crossing: δ from the path's geometry, v from its closed form at that distance
     const delta = Math.abs(pathOffset(w, eid, hole))
     const v = P.speed[eid]!
-    const t = P.nextT[eid]!
+    const t = hotNextT(w, eid)
     const rim = lockAtLip(w, eid, hole, delta, v, t, RimMode.Transit)
     if (v > vSkip(delta, H.radius[hole]!, w.Ball.radius[eid]!, g)) {
       RC.mode[rim] = RimMode.Skipping

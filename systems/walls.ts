@@ -13,6 +13,7 @@ import { releaseRim } from '../src/world/rimSlots.js'
 import { removeMoving } from '../src/world/idLists.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { setBallMode } from '../src/world/ballMode.js'
+import { hotNextT, setNextT } from '../src/world/pathHot.js'
 
 export function wallsSystem(w: BallWorld): void {
   if (w.walls === 0) return
@@ -27,7 +28,7 @@ export function wallsSystem(w: BallWorld): void {
     if (mark === PathEvent.Wall) {
       P.mark[eid] = PathEvent.None
       const edge = P.markEdge[eid]!
-      const t = P.nextT[eid]!
+      const t = hotNextT(w, eid)
       const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
       // with contacts on, a ball pressed to the wall by others slides along it instead of bouncing forever
       const vn = horizontal ? B.vx[eid]! : B.vy[eid]!
@@ -46,12 +47,12 @@ export function wallsSystem(w: BallWorld): void {
       planRolling(w, eid)
     } else if (mark === PathEvent.Gutter) {
       P.mark[eid] = PathEvent.None
-      pushEvent(w.events, EventType.Gutter, eid, 0, P.nextT[eid]!, false, 0, 0)
+      pushEvent(w.events, EventType.Gutter, eid, 0, hotNextT(w, eid), false, 0, 0)
       setBallMode(w, eid, BallMode.Out)
       B.vx[eid] = 0
       B.vy[eid] = 0
       P.speed[eid] = 0
-      P.nextT[eid] = NEVER
+      setNextT(w, eid, NEVER)
       P.nextKind[eid] = PathEvent.None
       releaseRim(w, eid)
       removeMoving(w, eid)

@@ -510,6 +510,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
             if (!Number.isFinite(v)) fail(`non-finite store: ${label}.${key}[${b}] = ${v}`)
           }
         }
+        for (let k = 0; k < 8; k++) if (!Number.isFinite(w.pathHot[8 * b + k]!)) fail(`non-finite path row: pathHot[${8 * b + k}] = ${w.pathHot[8 * b + k]}`)
         const m = w.Ball.mode[b]!
         if (BALL_MODE_NAMES[m] === undefined) fail(`bad mode: Ball.mode[${b}] = ${m}`)
       }

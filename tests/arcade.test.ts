@@ -1,7 +1,7 @@
 // Regressions from arcade load and abuse (the parts fixed so far): each pins one failure that was seen.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
-import { PathSchema, BallSchema } from '../src/ecs'
+import { PathSchema, BallSchema, HOT, H_NEXT_T, H_T0 } from '../src/ecs'
 import { timeBudget } from './helpers'
 
 function storesFinite(sim: ReturnType<typeof createBallPhysics>): void {
@@ -15,6 +15,7 @@ function storesFinite(sim: ReturnType<typeof createBallPhysics>): void {
       }
     }
   }
+  for (const b of sim.balls()) for (let k = 0; k < HOT; k++) expect(Number.isFinite(w.pathHot[b * HOT + k]!), `pathHot row ${b}`).toBe(true)
 }
 
 describe('nothing infinite, nothing left outside', () => {
@@ -35,7 +36,7 @@ describe('nothing infinite, nothing left outside', () => {
     sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480 })
     const b = sim.addBall({ x: 200, y: 100, vx: -1e-300, vy: 0 })
     storesFinite(sim)
-    expect(sim.world.Path.nextT[b]).toBeLessThan(Infinity)
+    expect(sim.world.pathHot[b * HOT + H_NEXT_T]).toBeLessThan(Infinity)
     for (let i = 0; i < 10; i++) sim.step(1 / 60)
     storesFinite(sim)
   })
@@ -152,8 +153,8 @@ describe('nothing left behind, events in order', () => {
       const s = sim.ballState(b)
       expect(s.x).toBeGreaterThanOrEqual(11 - 1e-9)
       expect(s.x).toBeLessThanOrEqual(49 + 1e-9)
-      expect(sim.world.Path.t0[b]).toBeLessThanOrEqual(sim.time) // its motion is not behind the clock
-      expect(sim.world.Path.nextT[b]).toBeGreaterThanOrEqual(sim.time)
+      expect(sim.world.pathHot[b * HOT + H_T0]).toBeLessThanOrEqual(sim.time) // its motion is not behind the clock
+      expect(sim.world.pathHot[b * HOT + H_NEXT_T]).toBeGreaterThanOrEqual(sim.time)
     }
   })
 

@@ -3,6 +3,7 @@
 import { addComponent, entityExists, query, removeEntity } from 'bitecs'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type ConfigOverrides, type ThrowSpec, type WallsSpec } from '../src/index'
+import { HOT, H_NEXT_T } from '../src/ecs'
 import {
   BallMode,
   PathEvent,
@@ -117,6 +118,7 @@ function expectSameStores(a: BallWorld, b: BallWorld): void {
       for (let i = 0; i < n; i++) if (!Object.is(x[i], y[i])) expect.fail(`${name}.${key}[${i}]: ${x[i]} vs ${y[i]}`)
     }
   }
+  for (let i = 0; i < n * HOT; i++) if (!Object.is(a.pathHot[i], b.pathHot[i])) expect.fail(`pathHot[${i}]: ${a.pathHot[i]} vs ${b.pathHot[i]}`)
 }
 
 describe('commands and the facade are the same functions', () => {
@@ -287,7 +289,7 @@ describe('removeHole', () => {
     const gone = addHole(w, { x: 200, y: 200 })
     removeHole(w, gone)
     stepN(w, 10)
-    const snap = () => JSON.stringify([listHoles(w), listBalls(w), w.time, w.events.count, Array.from(w.Ball.x.subarray(0, 8)), Array.from(w.Path.nextT.subarray(0, 8)), w.holes.count])
+    const snap = () => JSON.stringify([listHoles(w), listBalls(w), w.time, w.events.count, Array.from(w.Ball.x.subarray(0, 8)), Array.from(w.pathHot.subarray(0, 8 * HOT)), w.holes.count])
     const before = snap()
     for (const bad of [ball, w.walls, gone, 9999, 0, -1, 1.5, '1', null]) {
       expect(() => removeHole(w, bad as number), String(bad)).toThrow(typeof bad === 'number' && Number.isInteger(bad) && bad > 0 ? RangeError : TypeError)
@@ -322,7 +324,7 @@ describe("a game's own system in the schedule", () => {
           if (world.Path.mark[b] !== PathEvent.Lip) continue
           const h = world.Path.markHole[b]!
           const r = Math.hypot(world.Ball.x[b]! - world.Hole.x[h]!, world.Ball.y[b]! - world.Hole.y[h]!)
-          lips.push({ ball: b, hole: h, t: world.Path.nextT[b]!, speed: world.Path.speed[b]!, r })
+          lips.push({ ball: b, hole: h, t: world.pathHot[b * HOT + H_NEXT_T]!, speed: world.Path.speed[b]!, r })
         }
       },
     })

@@ -166,6 +166,7 @@ describe('removal', () => {
       const ev = step(w, 1 / 120, 120)
       expect(ev.filter((e) => names(e).includes(a))).toEqual([])
       for (const arr of [...Object.values(w.Ball), ...Object.values(w.Path)] as Float64Array[]) expect(arr[a]).toBe(0)
+      expect(Array.from(w.pathHot.subarray(8 * a, 8 * a + 8))).toEqual([0, 0, 0, 0, 0, 0, 0, 0])
       expect(ev.filter((e) => e.hole === h)).toEqual([]) // b's path never came near the hole
       // a plain game entity takes the id: it inherits nothing
       const g = addEntity(w)

@@ -1,7 +1,7 @@
 // Every entry point validates its input, says what it got, and leaves the world as it was.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics, type PanelLayout } from '../src/index'
-import { createBallWorld, createSchedule, listBalls, listHoles, runSchedule, throwBall, type BallWorld } from '../src/ecs'
+import { HOT, H_V0, createBallWorld, createSchedule, listBalls, listHoles, runSchedule, throwBall, type BallWorld } from '../src/ecs'
 
 /** Everything a failed call could have touched. */
 function snapshot(w: BallWorld): string {
@@ -261,7 +261,7 @@ describe('each field of a spec is read exactly once', () => {
     const p = once(0.5)
     const b = sim.throwBall({ x: 210, y: 450, angle: 0, get power() { return p.get() } })
     expect(p.count.reads).toBe(1)
-    expect(sim.world.Path.v0[b]).toBe(sim.config.MIN_VY + 0.5 * (sim.config.MAX_VY - sim.config.MIN_VY))
+    expect(sim.world.pathHot[b * HOT + H_V0]).toBe(sim.config.MIN_VY + 0.5 * (sim.config.MAX_VY - sim.config.MIN_VY))
     tenSteps(sim)
     expectFinite(sim.world)
   })

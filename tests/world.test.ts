@@ -150,6 +150,7 @@ describe('stores are sized per component', () => {
     const w = sim.world
     let bytes = w.moving.sparse.byteLength + 4 * cap // the moving set's dense list, when every ball moves
     for (const store of [w.Ball, w.Path]) for (const arr of Object.values(store) as Float64Array[]) bytes += arr.byteLength
+    bytes += w.pathHot.byteLength // the path's rows (src/world/pathHot.ts)
     expect(bytes / cap).toBeLessThanOrEqual(160)
   })
 })

@@ -23,8 +23,8 @@ import { rimTableFor } from '../reference/rimTables.js'
 import { checkWorld } from './validate.js'
 import { checksum, configText, kindOf, readValue, Reader, SnapshotError, writeValue, Writer } from './snapshotCodec.js'
 
-/** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps). */
-export const SNAPSHOT_VERSION = 2
+/** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps; 3: the path's origin and next event in world.pathHot). */
+export const SNAPSHOT_VERSION = 3
 
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 
@@ -253,6 +253,7 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   }
   for (const k of keys) checkShape(k, (w as unknown as Record<string, unknown>)[k], d.fields[k])
   for (const k of STORES) checkFinite(k, d.fields[k] as Record<string, unknown>)
+  checkFinite('world', { pathHot: d.fields['pathHot'] })
   const tables = d.tables.map(([ratio, inertia]) => rimTableFor(ratio, inertia))
   // nothing below throws: the world changes only now
   // ids 1..maxId made through bitECS, the ones not alive removed again; then the index's order (which id

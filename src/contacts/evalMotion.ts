@@ -3,6 +3,7 @@
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimRollAt, rimRollState } from '../motion/rimRoll.js'
+import { HOT, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 
 /**
  * The scratch state evalBall writes, in a Float64Array: V8 boxes every double written to a module-level
@@ -60,9 +61,9 @@ export function evalBall(w: BallWorld, eid: number): void {
     return
   }
   const P = w.Path
-  const v0 = P.v0[eid]!
+  const v0 = w.pathHot[eid * HOT + H_V0]!
   const decel = w.config.ROLLING_DECEL
-  const t0 = P.t0[eid]!
+  const t0 = w.pathHot[eid * HOT + H_T0]!
   let tau = t - t0
   if (tau < 0) tau = 0
   let moving = v0 > 0
@@ -72,10 +73,10 @@ export function evalBall(w: BallWorld, eid: number): void {
   }
   const d = v0 * tau - 0.5 * decel * tau * tau
   const v = v0 - decel * tau
-  const ux = P.ux[eid]!
-  const uy = P.uy[eid]!
-  E[X] = P.x0[eid]! + ux * d
-  E[Y] = P.y0[eid]! + uy * d
+  const ux = w.pathHot[eid * HOT + H_UX]!
+  const uy = w.pathHot[eid * HOT + H_UY]!
+  E[X] = w.pathHot[eid * HOT + H_X0]! + ux * d
+  E[Y] = w.pathHot[eid * HOT + H_Y0]! + uy * d
   E[VX] = ux * v
   E[VY] = uy * v
   E[EXACT] = 1
@@ -100,17 +101,17 @@ export function motionStart(w: BallWorld, eid: number): number {
   if (mode === BallMode.Resting) {
     // a ball at rest has been so since its path stopped (or since it was put down)
     const decel = w.config.ROLLING_DECEL
-    const v0 = P.v0[eid]!
-    return v0 > 0 && decel > 0 ? P.t0[eid]! + v0 / decel : P.t0[eid]!
+    const v0 = w.pathHot[eid * HOT + H_V0]!
+    return v0 > 0 && decel > 0 ? w.pathHot[eid * HOT + H_T0]! + v0 / decel : w.pathHot[eid * HOT + H_T0]!
   }
-  return P.t0[eid]!
+  return w.pathHot[eid * HOT + H_T0]!
 }
 
 /** End of the span over which a ball's current motion is known: its next own event, capped. */
 export function motionEnd(w: BallWorld, eid: number, cap: number): number {
   const mode = w.Ball.mode[eid]
   if (mode === BallMode.Resting) return cap
-  const t = w.Path.nextT[eid]!
+  const t = w.pathHot[eid * HOT + H_NEXT_T]!
   return t < cap ? t : cap
 }
 

@@ -9,6 +9,7 @@ import { AT, E, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMot
 import { RESULT, SearchResult, TIME, search, searchContact } from './search.js'
 import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, staleEntry, sweptCapsule } from './sweepGrid.js'
 import { sq } from '../math.js'
+import { HOT, H_NEXT_T } from '../world/pathHot.js'
 
 /**
  * Predicts ball `a`'s contacts with every ball near its path over [C.now, C.until] (the prediction window)
@@ -23,7 +24,7 @@ export function predictBall(w: BallWorld, a: number): void {
   if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return
   const tEnd = C.until
   if (mode !== BallMode.Resting) {
-    const own = w.Path.nextT[a]!
+    const own = w.pathHot[a * HOT + H_NEXT_T]!
     if (own <= tEnd) heapPush(C, own, HeapKind.Own, a, 0)
   }
   const now = C.now

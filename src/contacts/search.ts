@@ -3,6 +3,7 @@
 import { APPROACH_EPSILON, GAP_TOLERANCE, MAX_SEARCH_STEPS, MIN_ADVANCE, SETTLE_FLOOR } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { BallMode } from '../../components/Ball.js'
+import { HOT, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 import { ACC, AT, AX, AY, E, EXACT, NEXT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 
 export const SearchResult = { None: 0, Contact: 1, Resume: 2 } as const
@@ -98,13 +99,14 @@ function loadStraight(w: BallWorld, eid: number, o: number): void {
     K[o + 2] = NaN // marks a ball at rest
     return
   }
-  const P = w.Path
-  K[o] = P.x0[eid]!
-  K[o + 1] = P.y0[eid]!
-  K[o + 2] = P.ux[eid]!
-  K[o + 3] = P.uy[eid]!
-  K[o + 4] = P.v0[eid]!
-  K[o + 5] = P.t0[eid]!
+  const H = w.pathHot
+  const h = eid * HOT
+  K[o] = H[h + H_X0]!
+  K[o + 1] = H[h + H_Y0]!
+  K[o + 2] = H[h + H_UX]!
+  K[o + 3] = H[h + H_UY]!
+  K[o + 4] = H[h + H_V0]!
+  K[o + 5] = H[h + H_T0]!
 }
 
 /**

@@ -11,6 +11,7 @@ import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { NEVER } from '../config/tolerances.js'
 import { startPath, planRolling } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
+import { setNextT } from '../world/pathHot.js'
 import { touchBall } from '../world/fixedState.js'
 import { pathChanged } from '../world/contactState.js'
 
@@ -42,7 +43,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
   B.vx[eid] = 0
   B.vy[eid] = 0
   w.Path.speed[eid] = 0
-  w.Path.nextT[eid] = NEVER
+  setNextT(w, eid, NEVER)
   w.Path.nextKind[eid] = PathEvent.None
   releaseRim(w, eid)
   removeMoving(w, eid)
@@ -57,7 +58,7 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
   B.vx[eid] = 0
   B.vy[eid] = 0
   w.Path.speed[eid] = 0
-  w.Path.nextT[eid] = NEVER
+  setNextT(w, eid, NEVER)
   w.Path.nextKind[eid] = PathEvent.None
   removeMoving(w, eid)
   // with ball-ball contacts on, a resting ball is found by moving ones through the resting grid, and looks

@@ -10,6 +10,7 @@ import { dropPredictions } from '../world/contactState.js'
 import { sampleRimRoll } from './rimRoll.js'
 import { sampleRolling } from './rolling.js'
 import { timeToDistance } from '../geometry.js'
+import { HOT, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
 
 /** Shifts a moving ball's current motion `delta` seconds later (its path, its rim roll, its next event). */
 export function delayMotion(w: BallWorld, eid: number, delta: number): void {
@@ -18,16 +19,17 @@ export function delayMotion(w: BallWorld, eid: number, delta: number): void {
   if (mode === BallMode.RimRoll) {
     w.RimContact.time0[w.Ball.rim[eid]!]! += delta
   } else if (mode === BallMode.Rolling) {
-    P.t0[eid]! += delta
+    w.pathHot[eid * HOT + H_T0]! += delta
   } else return
-  P.nextT[eid]! += delta
+  w.pathHot[eid * HOT + H_NEXT_T]! += delta
 }
 
 /** The time a moving ball's stored state is at: its last event on the current path (or rim roll). */
 function ownTime(w: BallWorld, eid: number): number {
   const P = w.Path
   if (w.Ball.mode[eid] === BallMode.RimRoll) return w.RimContact.time0[w.Ball.rim[eid]!]!
-  return P.t0[eid]! + timeToDistance(P.s[eid]!, P.v0[eid]!, w.config.ROLLING_DECEL)
+  const h = eid * HOT
+  return w.pathHot[h + H_T0]! + timeToDistance(P.s[eid]!, w.pathHot[h + H_V0]!, w.config.ROLLING_DECEL)
 }
 
 /**

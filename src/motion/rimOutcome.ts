@@ -23,6 +23,7 @@ import { captureBall, emitHoleEvent } from './ballFate.js'
 import { leaveRim, planRimRoll, sampleRimRoll } from './rimRoll.js'
 import { pathOffset, planRolling, startPath } from './rolling.js'
 import { atan2, cos, hypot, sin } from '../math.js'
+import { HOT, H_NEXT_T, H_UX, H_UY, H_V0 } from '../world/pathHot.js'
 
 /** The world's table for this geometry, or null (then the live reference decides). */
 function tableFor(w: BallWorld, ratio: number, inertia: number): RimTable | null {
@@ -72,10 +73,10 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
   const o = rimOut
   const R = H.radius[hole]!
   const r = B.radius[eid]!
-  const ux = P.ux[eid]!
-  const uy = P.uy[eid]!
+  const ux = w.pathHot[eid * HOT + H_UX]!
+  const uy = w.pathHot[eid * HOT + H_UY]!
   const vScale = Math.sqrt(w.config.GRAVITY * r)
-  const t = P.nextT[eid]!
+  const t = w.pathHot[eid * HOT + H_NEXT_T]!
   const slot = lockAtLip(w, eid, hole, delta, v, t, RimMode.Transit)
   P.mark[eid] = PathEvent.None
   // a roll round the lip: an escape of that kind, or a capture after turning ROLL_TURN or more
@@ -131,7 +132,7 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
         RC.mode[slot] = RimMode.Crossing
         RC.rideTo[slot] = L
         RC.time0[slot] = t
-        RC.speed0[slot] = P.v0[eid]!
+        RC.speed0[slot] = w.pathHot[eid * HOT + H_V0]!
       } else {
         RC.mode[slot] = RimMode.Transit
         startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, t)
@@ -171,7 +172,7 @@ export function landCrossing(w: BallWorld, eid: number): void {
   const slot = B.rim[eid]!
   P.mark[eid] = PathEvent.None
   RC.mode[slot] = RimMode.Transit
-  startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, P.nextT[eid]!)
+  startPath(w, eid, B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, w.pathHot[eid * HOT + H_NEXT_T]!)
   P.fromHole[eid] = P.markHole[eid]!
   planRolling(w, eid)
 }
@@ -183,7 +184,7 @@ export function endRide(w: BallWorld, eid: number): void {
   const RC = w.RimContact
   const slot = B.rim[eid]!
   const hole = P.markHole[eid]!
-  const t = P.nextT[eid]!
+  const t = w.pathHot[eid * HOT + H_NEXT_T]!
   P.mark[eid] = PathEvent.None
   const ride = RC.ride[slot]
   RC.ride[slot] = 0

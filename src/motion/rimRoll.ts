@@ -9,6 +9,7 @@ import { EventType } from '../events.js'
 import { emitHoleEvent } from './ballFate.js'
 import { planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
+import { setNextT } from '../world/pathHot.js'
 import { atan2, cos, hypot, sin } from '../math.js'
 
 /** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
@@ -22,7 +23,7 @@ export function planRimRoll(w: BallWorld, eid: number): void {
     const P = w.Path
     P.nextKind[eid] = PathEvent.RollEnd
     P.nextHole[eid] = hole
-    P.nextT[eid] = RC.time0[slot]! + RC.rideTime[slot]!
+    setNextT(w, eid, RC.time0[slot]! + RC.rideTime[slot]!)
     return
   }
   const vt0 = RC.speed0[slot]!
@@ -31,7 +32,7 @@ export function planRimRoll(w: BallWorld, eid: number): void {
   const P = w.Path
   P.nextKind[eid] = PathEvent.RollEnd
   P.nextHole[eid] = hole
-  P.nextT[eid] = RC.time0[slot]! + Math.min(tDrop, tPop)
+  setNextT(w, eid, RC.time0[slot]! + Math.min(tDrop, tPop))
 }
 
 /**

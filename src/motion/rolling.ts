@@ -11,6 +11,7 @@ import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } fr
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setPathStart } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
 import { hypot } from '../math.js'
 
@@ -19,14 +20,9 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   const P = w.Path
   const B = w.Ball
   const speed = hypot(vx, vy)
-  P.x0[eid] = x
-  P.y0[eid] = y
-  P.t0[eid] = t
-  P.v0[eid] = speed
   const ux = speed > 0 ? vx / speed : 0
   const uy = speed > 0 ? vy / speed : 0
-  P.ux[eid] = ux
-  P.uy[eid] = uy
+  setPathStart(w, eid, x, y, ux, uy, speed, t)
   P.speed[eid] = speed
   P.s[eid] = 0
   P.sHole[eid] = 0
@@ -133,12 +129,15 @@ export function planRolling(w: BallWorld, eid: number): void {
   if (w.collide !== null) pathChanged(w, eid)
   const P = w.Path
   const RC = w.RimContact
-  const v0 = P.v0[eid]!
+  // the path's fields from its row in world.pathHot (one cache line; the same values as the Path store's)
+  const H = w.pathHot
+  const h = eid * HOT
+  const v0 = H[h + H_V0]!
   const decel = w.config.ROLLING_DECEL
-  Q.x0 = P.x0[eid]!
-  Q.y0 = P.y0[eid]!
-  Q.ux = P.ux[eid]!
-  Q.uy = P.uy[eid]!
+  Q.x0 = H[h + H_X0]!
+  Q.y0 = H[h + H_Y0]!
+  Q.ux = H[h + H_UX]!
+  Q.uy = H[h + H_UY]!
   Q.s = P.s[eid]!
   qSHole = P.sHole[eid]!
   qFrom = P.fromHole[eid]!
@@ -165,7 +164,7 @@ export function planRolling(w: BallWorld, eid: number): void {
       if (RC.mode[slot] === RimMode.Entering && c2 < rc * rc) {
         d = p - Math.sqrt(rc * rc - c2)
         k = PathEvent.Contact
-      } else if (RC.mode[slot] === RimMode.Crossing && P.t0[eid] === RC.time0[slot] && P.v0[eid] === RC.speed0[slot]) {
+      } else if (RC.mode[slot] === RimMode.Crossing && H[h + H_T0] === RC.time0[slot] && v0 === RC.speed0[slot]) {
         // a tabulated crossing on its own path: it ends at the reference's exit point (the hole stays
         // locked to there; the next path unlocks it as usual)
         d = RC.rideTo[slot]!
@@ -198,18 +197,18 @@ export function planRolling(w: BallWorld, eid: number): void {
   // an event no double can place in time (a distance beyond range, or a crawl that never gets there) is none
   let t = NEVER
   if (bestKind !== PathEvent.None) {
-    t = P.t0[eid]! + (bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel))
+    t = H[h + H_T0]! + (bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel))
     if (!(t < NEVER)) bestKind = PathEvent.None
   }
   P.nextKind[eid] = bestKind
   P.nextHole[eid] = bestKind === PathEvent.None ? 0 : bestHole
   P.nextEdge[eid] = bestKind === PathEvent.Wall || bestKind === PathEvent.Gutter ? bestEdge : 0
   if (bestKind === PathEvent.None) {
-    P.nextS[eid] = 0
-    P.nextT[eid] = NEVER
+    H[h + H_NEXT_S] = 0
+    H[h + H_NEXT_T] = NEVER
   } else {
-    P.nextS[eid] = Q.best
-    P.nextT[eid] = t
+    H[h + H_NEXT_S] = Q.best
+    H[h + H_NEXT_T] = t
   }
 }
 
@@ -218,25 +217,28 @@ export function planRolling(w: BallWorld, eid: number): void {
  * offset·(−uy, ux) from the centre; |offset| is the δ of a lip crossing.
  */
 export function pathOffset(w: BallWorld, eid: number, hole: number): number {
-  const P = w.Path
-  return (w.Hole.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (w.Hole.y[hole]! - P.y0[eid]!) * P.ux[eid]!
+  const H = w.pathHot
+  const h = eid * HOT
+  return (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
 }
 
 /** Ball state at time t on its straight path (clamped at its stop). */
 export function sampleRolling(w: BallWorld, eid: number, t: number): void {
   const P = w.Path
   const B = w.Ball
-  const v0 = P.v0[eid]!
+  const H = w.pathHot
+  const h = eid * HOT
+  const v0 = H[h + H_V0]!
   const decel = w.config.ROLLING_DECEL
-  let tau = t - P.t0[eid]!
+  let tau = t - H[h + H_T0]!
   if (tau < 0) tau = 0
   if (decel > 0 && tau * decel > v0) tau = v0 / decel
   const d = v0 * tau - 0.5 * decel * tau * tau
   const v = v0 - decel * tau
-  const ux = P.ux[eid]!
-  const uy = P.uy[eid]!
-  B.x[eid] = P.x0[eid]! + ux * d
-  B.y[eid] = P.y0[eid]! + uy * d
+  const ux = H[h + H_UX]!
+  const uy = H[h + H_UY]!
+  B.x[eid] = H[h + H_X0]! + ux * d
+  B.y[eid] = H[h + H_Y0]! + uy * d
   B.vx[eid] = ux * v
   B.vy[eid] = uy * v
   P.speed[eid] = v
@@ -246,11 +248,13 @@ export function sampleRolling(w: BallWorld, eid: number, t: number): void {
 export function sampleAtDistance(w: BallWorld, eid: number, d: number): void {
   const P = w.Path
   const B = w.Ball
-  const v = speedAtDistance(d, P.v0[eid]!, w.config.ROLLING_DECEL)
-  const ux = P.ux[eid]!
-  const uy = P.uy[eid]!
-  B.x[eid] = P.x0[eid]! + ux * d
-  B.y[eid] = P.y0[eid]! + uy * d
+  const H = w.pathHot
+  const h = eid * HOT
+  const v = speedAtDistance(d, H[h + H_V0]!, w.config.ROLLING_DECEL)
+  const ux = H[h + H_UX]!
+  const uy = H[h + H_UY]!
+  B.x[eid] = H[h + H_X0]! + ux * d
+  B.y[eid] = H[h + H_Y0]! + uy * d
   B.vx[eid] = ux * v
   B.vy[eid] = uy * v
   P.speed[eid] = v

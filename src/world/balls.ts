@@ -14,6 +14,7 @@ import { cutEvents } from '../events.js'
 import { NO_CONTACT, forgetPredictions } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
 import { removeMoving } from './idLists.js'
+import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
 
@@ -31,6 +32,7 @@ export function adoptBall(world: BallWorld, eid: number): void {
   if (world.Ball.live[eid] !== 1) world.ballCount++
   clearSlot(world.Ball, eid)
   clearSlot(world.Path, eid)
+  clearPathHot(world, eid)
   const B = world.Ball
   B.live[eid] = 1
   B.radius[eid] = world.config.BALL_RADIUS
@@ -58,6 +60,7 @@ export function forgetBall(world: BallWorld, eid: number): void {
   cutEvents(world.events, eid)
   clearSlot(world.Ball, eid)
   clearSlot(world.Path, eid)
+  clearPathHot(world, eid)
   // a Ball removed by removeComponent leaves an entity the game keeps: it is no longer a ball at all
   if (hasComponent(world, eid, world.Path)) removeComponent(world, eid, world.Path)
   if (hasComponent(world, eid, world.RimContact)) removeComponent(world, eid, world.RimContact)

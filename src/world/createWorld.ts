@@ -24,6 +24,7 @@ import { createFixedState, growFixedMass, type FixedContactState } from './fixed
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { createHoleTable, type HoleCells, type HoleTable } from './holeTable.js'
+import { HOT, growPathHot } from './pathHot.js'
 import { createIdList, type IdList, type MovingSet } from './idLists.js'
 import type { RimTable } from '../reference/rimTable.js'
 import type { Recorder } from './recorder.js'
@@ -41,6 +42,8 @@ export interface BallWorldData {
   /** pooled: indexed by a ball's slot (Ball.rim), not by its id */
   RimContact: RimContactStore
   Path: PathStore
+  /** each ball's path and next event's time and distance, one interleaved row an id (src/world/pathHot.ts) */
+  pathHot: Float64Array
   Walls: WallsStore
   /** the entity carrying this world's Walls, 0 when the panel has none */
   walls: number
@@ -128,6 +131,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     Hole: createHoleStore(SMALL_STORE),
     RimContact: createRimContactStore(SMALL_STORE),
     Path: createPathStore(capacity),
+    pathHot: new Float64Array(capacity * HOT),
     Walls: createWallsStore(SMALL_STORE),
     walls: 0,
     moving: { count: 0, dense: new Uint32Array(256), sparse: new Uint32Array(capacity), churn: 0, spare: new Uint32Array(256) },
@@ -171,6 +175,7 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   while (cap <= eid) cap *= 2
   growStore(world.Ball, cap)
   growStore(world.Path, cap)
+  growPathHot(world, cap)
   const sparse = new Uint32Array(cap)
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse

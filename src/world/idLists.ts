@@ -70,22 +70,43 @@ export function removeMoving(world: BallWorld, eid: number): void {
 }
 
 /**
- * Puts the moving balls back in ascending id order (a scan of the ids in use: no sort), so a pass walks the
- * per-ball arrays in memory order. Swap-removals and recycled ids scatter the order over time; with 100,000
- * balls refilled as they fall in, a scattered order cost about 3× the step of an ordered one (cache misses).
+ * Puts the moving balls back in ascending id order, so a pass walks the per-ball arrays in memory order.
+ * Swap-removals and recycled ids scatter the order over time; with 100,000 balls refilled as they fall in,
+ * a scattered order cost about 3× the step of an ordered one (cache misses). No sort: the moving ids are
+ * set as bits of a bitmap (an eighth of a kilobyte a thousand ids, in the first-level cache), then read
+ * back in ascending order; the cost is in the moving balls, not in the ids in use.
  */
 export function orderMoving(world: BallWorld): void {
   const m = world.moving
   m.churn = 0
   if (m.spare.length < m.dense.length) m.spare = new Uint32Array(m.dense.length)
-  const out = m.spare
-  const top = Math.min(m.sparse.length, world.entityIndex.maxId + 1)
-  let n = 0
-  for (let eid = 1; eid < top && n < m.count; eid++) {
-    const i = m.sparse[eid]!
-    if (i < m.count && m.dense[i] === eid) out[n++] = eid
+  const words = (Math.min(m.sparse.length, world.entityIndex.maxId + 1) >>> 5) + 1
+  if (bits.length < words) bits = new Int32Array(Math.max(words, 2 * bits.length))
+  const dense = m.dense
+  const n = m.count
+  for (let i = 0; i < n; i++) {
+    const eid = dense[i]!
+    bits[eid >>> 5] |= 1 << (eid & 31)
   }
-  for (let k = 0; k < n; k++) m.sparse[out[k]!] = k
-  m.spare = m.dense
+  const out = m.spare
+  const sparse = m.sparse
+  let k = 0
+  for (let wd = 0; wd < words && k < n; wd++) {
+    let b = bits[wd]!
+    if (b === 0) continue
+    bits[wd] = 0
+    const base = wd << 5
+    while (b !== 0) {
+      const low = b & -b
+      const eid = base + 31 - Math.clz32(low)
+      sparse[eid] = k
+      out[k++] = eid
+      b ^= low
+    }
+  }
+  m.spare = dense
   m.dense = out
 }
+
+/** orderMoving's bitmap: all zero between calls (each call clears the words it set) */
+let bits = new Int32Array(1024)

@@ -10,6 +10,7 @@ import { captureBall } from '../../src/motion/ballFate.js'
 import { planRolling } from '../../src/motion/rolling.js'
 import { lockAtLip } from '../../src/world/rimSlots.js'
 import { type BallWorld } from '../../src/world/createWorld.js'
+import { HOT, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0 } from '../../src/world/pathHot.js'
 
 export function v1RuleSystem(w: BallWorld): void {
   const P = w.Path
@@ -21,8 +22,8 @@ export function v1RuleSystem(w: BallWorld): void {
     const eid = list.ids[i]!
     if (P.mark[eid] !== PathEvent.Lip) continue
     const hole = P.markHole[eid]!
-    const t = P.nextT[eid]!
-    const delta = Math.abs((H.x[hole]! - P.x0[eid]!) * P.uy[eid]! - (H.y[hole]! - P.y0[eid]!) * P.ux[eid]!)
+    const t = w.pathHot[eid * HOT + H_NEXT_T]!
+    const delta = Math.abs((H.x[hole]! - w.pathHot[eid * HOT + H_X0]!) * w.pathHot[eid * HOT + H_UY]! - (H.y[hole]! - w.pathHot[eid * HOT + H_Y0]!) * w.pathHot[eid * HOT + H_UX]!)
     const rim = lockAtLip(w, eid, hole, delta, P.speed[eid]!, t, RimMode.None)
     P.mark[eid] = PathEvent.None
     if (P.speed[eid]! < vMax) {

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
+import { HOT, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../../src/ecs'
 import { EXACT, sequence, settle, shoot } from '../helpers'
 
 describe('integration system', () => {
@@ -83,7 +84,8 @@ describe('integration system', () => {
     for (let n = 0; n < 300; n++) balls.push(sim.addBall({ x: (n * 37) % 400, y: (n * 53) % 400, vx: ((n * 13) % 91) - 45.3, vy: ((n * 29) % 83) - 40.7 }))
     const w = sim.world
     const B = w.Ball
-    const P = w.Path
+    // the path's fields from the ball's row in world.pathHot
+    const P = (b: number, k: number) => w.pathHot[b * HOT + k]!
     let checked = 0
     for (let s = 0; s < 90; s++) {
       sim.step(1 / 60)
@@ -92,10 +94,10 @@ describe('integration system', () => {
         if (B.mode[b] !== 0) continue
         const got = [B.x[b]!, B.y[b]!, B.vx[b]!, B.vy[b]!]
         // the general form (what sampleRolling writes), evaluated here: d = v0·τ − ½·0·τ², x = x0 + ux·d
-        const tau = w.time - P.t0[b]!
-        const d = P.v0[b]! * tau - 0.5 * 0 * tau * tau
-        const v = P.v0[b]! - 0 * tau
-        expect(got).toEqual([P.x0[b]! + P.ux[b]! * d, P.y0[b]! + P.uy[b]! * d, P.ux[b]! * v, P.uy[b]! * v])
+        const tau = w.time - P(b, H_T0)
+        const d = P(b, H_V0) * tau - 0.5 * 0 * tau * tau
+        const v = P(b, H_V0) - 0 * tau
+        expect(got).toEqual([P(b, H_X0) + P(b, H_UX) * d, P(b, H_Y0) + P(b, H_UY) * d, P(b, H_UX) * v, P(b, H_UY) * v])
         checked++
       }
     }
