@@ -15,11 +15,11 @@ import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, pushEvent } from '../src/events.js'
 import { planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
-import { HeapKind, heapPop, heapTopLive } from '../src/contacts/eventHeap.js'
+import { HeapKind, heapPop, heapPush, heapTopLive } from '../src/contacts/eventHeap.js'
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
-import { sampleForContact } from '../src/contacts/evalMotion.js'
+import { motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
 import { pushId } from '../src/world/idLists.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
@@ -135,11 +135,7 @@ function orderedIntegration(w: BallWorld): void {
     }
   } else {
     const todo = takeMarked(w)
-    for (let i = 0, n = todo.count; i < n; i++) {
-      const eid = todo.ids[i]!
-      bumpVersion(w, eid)
-      predictBall(w, eid)
-    }
+    for (let i = 0, n = todo.count; i < n; i++) predictAfterEvent(w, todo.ids[i]!)
   }
   if (C.dirtyCount > 0) predictChanged(w)
   while (C.heapCount > 0) {
@@ -155,9 +151,8 @@ function orderedIntegration(w: BallWorld): void {
     if (kind === HeapKind.Own) {
       advanceThroughEvents(w, a, t)
       if (P.mark[a] !== PathEvent.None) return
-      // bookkeeping only (a lip exit, a near miss): the next event changed, so predict again
-      bumpVersion(w, a)
-      predictBall(w, a)
+      // bookkeeping only (a lip exit, a near miss)
+      predictAfterEvent(w, a)
     } else if (kind === HeapKind.Resume) {
       resumeSearch(w, a, b, t)
     } else {
@@ -205,6 +200,24 @@ function advanceDue(w: BallWorld, n: number, tEnd: number): void {
   }
   sink.v = acc
   for (let k = 0; k < n; k++) advanceThroughEvents(w, due[k]!, tEnd)
+}
+
+/**
+ * After ball a's own event (its entry in the heap taken): predicts it again, unless the event kept its
+ * path (a near miss, a lip exit, a skip-over: the same closed form since its last prediction) and that
+ * prediction already covers the path up to where it may change next. Then only its next event goes into
+ * the heap: its contacts found then still hold, and nothing new can be found before that span's end.
+ */
+function predictAfterEvent(w: BallWorld, a: number): void {
+  const C = w.collide!
+  if (w.Ball.mode[a] === BallMode.Rolling && C.predGen[a] === C.gen[a] && C.predicted[a] === C.stamp && motionEnd(w, a, C.until) <= C.spanEnd[a]!) {
+    C.isDirty[a] = 0
+    const own = w.pathHot[a * HOT + H_NEXT_T]!
+    if (own <= C.until) heapPush(C, own, HeapKind.Own, a, 0)
+    return
+  }
+  bumpVersion(w, a)
+  predictBall(w, a)
 }
 
 /** Predictions per moving ball in a window above which the next window ends with its step. */

@@ -107,11 +107,18 @@ export function motionStart(w: BallWorld, eid: number): number {
   return w.pathHot[eid * HOT + H_T0]!
 }
 
-/** End of the span over which a ball's current motion is known: its next own event, capped. */
+/**
+ * End of the span over which a ball's current motion is known, capped: its next own event, or for a rolling
+ * ball the later event up to which the planner found its path kept (CollisionState.formulaEnd).
+ */
 export function motionEnd(w: BallWorld, eid: number, cap: number): number {
   const mode = w.Ball.mode[eid]
   if (mode === BallMode.Resting) return cap
-  const t = w.pathHot[eid * HOT + H_NEXT_T]!
+  let t = w.pathHot[eid * HOT + H_NEXT_T]!
+  if (mode === BallMode.Rolling) {
+    const f = w.collide!.formulaEnd[eid]!
+    if (f > t) t = f
+  }
   return t < cap ? t : cap
 }
 

@@ -46,6 +46,8 @@ export function predictBall(w: BallWorld, a: number): void {
   if (mode !== BallMode.Resting) {
     C.predicted[a] = C.stamp
     C.predictions++
+    C.predGen[a] = C.gen[a]!
+    C.spanEnd[a] = endA
   }
 
   // moving balls' capsules: through the hash, or, for a ball too big or fast for it, directly

@@ -7,7 +7,7 @@
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
-import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance } from '../geometry.js'
+import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance, vSkip } from '../geometry.js'
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
@@ -40,7 +40,14 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
 // re-entrantly).
 // Doubles live in an object's fields, updated in place: a module-level `let` holding a double gets a fresh
 // heap number at every write (V8), which made every plan allocate.
-const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5 }
+const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5, stop: 0.5, change: 0.5, v0: 0.5, decel: 0.5, g: 0.5 }
+/**
+ * With ball-ball contacts on, the planner also finds the earliest candidate that may change the path's
+ * closed form (Q.change): not a near miss, not the exit from a locked hole, not a lip crossing the skip-over
+ * rule will fly over. Contact predictions then cover the path up to it (src/contacts/predict.ts), and the
+ * events before it need no new prediction. The hole walk goes on to it.
+ */
+let qTrack = false
 let qSHole = 0
 let qFrom = 0
 let qLocked = 0
@@ -59,12 +66,13 @@ function considerHole(i: number): number {
   const R = qXyr[3 * i + 2]!
   const p = hx * Q.ux + hy * Q.uy
   // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
-  if (p - R > Q.best || hid === qLocked) return Q.best
+  const bound = qTrack ? Q.change : Q.best
+  if (p - R > bound || hid === qLocked) return bound
   const c = hx * Q.uy - hy * Q.ux
   const c2 = c * c
   if (c2 < R * R) {
     // lip crossing, if the centre is still approaching the hole centre
-    if (!(p > Q.s)) return Q.best
+    if (!(p > Q.s)) return bound
     let d = p - Math.sqrt(R * R - c2)
     if (d < Q.s) d = Q.s // a rounding error behind (or found inside): decided now, never lost
     if (d < Q.best || (d === Q.best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
@@ -72,18 +80,20 @@ function considerHole(i: number): number {
       bestHole = hid
       bestKind = PathEvent.Lip
     }
+    // a crossing the skip-over rule flies over keeps the path (the rule as systems/skipOver.ts applies it)
+    if (qTrack && d < Q.change && !(speedAtDistance(d, Q.v0, Q.decel) > vSkip(Math.abs(c), R, Q.foot, Q.g))) Q.change = d
   } else {
     const f = R + Q.foot
-    if (c2 >= f * f) return Q.best
+    if (c2 >= f * f) return bound
     // near miss at the closest approach, if not already handled and not the hole the path leaves
-    if (!(p > Q.s || (p === Q.s && hid > qSHole)) || hid === qFrom) return Q.best
+    if (!(p > Q.s || (p === Q.s && hid > qSHole)) || hid === qFrom) return bound
     if (p < Q.best || (p === Q.best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
       Q.best = p
       bestHole = hid
       bestKind = PathEvent.Near
     }
   }
-  return Q.best
+  return qTrack ? Q.change : Q.best
 }
 
 /**
@@ -109,6 +119,7 @@ function considerWalls(w: BallWorld, e: number): void {
     if (d < Q.s) d = Q.s
     // a face the path reaches only beyond any distance a double can hold (u ≈ 0) is never reached
     if (!(d < Infinity)) continue
+    if (d < Q.change) Q.change = d
     // walls come before holes at the same distance (they are met first by the footprint)
     if (d < Q.best || (d === Q.best && bestKind !== PathEvent.Stop)) {
       Q.best = d
@@ -148,6 +159,13 @@ export function planRolling(w: BallWorld, eid: number): void {
   Q.best = stopDistance(v0, decel)
   bestHole = 0
   bestKind = Q.best === Infinity ? PathEvent.None : PathEvent.Stop
+  const C = w.collide
+  qTrack = C !== null
+  Q.stop = Q.best
+  Q.change = Q.best
+  Q.v0 = v0
+  Q.decel = decel
+  Q.g = w.config.GRAVITY
 
   if (v0 > 0) {
     const locked = qLocked
@@ -178,6 +196,7 @@ export function planRolling(w: BallWorld, eid: number): void {
         bestHole = locked
         bestKind = k
       }
+      if (k !== PathEvent.Exit && d < Q.change) Q.change = d
     }
 
     if (w.walls !== 0) considerWalls(w, w.walls)
@@ -190,7 +209,7 @@ export function planRolling(w: BallWorld, eid: number): void {
       for (let i = 0, n = table.count; i < n; i++) considerHole(i)
     } else {
       if (grid.dirty || Q.foot > grid.ballRadius) buildHoleGrid(grid, table, Math.max(Q.foot, grid.ballRadius, w.config.BALL_RADIUS))
-      walkHoleGrid(grid, Q.x0, Q.y0, Q.ux, Q.uy, Q.s, Q.best, considerHole)
+      walkHoleGrid(grid, Q.x0, Q.y0, Q.ux, Q.uy, Q.s, qTrack ? Q.change : Q.best, considerHole)
     }
   }
 
@@ -209,6 +228,16 @@ export function planRolling(w: BallWorld, eid: number): void {
   } else {
     H[h + H_NEXT_S] = Q.best
     H[h + H_NEXT_T] = t
+  }
+  if (C !== null) {
+    // when the path's closed form may change: at its next event, or later when that keeps the path
+    let end = t
+    if (Q.change > Q.best && v0 > 0) {
+      const tc = H[h + H_T0]! + (Q.change === Q.stop ? stopTime(v0, decel) : timeToDistance(Q.change, v0, decel))
+      end = tc < NEVER ? tc : NEVER
+      if (end < t) end = t
+    }
+    C.formulaEnd[eid] = end
   }
 }
 

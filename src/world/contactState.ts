@@ -37,6 +37,15 @@ export interface CollisionState {
   /** moving balls too big or too fast for the swept-capsule hash in this window (MAX_CAPSULE_CELLS) */
   big: Uint32Array
   bigCount: number
+  /**
+   * Per ball: when its rolling path's closed form may change next, s (set by the planner: its next event,
+   * or a later one when the events before it keep the path); a count of its path starts (setPathStart); and
+   * at its last prediction, that count and the end of the span the prediction covered
+   */
+  formulaEnd: Float64Array
+  gen: Uint32Array
+  predGen: Uint32Array
+  spanEnd: Float64Array
   /** the sweep stamp at which each ball was last predicted (it has been predicted in this window when equal) */
   predicted: Uint32Array
   /**
@@ -139,6 +148,10 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     bigRestCount: 0,
     big: new Uint32Array(16),
     bigCount: 0,
+    formulaEnd: new Float64Array(capacity),
+    gen: new Uint32Array(capacity),
+    predGen: new Uint32Array(capacity),
+    spanEnd: new Float64Array(capacity),
     predicted: new Uint32Array(capacity),
     until: NO_WINDOW,
     dirty: new Uint32Array(16),
@@ -210,6 +223,10 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.restPrev = grown(C.restPrev, capacity)
   C.restClass = grown(C.restClass, capacity)
   C.predicted = grown(C.predicted, capacity)
+  C.formulaEnd = grown(C.formulaEnd, capacity)
+  C.gen = grown(C.gen, capacity)
+  C.predGen = grown(C.predGen, capacity)
+  C.spanEnd = grown(C.spanEnd, capacity)
   C.isDirty = grown(C.isDirty, capacity)
   C.seen = grown(C.seen, capacity)
   C.spotNext = grown(C.spotNext, capacity)

@@ -27,6 +27,8 @@ export function setPathStart(w: BallWorld, eid: number, x: number, y: number, ux
   H[h + H_UY] = uy
   H[h + H_V0] = v0
   H[h + H_T0] = t0
+  const C = w.collide
+  if (C !== null) C.gen[eid] = (C.gen[eid]! + 1) >>> 0
 }
 
 /** Sets the time of a ball's next event. */
