@@ -148,4 +148,34 @@ describe('contacts on: predictions kept across steps', () => {
     expect(collisions(events)).toHaveLength(0)
     expect(sim.ballState(a).x).toBeCloseTo(-100 + 200 * (91 / 60), 6)
   })
+
+  it('a skip-over and a near miss keep the path: the ball is not predicted again at them, and strikes the ball beyond at the instant it would with no hole', () => {
+    const run = (holes: boolean) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      // above v_skip (about 240 px/s at the crossing) over the first hole; the second's lip circle passes
+      // 25 px from the path (the centre never enters; the 11-px ball's footprint does): a near miss
+      if (holes) {
+        sim.addHole({ x: 200, y: 400 })
+        sim.addHole({ x: 225, y: 250 })
+      }
+      const a = sim.addBall({ x: 200, y: 560, vx: 0, vy: -900 })
+      const b = sim.addBall({ x: 200, y: 80, vx: 0, vy: 0 })
+      const C = sim.world.collide!
+      const events: BallEvent[] = []
+      for (let i = 0; i < 60 && collisions(events).length === 0; i++) {
+        sim.step(1 / 60)
+        events.push(...sim.drainEvents().filter((e) => e.ball === a))
+      }
+      return { events, hit: collisions(events)[0], a, b, predictions: C.predictions }
+    }
+    const plain = run(false)
+    const holed = run(true)
+    expect(holed.events.map((e) => e.type)).toEqual(['skip', 'nearMiss', 'collision'])
+    expect(holed.hit).toBeDefined()
+    // the same closed form to the contact: the same instant, every bit
+    expect(holed.hit!.time).toBe(plain.hit!.time)
+    expect(holed.hit!.ball).toBe(holed.a)
+    // no prediction at the skip-over or the near miss: as many as with no hole
+    expect(holed.predictions).toBe(plain.predictions)
+  })
 })
