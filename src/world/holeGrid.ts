@@ -2,7 +2,10 @@
 // planning a path costs the cells it crosses instead of every hole on the panel.
 //
 // Cells are at least as wide as the farthest a hole can matter to a path (R + r: a near miss), so every
-// hole whose events a path can meet lies in the 3 × 3 block around a cell the path's centre line crosses.
+// hole whose events a path can meet lies in the 3 × 3 block around a cell the path's centre line crosses;
+// each cell lists the holes of its block (built once per change of the holes), so the walk reads one list
+// a cell (reading the nine cells of each block measured 0.9× / 0.93× the step on the 1,000-ball panel
+// without / with contacts, side by side).
 // The walk goes cell by cell in order of distance; a hole not yet seen when the walk enters a cell at
 // distance t has its closest approach beyond t, so none of its events comes before t − R_max, and the walk
 // stops once t − R_max passes the best event found.
@@ -19,7 +22,10 @@ export interface HoleGrid {
   minY: number
   nx: number
   ny: number
-  /** CSR: holes of cell c are items[start[c] .. start[c + 1]) (indices into the hole table) */
+  /**
+   * CSR: the holes of the 3 × 3 block of cells around cell c are items[start[c] .. start[c + 1]) (indices
+   * into the hole table; each hole is listed by the up to 9 cells around its own)
+   */
   start: Int32Array
   items: Int32Array
   /** largest hole radius, px */
@@ -95,9 +101,32 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
   }
   for (let c = 0; c < nx * ny; c++) start[c + 1]! += start[c]!
   const fill = start.slice(0, nx * ny)
-  const items = new Int32Array(n)
-  for (let i = 0; i < n; i++) items[fill[cellOf[i]!]!++] = i
-  grid.start = start
+  const own = new Int32Array(n)
+  for (let i = 0; i < n; i++) own[fill[cellOf[i]!]!++] = i
+  // each cell lists the holes of the 3 × 3 block around it, block row by block row, each cell's in table
+  // order: the walk then reads one list a cell it crosses, and meets the same holes in the same order
+  const block = new Int32Array(nx * ny + 1)
+  for (let cy = 0; cy < ny; cy++) {
+    for (let cx = 0; cx < nx; cx++) {
+      let k = 0
+      for (let by = Math.max(0, cy - 1); by <= Math.min(ny - 1, cy + 1); by++) {
+        for (let bx = Math.max(0, cx - 1); bx <= Math.min(nx - 1, cx + 1); bx++) k += start[by * nx + bx + 1]! - start[by * nx + bx]!
+      }
+      block[cy * nx + cx + 1] = k
+    }
+  }
+  for (let c = 0; c < nx * ny; c++) block[c + 1]! += block[c]!
+  const items = new Int32Array(block[nx * ny]!)
+  for (let cy = 0, o = 0; cy < ny; cy++) {
+    for (let cx = 0; cx < nx; cx++) {
+      for (let by = Math.max(0, cy - 1); by <= Math.min(ny - 1, cy + 1); by++) {
+        for (let bx = Math.max(0, cx - 1); bx <= Math.min(nx - 1, cx + 1); bx++) {
+          for (let k = start[by * nx + bx]!, e = start[by * nx + bx + 1]!; k < e; k++) items[o++] = own[k]!
+        }
+      }
+    }
+  }
+  grid.start = block
   grid.items = items
   // stamps from before the rebuild must not read as seen: start them afresh
   if (grid.seen.length < n) grid.seen = new Uint32Array(Math.max(n, 2 * grid.seen.length))
@@ -170,19 +199,13 @@ export function walkHoleGrid(
   const reach = grid.maxRadius
   let tEnter = tMin
   for (;;) {
-    // the 3 × 3 block around the cell
-    for (let by = cy - 1; by <= cy + 1; by++) {
-      if (by < 0 || by >= ny) continue
-      for (let bx = cx - 1; bx <= cx + 1; bx++) {
-        if (bx < 0 || bx >= nx) continue
-        const c = by * nx + bx
-        for (let k = start[c]!, e = start[c + 1]!; k < e; k++) {
-          const i = items[k]!
-          if (seen[i] === q) continue
-          seen[i] = q
-          best = visit(i)
-        }
-      }
+    // the holes of the 3 × 3 block around the cell (listed with it)
+    const c = cy * nx + cx
+    for (let k = start[c]!, e = start[c + 1]!; k < e; k++) {
+      const i = items[k]!
+      if (seen[i] === q) continue
+      seen[i] = q
+      best = visit(i)
     }
     if (tNextX < tNextY) {
       tEnter = tNextX

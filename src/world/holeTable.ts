@@ -89,8 +89,9 @@ export function removeHoleFromTable(world: BallWorld, eid: number): void {
 
 /**
  * The hole whose lip circle contains (x, y) (strictly inside), or 0. Lip circles never overlap, so there is
- * at most one. From the hole count at which the planner walks the hole grid, the 3 × 3 cells around the
- * point (a cell is at least as wide as the largest lip radius); below it, every hole.
+ * at most one. From the hole count at which the planner walks the hole grid, the holes of the 3 × 3 cells
+ * around the point (one list of the grid: a cell is at least as wide as the largest lip radius); below it,
+ * every hole.
  */
 export function holeAt(world: BallWorld, x: number, y: number): number {
   const t = world.holes
@@ -99,17 +100,15 @@ export function holeAt(world: BallWorld, x: number, y: number): number {
     if (g.dirty) buildHoleGrid(g, t, Math.max(g.ballRadius, world.config.BALL_RADIUS))
     const cx = Math.floor((x - g.minX) / g.cell)
     const cy = Math.floor((y - g.minY) / g.cell)
-    for (let gy = Math.max(0, cy - 1); gy <= Math.min(g.ny - 1, cy + 1); gy++) {
-      for (let gx = Math.max(0, cx - 1); gx <= Math.min(g.nx - 1, cx + 1); gx++) {
-        const c = gy * g.nx + gx
-        for (let k = g.start[c]!; k < g.start[c + 1]!; k++) {
-          const i = g.items[k]!
-          const dx = x - t.xyr[3 * i]!
-          const dy = y - t.xyr[3 * i + 1]!
-          const R = t.xyr[3 * i + 2]!
-          if (dx * dx + dy * dy < R * R) return t.ids[i]!
-        }
-      }
+    // outside the grid's padded box: farther than a cell from every hole
+    if (!(cx >= 0 && cx < g.nx && cy >= 0 && cy < g.ny)) return 0
+    const c = cy * g.nx + cx
+    for (let k = g.start[c]!; k < g.start[c + 1]!; k++) {
+      const i = g.items[k]!
+      const dx = x - t.xyr[3 * i]!
+      const dy = y - t.xyr[3 * i + 1]!
+      const R = t.xyr[3 * i + 2]!
+      if (dx * dx + dy * dy < R * R) return t.ids[i]!
     }
     return 0
   }
