@@ -15,6 +15,11 @@ export function vSkip(delta: number, holeRadius: number, ballRadius: number, gra
   return k > 0 ? holeRadius * Math.sqrt((2 * gravity) / ballRadius) * Math.sqrt(k) : 0
 }
 
+/** The skip-over rule: a ball crossing the lip at offset delta and speed v flies over (v > v_skip). */
+export function fliesOver(v: number, delta: number, holeRadius: number, ballRadius: number, gravity: number): boolean {
+  return v > vSkip(delta, holeRadius, ballRadius, gravity)
+}
+
 /**
  * Stage 1 capture window (Penner's effective hole), the largest offset captured clean at speed v:
  *   'ellipse' (the design):      δ_eff(v) = R·√(1 − (v/V_MAX)²)

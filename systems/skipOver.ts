@@ -7,7 +7,7 @@
 import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { EventType } from '../src/events.js'
-import { vSkip } from '../src/geometry.js'
+import { fliesOver } from '../src/geometry.js'
 import { emitHoleEvent } from '../src/motion/ballFate.js'
 import { pathOffset, planRolling } from '../src/motion/rolling.js'
 import { lockAtLip } from '../src/world/rimSlots.js'
@@ -29,7 +29,7 @@ export function skipOverSystem(w: BallWorld): void {
     const v = P.speed[eid]!
     const t = hotNextT(w, eid)
     const rim = lockAtLip(w, eid, hole, delta, v, t, RimMode.Transit)
-    if (v > vSkip(delta, H.radius[hole]!, w.Ball.radius[eid]!, g)) {
+    if (fliesOver(v, delta, H.radius[hole]!, w.Ball.radius[eid]!, g)) {
       RC.mode[rim] = RimMode.Skipping
       P.mark[eid] = PathEvent.None
       emitHoleEvent(w, EventType.Skip, eid, hole, t)

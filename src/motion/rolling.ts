@@ -7,7 +7,7 @@
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
-import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance, vSkip } from '../geometry.js'
+import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance, fliesOver } from '../geometry.js'
 import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
@@ -80,8 +80,8 @@ function considerHole(i: number): number {
       bestHole = hid
       bestKind = PathEvent.Lip
     }
-    // a crossing the skip-over rule flies over keeps the path (the rule as systems/skipOver.ts applies it)
-    if (qTrack && d < Q.change && !(speedAtDistance(d, Q.v0, Q.decel) > vSkip(Math.abs(c), R, Q.foot, Q.g))) Q.change = d
+    // a crossing the skip-over rule flies over keeps the path (the rule systems/skipOver.ts applies)
+    if (qTrack && d < Q.change && !fliesOver(speedAtDistance(d, Q.v0, Q.decel), Math.abs(c), R, Q.foot, Q.g)) Q.change = d
   } else {
     const f = R + Q.foot
     if (c2 >= f * f) return bound

@@ -105,18 +105,9 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
   for (let i = 0; i < n; i++) own[fill[cellOf[i]!]!++] = i
   // each cell lists the holes of the 3 × 3 block around it, block row by block row, each cell's in table
   // order: the walk then reads one list a cell it crosses, and meets the same holes in the same order
+  // (each hole is listed by at most 9 cells)
   const block = new Int32Array(nx * ny + 1)
-  for (let cy = 0; cy < ny; cy++) {
-    for (let cx = 0; cx < nx; cx++) {
-      let k = 0
-      for (let by = Math.max(0, cy - 1); by <= Math.min(ny - 1, cy + 1); by++) {
-        for (let bx = Math.max(0, cx - 1); bx <= Math.min(nx - 1, cx + 1); bx++) k += start[by * nx + bx + 1]! - start[by * nx + bx]!
-      }
-      block[cy * nx + cx + 1] = k
-    }
-  }
-  for (let c = 0; c < nx * ny; c++) block[c + 1]! += block[c]!
-  const items = new Int32Array(block[nx * ny]!)
+  const items = new Int32Array(9 * n)
   for (let cy = 0, o = 0; cy < ny; cy++) {
     for (let cx = 0; cx < nx; cx++) {
       for (let by = Math.max(0, cy - 1); by <= Math.min(ny - 1, cy + 1); by++) {
@@ -124,6 +115,7 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
           for (let k = start[by * nx + bx]!, e = start[by * nx + bx + 1]!; k < e; k++) items[o++] = own[k]!
         }
       }
+      block[cy * nx + cx + 1] = o
     }
   }
   grid.start = block
