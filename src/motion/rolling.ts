@@ -160,9 +160,15 @@ export function planRolling(w: BallWorld, eid: number): void {
   bestHole = 0
   bestKind = Q.best === Infinity ? PathEvent.None : PathEvent.Stop
   const C = w.collide
-  qTrack = C !== null
   Q.stop = Q.best
   Q.change = Q.best
+  // the same path, short of where it was found to change (a skip-over, a near miss, a lip exit since):
+  // that distance still holds, and the walk goes only to the next event
+  qTrack = C !== null
+  if (C !== null && C.changeGen[eid] === C.gen[eid] && C.changeS[eid]! > Q.s) {
+    qTrack = false
+    Q.change = C.changeS[eid]!
+  }
   Q.v0 = v0
   Q.decel = decel
   Q.g = w.config.GRAVITY
@@ -230,6 +236,10 @@ export function planRolling(w: BallWorld, eid: number): void {
     H[h + H_NEXT_T] = t
   }
   if (C !== null) {
+    if (qTrack) {
+      C.changeS[eid] = Q.change
+      C.changeGen[eid] = C.gen[eid]!
+    }
     // when the path's closed form may change: at its next event, or later when that keeps the path
     let end = t
     if (Q.change > Q.best && v0 > 0) {

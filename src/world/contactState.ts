@@ -46,6 +46,13 @@ export interface CollisionState {
   gen: Uint32Array
   predGen: Uint32Array
   spanEnd: Float64Array
+  /**
+   * Per ball: the distance along its path at which the planner last found the closed form may change, and
+   * the path's start count then. A plan of the same path that has not reached that distance (after a
+   * skip-over, a near miss, a lip exit) reuses it and walks the holes only to its next event.
+   */
+  changeS: Float64Array
+  changeGen: Uint32Array
   /** the sweep stamp at which each ball was last predicted (it has been predicted in this window when equal) */
   predicted: Uint32Array
   /**
@@ -152,6 +159,8 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     gen: new Uint32Array(capacity),
     predGen: new Uint32Array(capacity),
     spanEnd: new Float64Array(capacity),
+    changeS: new Float64Array(capacity),
+    changeGen: new Uint32Array(capacity),
     predicted: new Uint32Array(capacity),
     until: NO_WINDOW,
     dirty: new Uint32Array(16),
@@ -227,6 +236,8 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.gen = grown(C.gen, capacity)
   C.predGen = grown(C.predGen, capacity)
   C.spanEnd = grown(C.spanEnd, capacity)
+  C.changeS = grown(C.changeS, capacity)
+  C.changeGen = grown(C.changeGen, capacity)
   C.isDirty = grown(C.isDirty, capacity)
   C.seen = grown(C.seen, capacity)
   C.spotNext = grown(C.spotNext, capacity)
