@@ -15,7 +15,7 @@ import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, pushEvent } from '../src/events.js'
 import { planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
-import { HeapKind, heapPop, heapPush, heapTopLive } from '../src/contacts/eventHeap.js'
+import { HeapKind, heapPop, heapPush, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
@@ -139,12 +139,12 @@ function orderedIntegration(w: BallWorld): void {
   }
   if (C.dirtyCount > 0) predictChanged(w)
   while (C.heapCount > 0) {
-    const t = C.hT[0]!
+    const t = heapTopT(C)
     if (t > tEnd) break
     const live = heapTopLive(C)
-    const kind = C.hKind[0]!
-    const a = C.hA[0]!
-    const b = C.hB[0]!
+    const kind = heapTopKind(C)
+    const a = heapTopA(C)
+    const b = heapTopB(C)
     heapPop(C)
     if (!live) continue
     if (t > C.now) C.now = t

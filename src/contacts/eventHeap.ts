@@ -1,85 +1,121 @@
 // The event heap of a contacts-on step: every event (a ball's own, a pair's contact, a search to resume)
 // in global time order, keyed by (time, a, b, kind); entries carry their balls' path versions and are
 // stale once a version moves on.
+//
+// A 4-ary heap of (time, entry) pairs: sifting moves two numbers a level, and the four children of a node
+// sit side by side. An entry's balls, versions and kind live in a pool (eA, eB, eVA, eVB, eKind), read only
+// when two times tie and when the top is taken; the pool's free entries are kept on a stack.
 import { grown, type CollisionState } from '../world/contactState.js'
 
 export const HeapKind = { Own: 0, Contact: 1, Resume: 2 } as const
 
-function heapLess(C: CollisionState, i: number, j: number): boolean {
-  const ti = C.hT[i]!
-  const tj = C.hT[j]!
-  if (ti !== tj) return ti < tj
-  if (C.hA[i] !== C.hA[j]) return C.hA[i]! < C.hA[j]!
-  if (C.hB[i] !== C.hB[j]) return C.hB[i]! < C.hB[j]!
-  return C.hKind[i]! < C.hKind[j]!
-}
-
-function heapSwap(C: CollisionState, i: number, j: number): void {
-  const f = C.hT[i]!
-  C.hT[i] = C.hT[j]!
-  C.hT[j] = f
-  let u = C.hA[i]!
-  C.hA[i] = C.hA[j]!
-  C.hA[j] = u
-  u = C.hB[i]!
-  C.hB[i] = C.hB[j]!
-  C.hB[j] = u
-  u = C.hVA[i]!
-  C.hVA[i] = C.hVA[j]!
-  C.hVA[j] = u
-  u = C.hVB[i]!
-  C.hVB[i] = C.hVB[j]!
-  C.hVB[j] = u
-  u = C.hKind[i]!
-  C.hKind[i] = C.hKind[j]!
-  C.hKind[j] = u
+/** (t1, entry e1) before (t2, e2): by time, then a, b, kind */
+function before(C: CollisionState, t1: number, e1: number, t2: number, e2: number): boolean {
+  if (t1 !== t2) return t1 < t2
+  if (C.eA[e1] !== C.eA[e2]) return C.eA[e1]! < C.eA[e2]!
+  if (C.eB[e1] !== C.eB[e2]) return C.eB[e1]! < C.eB[e2]!
+  return C.eKind[e1]! < C.eKind[e2]!
 }
 
 export function heapPush(C: CollisionState, t: number, kind: number, a: number, b: number): void {
-  if (C.heapCount === C.hT.length) {
-    const n = C.hT.length * 2
-    C.hT = grown(C.hT, n)
-    C.hA = grown(C.hA, n)
-    C.hB = grown(C.hB, n)
-    C.hVA = grown(C.hVA, n)
-    C.hVB = grown(C.hVB, n)
-    C.hKind = grown(C.hKind, n)
+  let e: number
+  if (C.eFreeCount > 0) e = C.eFree[--C.eFreeCount]!
+  else {
+    if (C.eCount === C.eA.length) growPool(C, C.eCount * 2)
+    e = C.eCount++
   }
+  C.eA[e] = a
+  C.eB[e] = b
+  C.eVA[e] = C.ver[a]!
+  C.eVB[e] = b === 0 ? 0 : C.ver[b]!
+  C.eKind[e] = kind
+  if (C.heapCount === C.hT.length) {
+    C.hT = grown(C.hT, C.hT.length * 2)
+    C.hE = grown(C.hE, C.hE.length * 2)
+  }
+  const hT = C.hT
+  const hE = C.hE
   let i = C.heapCount++
-  C.hT[i] = t
-  C.hA[i] = a
-  C.hB[i] = b
-  C.hVA[i] = C.ver[a]!
-  C.hVB[i] = b === 0 ? 0 : C.ver[b]!
-  C.hKind[i] = kind
   while (i > 0) {
-    const p = (i - 1) >> 1
-    if (!heapLess(C, i, p)) break
-    heapSwap(C, i, p)
+    const p = (i - 1) >> 2
+    const tp = hT[p]!
+    if (!(t < tp || (t === tp && before(C, t, e, tp, hE[p]!)))) break
+    hT[i] = tp
+    hE[i] = hE[p]!
     i = p
   }
+  hT[i] = t
+  hE[i] = e
 }
 
-/** Removes the top entry (read it from index 0 first). */
+/** Removes the top entry (read it first: heapTopT, heapTopKind, heapTopA, heapTopB, heapTopLive). */
 export function heapPop(C: CollisionState): void {
+  const hT = C.hT
+  const hE = C.hE
+  C.eFree[C.eFreeCount++] = hE[0]!
   const n = --C.heapCount
   if (n === 0) return
-  heapSwap(C, 0, n)
+  const t = hT[n]!
+  const e = hE[n]!
   let i = 0
   for (;;) {
-    const l = 2 * i + 1
-    if (l >= n) break
-    const r = l + 1
-    const m = r < n && heapLess(C, r, l) ? r : l
-    if (!heapLess(C, m, i)) break
-    heapSwap(C, i, m)
+    const c = 4 * i + 1
+    if (c >= n) break
+    let m = c
+    let tm = hT[c]!
+    const last = c + 3 < n ? c + 3 : n - 1
+    for (let k = c + 1; k <= last; k++) {
+      const tk = hT[k]!
+      if (tk < tm || (tk === tm && before(C, tk, hE[k]!, tm, hE[m]!))) {
+        m = k
+        tm = tk
+      }
+    }
+    if (!(tm < t || (tm === t && before(C, tm, hE[m]!, t, e)))) break
+    hT[i] = tm
+    hE[i] = hE[m]!
     i = m
   }
+  hT[i] = t
+  hE[i] = e
+}
+
+/** Empties the heap and its pool. */
+export function heapClear(C: CollisionState): void {
+  C.heapCount = 0
+  C.eCount = 0
+  C.eFreeCount = 0
+}
+
+export function heapTopT(C: CollisionState): number {
+  return C.hT[0]!
+}
+
+export function heapTopKind(C: CollisionState): number {
+  return C.eKind[C.hE[0]!]!
+}
+
+export function heapTopA(C: CollisionState): number {
+  return C.eA[C.hE[0]!]!
+}
+
+export function heapTopB(C: CollisionState): number {
+  return C.eB[C.hE[0]!]!
 }
 
 /** True when the top entry was made with its balls' current versions. */
 export function heapTopLive(C: CollisionState): boolean {
-  const a = C.hA[0]!
-  const b = C.hB[0]!
-  return C.ver[a] === C.hVA[0] && (b === 0 || C.ver[b] === C.hVB[0])
+  const e = C.hE[0]!
+  const a = C.eA[e]!
+  const b = C.eB[e]!
+  return C.ver[a] === C.eVA[e] && (b === 0 || C.ver[b] === C.eVB[e])
+}
+
+function growPool(C: CollisionState, n: number): void {
+  C.eA = grown(C.eA, n)
+  C.eB = grown(C.eB, n)
+  C.eVA = grown(C.eVA, n)
+  C.eVB = grown(C.eVB, n)
+  C.eKind = grown(C.eKind, n)
+  C.eFree = grown(C.eFree, n)
 }

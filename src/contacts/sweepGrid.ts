@@ -5,6 +5,7 @@ import { grown, type CollisionState } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { cogRadius } from '../geometry.js'
 import { bucketOf } from '../world/restingGrid.js'
+import { heapClear } from './eventHeap.js'
 import { AT, E, X, Y, evalBall, motionEnd } from './evalMotion.js'
 
 /**
@@ -58,7 +59,7 @@ export function capsuleCells(C: CollisionState, x1: number, y1: number, x2: numb
 export function beginWindow(w: BallWorld, until: number): void {
   const C = w.collide!
   C.until = until
-  C.heapCount = 0
+  heapClear(C)
   C.entCount = 0
   C.entLive = 0
   C.bigCount = 0

@@ -103,14 +103,19 @@ export interface CollisionState {
   /** members of the touching cluster being settled */
   cluster: Uint32Array
   clusterCount: number
-  /** binary heap of events, keyed by (time, a, b, kind) */
+  /** the event heap (src/contacts/eventHeap.ts): each node's time and pool entry */
   hT: Float64Array
-  hA: Uint32Array
-  hB: Uint32Array
-  hVA: Uint32Array
-  hVB: Uint32Array
-  hKind: Uint8Array
+  hE: Uint32Array
   heapCount: number
+  /** its entries' pool: balls, their path versions, kind; entries below eCount not in the heap are on eFree */
+  eA: Uint32Array
+  eB: Uint32Array
+  eVA: Uint32Array
+  eVB: Uint32Array
+  eKind: Uint8Array
+  eFree: Uint32Array
+  eFreeCount: number
+  eCount: number
   /**
    * spot grid (src/contacts/spot.ts): the moving balls hashed by the cell of their centre at the world's
    * time `spotTime`, built when a spot is first checked at that time and kept while balls are put down;
@@ -189,12 +194,16 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     cluster: new Uint32Array(MAX_CLUSTER),
     clusterCount: 0,
     hT: new Float64Array(1 << 10),
-    hA: new Uint32Array(1 << 10),
-    hB: new Uint32Array(1 << 10),
-    hVA: new Uint32Array(1 << 10),
-    hVB: new Uint32Array(1 << 10),
-    hKind: new Uint8Array(1 << 10),
+    hE: new Uint32Array(1 << 10),
     heapCount: 0,
+    eA: new Uint32Array(1 << 10),
+    eB: new Uint32Array(1 << 10),
+    eVA: new Uint32Array(1 << 10),
+    eVB: new Uint32Array(1 << 10),
+    eKind: new Uint8Array(1 << 10),
+    eFree: new Uint32Array(1 << 10),
+    eFreeCount: 0,
+    eCount: 0,
     stepContacts: new Uint32Array(capacity),
     stepContactsAt: new Uint32Array(capacity),
     spotHead: new Uint32Array(1 << 8),
