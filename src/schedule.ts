@@ -10,7 +10,7 @@ import { cogGateSystem } from '../systems/cogGate.js'
 import { fixedContactsSystem } from '../systems/fixedContacts.js'
 import { tabulatedRimSystem } from '../systems/tabulatedRim.js'
 import { heroReferenceSystem } from '../systems/heroReference.js'
-import { integrationSystem } from '../systems/integration.js'
+import { integrationSystem, setLipBatching } from '../systems/integration.js'
 import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
@@ -118,15 +118,27 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
 /** Runs the passes from the world's time to tEnd. */
 function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {
   world.tickEnd = tEnd
-  // with ball-ball contacts a pass handles one event, so the bound is per moving ball
+  // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball
   const maxPasses = world.collide === null ? world.config.MAX_EVENT_PASSES : world.config.MAX_EVENT_PASSES * (world.moving.count + 1)
-  for (world.pass = 0; world.pass < maxPasses; world.pass++) {
-    for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
-    if (world.marked.count === 0) break
+  setLipBatching(world.collide !== null && world.config.RIM_MODEL !== 'tabulated' && isDefault(schedule))
+  try {
+    for (world.pass = 0; world.pass < maxPasses; world.pass++) {
+      for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
+      if (world.marked.count === 0) break
+    }
+  } finally {
+    setLipBatching(false)
   }
   // out of passes: the balls still behind wait out the step (src/motion/pause.ts), none is left behind
   if (world.pass === maxPasses && world.config.METHOD === 'exact') waitOutStep(world)
   world.time = world.tickEnd
+}
+
+/** The default schedule's systems, in its order (a copy from createSchedule is one). */
+function isDefault(schedule: readonly ScheduleEntry[]): boolean {
+  if (schedule.length !== DEFAULT_SCHEDULE.length) return false
+  for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run !== DEFAULT_SCHEDULE[i]!.run) return false
+  return true
 }
 
 /** The default schedule with the v1 rule ahead of the six stages: for charting the v1 model (docs/physical.md). */

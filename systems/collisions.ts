@@ -2,7 +2,7 @@
 // system finds the contact exactly and marks both balls; this system applies the contact law and restarts
 // the balls on straight paths from the contact.
 //   contact: normal impulse with restitution BALL_RESTITUTION and the balls' masses, tangential velocity
-//     kept (resolveContact in src/collide.ts); elastic when either ball touched another within
+//     kept (resolveContact in src/contacts/law.ts); elastic when either ball touched another within
 //     CONTACT_DURATION (a push runs along a row of touching balls as in Newton's cradle)
 //   settling contact (approach slower than BALL_SETTLE_SPEED, or the same two balls touching again with
 //     nothing between, or a ball past MAX_STEP_CONTACTS contacts in this step: a light ball squeezed

@@ -13,7 +13,8 @@ import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, pushEvent } from '../src/events.js'
-import { planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
+import { pathOffset, planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
+import { capturesClean, fliesOver } from '../src/geometry.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
 import { HeapKind, heapPop, heapPush, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
 import { beginWindow } from '../src/contacts/sweepGrid.js'
@@ -102,7 +103,8 @@ export function integrationSystem(w: BallWorld): void {
 }
 
 /**
- * With ball-ball contacts on: one event per pass, in global time order (src/collide.ts). Predictions live
+ * With ball-ball contacts on: one event per pass (and the lip crossings keptOrTaken allows after it), in
+ * global time order (src/contacts/eventHeap.ts). Predictions live
  * in a window that may outlast the step (C.until, config.PREDICTION_HORIZON ahead, or to the step's end): the first step past
  * a window's end starts another and predicts every moving ball; other passes predict again only the balls
  * the systems just moved and those whose paths changed since (pathChanged: commands, the launcher). Then
@@ -138,6 +140,7 @@ function orderedIntegration(w: BallWorld): void {
     for (let i = 0, n = todo.count; i < n; i++) predictAfterEvent(w, todo.ids[i]!)
   }
   if (C.dirtyCount > 0) predictChanged(w)
+  const held = w.marked
   while (C.heapCount > 0) {
     const t = heapTopT(C)
     if (t > tEnd) break
@@ -145,12 +148,19 @@ function orderedIntegration(w: BallWorld): void {
     const kind = heapTopKind(C)
     const a = heapTopA(C)
     const b = heapTopB(C)
+    // an event of a ball whose lip crossing this pass has yet to decide waits for the decision
+    if (held.count > 0 && live && (P.mark[a] !== PathEvent.None || (b !== 0 && P.mark[b] !== PathEvent.None))) return
     heapPop(C)
     if (!live) continue
     if (t > C.now) C.now = t
     if (kind === HeapKind.Own) {
       advanceThroughEvents(w, a, t)
-      if (P.mark[a] !== PathEvent.None) return
+      if (P.mark[a] !== PathEvent.None) {
+        // a lip crossing the default stages will skip over or capture clean: the decision keeps the path or
+        // takes the ball out, and can change nothing another ball meets; the pass takes later events too
+        if (lipBatching && keptOrTaken(w, a)) continue
+        return
+      }
       // bookkeeping only (a lip exit, a near miss)
       predictAfterEvent(w, a)
     } else if (kind === HeapKind.Resume) {
@@ -161,6 +171,8 @@ function orderedIntegration(w: BallWorld): void {
       return
     }
   }
+  // the crossings taken in this pass are decided first
+  if (held.count > 0) return
   // nothing left before the step's end
   const balls = w.moving.dense
   const mode = w.Ball.mode
@@ -170,6 +182,30 @@ function orderedIntegration(w: BallWorld): void {
     else sampleRolling(w, eid, tEnd)
   }
   C.now = tEnd
+}
+
+/**
+ * Set by the schedule runner for a window whose systems are the default schedule's and whose rim model is
+ * the design's: only then does a lip crossing's decision follow from keptOrTaken's rules.
+ */
+let lipBatching = false
+
+export function setLipBatching(on: boolean): void {
+  lipBatching = on
+}
+
+/**
+ * Whether ball a's marked lip crossing is one the default stages skip over (systems/skipOver.ts) or capture
+ * clean (systems/capture.ts), from the same quantities those systems decide with; not a hero ball's.
+ */
+function keptOrTaken(w: BallWorld, a: number): boolean {
+  if (w.Path.mark[a] !== PathEvent.Lip || w.Ball.hero[a] === 1) return false
+  const hole = w.Path.markHole[a]!
+  const delta = Math.abs(pathOffset(w, a, hole))
+  const v = w.Path.speed[a]!
+  const R = w.Hole.radius[hole]!
+  const cfg = w.config
+  return fliesOver(v, delta, R, w.Ball.radius[a]!, cfg.GRAVITY) || capturesClean(delta, v, R, cfg.V_MAX, cfg.CAPTURE_WINDOW)
 }
 
 /** the balls with an event in the step, listed by the pass over the moving balls (in its order) */

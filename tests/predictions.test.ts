@@ -3,7 +3,7 @@
 // result must be what predicting at every step gives (the adversarial suite compares random API sequences
 // at two horizons; these are the named cases).
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../src/index'
 import { rng } from './helpers'
 
 const GAS: ConfigOverrides = { BALL_COLLISIONS: 'on', ROLLING_DECEL: 0, BALL_RESTITUTION: 0.9 }
@@ -177,5 +177,35 @@ describe('contacts on: predictions kept across steps', () => {
     expect(holed.hit!.ball).toBe(holed.a)
     // no prediction at the skip-over or the near miss: as many as with no hole
     expect(holed.predictions).toBe(plain.predictions)
+  })
+
+  it('lip crossings skipped over or captured clean are taken several to a pass: every event and state bit-identical to one event a pass, in fewer passes', () => {
+    // the default schedule takes them together; a game's own system in the schedule (here one that does
+    // nothing) turns that off, as the stages' rules are then not the only ones deciding a crossing
+    const run = (own: boolean, dt: number) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' }, { capacity: 256 })
+      addPanel(sim)
+      sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, restitution: 0.9, open: { bottom: true } })
+      if (own) sim.schedule.push({ name: 'nothing', run: () => {} })
+      const r = rng(777)
+      for (let i = 0; i < 40; i++) {
+        const speed = 175 + (0.2 + 0.7 * r()) * 525
+        const angle = (r() - 0.5) * 0.8
+        const x = 30 + 40 * (i % 10) + (r() - 0.5) * 16
+        const y = DEFAULT_PANEL.height - 150 + 40 * Math.floor(i / 10) + (r() - 0.5) * 16
+        sim.addBall({ x, y, vx: speed * Math.sin(angle), vy: -speed * Math.cos(angle) })
+      }
+      let passes = 0
+      const steps = Math.round(2 / dt)
+      const out = trace(sim, steps, dt, () => void (passes += sim.world.pass + 1))
+      return { out, passes }
+    }
+    for (const dt of [1 / 30, 1 / 120]) {
+      const together = run(false, dt)
+      const alone = run(true, dt)
+      for (const kind of ['"skip"', '"capture"', '"collision"']) expect(together.out).toContain(kind)
+      expect(together.out).toBe(alone.out)
+      expect(together.passes).toBeLessThan(alone.passes)
+    }
   })
 })
