@@ -84,7 +84,7 @@ export const MAX_WIDEN_ROUNDS = 4
 export const MAX_STEP_CONTACTS = 64
 
 /**
- * Contacts off: the moving balls are put back in id order (src/world/idLists.ts, orderMoving) at a step's
+ * Contacts off or exact: the moving balls are put back in id order (src/world/idLists.ts, orderMoving) at a step's
  * start once more than 1 / MOVING_ORDER_CHURN of them have come and gone, in a moving set of more than
  * MOVING_ORDER_MIN balls (below it the per-ball arrays stay in cache whatever the order). Each ball out of
  * order costs the pass cache misses once the arrays are out of the caches, the ordering about 2 ns a moving
