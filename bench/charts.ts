@@ -99,6 +99,8 @@ export interface ContactRow {
   worstMs: { exact: number; fixed: number; fixed240: number; rapier: number; matter: number; planck: number }
   contactsPerStep: { exact: number; fixed: number; fixed240: number }
   usPerContact: { exact: number; fixed: number; fixed240: number }
+  /** the least of the rounds' values (the median is usPerContact) */
+  usPerContactLeast?: { exact: number; fixed: number; fixed240: number }
 }
 
 const CONTACT_ENGINES = [

@@ -11,7 +11,9 @@
 // median of ROUNDS rounds with the engines interleaved. Printed as ns per ball-step and as the ratio
 // peer / ours. The cost is divided by the balls still in play (each engine takes balls out at its holes
 // at its own rate). Cost per contact = (step with contacts − the same step with contacts off) / contacts
-// per step, for this module's methods. The fixed-tick method runs at its default CONTACT_TICK (1/120 s:
+// per step, for this module's methods, from the two measured back to back in each round: the median of
+// the rounds' values (and their least, the round the machine disturbed least: whole rounds of every engine
+// here have run 1.5–2x slower for minutes at a time). The fixed-tick method runs at its default CONTACT_TICK (1/120 s:
 // one contact solve per step here, as the peers) and at 1/240 s. Writes docs/results/contacts.json and docs/figures/contacts.svg.
 //
 //   npm run bench:contacts          (1,000 and 10,000 balls)
@@ -29,7 +31,7 @@ const HOLE_R = 18
 const V_MAX = 600
 const PX = 100
 const MEASURED_STEPS = 120
-const ROUNDS = 5
+const ROUNDS = 9
 
 interface Scene {
   name: 'gas' | 'panel'
@@ -299,9 +301,14 @@ for (const make of [gas, panel]) {
     const exact = med('exact')
     const fixed = med('fixed')
     const fixed240 = med('fixed240')
-    // the extra cost of a step with contacts over the same step without, per contact (live balls of each)
-    const perContactUs = (m: Sample, key: string) =>
-      m.contactsPerStep > 0 ? (m.ns * live.get(key)! - off.ns * live.get('off')!) / m.contactsPerStep / 1000 : NaN
+    // the extra cost of a step with contacts over the same step without, per contact (live balls of each),
+    // in each round from that round's two measurements: the median of the rounds, and the least
+    const perRound = (key: string) =>
+      got.get(key)!.map((m, r) =>
+        m.contactsPerStep > 0 ? (m.ns * live.get(key)! - got.get('off')![r]!.ns * live.get('off')!) / m.contactsPerStep / 1000 : NaN,
+      )
+    const perContactUs = (key: string) => median(perRound(key))
+    const leastUs = (key: string) => Math.min(...perRound(key))
     const row: ContactRow = {
       scene: sc.name,
       balls: n,
@@ -315,14 +322,15 @@ for (const make of [gas, panel]) {
       meanLive: Object.fromEntries(live),
       worstMs: { exact: exact.worstMs, fixed: fixed.worstMs, fixed240: fixed240.worstMs, rapier: med('rapier').worstMs, matter: med('matter').worstMs, planck: med('planck').worstMs },
       contactsPerStep: { exact: exact.contactsPerStep, fixed: fixed.contactsPerStep, fixed240: fixed240.contactsPerStep },
-      usPerContact: { exact: perContactUs(exact, 'exact'), fixed: perContactUs(fixed, 'fixed'), fixed240: perContactUs(fixed240, 'fixed240') },
+      usPerContact: { exact: perContactUs('exact'), fixed: perContactUs('fixed'), fixed240: perContactUs('fixed240') },
+      usPerContactLeast: { exact: leastUs('exact'), fixed: leastUs('fixed'), fixed240: leastUs('fixed240') },
     }
     rows.push(row)
     const f = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1))
     console.log(
       `${sc.name} ${n}: ns/live ball-step off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)} (1/240: ${f(row.fixed240)}), rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
         `worst step ms exact ${f(row.worstMs.exact)}, fixed ${f(row.worstMs.fixed)}, rapier ${f(row.worstMs.rapier)}; ` +
-        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact exact ${f(row.usPerContact.exact)}, fixed ${f(row.usPerContact.fixed)}`,
+        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact exact ${f(row.usPerContact.exact)} (least ${f(row.usPerContactLeast!.exact)}), fixed ${f(row.usPerContact.fixed)} (least ${f(row.usPerContactLeast!.fixed)})`,
     )
   }
 }
@@ -333,7 +341,7 @@ const json = writeResult('contacts', {
   contactTick: { fixed: 1 / 120, fixed240: 1 / 240 },
   normalisation: 'ns per live ball-step: the median step divided by the mean number of balls in play (not captured, not out) over the measured steps, per engine',
   timing: 'tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene, ns per ball-step; median of ROUNDS rounds, engines interleaved',
-  perContact: '(ns per ball-step with contacts − the same with contacts off) × balls / contacts per step',
+  perContact: '(ns per ball-step with contacts − the same with contacts off, measured back to back in a round) × balls / contacts per step: usPerContact the median of the rounds, usPerContactLeast the least',
   scenes: {
     gas: 'walled square, area fraction 0.2, restitution 0.9, no holes, no deceleration, 150–350 px/s',
     panel: 'tiles of the default 5 × 5 panel in one field open at the bottom, 40 balls a tile thrown up at once from a launch band, ROLLING_DECEL 300',
