@@ -163,7 +163,7 @@ for (const n of [1000, 10_000]) {
     const fast = r ? Math.max(r.rapier / r.fixed, r.rapier / r.exact) : undefined
     check(r && fast! >= 5, `contacts on, ${scene}, ${k(n)} balls: ${r ? `fixed-tick ${x(r.rapier / r.fixed)}, exact ${x(r.rapier / r.exact)}` : '?'} faster than rapier2d-compat (floor ≥ 5×, the better method)`)
     const us = r ? Math.min(r.usPerContact.fixed, r.usPerContact.exact) : undefined
-    const least = r?.usPerContactLeast ? ` (least of the rounds ${r.usPerContactLeast.fixed.toFixed(1)}, ${r.usPerContactLeast.exact.toFixed(1)})` : ''
+    const least = r?.usPerContactLeast ? ` (fastest rounds ${r.usPerContactLeast.fixed.toFixed(1)}, ${r.usPerContactLeast.exact.toFixed(1)})` : ''
     check(r && us! <= 3, `contacts on, ${scene}, ${k(n)} balls: ${r ? `fixed-tick ${r.usPerContact.fixed.toFixed(1)}, exact ${r.usPerContact.exact.toFixed(1)}${least}` : '?'} µs per contact, median of the rounds (floor ≤ 3, the better method)`)
   }
 }

@@ -99,7 +99,7 @@ export interface ContactRow {
   worstMs: { exact: number; fixed: number; fixed240: number; rapier: number; matter: number; planck: number }
   contactsPerStep: { exact: number; fixed: number; fixed240: number }
   usPerContact: { exact: number; fixed: number; fixed240: number }
-  /** the least of the rounds' values (the median is usPerContact) */
+  /** the same from each method's fastest round against the fastest without contacts (usPerContact: median of the rounds) */
   usPerContactLeast?: { exact: number; fixed: number; fixed240: number }
 }
 
