@@ -9,7 +9,8 @@
 // Every ball is put down apart from the others (no engine starts by pushing overlaps apart). Each engine
 // steps at dt = 1/120 s under tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene,
 // after WARM_STEPS steps of a throwaway one of every engine in the process; median of ROUNDS rounds. A
-// round runs this module's four settings in one fresh Node process, then the three peers in another: with
+// round runs this module's four settings in one fresh Node process (each measured REPEATS times, in
+// turn, the median kept), then the three peers in another: with
 // rapier2d's rounds in the same process this module's steps measured 1.5x slower, with and without
 // contacts (30 against 18 ns a ball-step on the 10,000-ball panel without contacts), and not when a
 // rapier2d world was only made and stepped 30 times before this module's rounds. Printed as ns per
@@ -279,6 +280,8 @@ async function measure(name: string, live: number, make: () => Stepper): Promise
 
 /** Steps of a throwaway scene of each engine before a round's measurements (each round runs in a fresh process). */
 const WARM_STEPS = 240
+/** Measurements of each of this module's settings in a round, taken in turn. */
+const REPEATS = 3
 
 /** The engines of a group, for scene sc; a group's rounds each run in a process of their own. */
 function group(name: string, sc: Scene): [string, () => Stepper][] {
@@ -308,10 +311,16 @@ if (child !== undefined) {
     const throwaway = mk()
     for (let i = 0; i < WARM_STEPS; i++) throwaway.step()
   }
+  // this module's settings are measured REPEATS times each, in turn, so that the one with contacts and the
+  // one without see the same spells of the machine; the round's figure for each is the median
+  const repeats = child === 'ours' ? REPEATS : 1
+  const live = new Map(engines.map(([key, mk]) => [key, meanLive(mk)]))
+  const samples = new Map<string, Sample[]>(engines.map(([key]) => [key, []]))
+  for (let k = 0; k < repeats; k++) for (const [key, mk] of engines) samples.get(key)!.push(await measure(key, live.get(key)!, mk))
   const out: Record<string, Sample & { live: number }> = {}
-  for (const [key, mk] of engines) {
-    const live = meanLive(mk)
-    out[key] = { ...(await measure(key, live, mk)), live }
+  for (const [key] of engines) {
+    const s = samples.get(key)!
+    out[key] = { ns: median(s.map((x) => x.ns)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)), live: live.get(key)! }
   }
   process.stdout.write(JSON.stringify(out))
   process.exit(0)
@@ -394,7 +403,8 @@ const json = writeResult('contacts', {
   rounds: ROUNDS,
   contactTick: { fixed: 1 / 120, fixed240: 1 / 240 },
   normalisation: 'ns per live ball-step: the median step divided by the mean number of balls in play (not captured, not out) over the measured steps, per engine',
-  timing: 'tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of a throwaway one, ns per ball-step; median of ROUNDS rounds, each running this module (off, exact, fixed, fixed240) in a fresh Node process and then the peers in another',
+  timing: 'tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of a throwaway one, ns per ball-step; median of ROUNDS rounds, each running this module (off, exact, fixed, fixed240, each measured REPEATS times in turn, the median kept) in a fresh Node process and then the peers in another',
+  repeats: REPEATS,
   warmSteps: WARM_STEPS,
   perContact: '(ns per ball-step with contacts − the same with contacts off, measured back to back in a round) × balls / contacts per step: usPerContact the median of the rounds; usPerContactLeast the same from each method\'s fastest round and the fastest round without contacts',
   scenes: {
