@@ -122,7 +122,7 @@ if (resting) {
 }
 
 if (contacts) {
-  console.log('\ncontacts on (ns per live ball-step; ratio rapier / fixed-tick at its default tick; worst step ms; µs per contact)')
+  console.log('\ncontacts on (ns per live ball-step from the mean step; ratio rapier / fixed-tick at its default tick; worst step ms; µs per contact)')
   console.log('scene  balls     fixed  fixed 1/240   exact   rapier  matter   planck  rapier/fixed  worst fixed/exact/rapier   µs/contact fixed/exact')
   for (const r of contacts.rows) {
     console.log(

@@ -7,8 +7,11 @@
 //          ±0.4 rad), the design's deceleration; the peers' holes are sensors that take a ball slower than
 //          V_MAX, their deceleration is linear damping.
 // Every ball is put down apart from the others (no engine starts by pushing overlaps apart). Each engine
-// steps at dt = 1/120 s under tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene,
-// after WARM_STEPS steps of a throwaway one of every engine in the process; median of ROUNDS rounds. A
+// steps at dt = 1/120 s under tinybench: the mean and the worst step of MEASURED_STEPS steps of a fresh
+// scene (the mean: the whole run's time over its steps; the panel's bursts fall from milliseconds a step to
+// a tenth of that within the run, and a prediction window is built every few steps, so its median step is
+// one with few contacts and no window, and says little about the run), after WARM_STEPS steps of a
+// throwaway one of every engine in the process; median of ROUNDS rounds. A
 // round runs this module's four settings in one fresh Node process (each measured REPEATS times, in
 // turn, the median kept), then the three peers in another: with
 // rapier2d's rounds in the same process this module's steps measured 1.5x slower, with and without
@@ -16,10 +19,11 @@
 // rapier2d world was only made and stepped 30 times before this module's rounds. Printed as ns per
 // ball-step and as the ratio
 // peer / ours. The cost is divided by the balls still in play (each engine takes balls out at its holes
-// at its own rate). Cost per contact = (step with contacts − the same step with contacts off) / contacts
-// per step, for this module's methods, from the two measured back to back in each round: the median of
-// the rounds' values (and, beside it, the same from each method's fastest round, the rounds the machine
-// disturbed least: whole rounds of every engine here have run 1.5–2x slower for minutes at a time). The
+// at its own rate). Cost per contact = (the run's time with contacts − the same run's with contacts off)
+// / the run's contacts, for this module's methods, from the two measured back to back in each round: the
+// median of the rounds' values (and, beside it, the same from each method's fastest round, the rounds the
+// machine disturbed least: whole rounds of every engine here have run 1.5–2x slower for minutes at a
+// time). The median step of each engine is kept in the results too. The
 // fixed-tick method runs at its default CONTACT_TICK (1/120 s:
 // one contact solve per step here, as the peers) and at 1/240 s. Writes docs/results/contacts.json and docs/figures/contacts.svg.
 //
@@ -248,8 +252,10 @@ function rapier(sc: Scene): Stepper {
 }
 
 interface Sample {
-  /** ns per live ball-step: median step / mean balls in play over the measured steps */
+  /** ns per live ball-step: mean step / mean balls in play over the measured steps */
   ns: number
+  /** the same from the median step */
+  nsMedian: number
   /** worst step, ms */
   worstMs: number
   contactsPerStep: number
@@ -273,9 +279,9 @@ async function measure(name: string, live: number, make: () => Stepper): Promise
   const bench = new Bench({ time: 0, iterations: MEASURED_STEPS, warmup: false })
   bench.add(name, s.step)
   await bench.run()
-  const r = bench.tasks[0]!.result as { latency?: { p50: number; max: number }; error?: unknown }
+  const r = bench.tasks[0]!.result as { latency?: { mean: number; p50: number; max: number }; error?: unknown }
   if (!r.latency) throw new Error(`${name}: benchmark failed: ${String(r.error)}`)
-  return { ns: (r.latency.p50 * 1e6) / live, worstMs: r.latency.max, contactsPerStep: (s.contacts() - c0) / MEASURED_STEPS }
+  return { ns: (r.latency.mean * 1e6) / live, nsMedian: (r.latency.p50 * 1e6) / live, worstMs: r.latency.max, contactsPerStep: (s.contacts() - c0) / MEASURED_STEPS }
 }
 
 /** Steps of a throwaway scene of each engine before a round's measurements (each round runs in a fresh process). */
@@ -320,7 +326,7 @@ if (child !== undefined) {
   const out: Record<string, Sample & { live: number }> = {}
   for (const [key] of engines) {
     const s = samples.get(key)!
-    out[key] = { ns: median(s.map((x) => x.ns)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)), live: live.get(key)! }
+    out[key] = { ns: median(s.map((x) => x.ns)), nsMedian: median(s.map((x) => x.nsMedian)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)), live: live.get(key)! }
   }
   process.stdout.write(JSON.stringify(out))
   process.exit(0)
@@ -355,19 +361,23 @@ for (const make of [gas, panel]) {
     }
     const med = (key: string) => {
       const s = got.get(key)!
-      return { ns: median(s.map((x) => x.ns)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)) }
+      return { ns: median(s.map((x) => x.ns)), nsMedian: median(s.map((x) => x.nsMedian)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)) }
     }
     const off = med('off')
     const exact = med('exact')
     const fixed = med('fixed')
     const fixed240 = med('fixed240')
-    // the extra cost of a step with contacts over the same step without, per contact (live balls of each),
+    // the extra cost of a run with contacts over the same run without, per contact (live balls of each),
     // in each round from that round's two measurements: the median of the rounds, and the least
     const perRound = (key: string) =>
       got.get(key)!.map((m, r) =>
         m.contactsPerStep > 0 ? (m.ns * live.get(key)! - got.get('off')![r]!.ns * live.get('off')!) / m.contactsPerStep / 1000 : NaN,
       )
     const perContactUs = (key: string) => median(perRound(key))
+    // the former measure, for comparison with runs before the mean step: the median step's extra cost over
+    // the run's mean contacts a step (it understates the panel's, whose median step has few contacts)
+    const medianStepUs = (key: string) =>
+      median(got.get(key)!.map((m, r) => (m.nsMedian * live.get(key)! - got.get('off')![r]!.nsMedian * live.get('off')!) / m.contactsPerStep / 1000))
     // the least-disturbed estimate: each method's fastest round against the fastest round without contacts
     // (the least of the rounds' differences would favour a round whose step without contacts was disturbed)
     const fastest = (key: string) => Math.min(...got.get(key)!.map((m) => m.ns))
@@ -383,17 +393,19 @@ for (const make of [gas, panel]) {
       matter: med('matter').ns,
       planck: med('planck').ns,
       meanLive: Object.fromEntries(live),
+      median: Object.fromEntries(engines.map(([key]) => [key, med(key).nsMedian])),
       worstMs: { exact: exact.worstMs, fixed: fixed.worstMs, fixed240: fixed240.worstMs, rapier: med('rapier').worstMs, matter: med('matter').worstMs, planck: med('planck').worstMs },
       contactsPerStep: { exact: exact.contactsPerStep, fixed: fixed.contactsPerStep, fixed240: fixed240.contactsPerStep },
       usPerContact: { exact: perContactUs('exact'), fixed: perContactUs('fixed'), fixed240: perContactUs('fixed240') },
       usPerContactLeast: { exact: leastUs('exact'), fixed: leastUs('fixed'), fixed240: leastUs('fixed240') },
+      usPerContactMedianStep: { exact: medianStepUs('exact'), fixed: medianStepUs('fixed'), fixed240: medianStepUs('fixed240') },
     }
     rows.push(row)
     const f = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1))
     console.log(
-      `${sc.name} ${n}: ns/live ball-step off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)} (1/240: ${f(row.fixed240)}), rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
+      `${sc.name} ${n}: ns/live ball-step (mean step) off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)} (1/240: ${f(row.fixed240)}), rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
         `worst step ms exact ${f(row.worstMs.exact)}, fixed ${f(row.worstMs.fixed)}, rapier ${f(row.worstMs.rapier)}; ` +
-        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact (median of rounds; fastest rounds) exact ${f(row.usPerContact.exact)}; ${f(row.usPerContactLeast!.exact)}, fixed ${f(row.usPerContact.fixed)}; ${f(row.usPerContactLeast!.fixed)}`,
+        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact (median of rounds; fastest rounds) exact ${f(row.usPerContact.exact)}; ${f(row.usPerContactLeast!.exact)}, fixed ${f(row.usPerContact.fixed)}; ${f(row.usPerContactLeast!.fixed)}; from the median step (former measure) exact ${f(row.usPerContactMedianStep!.exact)}, fixed ${f(row.usPerContactMedianStep!.fixed)}`,
     )
   }
 }
@@ -402,11 +414,11 @@ const json = writeResult('contacts', {
   measuredSteps: MEASURED_STEPS,
   rounds: ROUNDS,
   contactTick: { fixed: 1 / 120, fixed240: 1 / 240 },
-  normalisation: 'ns per live ball-step: the median step divided by the mean number of balls in play (not captured, not out) over the measured steps, per engine',
-  timing: 'tinybench: median and worst step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of a throwaway one, ns per ball-step; median of ROUNDS rounds, each running this module (off, exact, fixed, fixed240, each measured REPEATS times in turn, the median kept) in a fresh Node process and then the peers in another',
+  normalisation: 'ns per live ball-step: the mean step (the run of MEASURED_STEPS steps over its steps) divided by the mean number of balls in play (not captured, not out) over the measured steps, per engine; `median` the same from the median step',
+  timing: 'tinybench: mean, median and worst step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of a throwaway one, ns per ball-step; median of ROUNDS rounds, each running this module (off, exact, fixed, fixed240, each measured REPEATS times in turn, the median kept) in a fresh Node process and then the peers in another',
   repeats: REPEATS,
   warmSteps: WARM_STEPS,
-  perContact: '(ns per ball-step with contacts − the same with contacts off, measured back to back in a round) × balls / contacts per step: usPerContact the median of the rounds; usPerContactLeast the same from each method\'s fastest round and the fastest round without contacts',
+  perContact: '(ns per ball-step with contacts − the same with contacts off, from the mean steps of the two runs measured back to back in a round) × balls / contacts per step, that is the extra time of the run over its contacts: usPerContact the median of the rounds; usPerContactLeast the same from each method\'s fastest round and the fastest round without contacts; usPerContactMedianStep the measure used before, the median steps\' difference over the mean contacts a step',
   scenes: {
     gas: 'walled square, area fraction 0.2, restitution 0.9, no holes, no deceleration, 150–350 px/s',
     panel: 'tiles of the default 5 × 5 panel in one field open at the bottom, 40 balls a tile thrown up at once from a launch band, ROLLING_DECEL 300',
