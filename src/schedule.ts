@@ -101,7 +101,11 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       F.nextTick++
       continue
     }
-    const stop = tick < end ? tick : end
+    // a step whose end is the tick but for rounding (a clock summed from 1/120 s steps drifts a few ulps
+    // from k·(1/120)) ends at the tick, solved, and the clock is back on the ticks; else a sliver window
+    // before or after the tick integrated every ball again
+    const onTick = Math.abs(tick - end) <= TICK_SNAP * tick
+    const stop = onTick || tick < end ? tick : end
     runWindow(world, schedule, stop)
     F.due = false
     if (stop === tick) {
@@ -113,9 +117,12 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
       F.due = false
     }
-    if (stop === end) return
+    if (onTick || stop === end) return
   }
 }
+
+/** Relative gap below which a step's end and a contact tick are the same instant (a few ulps). */
+const TICK_SNAP = 8 * Number.EPSILON
 
 /** Runs the passes from the world's time to tEnd. */
 function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {
