@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
+import { clearBallRows } from '../src/world/balls'
+import { HOT } from '../src/world/pathHot'
 import { rng } from './helpers'
 
 describe('entity lifecycle', () => {
@@ -33,5 +35,28 @@ describe('entity lifecycle', () => {
     expect(maxId).toBeLessThanOrEqual(peak + 25 + throwsPerStep)
     expect(sim.world.capacity).toBeLessThanOrEqual(4096)
     expect(sim.balls().length).toBe(live.size)
+  })
+
+  it("clearBallRows zeroes every field of Ball, Path and the ball's path row, and a removed ball's rows are zeroed", () => {
+    const sim = createBallPhysics()
+    const w = sim.world
+    const b = sim.addBall({ x: 10, y: 20, vx: 30, vy: 40 })
+    const stores = { Ball: w.Ball, Path: w.Path } as unknown as Record<string, Record<string, Float64Array>>
+    for (const [name, store] of Object.entries(stores)) {
+      for (const key of Object.keys(store)) store[key]![b] = 7
+      expect(Object.keys(store).length, name).toBeGreaterThan(5)
+    }
+    w.pathHot.fill(7, b * HOT, b * HOT + HOT)
+    clearBallRows(w, b)
+    for (const [name, store] of Object.entries(stores)) {
+      for (const key of Object.keys(store)) expect(store[key]![b], `${name}.${key}`).toBe(0)
+    }
+    expect([...w.pathHot.subarray(b * HOT, b * HOT + HOT)]).toEqual(new Array(HOT).fill(0))
+    // and through the API: a ball removed, its rows zeroed
+    const c = sim.addBall({ x: 1, y: 2, vx: 3, vy: 4 })
+    w.Path.markOther[c] = 9
+    w.Ball.hero[c] = 1
+    sim.removeBall(c)
+    expect([w.Path.markOther[c], w.Ball.hero[c], w.Ball.x[c], w.Ball.live[c], w.pathHot[c * HOT]]).toEqual([0, 0, 0, 0, 0])
   })
 })

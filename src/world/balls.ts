@@ -14,7 +14,7 @@ import { cutEvents } from '../events.js'
 import { NO_CONTACT, forgetPredictions } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
 import { removeMoving } from './idLists.js'
-import { clearPathHot } from './pathHot.js'
+import { HOT } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
 
@@ -30,9 +30,7 @@ export function adoptBall(world: BallWorld, eid: number): void {
   ensureCapacity(world, eid)
   if (!hasComponent(world, eid, world.Path)) addComponent(world, eid, world.Path)
   if (world.Ball.live[eid] !== 1) world.ballCount++
-  clearSlot(world.Ball, eid)
-  clearSlot(world.Path, eid)
-  clearPathHot(world, eid)
+  clearBallRows(world, eid)
   const B = world.Ball
   B.live[eid] = 1
   B.radius[eid] = world.config.BALL_RADIUS
@@ -58,9 +56,7 @@ export function forgetBall(world: BallWorld, eid: number): void {
   restingRemove(world, eid)
   forgetPredictions(world, eid)
   cutEvents(world.events, eid)
-  clearSlot(world.Ball, eid)
-  clearSlot(world.Path, eid)
-  clearPathHot(world, eid)
+  clearBallRows(world, eid)
   // a Ball removed by removeComponent leaves an entity the game keeps: it is no longer a ball at all
   if (hasComponent(world, eid, world.Path)) removeComponent(world, eid, world.Path)
   if (hasComponent(world, eid, world.RimContact)) removeComponent(world, eid, world.RimContact)
@@ -84,4 +80,37 @@ function dropHeld(world: BallWorld, eid: number): void {
   let n = 0
   for (let i = 0; i < q.count; i++) if (q.ids[i] !== eid) q.ids[n++] = q.ids[i]!
   q.count = n
+}
+
+/**
+ * Zeroes a ball's rows of Ball, Path and world.pathHot, every field written out: clearSlot's generic loop
+ * writes arrays of every type from one site, which V8 makes slow, and a ball is added and removed in
+ * numbers (tests/lifecycle.test.ts checks that no field is left out).
+ */
+export function clearBallRows(world: BallWorld, eid: number): void {
+  const B = world.Ball
+  B.x[eid] = 0
+  B.y[eid] = 0
+  B.vx[eid] = 0
+  B.vy[eid] = 0
+  B.radius[eid] = 0
+  B.mode[eid] = 0
+  B.hero[eid] = 0
+  B.live[eid] = 0
+  B.rim[eid] = 0
+  const P = world.Path
+  P.speed[eid] = 0
+  P.s[eid] = 0
+  P.sHole[eid] = 0
+  P.fromHole[eid] = 0
+  P.nextKind[eid] = 0
+  P.nextHole[eid] = 0
+  P.nextEdge[eid] = 0
+  P.mark[eid] = 0
+  P.markHole[eid] = 0
+  P.markEdge[eid] = 0
+  P.markOther[eid] = 0
+  const H = world.pathHot
+  const h = eid * HOT
+  for (let k = 0; k < HOT; k++) H[h + k] = 0
 }

@@ -41,11 +41,6 @@ export function hotNextT(w: BallWorld, eid: number): number {
   return w.pathHot[eid * HOT + H_NEXT_T]!
 }
 
-/** Zeroes a ball's row (with clearSlot of the Path store). */
-export function clearPathHot(w: BallWorld, eid: number): void {
-  w.pathHot.fill(0, eid * HOT, eid * HOT + HOT)
-}
-
 /** A row for every id below `capacity`, the old rows kept. */
 export function growPathHot(w: BallWorld, capacity: number): void {
   if (w.pathHot.length >= capacity * HOT) return
