@@ -103,8 +103,10 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     }
     // a step whose end is the tick but for rounding (a clock summed from 1/120 s steps drifts a few ulps
     // from k·(1/120)) ends at the tick, solved, and the clock is back on the ticks; else a sliver window
-    // before or after the tick integrated every ball again
-    const onTick = Math.abs(tick - end) <= TICK_SNAP * tick
+    // before or after the tick integrated every ball again. Never by half a step or more (at a clock of
+    // months, 8ε of it passes a step of 1e-9 s)
+    const gap = Math.abs(tick - end)
+    const onTick = gap <= TICK_SNAP * tick && gap < 0.5 * dt
     const stop = onTick || tick < end ? tick : end
     runWindow(world, schedule, stop)
     F.due = false
