@@ -4,15 +4,21 @@
 // (this module with BALL_COLLISIONS 'on', restitution 0.9 like the peers' fixtures; the balls put down
 // without overlaps, so that no engine starts by pushing overlapping pairs apart).
 // Each engine steps at 1/120 s under tinybench; printed as ns per ball-step and as the ratio to this
-// module measured in the same run. Writes docs/results/peers.json and docs/figures/peers.svg (or under
-// --out DIR).
+// module measured in the same run. Each engine's round runs in a Node process of its own, after WARM_STEPS
+// steps of a throwaway scene: with the four engines in one process, this module's first 15 to 70 steps of
+// a fresh 1,000-ball scene sometimes ran at 100-250 us a step, then fell to about 10 after one step of
+// 1-5 ms (no deoptimisation of its functions traced; not incremental marking, not bytecode flushing; the
+// same in a plain timing loop), so the row read 10-17 or 91-110 ns a ball-step from run to run. Writes
+// docs/results/peers.json and docs/figures/peers.svg (or under --out DIR).
 //
 //   npm run bench:peers            (N = 1,000 and 10,000; contacts on at 1,000)
 import RAPIER from '@dimforge/rapier2d-compat'
 import Matter from 'matter-js'
 import * as planck from 'planck'
 import { createBallPhysics } from '../src/index'
-import { DT, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
+import { DT, argValue, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
+import { spawnSync } from 'node:child_process'
+import { fileURLToPath } from 'node:url'
 import { peersFigure, type PeerRow } from './charts'
 
 const HOLE_R = 18
@@ -157,23 +163,37 @@ const MEASURED_STEPS = 120
 /** Rounds per scene, the engines interleaved within a round; each figure is the median of the rounds. */
 const ROUNDS = 3
 
-async function measure(name: string, n: number, make: () => Stepper, warm: boolean): Promise<number> {
-  // warm the engine's code up on a throwaway scene (first round), then measure a fresh one for a fixed
-  // number of steps
-  if (warm) {
-    const throwaway = make()
-    for (let i = 0; i < 30; i++) throwaway()
-  }
+/** Steps of a throwaway scene before each measurement, in the measurement's own process. */
+const WARM_STEPS = 240
+
+const ENGINES: Record<string, (sc: Scene, contacts: boolean) => Stepper> = { ours, matter, planck: planckWorld, rapier }
+
+const child = argValue('--child')
+if (child !== undefined) {
+  // one engine's round in a fresh process: warm its code on a throwaway scene, then measure a fresh one
+  if (child === 'rapier') await RAPIER.init()
+  const n = Number(argValue('--balls'))
+  const contacts = argValue('--contacts') === '1'
+  const sc = scene(n, contacts)
+  const make = () => ENGINES[child]!(sc, contacts)
+  const throwaway = make()
+  for (let i = 0; i < WARM_STEPS; i++) throwaway()
   const step = make()
   collectGarbage()
-  try {
-    return ((await medianStepMs(step, MEASURED_STEPS)) * 1e6) / n // ms per step → ns per ball-step
-  } catch (e) {
-    throw new Error(`${name}: ${String(e)}`)
-  }
+  process.stdout.write(JSON.stringify({ ns: ((await medianStepMs(step, MEASURED_STEPS)) * 1e6) / n })) // ms per step → ns per ball-step
+  process.exit(0)
 }
 
-await RAPIER.init()
+/** One round of one engine, in a fresh Node process (this script, already bundled): ns per ball-step. */
+function measure(engine: string, n: number, contacts: boolean): number {
+  const r = spawnSync(process.execPath, ['--expose-gc', fileURLToPath(import.meta.url), '--child', engine, '--balls', String(n), '--contacts', contacts ? '1' : '0'], {
+    encoding: 'utf8',
+    stdio: ['ignore', 'pipe', 'inherit'],
+  })
+  if (r.status !== 0) throw new Error(`${engine}, ${n} balls: the round's process failed (${r.status})`)
+  return (JSON.parse(r.stdout) as { ns: number }).ns
+}
+
 const rows: PeerRow[] = []
 const runs: [number, boolean][] = [
   [1000, false],
@@ -181,13 +201,12 @@ const runs: [number, boolean][] = [
   [1000, true],
 ]
 for (const [n, contacts] of runs) {
-  const sc = scene(n, contacts)
   const t: Record<'o' | 'm' | 'p' | 'r', number[]> = { o: [], m: [], p: [], r: [] }
   for (let round = 0; round < ROUNDS; round++) {
-    t.o.push(await measure('ours', n, () => ours(sc, contacts), round === 0))
-    t.m.push(await measure('matter-js', n, () => matter(sc, contacts), round === 0))
-    t.p.push(await measure('planck', n, () => planckWorld(sc, contacts), round === 0))
-    t.r.push(await measure('rapier2d-compat', n, () => rapier(sc, contacts), round === 0))
+    t.o.push(measure('ours', n, contacts))
+    t.m.push(measure('matter', n, contacts))
+    t.p.push(measure('planck', n, contacts))
+    t.r.push(measure('rapier', n, contacts))
   }
   const [o, m, p, r] = [median(t.o), median(t.m), median(t.p), median(t.r)]
   rows.push({ balls: n, contacts: contacts ? 'on' : 'off', ours: o, matter: m, planck: p, rapier: r, 'matter/ours': m / o, 'planck/ours': p / o, 'rapier/ours': r / o })
@@ -206,7 +225,8 @@ const json = writeResult('peers', {
   dt: DT,
   measuredSteps: MEASURED_STEPS,
   rounds: ROUNDS,
-  timing: 'tinybench: median step of MEASURED_STEPS steps of a fresh scene, ns per ball-step; median of ROUNDS rounds, the engines interleaved',
+  timing: 'tinybench: median step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of a throwaway one, each engine\'s round in a Node process of its own, ns per ball-step; median of ROUNDS rounds, the engines interleaved',
+  warmSteps: WARM_STEPS,
   rollingDecel: DECEL,
   ballRestitution: 0.9,
   scene: 'balls at 150-350 px/s over a 2000 px square with 25 sensor holes; contacts-on rows: balls put down without overlaps',
