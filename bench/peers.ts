@@ -7,8 +7,9 @@
 // module measured in the same run. Each engine's round runs in a Node process of its own, after WARM_STEPS
 // steps of a throwaway scene: with the four engines in one process, this module's first 15 to 70 steps of
 // a fresh 1,000-ball scene sometimes ran at 100-250 us a step, then fell to about 10 after one step of
-// 1-5 ms (no deoptimisation of its functions traced; not incremental marking, not bytecode flushing; the
-// same in a plain timing loop), so the row read 10-17 or 91-110 ns a ball-step from run to run. Writes
+// 1-5 ms (V8 threw the step's optimised code away at the world's field-type generalisation and at
+// collections that freed objects it had embedded, and compiled it again some tens of steps later), so the
+// row read 10-17 or 91-110 ns a ball-step from run to run. Writes
 // docs/results/peers.json and docs/figures/peers.svg (or under --out DIR).
 //
 //   npm run bench:peers            (N = 1,000 and 10,000; contacts on at 1,000)
