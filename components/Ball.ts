@@ -41,3 +41,19 @@ export const BallSchema = {
 
 export const createBallStore = (capacity: number) => createStore(BallSchema, capacity)
 export type BallStore = ReturnType<typeof createBallStore>
+
+/**
+ * Zeroes ball eid's row, every field written out beside the schema (clearSlot's generic loop writes arrays
+ * of every type from one site, which V8 makes slow; balls are added and removed in numbers).
+ */
+export function clearBallRow(B: BallStore, eid: number): void {
+  B.x[eid] = 0
+  B.y[eid] = 0
+  B.vx[eid] = 0
+  B.vy[eid] = 0
+  B.radius[eid] = 0
+  B.mode[eid] = 0
+  B.hero[eid] = 0
+  B.live[eid] = 0
+  B.rim[eid] = 0
+}

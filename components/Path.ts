@@ -61,3 +61,18 @@ export const PathSchema = {
 
 export const createPathStore = (capacity: number) => createStore(PathSchema, capacity)
 export type PathStore = ReturnType<typeof createPathStore>
+
+/** Zeroes ball eid's row, every field written out beside the schema (as clearBallRow in Ball.ts). */
+export function clearPathRow(P: PathStore, eid: number): void {
+  P.speed[eid] = 0
+  P.s[eid] = 0
+  P.sHole[eid] = 0
+  P.fromHole[eid] = 0
+  P.nextKind[eid] = 0
+  P.nextHole[eid] = 0
+  P.nextEdge[eid] = 0
+  P.mark[eid] = 0
+  P.markHole[eid] = 0
+  P.markEdge[eid] = 0
+  P.markOther[eid] = 0
+}

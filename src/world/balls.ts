@@ -8,7 +8,8 @@
 //     resting grid, its pending contacts go stale, its rows are zeroed and the events buffered for it are
 //     dropped at the next drain (its id may be handed to a new entity before then).
 import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
-import { BallMode } from '../../components/Ball.js'
+import { BallMode, clearBallRow } from '../../components/Ball.js'
+import { clearPathRow } from '../../components/Path.js'
 import { clearSlot } from '../../components/store.js'
 import { cutEvents } from '../events.js'
 import { NO_CONTACT, forgetPredictions } from './contactState.js'
@@ -83,33 +84,12 @@ function dropHeld(world: BallWorld, eid: number): void {
 }
 
 /**
- * Zeroes a ball's rows of Ball, Path and world.pathHot, every field written out: clearSlot's generic loop
- * writes arrays of every type from one site, which V8 makes slow, and a ball is added and removed in
- * numbers (tests/lifecycle.test.ts checks that no field is left out).
+ * Zeroes a ball's rows of Ball, Path and world.pathHot (the stores' rows field by field, beside their
+ * schemas; tests/lifecycle.test.ts checks that no field is left out).
  */
 export function clearBallRows(world: BallWorld, eid: number): void {
-  const B = world.Ball
-  B.x[eid] = 0
-  B.y[eid] = 0
-  B.vx[eid] = 0
-  B.vy[eid] = 0
-  B.radius[eid] = 0
-  B.mode[eid] = 0
-  B.hero[eid] = 0
-  B.live[eid] = 0
-  B.rim[eid] = 0
-  const P = world.Path
-  P.speed[eid] = 0
-  P.s[eid] = 0
-  P.sHole[eid] = 0
-  P.fromHole[eid] = 0
-  P.nextKind[eid] = 0
-  P.nextHole[eid] = 0
-  P.nextEdge[eid] = 0
-  P.mark[eid] = 0
-  P.markHole[eid] = 0
-  P.markEdge[eid] = 0
-  P.markOther[eid] = 0
+  clearBallRow(world.Ball, eid)
+  clearPathRow(world.Path, eid)
   const H = world.pathHot
   const h = eid * HOT
   for (let k = 0; k < HOT; k++) H[h + k] = 0
