@@ -27,13 +27,21 @@ export function describe(value: unknown): string {
 
 /** Reads the named fields of a spec object once each. Throws a TypeError when it is not a plain object. */
 export function readSpec<K extends string>(name: string, spec: unknown, keys: readonly K[]): Record<K, unknown> {
+  const source = specObject(name, spec)
+  const out = {} as Record<K, unknown>
+  for (const key of keys) out[key] = source[key]
+  return out
+}
+
+/**
+ * The spec as a record to read fields from (for entry points that read them into locals, allocating
+ * nothing). Throws a TypeError when it is not a plain object.
+ */
+export function specObject(name: string, spec: unknown): Record<string, unknown> {
   if (spec === null || typeof spec !== 'object' || Array.isArray(spec)) {
     throw new TypeError(`${name} must be an object, got ${describe(spec)}`)
   }
-  const out = {} as Record<K, unknown>
-  const source = spec as Record<string, unknown>
-  for (const key of keys) out[key] = source[key]
-  return out
+  return spec as Record<string, unknown>
 }
 
 /** A finite number in [−limit, limit]. */

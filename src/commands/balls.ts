@@ -14,7 +14,7 @@ import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
 import { spotTaken } from '../contacts/spot.js'
-import { checkBall, checkHole, checkWorld, finite, flag, positive, readSpec, within } from './validate.js'
+import { checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
 import { cos, sin } from '../math.js'
 import { record, specOf } from '../world/recorder.js'
 
@@ -97,15 +97,23 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
 /** Puts a ball down at (x, y) with velocity (vx, vy), now; returns its entity id. */
 export function addBall(world: BallWorld, spec: BallSpec): number {
   const w = checkWorld('addBall', world)
-  const s = readSpec('addBall spec', spec, ['x', 'y', 'vx', 'vy', 'radius', 'hero', 'mass'] as const)
-  const x = finite('ball.x', s.x, MAX_COORDINATE)
-  const y = finite('ball.y', s.y, MAX_COORDINATE)
-  const vx = finite('ball.vx', s.vx, MAX_SPEED)
-  const vy = finite('ball.vy', s.vy, MAX_SPEED)
-  const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', s.radius, MAX_RADIUS)
-  const hero = flag('ball.hero', s.hero)
-  const mass = massOf(w, 'ball.mass', s.mass, radius)
-  if (w.recorder !== null) record(w, ['addBall', specOf(s)])
+  // each field read once, into locals (a ball added in a burst allocates nothing here)
+  const s = specObject('addBall spec', spec)
+  const sx = s.x
+  const sy = s.y
+  const svx = s.vx
+  const svy = s.vy
+  const sRadius = s.radius
+  const sHero = s.hero
+  const sMass = s.mass
+  const x = finite('ball.x', sx, MAX_COORDINATE)
+  const y = finite('ball.y', sy, MAX_COORDINATE)
+  const vx = finite('ball.vx', svx, MAX_SPEED)
+  const vy = finite('ball.vy', svy, MAX_SPEED)
+  const radius = sRadius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', sRadius, MAX_RADIUS)
+  const hero = flag('ball.hero', sHero)
+  const mass = massOf(w, 'ball.mass', sMass, radius)
+  if (w.recorder !== null) record(w, ['addBall', specOf({ x: sx, y: sy, vx: svx, vy: svy, radius: sRadius, hero: sHero, mass: sMass })])
   return newBall(w, x, y, vx, vy, radius, hero, mass)
 }
 
@@ -119,15 +127,24 @@ export function throwVelocity(world: BallWorld, power: number, angle: number): {
 /** Throws a ball from (x, y) with the meter's power and an aim; returns its entity id. */
 export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const w = checkWorld('throwBall', world)
-  const s = readSpec('throwBall spec', spec, ['x', 'y', 'power', 'angle', 'radius', 'hero', 'mass'] as const)
-  const x = finite('throw.x', s.x, MAX_COORDINATE)
-  const y = finite('throw.y', s.y, MAX_COORDINATE)
-  const power = within('throw.power', s.power, 0, 1)
-  const angle = finite('throw.angle', s.angle, 2 * Math.PI)
-  const radius = s.radius === undefined ? w.config.BALL_RADIUS : positive('throw.radius', s.radius, MAX_RADIUS)
-  const hero = flag('throw.hero', s.hero)
-  const mass = massOf(w, 'throw.mass', s.mass, radius)
-  if (w.recorder !== null) record(w, ['throwBall', specOf(s)])
+  const s = specObject('throwBall spec', spec)
+  const sx = s.x
+  const sy = s.y
+  const sPower = s.power
+  const sAngle = s.angle
+  const sRadius = s.radius
+  const sHero = s.hero
+  const sMass = s.mass
+  const x = finite('throw.x', sx, MAX_COORDINATE)
+  const y = finite('throw.y', sy, MAX_COORDINATE)
+  const power = within('throw.power', sPower, 0, 1)
+  const angle = finite('throw.angle', sAngle, 2 * Math.PI)
+  const radius = sRadius === undefined ? w.config.BALL_RADIUS : positive('throw.radius', sRadius, MAX_RADIUS)
+  const hero = flag('throw.hero', sHero)
+  const mass = massOf(w, 'throw.mass', sMass, radius)
+  if (w.recorder !== null) {
+    record(w, ['throwBall', specOf({ x: sx, y: sy, power: sPower, angle: sAngle, radius: sRadius, hero: sHero, mass: sMass })])
+  }
   const cfg = w.config
   const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
   return newBall(w, x, y, speed * sin(angle), -speed * cos(angle), radius, hero, mass)

@@ -4,7 +4,7 @@ import { describe } from '../check.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { isBall } from '../world/balls.js'
 
-export { checkWorld, describe, finite, flag, positive, readSpec, within } from '../check.js'
+export { checkWorld, describe, finite, flag, positive, readSpec, specObject, within } from '../check.js'
 
 function checkId(field: string, eid: unknown, kind: string): number {
   if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1) {
