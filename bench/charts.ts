@@ -105,6 +105,8 @@ export interface ContactRow {
   usPerContactLeast?: { exact: number; fixed: number; fixed240: number }
   /** the measure used before: the median steps' difference over the mean contacts a step */
   usPerContactMedianStep?: { exact: number; fixed: number; fixed240: number }
+  /** the barest pairing loop over the same run's moving balls (bench/barePairing.ts), the fixed tick's denominator */
+  barePairing?: { usPerStep: number; nsPerMovingBall: number; pairsPerStep: number; usPerContact: number; fixedExtraOverBare: number }
 }
 
 const CONTACT_ENGINES = [

@@ -35,6 +35,7 @@ import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index
 import { BallMode } from '../components/Ball'
 import { contactsFigure, type ContactRow } from './charts'
 import { DT, argValue, collectGarbage, median, writeFigure, writeResult } from './lib'
+import { recordFrames, timeBarePairing } from './barePairing'
 import { Bench } from 'tinybench'
 import { spawnSync } from 'node:child_process'
 import { fileURLToPath } from 'node:url'
@@ -106,13 +107,7 @@ function panel(n: number): Scene {
 type Stepper = { step: () => void; contacts: () => number; live: () => number }
 
 function ours(sc: Scene, mode: 'off' | 'on' | 'fixed', tick = 1 / 120): Stepper {
-  const sim: BallPhysics = createBallPhysics(
-    { ROLLING_DECEL: sc.decel, BALL_COLLISIONS: mode, BALL_RESTITUTION: sc.restitution, CONTACT_TICK: tick },
-    { capacity: sc.balls.length + sc.holes.length + 64 },
-  )
-  sim.setWalls({ minX: 0, minY: 0, maxX: sc.width, maxY: sc.height, restitution: sc.restitution, open: { bottom: sc.open } })
-  for (const h of sc.holes) sim.addHole(h)
-  for (const b of sc.balls) sim.addBall(b)
+  const sim = oursScene(sc, mode, tick)
   const w = sim.world
   return {
     step: () => {
@@ -129,6 +124,18 @@ function ours(sc: Scene, mode: 'off' | 'on' | 'fixed', tick = 1 / 120): Stepper 
       return n
     },
   }
+}
+
+/** This module's world for scene sc. */
+function oursScene(sc: Scene, mode: 'off' | 'on' | 'fixed', tick: number): BallPhysics {
+  const sim: BallPhysics = createBallPhysics(
+    { ROLLING_DECEL: sc.decel, BALL_COLLISIONS: mode, BALL_RESTITUTION: sc.restitution, CONTACT_TICK: tick },
+    { capacity: sc.balls.length + sc.holes.length + 64 },
+  )
+  sim.setWalls({ minX: 0, minY: 0, maxX: sc.width, maxY: sc.height, restitution: sc.restitution, open: { bottom: sc.open } })
+  for (const h of sc.holes) sim.addHole(h)
+  for (const b of sc.balls) sim.addBall(b)
+  return sim
 }
 
 /** Linear damping that matches the deceleration at the scene's typical speed (400 px/s). */
@@ -323,24 +330,33 @@ if (child !== undefined) {
   const live = new Map(engines.map(([key, mk]) => [key, meanLive(mk)]))
   const samples = new Map<string, Sample[]>(engines.map(([key]) => [key, []]))
   for (let k = 0; k < repeats; k++) for (const [key, mk] of engines) samples.get(key)!.push(await measure(key, live.get(key)!, mk))
-  const out: Record<string, Sample & { live: number }> = {}
+  const out: Record<string, (Sample & { live: number }) | Bare> = {}
   for (const [key] of engines) {
     const s = samples.get(key)!
     out[key] = { ns: median(s.map((x) => x.ns)), nsMedian: median(s.map((x) => x.nsMedian)), worstMs: median(s.map((x) => x.worstMs)), contactsPerStep: median(s.map((x) => x.contactsPerStep)), live: live.get(key)! }
   }
+  // the barest pairing loop over the moving balls of the same run with the fixed tick (bench/barePairing.ts)
+  if (child === 'ours') out.bare = timeBarePairing(recordFrames(oursScene(sc, 'fixed', 1 / 120), MEASURED_STEPS, DT), 1 / 120, 5 * REPEATS)
   process.stdout.write(JSON.stringify(out))
   process.exit(0)
 }
 
+/** The bare pairing loop's figures of a round (bench/barePairing.ts): µs a step, pairs and moving balls a step. */
+interface Bare {
+  usPerStep: number
+  pairsPerStep: number
+  movingPerStep: number
+}
+
 /** Runs one round of a group in a fresh Node process (this script, already bundled). */
-function round(name: string, scene: string, n: number): Record<string, Sample & { live: number }> {
+function round(name: string, scene: string, n: number): Record<string, (Sample & { live: number }) | Bare> {
   const r = spawnSync(process.execPath, ['--expose-gc', fileURLToPath(import.meta.url), '--child', name, '--scene', scene, '--balls', String(n)], {
     encoding: 'utf8',
     maxBuffer: 1 << 20,
     stdio: ['ignore', 'pipe', 'inherit'],
   })
   if (r.status !== 0) throw new Error(`${name} on ${scene} ${n}: the round's process failed (${r.status})`)
-  return JSON.parse(r.stdout) as Record<string, Sample & { live: number }>
+  return JSON.parse(r.stdout) as Record<string, (Sample & { live: number }) | Bare>
 }
 
 const sizes = (argValue('--sizes') ?? '1000,10000').split(',').map(Number)
@@ -351,9 +367,14 @@ for (const make of [gas, panel]) {
     const engines = [...group('ours', sc), ...group('peers', sc)]
     const got = new Map<string, Sample[]>(engines.map(([k]) => [k, []]))
     const live = new Map<string, number>()
+    const bare: Bare[] = []
     for (let r = 0; r < ROUNDS; r++) {
       for (const name of ['ours', 'peers']) {
         for (const [key, sample] of Object.entries(round(name, sc.name, n))) {
+          if ('usPerStep' in sample) {
+            bare.push(sample)
+            continue
+          }
           got.get(key)!.push(sample)
           live.set(key, sample.live)
         }
@@ -399,13 +420,15 @@ for (const make of [gas, panel]) {
       usPerContact: { exact: perContactUs('exact'), fixed: perContactUs('fixed'), fixed240: perContactUs('fixed240') },
       usPerContactLeast: { exact: leastUs('exact'), fixed: leastUs('fixed'), fixed240: leastUs('fixed240') },
       usPerContactMedianStep: { exact: medianStepUs('exact'), fixed: medianStepUs('fixed'), fixed240: medianStepUs('fixed240') },
+      barePairing: barePairingRow(bare, fixed.contactsPerStep, (fixed.ns * live.get('fixed')! - off.ns * live.get('off')!) / 1000),
     }
     rows.push(row)
     const f = (v: number) => (v >= 100 ? v.toFixed(0) : v.toFixed(1))
     console.log(
       `${sc.name} ${n}: ns/live ball-step (mean step) off ${f(row.off)}, exact ${f(row.exact)}, fixed ${f(row.fixed)} (1/240: ${f(row.fixed240)}), rapier ${f(row.rapier)} (${f(row.rapier / row.fixed)}× fixed, ${f(row.rapier / row.exact)}× exact), matter ${f(row.matter)}, planck ${f(row.planck)}; ` +
         `worst step ms exact ${f(row.worstMs.exact)}, fixed ${f(row.worstMs.fixed)}, rapier ${f(row.worstMs.rapier)}; ` +
-        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact (median of rounds; fastest rounds) exact ${f(row.usPerContact.exact)}; ${f(row.usPerContactLeast!.exact)}, fixed ${f(row.usPerContact.fixed)}; ${f(row.usPerContactLeast!.fixed)}; from the median step (former measure) exact ${f(row.usPerContactMedianStep!.exact)}, fixed ${f(row.usPerContactMedianStep!.fixed)}`,
+        `contacts/step exact ${f(row.contactsPerStep.exact)}, fixed ${f(row.contactsPerStep.fixed)}; µs/contact (median of rounds; fastest rounds) exact ${f(row.usPerContact.exact)}; ${f(row.usPerContactLeast!.exact)}, fixed ${f(row.usPerContact.fixed)}; ${f(row.usPerContactLeast!.fixed)}; from the median step (former measure) exact ${f(row.usPerContactMedianStep!.exact)}, fixed ${f(row.usPerContactMedianStep!.fixed)}; ` +
+        `bare pairing ${f(row.barePairing!.nsPerMovingBall)} ns a moving ball, ${f(row.barePairing!.usPerContact)} µs/contact (the fixed tick's extra time ${f(row.barePairing!.fixedExtraOverBare)}× it)`,
     )
   }
 }
@@ -423,7 +446,21 @@ const json = writeResult('contacts', {
     gas: 'walled square, area fraction 0.2, restitution 0.9, no holes, no deceleration, 150–350 px/s',
     panel: 'tiles of the default 5 × 5 panel in one field open at the bottom, 40 balls a tile thrown up at once from a launch band, ROLLING_DECEL 300',
   },
+  barePairing: 'bench/barePairing.ts: the barest loop that pairs the moving balls of a tick (uniform grid by counting sort, pairs within reach; no solve, no resting balls, no walls, no order) over the moving balls after each step of a run with the fixed tick, the median of 5·REPEATS passes in each round\'s process, then the median of the rounds; usPerContact = its µs a step over the fixed tick\'s contacts a step; fixedExtraOverBare = the fixed tick\'s extra µs a step over the run without contacts (mean steps, median of the rounds) over the loop\'s',
   rows,
 })
+
+/** The bare pairing loop's row figures from the rounds' samples (medians), against the fixed tick's contacts and extra µs a step. */
+function barePairingRow(samples: Bare[], contactsPerStep: number, fixedExtraUs: number): NonNullable<ContactRow['barePairing']> {
+  const us = median(samples.map((b) => b.usPerStep))
+  const moving = median(samples.map((b) => b.movingPerStep))
+  return {
+    usPerStep: us,
+    nsPerMovingBall: (1000 * us) / moving,
+    pairsPerStep: median(samples.map((b) => b.pairsPerStep)),
+    usPerContact: us / contactsPerStep,
+    fixedExtraOverBare: fixedExtraUs / us,
+  }
+}
 const svg = await writeFigure('contacts', contactsFigure(rows, MEASURED_STEPS, ROUNDS))
 console.log(`wrote ${json} and ${svg}`)
