@@ -53,7 +53,8 @@ export function tables() {
       const u = r.usPerContact
       return (
         `| ${r.scene} | ${int(r.balls)} | ${r.fixed.toFixed(0)} | ${r.fixed240.toFixed(0)} | ${r.exact.toFixed(0)} | ${one(r.rapier)} (${times(r.rapier / r.fixed)}) | ${one(r.matter)} | ${one(r.planck)} | ` +
-        `${ms(w.fixed)} / ${ms(w.exact)} / ${ms(w.rapier)} | ${Math.round(r.contactsPerStep.fixed)} | ${u.fixed.toFixed(1)} / ${u.exact.toFixed(1)} |`
+        `${ms(w.fixed)} / ${ms(w.exact)} / ${ms(w.rapier)} | ${Math.round(r.contactsPerStep.fixed)} | ${u.fixed.toFixed(1)} / ${u.exact.toFixed(1)} | ` +
+        `${r.barePairing.nsPerMovingBall.toFixed(0)} ns, ${r.barePairing.usPerContact.toFixed(1)} µs (${times(r.barePairing.fixedExtraOverBare)}) |`
       )
     }),
   )
