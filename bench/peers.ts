@@ -5,7 +5,9 @@
 // without overlaps, so that no engine starts by pushing overlapping pairs apart).
 // Each engine steps at 1/120 s under tinybench; printed as ns per ball-step and as the ratio to this
 // module measured in the same run. Each engine's round runs in a Node process of its own, after WARM_STEPS
-// steps of a throwaway scene: with the four engines in one process, this module's first 15 to 70 steps of
+// steps of two throwaway scenes (half each; the second world a process makes generalises the world's field
+// types once, and the code compiled against the first is thrown away then, so the measured scene is the
+// third): with the four engines in one process, this module's first 15 to 70 steps of
 // a fresh 1,000-ball scene sometimes ran at 100-250 us a step, then fell to about 10 after one step of
 // 1-5 ms (V8 threw the step's optimised code away at the world's field-type generalisation and at
 // collections that freed objects it had embedded, and compiled it again some tens of steps later), so the
@@ -164,7 +166,7 @@ const MEASURED_STEPS = 120
 /** Rounds per scene, the engines interleaved within a round; each figure is the median of the rounds. */
 const ROUNDS = 3
 
-/** Steps of a throwaway scene before each measurement, in the measurement's own process. */
+/** Steps of the throwaway scenes before each measurement (two, half each), in the measurement's own process. */
 const WARM_STEPS = 240
 
 const ENGINES: Record<string, (sc: Scene, contacts: boolean) => Stepper> = { ours, matter, planck: planckWorld, rapier }
@@ -177,8 +179,10 @@ if (child !== undefined) {
   const contacts = argValue('--contacts') === '1'
   const sc = scene(n, contacts)
   const make = () => ENGINES[child]!(sc, contacts)
-  const throwaway = make()
-  for (let i = 0; i < WARM_STEPS; i++) throwaway()
+  for (let k = 0; k < 2; k++) {
+    const throwaway = make()
+    for (let i = 0; i < WARM_STEPS / 2; i++) throwaway()
+  }
   const step = make()
   collectGarbage()
   process.stdout.write(JSON.stringify({ ns: ((await medianStepMs(step, MEASURED_STEPS)) * 1e6) / n })) // ms per step → ns per ball-step
@@ -226,7 +230,7 @@ const json = writeResult('peers', {
   dt: DT,
   measuredSteps: MEASURED_STEPS,
   rounds: ROUNDS,
-  timing: 'tinybench: median step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of a throwaway one, each engine\'s round in a Node process of its own, ns per ball-step; median of ROUNDS rounds, the engines interleaved',
+  timing: 'tinybench: median step of MEASURED_STEPS steps of a fresh scene after WARM_STEPS steps of two throwaway ones (half each), each engine\'s round in a Node process of its own, ns per ball-step; median of ROUNDS rounds, the engines interleaved',
   warmSteps: WARM_STEPS,
   rollingDecel: DECEL,
   ballRestitution: 0.9,
