@@ -33,9 +33,23 @@ const REPORTED = 2
 /** changed bit of a candidate whose wall hit this tick was reported */
 const WALL_REPORTED = 4
 
+/**
+ * The sweeps' stamps, on one clock that only rises (scratch: one solve at a time): when each pair was last
+ * tested, and when each packed ball's velocity last changed. A pair neither of whose balls has changed
+ * since its last test would be refused again, so a later sweep passes it by: the same impulses in the same
+ * order, without testing every pair at every sweep.
+ */
+let testedAt = new Float64Array(256)
+let changedAt = new Float64Array(256)
+let clock = 0
+
 export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number): void {
   const e = w.config.BALL_RESTITUTION
   const settle = w.config.BALL_SETTLE_SPEED
+  if (testedAt.length < F.pairCount) testedAt = new Float64Array(2 * F.pairCount)
+  if (changedAt.length < F.n) changedAt = new Float64Array(2 * F.n)
+  // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last call)
+  testedAt.fill(-1, 0, F.pairCount)
   let moved = false
   for (let it = 0; it < iterations; it++) {
     moved = false
@@ -58,6 +72,9 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
 function impulse(w: BallWorld, F: FixedContactState, p: number, t: number, e: number, settle: number): boolean {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
+  const at = testedAt[p]!
+  if (changedAt[a]! <= at && changedAt[b]! <= at) return false
+  testedAt[p] = clock
   if (!meetsWithinTick(F, a, b)) return false
   const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
   if (!(approach > 0)) return false
@@ -101,6 +118,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number, approach: n
     F.vx[b] = F.vx[b]! + j * imb * nx
     F.vy[b] = F.vy[b]! + j * imb * ny
   }
+  changedAt[a] = ++clock
+  changedAt[b] = clock
   if ((F.changed[a]! & 1) === 0) F.hit[F.hitCount++] = a
   if ((F.changed[b]! & 1) === 0) F.hit[F.hitCount++] = b
   F.changed[a]! |= 1
@@ -259,6 +278,7 @@ function wallVelocity(w: BallWorld, F: FixedContactState, t: number, settle: num
   }
   F.vx[i] = vx
   F.vy[i] = vy
+  changedAt[i] = ++clock
   if ((F.changed[i]! & 1) === 0) F.hit[F.hitCount++] = i
   F.changed[i]! |= 1
   return true
