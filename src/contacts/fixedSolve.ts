@@ -34,10 +34,10 @@ const REPORTED = 2
 const WALL_REPORTED = 4
 
 /**
- * The sweeps' stamps, on one clock that only rises (scratch: one solve at a time): when each pair was last
- * tested, and when each packed ball's velocity last changed. A pair neither of whose balls has changed
- * since its last test would be refused again, so a later sweep passes it by: the same impulses in the same
- * order, without testing every pair at every sweep.
+ * The sweeps' stamps within one call (scratch: one solve at a time): when each pair was last tested, and
+ * when each packed ball's velocity last changed, on a clock that counts the changes. A pair neither of whose
+ * balls has changed since its last test would be refused again, so a later sweep passes it by: the same
+ * impulses in the same order, without testing every pair at every sweep.
  */
 let testedAt = new Float64Array(256)
 let changedAt = new Float64Array(256)
@@ -50,6 +50,8 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   if (changedAt.length < F.n) changedAt = new Float64Array(2 * F.n)
   // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last call)
   testedAt.fill(-1, 0, F.pairCount)
+  changedAt.fill(0, 0, F.n)
+  clock = 0
   let moved = false
   for (let it = 0; it < iterations; it++) {
     moved = false

@@ -15,7 +15,7 @@ import { cutEvents } from '../events.js'
 import { NO_CONTACT, forgetPredictions } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
 import { removeMoving } from './idLists.js'
-import { HOT } from './pathHot.js'
+import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
 
@@ -90,7 +90,5 @@ function dropHeld(world: BallWorld, eid: number): void {
 export function clearBallRows(world: BallWorld, eid: number): void {
   clearBallRow(world.Ball, eid)
   clearPathRow(world.Path, eid)
-  const H = world.pathHot
-  const h = eid * HOT
-  for (let k = 0; k < HOT; k++) H[h + k] = 0
+  clearPathHot(world, eid)
 }

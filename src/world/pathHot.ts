@@ -41,6 +41,13 @@ export function hotNextT(w: BallWorld, eid: number): number {
   return w.pathHot[eid * HOT + H_NEXT_T]!
 }
 
+/** Zeroes a ball's row (with the Ball and Path rows: clearBallRows in balls.ts). */
+export function clearPathHot(w: BallWorld, eid: number): void {
+  const H = w.pathHot
+  const h = eid * HOT
+  for (let k = 0; k < HOT; k++) H[h + k] = 0
+}
+
 /** A row for every id below `capacity`, the old rows kept. */
 export function growPathHot(w: BallWorld, capacity: number): void {
   if (w.pathHot.length >= capacity * HOT) return
