@@ -8,7 +8,7 @@ import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
 import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance, fliesOver } from '../geometry.js'
-import { buildHoleGrid, walkHoleGrid } from '../world/holeGrid.js'
+import { buildHoleGrid, walkBound, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setPathStart } from '../world/pathHot.js'
@@ -58,8 +58,8 @@ let bestKind = 0
 /** the WallEdge bit of the best candidate when it is a wall or an open edge */
 let bestEdge = 0
 
-/** Tests hole `i` of the table against the path; keeps the earliest event. Returns the best distance. */
-function considerHole(i: number): number {
+/** Tests hole `i` of the table against the path; keeps the earliest event. Writes the walk's bound (walkBound). */
+function considerHole(i: number): void {
   const hid = qIds[i]!
   const hx = qXyr[3 * i]! - Q.x0
   const hy = qXyr[3 * i + 1]! - Q.y0
@@ -67,12 +67,13 @@ function considerHole(i: number): number {
   const p = hx * Q.ux + hy * Q.uy
   // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
   const bound = qTrack ? Q.change : Q.best
-  if (p - R > bound || hid === qLocked) return bound
+  walkBound[0] = bound
+  if (p - R > bound || hid === qLocked) return
   const c = hx * Q.uy - hy * Q.ux
   const c2 = c * c
   if (c2 < R * R) {
     // lip crossing, if the centre is still approaching the hole centre
-    if (!(p > Q.s)) return bound
+    if (!(p > Q.s)) return
     let d = p - Math.sqrt(R * R - c2)
     if (d < Q.s) d = Q.s // a rounding error behind (or found inside): decided now, never lost
     if (d < Q.best || (d === Q.best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
@@ -84,16 +85,16 @@ function considerHole(i: number): number {
     if (qTrack && d < Q.change && !fliesOver(speedAtDistance(d, Q.v0, Q.decel), Math.abs(c), R, Q.foot, Q.g)) Q.change = d
   } else {
     const f = R + Q.foot
-    if (c2 >= f * f) return bound
+    if (c2 >= f * f) return
     // near miss at the closest approach, if not already handled and not the hole the path leaves
-    if (!(p > Q.s || (p === Q.s && hid > qSHole)) || hid === qFrom) return bound
+    if (!(p > Q.s || (p === Q.s && hid > qSHole)) || hid === qFrom) return
     if (p < Q.best || (p === Q.best && hid < bestHole && bestKind !== PathEvent.Stop && bestKind < PathEvent.Wall)) {
       Q.best = p
       bestHole = hid
       bestKind = PathEvent.Near
     }
   }
-  return qTrack ? Q.change : Q.best
+  walkBound[0] = qTrack ? Q.change : Q.best
 }
 
 /**

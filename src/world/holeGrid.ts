@@ -128,14 +128,21 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
   grid.dirty = false
 }
 
-/** Visits a table index; returns the best event distance found so far (the walk's stopping bound). */
-export type HoleVisitor = (index: number) => number
+/**
+ * Visits a table index and writes the best event distance found so far (the walk's stopping bound) into
+ * walkBound[0]. A slot of a typed array, not a return value: a double returned from a call V8 does not
+ * inline is boxed, a heap number for every hole visited.
+ */
+export type HoleVisitor = (index: number) => void
+
+/** The stopping bound a HoleVisitor writes (see there). */
+export const walkBound = new Float64Array(1)
 
 /**
  * Calls `visit` once for every hole that may have an event on the ray from (x, y) along the unit
  * direction (ux, uy) beyond distance `from`, nearest cells first. `best` is the best event distance known
- * before the walk (the stop, say); `visit` returns the best found so far. The walk stops when no unseen
- * hole can beat it.
+ * before the walk (the stop, say); `visit` writes the best found so far into walkBound[0]. The walk stops
+ * when no unseen hole can beat it.
  */
 export function walkHoleGrid(
   grid: HoleGrid,
@@ -197,7 +204,8 @@ export function walkHoleGrid(
       const i = items[k]!
       if (seen[i] === q) continue
       seen[i] = q
-      best = visit(i)
+      visit(i)
+      best = walkBound[0]!
     }
     if (tNextX < tNextY) {
       tEnter = tNextX
