@@ -6,9 +6,12 @@
 // as in a full Gauss-Seidel sweep.
 import type { FixedContactState } from '../world/fixedState.js'
 
-/** Normal of pair p (a→b) into nrm; returns the gap (negative: overlap). */
-export const nrm = { x: 1, y: 0 }
-export function normal(F: FixedContactState, a: number, b: number): number {
+/**
+ * Normal of pair p (a→b) into nrm.x, nrm.y, and the gap into nrm.gap (negative: overlap). Written, not
+ * returned: a double returned from a call V8 does not inline is boxed, a heap number a pair a sweep.
+ */
+export const nrm = { x: 1, y: 0, gap: 0.5 }
+export function normal(F: FixedContactState, a: number, b: number): void {
   const dx = F.x[b]! - F.x[a]!
   const dy = F.y[b]! - F.y[a]!
   const d = Math.sqrt(dx * dx + dy * dy)
@@ -23,7 +26,7 @@ export function normal(F: FixedContactState, a: number, b: number): number {
     nrm.x = s > 0 ? rx / s : 1
     nrm.y = s > 0 ? ry / s : 0
   }
-  return d - F.r[a]! - F.r[b]!
+  nrm.gap = d - F.r[a]! - F.r[b]!
 }
 
 /** Each candidate's pairs (CSR: F.adjStart, F.adjPairs). */

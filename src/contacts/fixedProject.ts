@@ -28,7 +28,8 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
     moved = 0
     for (let k = 0; k < pairs; k++) {
       const p = back ? pairs - 1 - k : k
-      const gap = normal(F, F.pairA[p]!, F.pairB[p]!)
+      normal(F, F.pairA[p]!, F.pairB[p]!)
+      const gap = nrm.gap
       if (!(gap < 0)) continue
       pushApart(w, F, p, gap)
       if (-gap > worst) worst = -gap
@@ -77,7 +78,8 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
       size = heapPop(F.heap, size)
       const p = back ? pairs - 1 - key : key
       budget--
-      const gap = normal(F, F.pairA[p]!, F.pairB[p]!)
+      normal(F, F.pairA[p]!, F.pairB[p]!)
+      const gap = nrm.gap
       if (!(gap < 0)) continue
       pushApart(w, F, p, gap)
       if (-gap > worst) worst = -gap

@@ -8,7 +8,7 @@ import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
 import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance, fliesOver } from '../geometry.js'
-import { buildHoleGrid, walkBound, walkHoleGrid } from '../world/holeGrid.js'
+import { W_BOUND, W_FROM, W_UX, W_UY, W_X, W_Y, buildHoleGrid, walk, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setPathStart } from '../world/pathHot.js'
@@ -58,7 +58,7 @@ let bestKind = 0
 /** the WallEdge bit of the best candidate when it is a wall or an open edge */
 let bestEdge = 0
 
-/** Tests hole `i` of the table against the path; keeps the earliest event. Writes the walk's bound (walkBound). */
+/** Tests hole `i` of the table against the path; keeps the earliest event. Writes the walk's bound (walk[W_BOUND], src/world/holeGrid.ts). */
 function considerHole(i: number): void {
   const hid = qIds[i]!
   const hx = qXyr[3 * i]! - Q.x0
@@ -67,7 +67,7 @@ function considerHole(i: number): void {
   const p = hx * Q.ux + hy * Q.uy
   // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
   const bound = qTrack ? Q.change : Q.best
-  walkBound[0] = bound
+  walk[W_BOUND] = bound
   if (p - R > bound || hid === qLocked) return
   const c = hx * Q.uy - hy * Q.ux
   const c2 = c * c
@@ -94,7 +94,7 @@ function considerHole(i: number): void {
       bestKind = PathEvent.Near
     }
   }
-  walkBound[0] = qTrack ? Q.change : Q.best
+  walk[W_BOUND] = qTrack ? Q.change : Q.best
 }
 
 /**
@@ -216,7 +216,13 @@ export function planRolling(w: BallWorld, eid: number): void {
       for (let i = 0, n = table.count; i < n; i++) considerHole(i)
     } else {
       if (grid.dirty || Q.foot > grid.ballRadius) buildHoleGrid(grid, table, Math.max(Q.foot, grid.ballRadius, w.config.BALL_RADIUS))
-      walkHoleGrid(grid, Q.x0, Q.y0, Q.ux, Q.uy, Q.s, qTrack ? Q.change : Q.best, considerHole)
+      walk[W_X] = Q.x0
+      walk[W_Y] = Q.y0
+      walk[W_UX] = Q.ux
+      walk[W_UY] = Q.uy
+      walk[W_FROM] = Q.s
+      walk[W_BOUND] = qTrack ? Q.change : Q.best
+      walkHoleGrid(grid, considerHole)
     }
   }
 

@@ -128,32 +128,35 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
   grid.dirty = false
 }
 
-/**
- * Visits a table index and writes the best event distance found so far (the walk's stopping bound) into
- * walkBound[0]. A slot of a typed array, not a return value: a double returned from a call V8 does not
- * inline is boxed, a heap number for every hole visited.
- */
+/** Visits a table index and writes the best event distance found so far into walk[W_BOUND]. */
 export type HoleVisitor = (index: number) => void
 
-/** The stopping bound a HoleVisitor writes (see there). */
-export const walkBound = new Float64Array(1)
+/**
+ * The walk's numbers, in and out: the ray from (x, y) along the unit direction (ux, uy), the distance it
+ * starts at, and the stopping bound (the best event distance known before the walk, then lowered by the
+ * visitor as it finds earlier events). Slots of a typed array, not arguments and a return value: a double
+ * passed to or returned from a call V8 does not inline is boxed, a heap number for every path planned and
+ * every hole visited.
+ */
+export const walk = new Float64Array(6)
+export const W_X = 0
+export const W_Y = 1
+export const W_UX = 2
+export const W_UY = 3
+export const W_FROM = 4
+export const W_BOUND = 5
 
 /**
- * Calls `visit` once for every hole that may have an event on the ray from (x, y) along the unit
- * direction (ux, uy) beyond distance `from`, nearest cells first. `best` is the best event distance known
- * before the walk (the stop, say); `visit` writes the best found so far into walkBound[0]. The walk stops
- * when no unseen hole can beat it.
+ * Calls `visit` once for every hole that may have an event on the ray in `walk` beyond its start distance,
+ * nearest cells first. The walk stops when no unseen hole can beat the bound (walk[W_BOUND]).
  */
-export function walkHoleGrid(
-  grid: HoleGrid,
-  x: number,
-  y: number,
-  ux: number,
-  uy: number,
-  from: number,
-  best: number,
-  visit: HoleVisitor,
-): void {
+export function walkHoleGrid(grid: HoleGrid, visit: HoleVisitor): void {
+  const x = walk[W_X]!
+  const y = walk[W_Y]!
+  const ux = walk[W_UX]!
+  const uy = walk[W_UY]!
+  const from = walk[W_FROM]!
+  let best = walk[W_BOUND]!
   if (++grid.query === 0xffffffff) {
     grid.seen.fill(0)
     grid.query = 1
@@ -205,7 +208,7 @@ export function walkHoleGrid(
       if (seen[i] === q) continue
       seen[i] = q
       visit(i)
-      best = walkBound[0]!
+      best = walk[W_BOUND]!
     }
     if (tNextX < tNextY) {
       tEnter = tNextX
