@@ -47,9 +47,12 @@ for (const [entry, args] of benches) {
   console.log(`   (${((Date.now() - t0) / 1000).toFixed(0)} s)`)
 }
 
-/** A benchmark's results file, if that benchmark ran to the end in this run. */
+/**
+ * A benchmark's results file, if that benchmark ran to the end in this run (the adversarial suite's also when
+ * it exits with a failure: its file then says which test failed).
+ */
 const read = <T>(name: string): T | undefined => {
-  if (failed.includes(`bench/${name}.ts`)) return undefined
+  if (failed.includes(`bench/${name}.ts`) && name !== 'adversarial') return undefined
   try {
     return JSON.parse(readFileSync(join(out, 'results', `${name}.json`), 'utf8')) as T
   } catch {
@@ -75,7 +78,7 @@ const contacts = read<{ rows: ContactRow[] }>('contacts')
 const accuracy = read<{ points: AccuracyPoint[] }>('contact-accuracy')
 const piles = read<{ balls: number; rows: PileRow[] }>('piles')
 const dense = read<{ rows: { balls: number; ordered: number; scattered: number }[]; growth100kOver10k: { ordered: number; scattered: number } }>('dense')
-const adversarial = read<{ scale: number; seconds: number; properties: Record<string, { passed: boolean; runs: number; steps: number; slowestStepMs: number }> }>('adversarial')
+const adversarial = read<{ scale: number; seconds: number; vitestExit: number | null; properties: Record<string, { passed: boolean; runs: number; steps: number; slowestStepMs: number }> }>('adversarial')
 
 const k = (n: number) => n.toLocaleString('en-US')
 const f = (v: number) => (v >= 100 ? k(Math.round(v)) : v.toFixed(1))
@@ -146,6 +149,7 @@ if (adversarial) {
   for (const [name, r] of Object.entries(adversarial.properties)) {
     console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0)} ms`)
   }
+  if (adversarial.vitestExit !== 0 && Object.values(adversarial.properties).every((r) => r.passed)) console.log(`FAIL  a named counterexample (vitest exited with ${adversarial.vitestExit}; see its output above)`)
 }
 
 console.log('\nfloors (checked, not asserted)')
@@ -196,6 +200,6 @@ if (recycling) {
 }
 
 if (failed.length > 0) {
-  console.error(`\nbenchmarks that did not finish: ${failed.join(', ')}`)
+  console.error(`\nbenchmarks that failed or did not finish: ${failed.join(', ')}`)
   process.exit(1)
 }

@@ -32,13 +32,18 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     const y = B.y[m]!
     const r = B.radius[m]!
     const first = n
+    // a ball touches m within TOUCH_GAP: the lookups reach twice that past m, so that two balls touching
+    // across a cell boundary (m's disc ending a rounding short of it, the other's starting on it) meet in a
+    // cell; without it whether such a ball joined depended on how far its capsule in the hash reached, that
+    // is on when it was last predicted (a cluster then differed with PREDICTION_HORIZON)
+    const look = r + 2 * TOUCH_GAP
     // moving balls: through the hash (or all of them, for a member too wide for it), then the big ones
-    if (capsuleCellEstimate(C, x, y, x, y, r) > MAX_CAPSULE_CELLS) {
+    if (capsuleCellEstimate(C, x, y, x, y, look) > MAX_CAPSULE_CELLS) {
       const balls = w.moving.dense
       for (let i = 0, k = w.moving.count; i < k; i++) n = consider(w, n, balls[i]!, m, t, stamp)
     } else {
       const sMask = C.sweepHead.length - 1
-      const k = capsuleCells(C, x, y, x, y, r, sMask)
+      const k = capsuleCells(C, x, y, x, y, look, sMask)
       for (let i = 0; i < k; i++) {
         const bucket = C.cells[i]!
         if (C.sweepStamp[bucket] !== C.stamp) continue
@@ -51,7 +56,7 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     // resting balls: through the grid (or every bucket, when that is cheaper), then those beside it
     if (C.restCount > 0) {
       const rMask = C.restHead.length - 1
-      const reach = r + C.maxRadius
+      const reach = look + C.maxRadius
       if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
         for (let i = 0; i <= rMask; i++) {
           for (let c = C.restHead[i]!; c !== 0; c = C.restNext[c]!) n = consider(w, n, c, m, t, stamp)

@@ -371,7 +371,7 @@ export function seedResting(w: BallWorld, F: FixedContactState, x: number, y: nu
   for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!, x, y, reach)
   if (C.restCount === 0) return
   const mask = C.restHead.length - 1
-  const rho = reach + C.maxRadius
+  const rho = reach + C.maxRadius + 2 * TOUCH_GAP // addResting's reach + radius + gap, and a gap more
   if (capsuleCellEstimate(C, x, y, x, y, rho) > C.restHead.length) {
     for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
     return

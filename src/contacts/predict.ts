@@ -50,10 +50,14 @@ export function predictBall(w: BallWorld, a: number): void {
     C.spanEnd[a] = endA
   }
 
-  // moving balls' capsules: through the hash, or, for a ball too big or fast for it, directly
-  const big = capsuleCellEstimate(C, x1, y1, x2, y2, rho) > MAX_CAPSULE_CELLS
+  // moving balls' capsules: through the hash, or, for a ball too big or fast for it, directly. A contact is
+  // taken within GAP_TOLERANCE: the cells reach twice that past the capsule, so two capsules that come that
+  // close across a cell boundary share a cell, whatever their lengths (which depend on when each ball was
+  // predicted); the capsule is entered in the same cells
+  const look = rho + 2 * GAP_TOLERANCE
+  const big = capsuleCellEstimate(C, x1, y1, x2, y2, look) > MAX_CAPSULE_CELLS
   const sMask = C.sweepHead.length - 1
-  let n = big ? 0 : capsuleCells(C, x1, y1, x2, y2, rho, sMask)
+  let n = big ? 0 : capsuleCells(C, x1, y1, x2, y2, look, sMask)
   for (let k = 0; k < n; k++) {
     const bucket = C.cells[k]!
     if (C.sweepStamp[bucket] !== C.stamp) continue
@@ -98,7 +102,7 @@ export function predictBall(w: BallWorld, a: number): void {
   // cheaper than the cells; then those too wide for the grid
   if (C.restCount > 0) {
     const rMask = C.restHead.length - 1
-    const reach = rho + C.maxRadius
+    const reach = look + C.maxRadius
     if (capsuleCellEstimate(C, x1, y1, x2, y2, reach) > C.restHead.length) {
       for (let k = 0; k <= rMask; k++) {
         for (let b = C.restHead[k]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
