@@ -689,6 +689,24 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['overlap'])
   })
 
+  // big and small balls pressed in the panel's walls: the projection's last sweep over the moving balls' pairs
+  // was cut short by the budget, and the overlap of the pairs it had reached was read as the whole tick's,
+  // so the tick, 3.7e-3 px deep, was not counted in world.fixed.capped (whose ticks the overlap check skips)
+  it('fixed-tick contacts: a projection whose budget runs out part way through a sweep counts the tick as capped', () => {
+    const aim = (k: number, d: number, off: number, a: number, lip?: number) => ({ p: 'aim' as const, k, d, off, a, ...(lip === undefined ? {} : { lip }) })
+    const ops = [
+      ...PANEL_HOLES.map((h) => ({ t: 'addHole', ...h })),
+      { t: 'burst', n: 11, x: -20, y: 1000, spread: 400, speed: 0, radius: undefined, mass: undefined, seed: 239, aim: aim(36, 56.0618, 0.58703964, 4.0014639, 501.1102) },
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: undefined, open: { top: true } },
+      { t: 'burst', n: 15, x: -20, y: -20, spread: 400, speed: 0, radius: 33.265955329400455, mass: undefined, seed: 526, aim: aim(0, 35.6124, -0.57, 4.987584, 462.86434) },
+      { t: 'step', dt: 0.25 },
+      { t: 'burst', n: 11, x: -20, y: -20, spread: 60, speed: 1000, radius: 6.591738952443213, mass: undefined, seed: 809, aim: aim(35, 69.0628, -0.5743088, 4.1875029) },
+      { t: 'step', dt: 0.25 },
+      { t: 'addBall', x: 387.42752, y: 7.344200000000001, radius: 2.1037784397664754, mass: 841.3951416451948, place: { p: 'free' }, vx: -2223.309890651403, vy: -0 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['overlap'])
+  })
+
   // a heavy ball drives a column into the corner (walls of restitution 0): a settling contact's cluster took
   // a ball touching a member across a grid-cell boundary only when that ball's capsule in the hash happened
   // to reach over it, which depends on when the ball was last predicted, so the trace differed with the
