@@ -707,6 +707,16 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['overlap'])
   })
 
+  // eight small balls put down on one point roll out and stop: a rolling ball pushes a resting one, which the
+  // projection moved 1.2–1.6e-3 px into a resting ball the tick had not paired with it
+  it('fixed-tick contacts: a ball the projection pushes into a resting ball it was not paired with is paired with it in the same tick', () => {
+    const ops = [
+      { t: 'burst', n: 8, x: 0, y: -20, spread: 0, speed: 50, radius: 1.0914403364487566, mass: 1, seed: 9, aim: undefined },
+      { t: 'step', dt: 1e-9 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 300 }, ops, ['overlap'])
+  })
+
   // a heavy ball drives a column into the corner (walls of restitution 0): a settling contact's cluster took
   // a ball touching a member across a grid-cell boundary only when that ball's capsule in the hash happened
   // to reach over it, which depends on when the ball was last predicted, so the trace differed with the
