@@ -86,7 +86,8 @@ describe('fixed-tick contacts', () => {
           const sim = createBallPhysics({ ...FIXED, ROLLING_DECEL: 0, BALL_RESTITUTION: 1 })
           sim.addBall({ x: 0, y: 0, vx: speed, vy: 0 })
           sim.addBall({ x: 30 + speed * 0.2, y: offset, vx: 0, vy: 0 })
-          const ev = run(sim, 0.5, dt).filter((e) => e.type === 'collision')
+          // the touch comes within 0.2 s + 30 px / speed ≤ 0.8 s: a run of 1 s sees it at every speed
+          const ev = run(sim, 1, dt).filter((e) => e.type === 'collision')
           expect(ev.length, `speed ${speed} offset ${offset} dt ${dt}`).toBe(offset < 22 ? 1 : 0)
         },
       ),
