@@ -565,7 +565,9 @@ function property(
           throw err
         }
       }),
-      { seed: seed + SEED_SHIFT, numRuns: numRuns * SCALE, interruptAfterTimeLimit: 120_000 * SCALE, markInterruptAsFailure: true },
+      // the error (its violation and the repro of the shrunk sequence) goes into the message, so the long run's
+      // report says what failed, not only the sequence
+      { seed: seed + SEED_SHIFT, numRuns: numRuns * SCALE, interruptAfterTimeLimit: 120_000 * SCALE, markInterruptAsFailure: true, includeErrorInReport: true },
     )
   } catch (err) {
     failure = String(err instanceof Error ? err.message : err)
