@@ -10,7 +10,7 @@ import { BallMode } from '../../components/Ball.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushPair, reserveCandidates, sweepStores, type FixedContactState } from '../world/fixedState.js'
-import { markWall } from './fixedGrid.js'
+import { setRestingCandidate } from './fixedReach.js'
 import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
 
 /** Pairs the balls the projection moved with the unpaired resting balls they overlap; true when it paired any. */
@@ -86,18 +86,9 @@ function pairIfPushed(w: BallWorld, F: FixedContactState, i: number, e: number, 
     j = F.n
     pushCandidate(F, e)
     reserveCandidates(F, F.n)
-    F.x[j] = B.x[e]!
-    F.y[j] = B.y[e]!
-    F.r[j] = B.radius[e]!
-    F.vx[j] = 0
-    F.vy[j] = 0
-    F.im[j] = 1 / F.mass[e]!
-    F.reach[j] = B.radius[e]! + TOUCH_GAP
-    F.changed[j] = 0
-    F.grown[j] = 0
+    setRestingCandidate(w, F, j)
     F.packMark[e] = st
     F.packAt[e] = j
-    markWall(F, j)
   }
   pushPair(F, i < j ? i : j, i < j ? j : i)
   return true

@@ -185,19 +185,8 @@ function consider(F: FixedContactState, g: number, j: number): void {
 function addResting(w: BallWorld, F: FixedContactState, from: number): void {
   if (F.n === from) return
   reserveCandidates(F, F.n)
-  const B = w.Ball
   for (let k = from; k < F.n; k++) {
-    const eid = F.id[k]!
-    F.x[k] = B.x[eid]!
-    F.y[k] = B.y[eid]!
-    F.r[k] = B.radius[eid]!
-    F.vx[k] = 0
-    F.vy[k] = 0
-    F.im[k] = 1 / F.mass[eid]!
-    F.reach[k] = B.radius[eid]! + TOUCH_GAP
-    F.changed[k] = 0
-    F.grown[k] = 0
-    markWall(F, k)
+    setRestingCandidate(w, F, k)
     for (let m = 0; m < F.widenedCount; m++) {
       const g = F.widened[m]!
       const dx = F.x[k]! - F.x[g]!
@@ -206,4 +195,20 @@ function addResting(w: BallWorld, F: FixedContactState, from: number): void {
       if (dx * dx + dy * dy < s * s) pushPair(F, g < k ? g : k, g < k ? k : g)
     }
   }
+}
+
+/** Candidate k, a resting ball joining the tick's candidates (room reserved): its data from the stores, at rest, near-wall listing. */
+export function setRestingCandidate(w: BallWorld, F: FixedContactState, k: number): void {
+  const B = w.Ball
+  const eid = F.id[k]!
+  F.x[k] = B.x[eid]!
+  F.y[k] = B.y[eid]!
+  F.r[k] = B.radius[eid]!
+  F.vx[k] = 0
+  F.vy[k] = 0
+  F.im[k] = 1 / F.mass[eid]!
+  F.reach[k] = B.radius[eid]! + TOUCH_GAP
+  F.changed[k] = 0
+  F.grown[k] = 0
+  markWall(F, k)
 }
