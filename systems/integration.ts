@@ -20,7 +20,8 @@ import { HeapKind, heapPop, heapPush, heapTopA, heapTopB, heapTopKind, heapTopLi
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
-import { motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
+import { E, MT, MT_CAP, motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
+import { FROM, search } from '../src/contacts/search.js'
 import { pushId } from '../src/world/idLists.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
@@ -164,7 +165,8 @@ function orderedIntegration(w: BallWorld): void {
       // bookkeeping only (a lip exit, a near miss)
       predictAfterEvent(w, a)
     } else if (kind === HeapKind.Resume) {
-      resumeSearch(w, a, b, t)
+      search[FROM] = t
+      resumeSearch(w, a, b)
     } else {
       markContact(w, a, b, C.now)
       markContact(w, b, a, C.now)
@@ -246,7 +248,7 @@ function advanceDue(w: BallWorld, n: number, tEnd: number): void {
  */
 function predictAfterEvent(w: BallWorld, a: number): void {
   const C = w.collide!
-  if (w.Ball.mode[a] === BallMode.Rolling && C.predGen[a] === C.gen[a] && C.predicted[a] === C.stamp && motionEnd(w, a, C.until) <= C.spanEnd[a]!) {
+  if (w.Ball.mode[a] === BallMode.Rolling && C.predGen[a] === C.gen[a] && C.predicted[a] === C.stamp && spanKept(w, a)) {
     C.isDirty[a] = 0
     const own = w.pathHot[a * HOT + H_NEXT_T]!
     if (own <= C.until) heapPush(C, own, HeapKind.Own, a, 0)
@@ -254,6 +256,14 @@ function predictAfterEvent(w: BallWorld, a: number): void {
   }
   bumpVersion(w, a)
   predictBall(w, a)
+}
+
+/** Whether the span of a's last prediction still reaches as far as its motion is known. */
+function spanKept(w: BallWorld, a: number): boolean {
+  const C = w.collide!
+  E[MT_CAP] = C.until
+  motionEnd(w, a)
+  return E[MT] <= C.spanEnd[a]!
 }
 
 /** Predictions per moving ball in a window above which the next window ends with its step. */

@@ -18,11 +18,11 @@ import { WallEdge } from '../../components/Walls.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
-import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
+import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
 import { addFresh, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 
 /** The tick's reductions over the candidates: sum and largest reach, bounding box, balls big for the sweep cell. */
-const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0 }
+const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0, key: 0.5 }
 
 /**
  * Gathers the candidates of a tick into F.ord (F.full of them) with their reaches (F.reachOf), the balls near
@@ -158,7 +158,7 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
     if (x > maxX) maxX = x
     if (y < minY) minY = y
     if (y > maxY) maxY = y
-    if (near && !(x - reach > wx0 && x + reach < wx1 && y - reach > wy0 && y + reach < wy1)) nearWall(F, e)
+    if (near && !(x - reach > wx0 && x + reach < wx1 && y - reach > wy0 && y + reach < wy1)) F.near = pushListed(F.near, F.nearCount++, e)
     // a ball too wide or fast for the sweep cell has a key half a cell on (fixedSweep.ts)
     let key = sweepKey(inv, cols, x, y)
     if (reach > half) {
@@ -210,7 +210,8 @@ function sortOrd(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: b
     if (live[e] === 1 && (m === BallMode.Rolling || m === BallMode.RimRoll)) nMov++
     else if (live[e] === 1 && m === BallMode.Resting && (allRest || (lookup && seen[e] === seenStamp))) {
       if (allRest) seen[e] = seenStamp
-      k = restingKey(w, F, e, B.x[e]!, B.y[e]!, B.radius[e]! + TOUCH_GAP)
+      restingKey(w, F, e)
+      k = acc.key
       nRest++
     } else {
       F.inOrd[e] = 0
@@ -235,8 +236,11 @@ function sortOrd(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: b
   return nRest
 }
 
-/** A resting candidate's reach and its part of the reductions; returns its key. */
-function restingKey(w: BallWorld, F: FixedContactState, e: number, x: number, y: number, reach: number): number {
+/** A resting candidate's reach and its part of the reductions; its key into acc.key (a returned double is boxed: 14 bytes a ball a tick in sortOrd) */
+function restingKey(w: BallWorld, F: FixedContactState, e: number): void {
+  const x = w.Ball.x[e]!
+  const y = w.Ball.y[e]!
+  const reach = w.Ball.radius[e]! + TOUCH_GAP
   F.reachOf[e] = reach
   acc.sum += reach
   if (reach > acc.max) acc.max = reach
@@ -244,24 +248,19 @@ function restingKey(w: BallWorld, F: FixedContactState, e: number, x: number, y:
   if (x > acc.maxX) acc.maxX = x
   if (y < acc.minY) acc.minY = y
   if (y > acc.maxY) acc.maxY = y
-  if (w.walls !== 0 && !(x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY)) nearWall(F, e)
+  if (w.walls !== 0 && !(x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY)) F.near = pushListed(F.near, F.nearCount++, e)
   let key = sweepKey(F.sweepInv, F.sweepCols, x, y)
   if (reach > smallReach(F)) {
     key += 0.5
     acc.big++
   }
-  return key
-}
-
-function nearWall(F: FixedContactState, e: number): void {
-  F.near = pushListed(F.near, F.nearCount++, e)
+  acc.key = key
 }
 
 /** Resting ball e joins ord this tick. */
 function join(w: BallWorld, F: FixedContactState, e: number): void {
-  const x = w.Ball.x[e]!
-  const y = w.Ball.y[e]!
-  addFresh(F, e, restingKey(w, F, e, x, y, w.Ball.radius[e]! + TOUCH_GAP))
+  restingKey(w, F, e)
+  addFresh(F, e, acc.key)
 }
 
 /**
@@ -372,11 +371,11 @@ export function seedResting(w: BallWorld, F: FixedContactState, x: number, y: nu
   if (C.restCount === 0) return
   const mask = C.restHead.length - 1
   const rho = reach + C.maxRadius + 2 * TOUCH_GAP // addResting's reach + radius + gap, and a gap more
-  if (capsuleCellEstimate(C, x, y, x, y, rho) > C.restHead.length) {
+  if (capsuleCellEstimate(C, pointQuery(x, y, rho)) > C.restHead.length) {
     for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
     return
   }
-  const k = capsuleCells(C, x, y, x, y, rho, mask)
+  const k = capsuleCells(C, pointQuery(x, y, rho), mask)
   for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
 }
 

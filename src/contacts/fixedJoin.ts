@@ -11,7 +11,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushPair, reserveCandidates, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
-import { capsuleCellEstimate, capsuleCells } from './sweepGrid.js'
+import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
 
 /** Pairs the balls the projection moved with the unpaired resting balls they overlap; true when it paired any. */
 export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
@@ -58,10 +58,10 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
     // centres within the two radii, the other's at most maxRadius, found at its tick position
     const reach = F.r[i]! + C.maxRadius + shift + TOUCH_GAP
     const mask = C.restHead.length - 1
-    if (capsuleCellEstimate(C, x, y, x, y, reach) > C.restHead.length) {
+    if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > C.restHead.length) {
       for (let c = 0; c <= mask; c++) for (let e = C.restHead[c]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
     } else {
-      const k = capsuleCells(C, x, y, x, y, reach, mask)
+      const k = capsuleCells(C, pointQuery(x, y, reach), mask)
       for (let c = 0; c < k; c++) for (let e = C.restHead[C.cells[c]!]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
     }
   }

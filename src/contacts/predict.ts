@@ -5,11 +5,20 @@ import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'
 import { appendId } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { HeapKind, heapPush } from './eventHeap.js'
-import { AT, E, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
-import { RESULT, SearchResult, TIME, search, searchContact } from './search.js'
-import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, staleEntry, sweptCapsule } from './sweepGrid.js'
+import { AT, E, MT, MT_CAP, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
+import { FROM, RESULT, SearchResult, TIME, TO, search, searchContact } from './search.js'
+import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, query, staleEntry, sweptCapsule } from './sweepGrid.js'
 import { sq } from '../math.js'
 import { HOT, H_NEXT_T } from '../world/pathHot.js'
+
+/**
+ * The span of the ball being predicted (its motion's start and end in the window), in slots: V8 boxes each
+ * double passed to a function it does not inline, a heap number per pair tried. Its capsule is `cap`
+ * (sweptCapsule), which nothing else writes during a prediction.
+ */
+const span = new Float64Array(2)
+const START_A = 0
+const END_A = 1
 
 /**
  * Predicts ball `a`'s contacts with every ball near its path over [C.now, C.until] (the prediction window)
@@ -28,14 +37,13 @@ export function predictBall(w: BallWorld, a: number): void {
     if (own <= tEnd) heapPush(C, own, HeapKind.Own, a, 0)
   }
   const now = C.now
-  sweptCapsule(w, a, now, tEnd)
-  const x1 = cap[X1]
-  const y1 = cap[Y1]
-  const x2 = cap[X2]
-  const y2 = cap[Y2]
-  const rho = cap[CR]
-  const startA = motionStart(w, a)
-  const endA = motionEnd(w, a, tEnd)
+  sweptCapsule(w, a)
+  motionStart(w, a)
+  span[START_A] = E[MT]
+  E[MT_CAP] = tEnd
+  motionEnd(w, a)
+  const endA = E[MT]
+  span[END_A] = endA
   if (++C.seenStamp === 0xffffffff) {
     C.seen.fill(0)
     C.seenStamp = 1
@@ -54,10 +62,12 @@ export function predictBall(w: BallWorld, a: number): void {
   // taken within GAP_TOLERANCE: the cells reach twice that past the capsule, so two capsules that come that
   // close across a cell boundary share a cell, whatever their lengths (which depend on when each ball was
   // predicted); the capsule is entered in the same cells
-  const look = rho + 2 * GAP_TOLERANCE
-  const big = capsuleCellEstimate(C, x1, y1, x2, y2, look) > MAX_CAPSULE_CELLS
+  const look = cap[CR]! + 2 * GAP_TOLERANCE
+  query.set(cap)
+  query[CR] = look
+  const big = capsuleCellEstimate(C, query) > MAX_CAPSULE_CELLS
   const sMask = C.sweepHead.length - 1
-  let n = big ? 0 : capsuleCells(C, x1, y1, x2, y2, look, sMask)
+  let n = big ? 0 : capsuleCells(C, query, sMask)
   for (let k = 0; k < n; k++) {
     const bucket = C.cells[k]!
     if (C.sweepStamp[bucket] !== C.stamp) continue
@@ -68,20 +78,19 @@ export function predictBall(w: BallWorld, a: number): void {
       const mb = w.Ball.mode[b]
       if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
       C.seen[b] = stamp
-      tryPair(w, a, b, startA, endA, tEnd)
+      tryPair(w, a, b)
     }
   }
   if (big) {
     // every moving ball predicted before it in this window that can reach its capsule (the others pair with
     // it when they are predicted, through the big list)
     const balls = w.moving.dense
-    const span = tEnd - now
     for (let i = 0, m = w.moving.count; i < m; i++) {
       const b = balls[i]!
       if (C.seen[b] === stamp || C.predicted[b] !== C.stamp) continue
       C.seen[b] = stamp
-      if (!mayReach(w, b, now, span, x1, y1, x2, y2, rho)) continue
-      tryPair(w, a, b, startA, endA, tEnd)
+      if (!mayReach(w, b)) continue
+      tryPair(w, a, b)
     }
     if (mode !== BallMode.Resting) C.big = appendId(C.big, C.bigCount++, a)
   } else {
@@ -91,7 +100,7 @@ export function predictBall(w: BallWorld, a: number): void {
       const mb = w.Ball.mode[b]
       if (mb !== BallMode.Rolling && mb !== BallMode.RimRoll) continue
       C.seen[b] = stamp
-      tryPair(w, a, b, startA, endA, tEnd)
+      tryPair(w, a, b)
     }
   }
   // enter a's capsule, in the same cells (resting balls are found through the resting grid); its older
@@ -102,60 +111,50 @@ export function predictBall(w: BallWorld, a: number): void {
   // cheaper than the cells; then those too wide for the grid
   if (C.restCount > 0) {
     const rMask = C.restHead.length - 1
-    const reach = look + C.maxRadius
-    if (capsuleCellEstimate(C, x1, y1, x2, y2, reach) > C.restHead.length) {
+    query[CR] = look + C.maxRadius
+    if (capsuleCellEstimate(C, query) > C.restHead.length) {
       for (let k = 0; k <= rMask; k++) {
-        for (let b = C.restHead[k]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
+        for (let b = C.restHead[k]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp)
       }
     } else {
-      n = capsuleCells(C, x1, y1, x2, y2, reach, rMask)
+      n = capsuleCells(C, query, rMask)
       for (let k = 0; k < n; k++) {
-        for (let b = C.restHead[C.cells[k]!]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
+        for (let b = C.restHead[C.cells[k]!]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp)
       }
     }
   }
-  for (let i = 0; i < C.bigRestCount; i++) restingCandidate(w, a, C.bigRest[i]!, stamp, x1, y1, x2, y2, rho, startA, endA, tEnd)
+  for (let i = 0; i < C.bigRestCount; i++) restingCandidate(w, a, C.bigRest[i]!, stamp)
 }
 
 /** A resting ball b near a's capsule: tried once per prediction, after a distance test. */
-function restingCandidate(
-  w: BallWorld,
-  a: number,
-  b: number,
-  stamp: number,
-  x1: number,
-  y1: number,
-  x2: number,
-  y2: number,
-  rho: number,
-  startA: number,
-  endA: number,
-  tEnd: number,
-): void {
+function restingCandidate(w: BallWorld, a: number, b: number, stamp: number): void {
   const C = w.collide!
   if (C.seen[b] === stamp) return
   C.seen[b] = stamp
   // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
-  if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!, x1, y1, x2, y2) > sq(rho + w.Ball.radius[b]! + 2 * GAP_TOLERANCE)) return
-  tryPair(w, a, b, startA, endA, tEnd)
+  if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!) > sq(cap[CR]! + w.Ball.radius[b]! + 2 * GAP_TOLERANCE)) return
+  tryPair(w, a, b)
 }
 
 /**
- * Whether moving ball b can come within reach of the capsule (x1, y1)–(x2, y2), radius rho, within `span`
- * seconds of `now`: it moves no farther than its present speed times the span (its speed never grows).
+ * Whether moving ball b can come within reach of a's capsule within the window: it moves no farther than
+ * its present speed times the window's span (its speed never grows).
  */
-function mayReach(w: BallWorld, b: number, now: number, span: number, x1: number, y1: number, x2: number, y2: number, rho: number): boolean {
-  E[AT] = now
+function mayReach(w: BallWorld, b: number): boolean {
+  const C = w.collide!
+  E[AT] = C.now
   evalBall(w, b)
-  const travel = Math.sqrt(E[VX] * E[VX] + E[VY] * E[VY]) * span
-  const r = rho + w.Ball.radius[b]! + travel + 2 * GAP_TOLERANCE
-  return segmentDistance2(E[X], E[Y], x1, y1, x2, y2) <= r * r
+  const travel = Math.sqrt(E[VX] * E[VX] + E[VY] * E[VY]) * (C.until - C.now)
+  const r = cap[CR]! + w.Ball.radius[b]! + travel + 2 * GAP_TOLERANCE
+  return segmentDistance2(E[X], E[Y]) <= r * r
 }
 
-/** Squared distance from (px, py) to the segment (x1, y1)–(x2, y2). */
-function segmentDistance2(px: number, py: number, x1: number, y1: number, x2: number, y2: number): number {
-  const dx = x2 - x1
-  const dy = y2 - y1
+/** Squared distance from (px, py) to the segment of a's capsule, cap (X1, Y1)–(X2, Y2). */
+function segmentDistance2(px: number, py: number): number {
+  const x1 = cap[X1]!
+  const y1 = cap[Y1]!
+  const dx = cap[X2]! - x1
+  const dy = cap[Y2]! - y1
   const len2 = dx * dx + dy * dy
   let s = len2 > 0 ? ((px - x1) * dx + (py - y1) * dy) / len2 : 0
   if (s < 0) s = 0
@@ -165,23 +164,32 @@ function segmentDistance2(px: number, py: number, x1: number, y1: number, x2: nu
   return ex * ex + ey * ey
 }
 
-function tryPair(w: BallWorld, a: number, b: number, startA: number, endA: number, tEnd: number): void {
-  const startB = motionStart(w, b)
-  const endB = motionEnd(w, b, tEnd)
-  searchAndPush(w, a, b, startA > startB ? startA : startB, endA < endB ? endA : endB)
+/** Searches a (the ball being predicted, span) and b over their common span in the window. */
+function tryPair(w: BallWorld, a: number, b: number): void {
+  motionStart(w, b)
+  const startB = E[MT]
+  E[MT_CAP] = w.collide!.until
+  motionEnd(w, b)
+  const endB = E[MT]
+  search[FROM] = span[START_A]! > startB ? span[START_A]! : startB
+  search[TO] = span[END_A]! < endB ? span[END_A]! : endB
+  searchAndPush(w, a, b)
 }
 
-/** Continues a search that ran out of steps, from where it stopped. */
-export function resumeSearch(w: BallWorld, a: number, b: number, from: number): void {
+/** Continues a search that ran out of steps, from search[FROM] (where it stopped). */
+export function resumeSearch(w: BallWorld, a: number, b: number): void {
   const C = w.collide!
-  const endA = motionEnd(w, a, C.until)
-  const endB = motionEnd(w, b, C.until)
-  searchAndPush(w, a, b, from, endA < endB ? endA : endB)
+  E[MT_CAP] = C.until
+  motionEnd(w, a)
+  const endA = E[MT]
+  motionEnd(w, b)
+  search[TO] = endA < E[MT] ? endA : E[MT]
+  searchAndPush(w, a, b)
 }
 
-/** Searches a and b over [from, to] and pushes what it finds: their contact, or where to resume. */
-function searchAndPush(w: BallWorld, a: number, b: number, from: number, to: number): void {
-  searchContact(w, a, b, from, to)
+/** Searches a and b over [search[FROM], search[TO]] and pushes what it finds: their contact, or where to resume. */
+function searchAndPush(w: BallWorld, a: number, b: number): void {
+  searchContact(w, a, b)
   if (search[RESULT] === SearchResult.None) return
   const C = w.collide!
   const kind = search[RESULT] === SearchResult.Contact ? HeapKind.Contact : HeapKind.Resume
@@ -191,4 +199,3 @@ function searchAndPush(w: BallWorld, a: number, b: number, from: number, to: num
   const t = kind === HeapKind.Resume || search[TIME] > C.now ? search[TIME] : C.now
   heapPush(C, t, kind, a < b ? a : b, a < b ? b : a)
 }
-

@@ -7,23 +7,38 @@ import { HOT, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 import { ACC, AT, AX, AY, E, EXACT, NEXT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 
 export const SearchResult = { None: 0, Contact: 1, Resume: 2 } as const
-/** result of the last search (a SearchResult) and its time, s; a typed array: no allocation per write */
-export const search = new Float64Array(2)
+/**
+ * The search's input, the span [FROM, TO] to search (s), and its result: RESULT (a SearchResult) and its
+ * TIME (s). A typed array: no allocation per write, and no double passed as an argument (V8 boxes those
+ * for a function it does not inline, and a loop that starts from a boxed one may box every step)
+ */
+export const search = new Float64Array(4)
 export const RESULT = 0
 export const TIME = 1
+export const FROM = 2
+export const TO = 3
 
 /**
- * First contact of balls a and b in [from, to], on their current motions: the earliest time at which their
+ * Infinity, read from an array: where the literal meets a loop's doubles, V8 boxes every one of them (about
+ * 100 bytes a search in searchStraight)
+ */
+const INFINITY = new Float64Array([Infinity])
+
+/**
+ * First contact of balls a and b in [search[FROM], search[TO]], on their current motions: the earliest time at which their
  * gap is at most GAP_TOLERANCE while they approach. Sets search[RESULT]/search[TIME]: Contact at that time, None
- * if there is none before `to`, or Resume with the time reached after MAX_SEARCH_STEPS (the search continues
+ * if there is none before the span's end, or Resume with the time reached after MAX_SEARCH_STEPS (the search continues
  * from there when that time comes up in the heap).
  */
-export function searchContact(w: BallWorld, a: number, b: number, from: number, to: number): void {
+export function searchContact(w: BallWorld, a: number, b: number): void {
   search[RESULT] = SearchResult.None
+  const from = search[FROM]!
+  const to = search[TO]!
+  const never = INFINITY[0]!
   if (!(from <= to)) return
   const mode = w.Ball.mode
   if (mode[a] !== BallMode.RimRoll && mode[b] !== BallMode.RimRoll) {
-    searchStraight(w, a, b, from, to)
+    searchStraight(w, a, b)
     return
   }
   const S = w.Ball.radius[a]! + w.Ball.radius[b]!
@@ -67,7 +82,7 @@ export function searchContact(w: BallWorld, a: number, b: number, from: number, 
       pieceEnd = na < E[NEXT] ? na : E[NEXT]
     } else {
       A = acca + E[ACC]
-      pieceEnd = Infinity
+      pieceEnd = never
     }
     const gg = g > 0 ? g : 0
     let h: number
@@ -75,7 +90,7 @@ export function searchContact(w: BallWorld, a: number, b: number, from: number, 
       // the gap closes no sooner than the positive root of gg + vn·h − A·h²/2 (written without cancellation)
       h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
     } else {
-      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : never
       // touching without approaching: creep on; the balls can close by at most A·MIN_ADVANCE²/2 meanwhile
       if (h < MIN_ADVANCE) h = MIN_ADVANCE
     }
@@ -116,7 +131,10 @@ function loadStraight(w: BallWorld, eid: number, o: number): void {
  * (as evalBall does) measured 1.02x / 1.25x this version's contact overhead on the 1,000-ball gas / panel,
  * side by side; keep the three copies of the rolling formula (here and evalBall) in step.
  */
-function searchStraight(w: BallWorld, a: number, b: number, from: number, to: number): void {
+function searchStraight(w: BallWorld, a: number, b: number): void {
+  const from = search[FROM]!
+  const never = INFINITY[0]!
+  const to = search[TO]!
   const S = w.Ball.radius[a]! + w.Ball.radius[b]!
   const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
   const decel = w.config.ROLLING_DECEL
@@ -131,7 +149,7 @@ function searchStraight(w: BallWorld, a: number, b: number, from: number, to: nu
       xa = K[0]!
       ya = K[1]!
       vxa = vya = axa = aya = 0
-      na = Infinity
+      na = never
     } else {
       const v0 = K[4]!
       const t0 = K[5]!
@@ -156,7 +174,7 @@ function searchStraight(w: BallWorld, a: number, b: number, from: number, to: nu
         na = t0 + v0 / decel
       } else {
         axa = aya = 0
-        na = Infinity
+        na = never
       }
     }
     let xb: number, yb: number, vxb: number, vyb: number, axb: number, ayb: number, nb: number
@@ -164,7 +182,7 @@ function searchStraight(w: BallWorld, a: number, b: number, from: number, to: nu
       xb = K[6]!
       yb = K[7]!
       vxb = vyb = axb = ayb = 0
-      nb = Infinity
+      nb = never
     } else {
       const v0 = K[10]!
       const t0 = K[11]!
@@ -189,7 +207,7 @@ function searchStraight(w: BallWorld, a: number, b: number, from: number, to: nu
         nb = t0 + v0 / decel
       } else {
         axb = ayb = 0
-        nb = Infinity
+        nb = never
       }
     }
     const dx = xb - xa
@@ -214,7 +232,7 @@ function searchStraight(w: BallWorld, a: number, b: number, from: number, to: nu
     let h: number
     if (vn < 0) h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
     else {
-      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : never
       if (h < MIN_ADVANCE) h = MIN_ADVANCE
     }
     let next = t + h

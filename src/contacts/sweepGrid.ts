@@ -6,14 +6,20 @@ import type { BallWorld } from '../world/createWorld.js'
 import { cogRadius } from '../geometry.js'
 import { bucketOf } from '../world/restingGrid.js'
 import { heapClear } from './eventHeap.js'
-import { AT, E, X, Y, evalBall, motionEnd } from './evalMotion.js'
+import { AT, E, MT, MT_CAP, X, Y, evalBall, motionEnd } from './evalMotion.js'
 
 /**
- * Fills C.cells with the buckets (of a table of mask + 1) of every grid cell that the capsule from
- * (x1, y1) to (x2, y2) with radius rho may touch: row by row, the segment's extent within the row's band,
- * widened by rho. Returns the count.
+ * Fills C.cells with the buckets (of a table of mask + 1) of every grid cell that the capsule q may touch
+ * (ends (q[X1], q[Y1]), (q[X2], q[Y2]), radius q[CR]): row by row, the segment's extent within the row's
+ * band, widened by the radius. Returns the count. The capsule is read from an array, not passed as
+ * arguments: V8 boxes each double passed to a function it does not inline.
  */
-export function capsuleCells(C: CollisionState, x1: number, y1: number, x2: number, y2: number, rho: number, mask: number): number {
+export function capsuleCells(C: CollisionState, q: Float64Array, mask: number): number {
+  const x1 = q[X1]!
+  const y1 = q[Y1]!
+  const x2 = q[X2]!
+  const y2 = q[Y2]!
+  const rho = q[CR]!
   const c = C.cell
   const lo = Math.min(y1, y2) - rho
   const hi = Math.max(y1, y2) + rho
@@ -138,7 +144,6 @@ function compact(C: CollisionState): void {
   C.entCount = k
 }
 
-/** The capsule a ball may sweep from `from` to the end of its known motion (capped at `to`). */
 /** the capsule sweptCapsule writes: ends (X1, Y1), (X2, Y2) and radius CR */
 export const cap = new Float64Array(5)
 export const X1 = 0
@@ -146,7 +151,8 @@ export const Y1 = 1
 export const X2 = 2
 export const Y2 = 3
 export const CR = 4
-export function sweptCapsule(w: BallWorld, eid: number, from: number, to: number): void {
+/** Into cap: the capsule a ball may sweep over the prediction window, from C.now to the end of its known motion (capped at C.until). */
+export function sweptCapsule(w: BallWorld, eid: number): void {
   const r = w.Ball.radius[eid]!
   if (w.Ball.mode[eid] === BallMode.RimRoll) {
     // anywhere on the contact circle of its hole
@@ -160,22 +166,36 @@ export function sweptCapsule(w: BallWorld, eid: number, from: number, to: number
     cap[CR] = far + r
     return
   }
-  E[AT] = from
+  const C = w.collide!
+  E[AT] = C.now
   evalBall(w, eid)
   cap[X1] = E[X]
   cap[Y1] = E[Y]
-  E[AT] = motionEnd(w, eid, to)
+  E[MT_CAP] = C.until
+  motionEnd(w, eid)
+  E[AT] = E[MT]
   evalBall(w, eid)
   cap[X2] = E[X]
   cap[Y2] = E[Y]
   cap[CR] = r
 }
 
-/** About how many grid cells the capsule from (x1, y1) to (x2, y2) with radius rho covers (an upper estimate). */
-export function capsuleCellEstimate(C: CollisionState, x1: number, y1: number, x2: number, y2: number, rho: number): number {
+/** About how many grid cells the capsule q (as capsuleCells reads it) covers (an upper estimate). */
+export function capsuleCellEstimate(C: CollisionState, q: Float64Array): number {
   const c = C.cell
-  const dx = x2 - x1
-  const dy = y2 - y1
-  const across = (2 * rho) / c + 2
+  const dx = q[X2]! - q[X1]!
+  const dy = q[Y2]! - q[Y1]!
+  const across = (2 * q[CR]!) / c + 2
   return (Math.sqrt(dx * dx + dy * dy) / c + across) * across
+}
+
+/** A capsule to look up (capsuleCells, capsuleCellEstimate) that is not a ball's swept one: a point's disc. */
+export const query = new Float64Array(5)
+
+/** Sets query to the disc of radius rho about (x, y). */
+export function pointQuery(x: number, y: number, rho: number): Float64Array {
+  query[X1] = query[X2] = x
+  query[Y1] = query[Y2] = y
+  query[CR] = rho
+  return query
 }
