@@ -16,11 +16,11 @@ import { EventType, pushEvent } from '../src/events.js'
 import { pathOffset, planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
 import { capturesClean, fliesOver } from '../src/geometry.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
-import { HeapKind, heapPop, heapPush, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
+import { HeapKind, heapPop, heapPush, pushTime, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
-import { E, MT, MT_CAP, motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
+import { AT, E, MT, MT_CAP, motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
 import { FROM, search } from '../src/contacts/search.js'
 import { pushId } from '../src/world/idLists.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0, setNextT } from '../src/world/pathHot.js'
@@ -168,8 +168,8 @@ function orderedIntegration(w: BallWorld): void {
       search[FROM] = t
       resumeSearch(w, a, b)
     } else {
-      markContact(w, a, b, C.now)
-      markContact(w, b, a, C.now)
+      markContact(w, a, b)
+      markContact(w, b, a)
       return
     }
   }
@@ -251,7 +251,10 @@ function predictAfterEvent(w: BallWorld, a: number): void {
   if (w.Ball.mode[a] === BallMode.Rolling && C.predGen[a] === C.gen[a] && C.predicted[a] === C.stamp && spanKept(w, a)) {
     C.isDirty[a] = 0
     const own = w.pathHot[a * HOT + H_NEXT_T]!
-    if (own <= C.until) heapPush(C, own, HeapKind.Own, a, 0)
+    if (own <= C.until) {
+      pushTime[0] = own
+      heapPush(C, HeapKind.Own, a, 0)
+    }
     return
   }
   bumpVersion(w, a)
@@ -290,12 +293,15 @@ function takeMarked(w: BallWorld): IdList {
   return todo
 }
 
-function markContact(w: BallWorld, eid: number, other: number, t: number): void {
+/** Ball eid meets `other` now (C.now): its state there, marked for the collisions system. */
+function markContact(w: BallWorld, eid: number, other: number): void {
   const P = w.Path
-  sampleForContact(w, eid, t)
+  const t = w.collide!.now
+  E[AT] = t
+  sampleForContact(w, eid)
   P.mark[eid] = PathEvent.Collide
   P.markOther[eid] = other
-  setNextT(w, eid, t)
+  w.pathHot[eid * HOT + H_NEXT_T] = t
   pushId(w.marked, eid)
 }
 

@@ -3,7 +3,7 @@
 import { addComponent, entityExists, query, removeEntity } from 'bitecs'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type ConfigOverrides, type ThrowSpec, type WallsSpec } from '../src/index'
-import { HOT, H_NEXT_T } from '../src/ecs'
+import { HOT, H_NEXT_T, launchBall, planRolling, startPath } from '../src/ecs'
 import {
   BallMode,
   PathEvent,
@@ -301,6 +301,28 @@ describe('removeHole', () => {
 })
 
 describe("a game's own system in the schedule", () => {
+  it("restarts balls with the ecs entry's launchBall and startPath (the start as arguments), as addBall would put them down", () => {
+    const spec = { x: 140, y: 320, vx: 120, vy: -80 }
+    const made = createBallPhysics()
+    addPanel(made)
+    const a = made.addBall(spec)
+    const woken = createBallPhysics()
+    addPanel(woken)
+    const b = woken.addBall({ x: spec.x, y: spec.y, vx: 0, vy: 0 })
+    launchBall(woken.world, b, spec.x, spec.y, spec.vx, spec.vy, woken.world.time)
+    expect([woken.world.Ball.mode[b], woken.world.Ball.vx[b], woken.world.Ball.vy[b]]).toEqual([BallMode.Rolling, spec.vx, spec.vy])
+    const turned = createBallPhysics()
+    addPanel(turned)
+    const c = turned.addBall({ x: spec.x, y: spec.y, vx: -30, vy: 10 })
+    startPath(turned.world, c, spec.x, spec.y, spec.vx, spec.vy, turned.world.time)
+    planRolling(turned.world, c)
+    for (let s = 0; s < 90; s++) for (const sim of [made, woken, turned]) sim.step(1 / 60)
+    const state = (sim: typeof made, e: number) => [sim.world.Ball.x[e], sim.world.Ball.y[e], sim.world.Ball.vx[e], sim.world.Ball.vy[e], sim.world.Ball.mode[e]]
+    expect(Math.abs((state(made, a)[1] as number) - spec.y)).toBeGreaterThan(10) // it went somewhere
+    expect(state(woken, b)).toEqual(state(made, a))
+    expect(state(turned, c)).toEqual(state(made, a))
+  })
+
   it("runs in every pass, sees each Lip mark once right after integration, tints by a component (README's ecs example)", () => {
     const w = createBallWorld()
     const holes = addPanel(w)

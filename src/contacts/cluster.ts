@@ -118,6 +118,7 @@ function touches(w: BallWorld, c: number, m: number, t: number): boolean {
     const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
     if (vn > floor + APPROACH_EPSILON * (1 + Math.sqrt(dvx * dvx + dvy * dvy))) return false
   }
-  sampleForContact(w, c, t)
+  E[AT] = t
+  sampleForContact(w, c)
   return true
 }

@@ -130,9 +130,8 @@ export function motionEnd(w: BallWorld, eid: number): void {
   E[MT] = t < cap ? t : cap
 }
 
-/** Writes ball `eid`'s state at time t (on its current motion) into Ball. */
-export function sampleForContact(w: BallWorld, eid: number, t: number): void {
-  E[AT] = t
+/** Writes ball `eid`'s state at time E[AT] (on its current motion) into Ball. */
+export function sampleForContact(w: BallWorld, eid: number): void {
   evalBall(w, eid)
   const B = w.Ball
   B.x[eid] = E[X]

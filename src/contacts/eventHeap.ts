@@ -17,7 +17,15 @@ function before(C: CollisionState, t1: number, e1: number, t2: number, e2: numbe
   return C.eKind[e1]! < C.eKind[e2]!
 }
 
-export function heapPush(C: CollisionState, t: number, kind: number, a: number, b: number): void {
+/**
+ * heapPush's time, written by the caller just before the call: a double passed to a function V8 does not
+ * inline is boxed, a heap number at every prediction
+ */
+export const pushTime = new Float64Array(1)
+
+/** Pushes an entry of this kind for balls a and b (b = 0: a's own event) at time pushTime[0]. */
+export function heapPush(C: CollisionState, kind: number, a: number, b: number): void {
+  const t = pushTime[0]!
   let e: number
   if (C.eFreeCount > 0) e = C.eFree[--C.eFreeCount]!
   else {

@@ -19,6 +19,7 @@
 import { BallMode } from '../../components/Ball.js'
 import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
+import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
@@ -303,24 +304,31 @@ export function applyChanges(w: BallWorld, F: FixedContactState, t: number): voi
     const y = F.y[i]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
+    pathStart[PS_X] = x
+    pathStart[PS_Y] = y
+    pathStart[PS_VX] = vx
+    pathStart[PS_VY] = vy
+    pathStart[PS_T] = t
     if (B.mode[eid] === BallMode.Resting) {
-      if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid, x, y, vx, vy, t)
-      else if ((c & 2) !== 0) moveResting(w, F, eid, x, y, t)
+      if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid)
+      else if ((c & 2) !== 0) moveResting(w, eid)
       continue
     }
     strikeLeavesRim(w, eid)
-    launchBall(w, eid, x, y, vx, vy, t)
+    launchBall(w, eid)
   }
 }
 
-/** A resting ball the projection moved: it stays at rest there. */
-function moveResting(w: BallWorld, F: FixedContactState, eid: number, x: number, y: number, t: number): void {
+/** A resting ball the projection moved (to pathStart's position): it stays at rest there. */
+function moveResting(w: BallWorld, eid: number): void {
+  const x = pathStart[PS_X]!
+  const y = pathStart[PS_Y]!
   restingRemove(w, eid)
   w.Ball.x[eid] = x
   w.Ball.y[eid] = y
   // pushed over a hole, it falls in (in transit there, it stops inside the lip circle)
   if (holeAt(w, x, y) !== 0) {
-    placeBall(w, eid, x, y, 0, 0, t)
+    placeBall(w, eid, x, y, 0, 0, pathStart[PS_T]!)
     return
   }
   restingInsert(w, eid)

@@ -4,7 +4,7 @@ import { BallMode } from '../../components/Ball.js'
 import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'
 import { appendId } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { HeapKind, heapPush } from './eventHeap.js'
+import { HeapKind, heapPush, pushTime } from './eventHeap.js'
 import { AT, E, MT, MT_CAP, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 import { FROM, RESULT, SearchResult, TIME, TO, search, searchContact } from './search.js'
 import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, query, staleEntry, sweptCapsule } from './sweepGrid.js'
@@ -34,7 +34,10 @@ export function predictBall(w: BallWorld, a: number): void {
   const tEnd = C.until
   if (mode !== BallMode.Resting) {
     const own = w.pathHot[a * HOT + H_NEXT_T]!
-    if (own <= tEnd) heapPush(C, own, HeapKind.Own, a, 0)
+    if (own <= tEnd) {
+      pushTime[0] = own
+      heapPush(C, HeapKind.Own, a, 0)
+    }
   }
   const now = C.now
   sweptCapsule(w, a)
@@ -196,6 +199,6 @@ function searchAndPush(w: BallWorld, a: number, b: number): void {
   // a contact found behind the clock (balls put down overlapping) is handled now; a search to resume goes
   // on from where it stopped, wherever the clock is (resuming from the clock made a creeping re-contact's
   // time depend on where the step began)
-  const t = kind === HeapKind.Resume || search[TIME] > C.now ? search[TIME] : C.now
-  heapPush(C, t, kind, a < b ? a : b, a < b ? b : a)
+  pushTime[0] = kind === HeapKind.Resume || search[TIME] > C.now ? search[TIME] : C.now
+  heapPush(C, kind, a < b ? a : b, a < b ? b : a)
 }

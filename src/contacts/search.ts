@@ -19,10 +19,11 @@ export const FROM = 2
 export const TO = 3
 
 /**
- * Infinity, read from an array: where the literal meets a loop's doubles, V8 boxes every one of them (about
- * 100 bytes a search in searchStraight)
+ * MIN_ADVANCE as a double the optimiser can see. A module constant is a variable of the bundle to V8, of no
+ * known type: merged into a loop's double (h in the searches) it made V8 box that double at every step of
+ * every search (most of the exact method's allocation)
  */
-const INFINITY = new Float64Array([Infinity])
+const MIN_STEP = new Float64Array([MIN_ADVANCE])
 
 /**
  * First contact of balls a and b in [search[FROM], search[TO]], on their current motions: the earliest time at which their
@@ -34,7 +35,7 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
   search[RESULT] = SearchResult.None
   const from = search[FROM]!
   const to = search[TO]!
-  const never = INFINITY[0]!
+  const minAdvance = MIN_STEP[0]!
   if (!(from <= to)) return
   const mode = w.Ball.mode
   if (mode[a] !== BallMode.RimRoll && mode[b] !== BallMode.RimRoll) {
@@ -82,7 +83,7 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
       pieceEnd = na < E[NEXT] ? na : E[NEXT]
     } else {
       A = acca + E[ACC]
-      pieceEnd = never
+      pieceEnd = Infinity
     }
     const gg = g > 0 ? g : 0
     let h: number
@@ -90,9 +91,9 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
       // the gap closes no sooner than the positive root of gg + vn·h − A·h²/2 (written without cancellation)
       h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
     } else {
-      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : never
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
       // touching without approaching: creep on; the balls can close by at most A·MIN_ADVANCE²/2 meanwhile
-      if (h < MIN_ADVANCE) h = MIN_ADVANCE
+      if (h < minAdvance) h = minAdvance
     }
     let next = t + h
     if (pieceEnd > t && next > pieceEnd) next = pieceEnd
@@ -133,7 +134,7 @@ function loadStraight(w: BallWorld, eid: number, o: number): void {
  */
 function searchStraight(w: BallWorld, a: number, b: number): void {
   const from = search[FROM]!
-  const never = INFINITY[0]!
+  const minAdvance = MIN_STEP[0]!
   const to = search[TO]!
   const S = w.Ball.radius[a]! + w.Ball.radius[b]!
   const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
@@ -149,7 +150,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
       xa = K[0]!
       ya = K[1]!
       vxa = vya = axa = aya = 0
-      na = never
+      na = Infinity
     } else {
       const v0 = K[4]!
       const t0 = K[5]!
@@ -174,7 +175,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
         na = t0 + v0 / decel
       } else {
         axa = aya = 0
-        na = never
+        na = Infinity
       }
     }
     let xb: number, yb: number, vxb: number, vyb: number, axb: number, ayb: number, nb: number
@@ -182,7 +183,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
       xb = K[6]!
       yb = K[7]!
       vxb = vyb = axb = ayb = 0
-      nb = never
+      nb = Infinity
     } else {
       const v0 = K[10]!
       const t0 = K[11]!
@@ -207,7 +208,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
         nb = t0 + v0 / decel
       } else {
         axb = ayb = 0
-        nb = never
+        nb = Infinity
       }
     }
     const dx = xb - xa
@@ -232,8 +233,8 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
     let h: number
     if (vn < 0) h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
     else {
-      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : never
-      if (h < MIN_ADVANCE) h = MIN_ADVANCE
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
+      if (h < minAdvance) h = minAdvance
     }
     let next = t + h
     if (pieceEnd > t && next > pieceEnd) next = pieceEnd

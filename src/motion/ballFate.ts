@@ -9,7 +9,7 @@ import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { NEVER } from '../config/tolerances.js'
-import { startPath, planRolling } from './rolling.js'
+import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, startPath, planRolling } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { setNextT } from '../world/pathHot.js'
 import { touchBall } from '../world/fixedState.js'
@@ -69,13 +69,34 @@ export function restBall(w: BallWorld, eid: number, t: number): void {
   if (w.fixed !== null) touchBall(w.fixed, eid)
 }
 
-/** Puts a ball back into motion (rolling) on a fresh straight path; used by the API. */
-export function launchBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+/** Puts a ball back into motion (rolling) on a fresh straight path from pathStart (src/motion/rolling.ts). */
+export function launchBall(w: BallWorld, eid: number): void {
+  // read before the mode changes (a component observer may start another path)
+  const x = pathStart[PS_X]!
+  const y = pathStart[PS_Y]!
+  const vx = pathStart[PS_VX]!
+  const vy = pathStart[PS_VY]!
+  const t = pathStart[PS_T]!
   restingRemove(w, eid)
   setBallMode(w, eid, BallMode.Rolling)
-  startPath(w, eid, x, y, vx, vy, t)
+  pathStart[PS_X] = x
+  pathStart[PS_Y] = y
+  pathStart[PS_VX] = vx
+  pathStart[PS_VY] = vy
+  pathStart[PS_T] = t
+  startPath(w, eid)
   planRolling(w, eid)
   addMoving(w, eid)
+}
+
+/** launchBall with the start as arguments: what `./ecs` exports as launchBall, for a game's own systems. */
+export function launchBallAt(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  pathStart[PS_X] = x
+  pathStart[PS_Y] = y
+  pathStart[PS_VX] = vx
+  pathStart[PS_VY] = vy
+  pathStart[PS_T] = t
+  launchBall(w, eid)
 }
 
 /**
@@ -89,7 +110,12 @@ export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: n
     w.RimContact.hole[slot] = inside
     w.RimContact.mode[slot] = RimMode.Transit
   }
-  launchBall(w, eid, x, y, vx, vy, t)
+  pathStart[PS_X] = x
+  pathStart[PS_Y] = y
+  pathStart[PS_VX] = vx
+  pathStart[PS_VY] = vy
+  pathStart[PS_T] = t
+  launchBall(w, eid)
   // fixed-tick contacts: the new ball's path up to the next tick is checked now (a solve at this instant)
   if (w.fixed !== null) w.fixed.due = true
 }

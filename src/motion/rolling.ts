@@ -13,13 +13,30 @@ import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setPathStart } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
-import { hypot } from '../math.js'
 
-/** Starts a straight path at (x, y) with velocity (vx, vy) at time t, and sets the ball's state there. */
-export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+/**
+ * The start of the next path (startPath, launchBall): position, velocity and time, written by the caller
+ * just before the call. In a typed array, not passed as arguments: V8 boxes every double passed to a
+ * function it does not inline, five heap numbers at each event that starts a path.
+ */
+export const pathStart = new Float64Array(5)
+export const PS_X = 0
+export const PS_Y = 1
+export const PS_VX = 2
+export const PS_VY = 3
+export const PS_T = 4
+
+/** Starts a straight path at pathStart's position, velocity and time, and sets the ball's state there. */
+export function startPath(w: BallWorld, eid: number): void {
   const P = w.Path
   const B = w.Ball
-  const speed = hypot(vx, vy)
+  const x = pathStart[PS_X]!
+  const y = pathStart[PS_Y]!
+  const vx = pathStart[PS_VX]!
+  const vy = pathStart[PS_VY]!
+  const t = pathStart[PS_T]!
+  // hypot written out: a call V8 does not inline boxes its two arguments and its result
+  const speed = Math.sqrt(vx * vx + vy * vy)
   const ux = speed > 0 ? vx / speed : 0
   const uy = speed > 0 ? vy / speed : 0
   setPathStart(w, eid, x, y, ux, uy, speed, t)
@@ -36,11 +53,23 @@ export function startPath(w: BallWorld, eid: number, x: number, y: number, vx: n
   B.vy[eid] = uy * speed
 }
 
+/** startPath with the start as arguments: what `./ecs` exports as startPath, for a game's own systems. */
+export function startPathAt(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  pathStart[PS_X] = x
+  pathStart[PS_Y] = y
+  pathStart[PS_VX] = vx
+  pathStart[PS_VY] = vy
+  pathStart[PS_T] = t
+  startPath(w, eid)
+}
+
 // The planner's working state, kept in module scope so that planning allocates nothing (it never runs
 // re-entrantly).
 // Doubles live in an object's fields, updated in place: a module-level `let` holding a double gets a fresh
 // heap number at every write (V8), which made every plan allocate.
-const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5, stop: 0.5, change: 0.5, v0: 0.5, decel: 0.5, g: 0.5 }
+// NEVER is kept here too: a module constant is a variable of a bundle to V8, of no known type, and one
+// merged into a double (t and end in planRolling) made V8 box that double at every plan.
+const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5, stop: 0.5, change: 0.5, v0: 0.5, decel: 0.5, g: 0.5, never: NEVER }
 /**
  * With ball-ball contacts on, the planner also finds the earliest candidate that may change the path's
  * closed form (Q.change): not a near miss, not the exit from a locked hole, not a lip crossing the skip-over
@@ -227,10 +256,11 @@ export function planRolling(w: BallWorld, eid: number): void {
   }
 
   // an event no double can place in time (a distance beyond range, or a crawl that never gets there) is none
-  let t = NEVER
+  const never = Q.never
+  let t = never
   if (bestKind !== PathEvent.None) {
     t = H[h + H_T0]! + (bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel))
-    if (!(t < NEVER)) bestKind = PathEvent.None
+    if (!(t < never)) bestKind = PathEvent.None
   }
   P.nextKind[eid] = bestKind
   P.nextHole[eid] = bestKind === PathEvent.None ? 0 : bestHole
@@ -251,7 +281,7 @@ export function planRolling(w: BallWorld, eid: number): void {
     let end = t
     if (Q.change > Q.best && v0 > 0) {
       const tc = H[h + H_T0]! + (Q.change === Q.stop ? stopTime(v0, decel) : timeToDistance(Q.change, v0, decel))
-      end = tc < NEVER ? tc : NEVER
+      end = tc < never ? tc : never
       if (end < t) end = t
     }
     C.formulaEnd[eid] = end

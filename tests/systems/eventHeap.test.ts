@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest'
 import fc from 'fast-check'
 import { createCollisionState } from '../../src/world/contactState'
-import { HeapKind, heapClear, heapPop, heapPush, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../../src/contacts/eventHeap'
+import { HeapKind, heapClear, heapPop, heapPush as pushAt, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT, pushTime } from '../../src/contacts/eventHeap'
+import type { CollisionState } from '../../src/world/contactState'
+
+/** heapPush at time t (the heap reads its time from pushTime) */
+function heapPush(C: CollisionState, t: number, kind: number, a: number, b: number): void {
+  pushTime[0] = t
+  pushAt(C, kind, a, b)
+}
 
 type Entry = { t: number; a: number; b: number; kind: number }
 const order = (x: Entry, y: Entry) => x.t - y.t || x.a - y.a || x.b - y.b || x.kind - y.kind
