@@ -66,7 +66,10 @@ export function predictBall(w: BallWorld, a: number): void {
   // close across a cell boundary share a cell, whatever their lengths (which depend on when each ball was
   // predicted); the capsule is entered in the same cells
   const look = cap[CR]! + 2 * GAP_TOLERANCE
-  query.set(cap)
+  query[X1] = cap[X1]!
+  query[Y1] = cap[Y1]!
+  query[X2] = cap[X2]!
+  query[Y2] = cap[Y2]!
   query[CR] = look
   const big = capsuleCellEstimate(C, query) > MAX_CAPSULE_CELLS
   const sMask = C.sweepHead.length - 1
