@@ -5,7 +5,7 @@
 // sweep of src/contacts/fixedGrid.ts, fixedSweep.ts and fixedOrder.ts: the same pairs in the same order),
 // solves their velocities (src/contacts/fixedSolve.ts)
 // and separates overlaps (src/contacts/fixedProject.ts), pairing again the balls the solve sped up
-// (src/contacts/fixedReach.ts) and those the projection pushed into resting balls (fixedJoin.ts). Between ticks the balls follow their closed-form paths through the holes
+// (src/contacts/fixedReach.ts) and those the projection pushed into balls they were not paired with (fixedJoin.ts). Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
@@ -50,7 +50,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   for (let round = 0; round < MAX_WIDEN_ROUNDS && widenReach(w, F); round++) solveVelocities(w, F, t, iterations)
   const capped = F.capped
   solvePositions(w, F)
-  // a ball the projection pushed into a resting ball the tick did not pair it with: paired, projected again
+  // a ball the projection pushed into a ball the tick did not pair it with: paired, projected again
   for (let round = 0; round < MAX_WIDEN_ROUNDS && F.overlap && F.capped === capped && joinPushed(w, F); round++) solvePositions(w, F)
   applyChanges(w, F, t)
 }

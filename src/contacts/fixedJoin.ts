@@ -1,25 +1,30 @@
 // The fixed-tick method's projection (src/contacts/fixedProject.ts) moves balls along the tick's pairs,
-// found at the tick's positions; a resting ball reaches only its radius (it does not move by itself), so a
-// ball the projection pushes can end inside a resting ball it was not paired with (a rolling ball pressing a
-// row of resting ones: the second is pushed into the third). After a projection that kept within its
-// budget, each ball it moved more than half the slop is paired with the resting balls it now overlaps by
-// more than PROJECTION_SLOP (those the tick did not gather join the packed candidates), and the projection
-// runs again: at most MAX_WIDEN_ROUNDS times a tick (systems/fixedContacts.ts). Two balls that overlap by
-// more than the slop after a projection that finished are never a pair of it, so no pair is listed twice.
+// found at the tick's positions; a resting ball reaches only its radius (it does not move by itself), and a
+// slow one little more, so a ball the projection pushes can end inside a ball it was not paired with (a
+// rolling ball pressing a row of resting ones: the second is pushed into the third; a light ball pushed out
+// of a heavy one into a ball lying still but still rolling). After a projection that kept within its budget,
+// each ball it moved more than half the slop is paired with the balls it now overlaps by more than
+// PROJECTION_SLOP: resting ones (those the tick did not gather join the packed candidates), then moving ones
+// (found in the dense grid, or through the sweep order, and packed in their places if they were not), and
+// the projection runs again: at most MAX_WIDEN_ROUNDS times a tick (systems/fixedContacts.ts). Two balls that
+// overlap by more than the slop after a projection that finished are never a pair of it, so no pair is
+// listed twice; the moving ones are listed in packed order, the same on both broadphases.
 import { BallMode } from '../../components/Ball.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { nextMark, pushCandidate, pushPair, reserveCandidates, sweepStores, type FixedContactState } from '../world/fixedState.js'
+import { nextMark, pushCandidate, pushListed, pushPair, reserveCandidates, reserveSort, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
 import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
+import { unpackedJoin } from './fixedOrder.js'
+import { queryBox, sortByKeys } from './fixedSweep.js'
 
-/** Pairs the balls the projection moved with the unpaired resting balls they overlap; true when it paired any. */
+/** Pairs the balls the projection moved with the unpaired balls they overlap; true when it paired any. */
 export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   const C = F.rest
-  if (C.restCount === 0 && C.bigRestCount === 0) return false
   const B = w.Ball
   const n0 = F.n
-  // how far the projection moved each candidate (the resting grid holds balls at the tick's positions)
+  // how far the projection moved each candidate (the stores, the grids and the sweep order hold the balls at
+  // the tick's positions)
   let shift = 0
   let movers = 0
   for (let k = 0; k < n0; k++) {
@@ -34,38 +39,149 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   // a new overlap deeper than the slop needs the two balls to have closed by more than it: one of them moved
   // more than half of it
   if (movers === 0) return false
+  let paired = false
+  if (C.restCount > 0 || C.bigRestCount > 0) {
+    const st = markPacked(F, n0)
+    for (let i = 0; i < n0; i++) {
+      if (!pushedFar(w, F, i)) continue
+      if (++C.seenStamp === 0xffffffff) {
+        C.seen.fill(0)
+        C.seenStamp = 1
+      }
+      const x = F.x[i]!
+      const y = F.y[i]!
+      for (let b = 0; b < C.bigRestCount; b++) if (pairIfPushed(w, F, i, C.bigRest[b]!, st)) paired = true
+      if (C.restCount === 0) continue
+      // centres within the two radii, the other's at most maxRadius, found at its tick position
+      const reach = F.r[i]! + C.maxRadius + shift + TOUCH_GAP
+      const mask = C.restHead.length - 1
+      if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > C.restHead.length) {
+        for (let c = 0; c <= mask; c++) for (let e = C.restHead[c]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
+      } else {
+        const k = capsuleCells(C, pointQuery(x, y, reach), mask)
+        for (let c = 0; c < k; c++) for (let e = C.restHead[C.cells[c]!]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
+      }
+    }
+  }
+  if (joinMoving(w, F, n0, shift)) paired = true
+  return paired
+}
+
+/** Marks the first n candidates packed, by id, with their indices (F.packMark, F.packAt); returns the mark. */
+function markPacked(F: FixedContactState, n: number): number {
   sweepStores(F)
   const st = nextMark(F)
-  for (let k = 0; k < n0; k++) {
+  for (let k = 0; k < n; k++) {
     F.packMark[F.id[k]!] = st
     F.packAt[F.id[k]!] = k
   }
-  let paired = false
+  return st
+}
+
+/** Whether the projection moved candidate i more than half the slop. */
+function pushedFar(w: BallWorld, F: FixedContactState, i: number): boolean {
+  if ((F.changed[i]! & 2) === 0) return false
+  const e = F.id[i]!
+  const mx = F.x[i]! - w.Ball.x[e]!
+  const my = F.y[i]! - w.Ball.y[e]!
+  return mx * mx + my * my > (PROJECTION_SLOP / 2) * (PROJECTION_SLOP / 2)
+}
+
+/**
+ * Pairs each of the first n0 candidates the projection pushed far with the moving candidates it now overlaps
+ * by more than the slop: the big ones, and the small ones of the dense grid's cells (or of the sweep order's)
+ * within its radius, the largest small radius and the largest push of it. Those the sweep did not pack are
+ * packed first; then the pairs, as packed indices, are listed in order, each once.
+ */
+function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: number): boolean {
+  const half = F.cell / 2
+  const dense = F.dense === 1
+  // on a sweep tick, candidates by id (the moving balls of the sweep order not packed have none)
+  const st = dense ? 0 : markPacked(F, F.n)
+  let found = 0
+  let joining = 0
   for (let i = 0; i < n0; i++) {
-    if ((F.changed[i]! & 2) === 0) continue
-    const self = F.id[i]!
-    const x = F.x[i]!
-    const y = F.y[i]!
-    const mx = x - B.x[self]!
-    const my = y - B.y[self]!
-    if (!(mx * mx + my * my > (PROJECTION_SLOP / 2) * (PROJECTION_SLOP / 2))) continue
-    if (++C.seenStamp === 0xffffffff) {
-      C.seen.fill(0)
-      C.seenStamp = 1
+    if (!pushedFar(w, F, i)) continue
+    for (let m = 0; m < F.bigCount; m++) {
+      const j = F.big[m]!
+      if (overlapsMoving(w, F, i, F.id[j]!, j)) found = record(F, found, i, dense ? j : F.id[j]!, dense)
     }
-    for (let b = 0; b < C.bigRestCount; b++) if (pairIfPushed(w, F, i, C.bigRest[b]!, st)) paired = true
-    if (C.restCount === 0) continue
-    // centres within the two radii, the other's at most maxRadius, found at its tick position
-    const reach = F.r[i]! + C.maxRadius + shift + TOUCH_GAP
-    const mask = C.restHead.length - 1
-    if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > C.restHead.length) {
-      for (let c = 0; c <= mask; c++) for (let e = C.restHead[c]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
-    } else {
-      const k = capsuleCells(C, pointQuery(x, y, reach), mask)
-      for (let c = 0; c < k; c++) for (let e = C.restHead[C.cells[c]!]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
+    const range = F.r[i]! + half + shift
+    if (dense) {
+      if (F.cols === 0) continue
+      const cell = F.gridCell
+      const x0 = Math.max(0, Math.floor((F.x[i]! - range - F.minX) / cell))
+      const x1 = Math.min(F.cols - 1, Math.floor((F.x[i]! + range - F.minX) / cell))
+      const y0 = Math.max(0, Math.floor((F.y[i]! - range - F.minY) / cell))
+      const y1 = Math.min(F.rows - 1, Math.floor((F.y[i]! + range - F.minY) / cell))
+      for (let gy = y0; gy <= y1; gy++) {
+        for (let q = F.start[gy * F.cols + x0]!, end = F.start[gy * F.cols + x1 + 1]!; q < end; q++) {
+          const j = F.si[q]!
+          if (overlapsMoving(w, F, i, F.id[j]!, j)) found = record(F, found, i, j, true)
+        }
+      }
+      continue
+    }
+    queryBox(F, F.x[i]!, F.y[i]!, range)
+    for (let q = 0; q < F.foundCount; q++) {
+      const e = F.found[q]!
+      if (F.reachOf[e]! > half) continue // a big one: in F.big
+      const packed = F.packMark[e] === st && F.packAt[e]! >= 0
+      if (!overlapsMoving(w, F, i, e, packed ? F.packAt[e]! : -1)) continue
+      found = record(F, found, i, e, false)
+      if (F.packMark[e] !== st) {
+        F.packMark[e] = st
+        F.packAt[e] = -1
+        F.fresh = pushListed(F.fresh, joining++, e)
+      }
     }
   }
-  return paired
+  if (found === 0) return false
+  if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
+  // as packed indices, lower first, in order; a pair both of whose balls were pushed far is found twice
+  reserveSort(F, found)
+  const n = F.n
+  for (let t = 0; t < found; t++) {
+    const a = dense ? F.pe1[t]! : F.packAt[F.pe1[t]!]!
+    const b = dense ? F.pe2[t]! : F.packAt[F.pe2[t]!]!
+    F.key1[t] = a < b ? a * n + b : b * n + a
+    F.perm[t] = t
+  }
+  sortByKeys(F, found, false)
+  let last = -1
+  for (let t = 0; t < found; t++) {
+    const key = F.key1[F.perm[t]!]!
+    if (key === last) continue
+    last = key
+    const a = Math.floor(key / n)
+    pushPair(F, a, key - a * n)
+    F.movingJoins++
+  }
+  return true
+}
+
+/**
+ * Whether ball e, a moving ball other than candidate i's, overlaps i by more than the slop: at its packed
+ * position (candidate j), or at its tick position if it is not packed (j < 0).
+ */
+function overlapsMoving(w: BallWorld, F: FixedContactState, i: number, e: number, j: number): boolean {
+  const B = w.Ball
+  const m = B.mode[e]
+  if (e === F.id[i] || B.live[e] !== 1 || (m !== BallMode.Rolling && m !== BallMode.RimRoll)) return false
+  const dx = (j >= 0 ? F.x[j]! : B.x[e]!) - F.x[i]!
+  const dy = (j >= 0 ? F.y[j]! : B.y[e]!) - F.y[i]!
+  const s = F.r[i]! + B.radius[e]! - PROJECTION_SLOP
+  return s > 0 && dx * dx + dy * dy < s * s
+}
+
+/**
+ * Lists candidate i with its partner b in F.pe1, F.pe2 at index `found` (packed indices on a dense tick, ids
+ * on a sweep tick: packing renumbers); returns the new count.
+ */
+function record(F: FixedContactState, found: number, i: number, b: number, dense: boolean): number {
+  F.pe1 = pushListed(F.pe1, found, dense ? i : F.id[i]!)
+  F.pe2 = pushListed(F.pe2, found, b)
+  return found + 1
 }
 
 /**

@@ -154,6 +154,8 @@ export interface FixedContactState {
   ticks: number
   /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
   capped: number
+  /** pairs of a pushed ball and a moving ball listed after a projection (src/contacts/fixedJoin.ts), counted over the world's life */
+  movingJoins: number
 }
 
 export function createFixedState(capacity: number, config: Readonly<BallPhysicsConfig>): FixedContactState {
@@ -220,6 +222,7 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     contacts: 0,
     ticks: 0,
     capped: 0,
+    movingJoins: 0,
     ord: new Uint32Array(n),
     okey: new Float64Array(n),
     ordCount: 0,

@@ -55,6 +55,33 @@ describe('fixed-tick broadphases', () => {
     expect(same(make, () => {}, 150, 1 / 60)).toBeGreaterThan(50)
   })
 
+  it('light balls at rest and heavy ones at 1,000 px/s in closed walls of restitution 0: the projection pushes balls into moving ones it was not paired with, paired in the same tick', () => {
+    for (const seed of [6, 15, 18]) {
+      let joins = 0
+      const make = () => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 0 }, { capacity: 128 })
+        sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0 })
+        const r = rng(seed)
+        for (let i = 0; i < 13; i++) {
+          const a = r() * 2 * Math.PI
+          sim.addBall({ x: 137 + (r() - 0.5) * 22, y: 372 + (r() - 0.5) * 22, vx: 1000 * Math.cos(a), vy: 1000 * Math.sin(a), mass: 1e-9 })
+        }
+        sim.step(10)
+        for (let i = 0; i < 15; i++) {
+          const a = r() * 2 * Math.PI
+          sim.addBall({ x: 200 + (r() - 0.5) * 400, y: 264 + (r() - 0.5) * 400, vx: 1000 * Math.cos(a), vy: 1000 * Math.sin(a), radius: 7.7, mass: 1 })
+        }
+        return sim
+      }
+      const scene: Scene = (sim, step) => {
+        if (step === 59) joins += sim.world.fixed!.movingJoins
+      }
+      same(make, scene, 60, 1 / 60, `seed ${seed}`)
+      // the same-tick pairing with moving balls ran, on both broadphases
+      expect(joins, `seed ${seed}`).toBe(2)
+    }
+  })
+
   it('a gas of mixed sizes and masses with one very fast ball (big balls), balls removed and added as it runs', () => {
     const make = () => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 0.9 }, { capacity: 512 })
