@@ -37,7 +37,7 @@ export class OutcomeView {
   private readonly ctx: CanvasRenderingContext2D
 
   constructor(
-    private readonly canvas: HTMLCanvasElement,
+    canvas: HTMLCanvasElement,
     private readonly game: Game,
   ) {
     canvas.width = MAP_SPEC.angle.steps

@@ -88,8 +88,8 @@ describe('allocation per ball-step', () => {
       expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
     }, 30_000)
   }
-  // (the fixed tick's sweep broadphase, which such a field takes, still allocates 7–12 bytes a ball-step
-  // here: docs/decisions.md §1)
+  // (the fixed tick's sweep broadphase, which such a field takes, allocates in bursts there: windows of
+  // 3 and of 6–17 bytes a ball-step, docs/decisions.md §1)
   for (const mode of ['on'] as const) {
     it(`contacts ${mode}: balls rolling through a spread-out field of resting ones allocate under ${LIMIT} bytes a ball-step`, async () => {
       const sim = field(mode)

@@ -64,7 +64,6 @@ export function evalBall(w: BallWorld, eid: number): void {
     E[NEXT] = Infinity
     return
   }
-  const P = w.Path
   const v0 = w.pathHot[eid * HOT + H_V0]!
   const decel = w.config.ROLLING_DECEL
   const t0 = w.pathHot[eid * HOT + H_T0]!

@@ -12,14 +12,14 @@
 // in. No scan of the ids in use (a ball that starts moving is found in the world's moving set, one that comes
 // to rest among the balls touched since the last tick), no copy of a ball that touches nothing. Work per
 // tick: O(candidates + places changed), plus the resting-grid lookups when resting balls outnumber a quarter
-// of the moving ones. Also here: the resting-grid lookup and the walls of the tick, which both broadphases use.
+// of the moving ones (src/contacts/fixedSeed.ts). Also here: the walls of the tick, which both broadphases use.
 import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
-import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import { TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { pushCandidate, pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
-import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
+import { pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { addFresh, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
+import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
 
 /** The tick's reductions over the candidates: sum and largest reach, bounding box, balls big for the sweep cell. */
 const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0, key: 0.5 }
@@ -333,62 +333,6 @@ function seedAll(w: BallWorld, F: FixedContactState): void {
   for (let i = 0; i < w.moving.count; i++) seedAround(w, F, dense[i]!)
   seedTouched(w, F)
   seedOverlapping(w, F, from)
-}
-
-/** Adds the resting balls moving ball eid can reach within the tick (its radius plus a tick's travel). */
-export function seedAround(w: BallWorld, F: FixedContactState, eid: number): void {
-  const B = w.Ball
-  const vx = B.vx[eid]!
-  const vy = B.vy[eid]!
-  seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP)
-}
-
-/** Adds the resting balls touching a resting ball the last tick's projection moved (F.touched). */
-export function seedTouched(w: BallWorld, F: FixedContactState): void {
-  const B = w.Ball
-  for (let k = 0; k < F.touchedCount; k++) {
-    const eid = F.touched[k]!
-    if (B.live[eid] === 1 && B.mode[eid] === BallMode.Resting) seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! + TOUCH_GAP)
-  }
-}
-
-/**
- * Adds every resting ball overlapping a resting candidate from F.id[from] on, transitively: the projection
- * sees the whole overlapping cluster at once (a push crosses a jammed pile in one tick, not a ball a tick).
- */
-export function seedOverlapping(w: BallWorld, F: FixedContactState, from: number): void {
-  const B = w.Ball
-  for (let k = from; k < F.n; k++) {
-    const eid = F.id[k]!
-    seedResting(w, F, B.x[eid]!, B.y[eid]!, B.radius[eid]! - PROJECTION_SLOP)
-  }
-}
-
-/** Adds the resting balls the circle (x, y, reach) reaches, once each (the seen stamp), to F.id. */
-export function seedResting(w: BallWorld, F: FixedContactState, x: number, y: number, reach: number): void {
-  const C = F.rest
-  for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!, x, y, reach)
-  if (C.restCount === 0) return
-  const mask = C.restHead.length - 1
-  const rho = reach + C.maxRadius + 2 * TOUCH_GAP // addResting's reach + radius + gap, and a gap more
-  if (capsuleCellEstimate(C, pointQuery(x, y, rho)) > C.restHead.length) {
-    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
-    return
-  }
-  const k = capsuleCells(C, pointQuery(x, y, rho), mask)
-  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e, x, y, reach)
-}
-
-function addResting(w: BallWorld, F: FixedContactState, e: number, x: number, y: number, reach: number): void {
-  const C = F.rest
-  if (C.seen[e] === C.seenStamp) return
-  const B = w.Ball
-  const dx = B.x[e]! - x
-  const dy = B.y[e]! - y
-  const s = reach + B.radius[e]! + TOUCH_GAP
-  if (dx * dx + dy * dy >= s * s) return
-  C.seen[e] = C.seenStamp
-  pushCandidate(F, e)
 }
 
 /**

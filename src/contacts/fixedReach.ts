@@ -9,7 +9,8 @@
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
-import { markWall, seedResting } from './fixedGrid.js'
+import { markWall } from './fixedGrid.js'
+import { seed, seedResting } from './fixedSeed.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { queryBox } from './fixedSweep.js'
 
@@ -25,7 +26,10 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
       pairInGrid(F, g, F.wide[g]! + smallReach)
       for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
       // resting balls not yet candidates (the gather's seen stamps skip those that are)
-      seedResting(w, F, F.x[g]!, F.y[g]!, F.wide[g]!)
+      seed[0] = F.x[g]!
+      seed[1] = F.y[g]!
+      seed[2] = F.wide[g]!
+      seedResting(w, F)
     }
     addResting(w, F, restFrom)
   } else widenSwept(w, F, smallReach, widest)
@@ -92,7 +96,10 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
     }
     for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
     // resting balls not yet candidates (the gather's seen stamps skip those that are)
-    seedResting(w, F, F.x[g]!, F.y[g]!, F.wide[g]!)
+    seed[0] = F.x[g]!
+    seed[1] = F.y[g]!
+    seed[2] = F.wide[g]!
+    seedResting(w, F)
   }
   addResting(w, F, restFrom)
 }

@@ -39,7 +39,6 @@ export function predictBall(w: BallWorld, a: number): void {
       heapPush(C, HeapKind.Own, a, 0)
     }
   }
-  const now = C.now
   sweptCapsule(w, a)
   motionStart(w, a)
   span[START_A] = E[MT]

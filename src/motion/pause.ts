@@ -14,7 +14,6 @@ import { HOT, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
 
 /** Shifts a moving ball's current motion `delta` seconds later (its path, its rim roll, its next event). */
 export function delayMotion(w: BallWorld, eid: number, delta: number): void {
-  const P = w.Path
   const mode = w.Ball.mode[eid]
   if (mode === BallMode.RimRoll) {
     w.RimContact.time0[w.Ball.rim[eid]!]! += delta

@@ -1,0 +1,84 @@
+// The fixed tick's resting candidates (systems/fixedContacts.ts): the resting balls a moving ball can reach
+// within the tick, those touching a resting ball the last tick's projection moved, and every resting ball
+// overlapping one of those, transitively (the projection sees a jammed cluster at once). Shared by both
+// broadphases (src/contacts/fixedDense.ts, fixedGrid.ts) and the widening (fixedReach.ts); found through the
+// resting grid (src/world/restingGrid.ts), once each (its seen stamp).
+import { BallMode } from '../../components/Ball.js'
+import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { pushCandidate, type FixedContactState } from '../world/fixedState.js'
+import { CR, X1, X2, Y1, Y2, capsuleCellEstimate, capsuleCells, query } from './sweepGrid.js'
+
+/** Adds the resting balls moving ball eid can reach within the tick (its radius plus a tick's travel). */
+export function seedAround(w: BallWorld, F: FixedContactState, eid: number): void {
+  const B = w.Ball
+  const vx = B.vx[eid]!
+  const vy = B.vy[eid]!
+  seed[0] = B.x[eid]!
+  seed[1] = B.y[eid]!
+  seed[2] = B.radius[eid]! + Math.sqrt(vx * vx + vy * vy) * F.tick + TOUCH_GAP
+  seedResting(w, F)
+}
+
+/** Adds the resting balls touching a resting ball the last tick's projection moved (F.touched). */
+export function seedTouched(w: BallWorld, F: FixedContactState): void {
+  const B = w.Ball
+  for (let k = 0; k < F.touchedCount; k++) {
+    const eid = F.touched[k]!
+    if (B.live[eid] !== 1 || B.mode[eid] !== BallMode.Resting) continue
+    seed[0] = B.x[eid]!
+    seed[1] = B.y[eid]!
+    seed[2] = B.radius[eid]! + TOUCH_GAP
+    seedResting(w, F)
+  }
+}
+
+/**
+ * Adds every resting ball overlapping a resting candidate from F.id[from] on, transitively: the projection
+ * sees the whole overlapping cluster at once (a push crosses a jammed pile in one tick, not a ball a tick).
+ */
+export function seedOverlapping(w: BallWorld, F: FixedContactState, from: number): void {
+  const B = w.Ball
+  for (let k = from; k < F.n; k++) {
+    const eid = F.id[k]!
+    seed[0] = B.x[eid]!
+    seed[1] = B.y[eid]!
+    seed[2] = B.radius[eid]! - PROJECTION_SLOP
+    seedResting(w, F)
+  }
+}
+
+/**
+ * seedResting's circle (x, y, reach), written by the caller just before the call: V8 boxes each double passed
+ * to a function it does not inline, three heap numbers a moving ball a tick in seedAround.
+ */
+export const seed = new Float64Array(3)
+
+/** Adds the resting balls the circle `seed` reaches, once each (the seen stamp), to F.id. */
+export function seedResting(w: BallWorld, F: FixedContactState): void {
+  const C = F.rest
+  for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!)
+  if (C.restCount === 0) return
+  const mask = C.restHead.length - 1
+  query[X1] = query[X2] = seed[0]!
+  query[Y1] = query[Y2] = seed[1]!
+  query[CR] = seed[2]! + C.maxRadius + 2 * TOUCH_GAP // addResting's reach + radius + gap, and a gap more
+  if (capsuleCellEstimate(C, query) > C.restHead.length) {
+    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e)
+    return
+  }
+  const k = capsuleCells(C, query, mask)
+  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e)
+}
+
+function addResting(w: BallWorld, F: FixedContactState, e: number): void {
+  const C = F.rest
+  if (C.seen[e] === C.seenStamp) return
+  const B = w.Ball
+  const dx = B.x[e]! - seed[0]!
+  const dy = B.y[e]! - seed[1]!
+  const s = seed[2]! + B.radius[e]! + TOUCH_GAP
+  if (dx * dx + dy * dy >= s * s) return
+  C.seen[e] = C.seenStamp
+  pushCandidate(F, e)
+}
