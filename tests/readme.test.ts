@@ -72,6 +72,8 @@ describe('README examples', () => {
         extends: '../../tsconfig.json',
         compilerOptions: {
           noEmit: true,
+          // the examples name things to show them, not to use them all
+          noUnusedLocals: false,
           rootDir: '../..',
           paths: {
             'positron-ball-physics': ['../../src/index.ts'],
