@@ -7,7 +7,7 @@ import { PathEvent } from '../components/Path.js'
 import { RimMode } from '../components/RimContact.js'
 import { EventType } from '../src/events.js'
 import { emitHoleEvent } from '../src/motion/ballFate.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, planRolling, startPath } from '../src/motion/rolling.js'
+import { startAt, planRolling, startPath } from '../src/motion/rolling.js'
 import { rimBounce } from '../src/geometry.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import { hotNextT } from '../src/world/pathHot.js'
@@ -48,11 +48,7 @@ export function bounceSystem(w: BallWorld): void {
     }
     rimBounce(vx, vy, nx, ny, e, keep, out)
     RC.mode[B.rim[eid]!] = RimMode.Transit
-    pathStart[PS_X] = x
-    pathStart[PS_Y] = y
-    pathStart[PS_VX] = out[0]!
-    pathStart[PS_VY] = out[1]!
-    pathStart[PS_T] = t
+    startAt(x, y, out[0]!, out[1]!, t)
     startPath(w, eid)
     P.fromHole[eid] = hole
     planRolling(w, eid)

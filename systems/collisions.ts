@@ -20,7 +20,7 @@ import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
 import { pushCollisionEvent } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../src/motion/rolling.js'
+import { startAt } from '../src/motion/rolling.js'
 import { pushId } from '../src/world/idLists.js'
 import type { CollisionState } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
@@ -75,17 +75,9 @@ export function collisionsSystem(w: BallWorld): void {
     C.lastContact[a] = t
     C.lastContact[b] = t
     pushCollisionEvent(w.events, a < b ? a : b, a < b ? b : a, t, o.approach, o.impulse)
-    pathStart[PS_X] = B.x[a]!
-    pathStart[PS_Y] = B.y[a]!
-    pathStart[PS_VX] = o.vax
-    pathStart[PS_VY] = o.vay
-    pathStart[PS_T] = t
+    startAt(B.x[a]!, B.y[a]!, o.vax, o.vay, t)
     restart(w, a)
-    pathStart[PS_X] = B.x[b]!
-    pathStart[PS_Y] = B.y[b]!
-    pathStart[PS_VX] = o.vbx
-    pathStart[PS_VY] = o.vby
-    pathStart[PS_T] = t
+    startAt(B.x[b]!, B.y[b]!, o.vbx, o.vby, t)
     restart(w, b)
     // set after the restart (a new path clears it): any later change of either path clears it again
     C.partner[a] = b
@@ -140,11 +132,7 @@ function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
   for (let k = 0; k < n; k++) {
     const eid = C.cluster[k]!
     C.lastContact[eid] = t
-    pathStart[PS_X] = B.x[eid]!
-    pathStart[PS_Y] = B.y[eid]!
-    pathStart[PS_VX] = vx
-    pathStart[PS_VY] = vy
-    pathStart[PS_T] = t
+    startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
     restart(w, eid)
     // the others are predicted again next pass with a and b
     if (k >= 2) pushId(w.marked, eid)

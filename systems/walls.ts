@@ -8,7 +8,7 @@ import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
 import { EventType, pushEvent } from '../src/events.js'
 import { NEVER } from '../src/config/tolerances.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, planRolling, startPath } from '../src/motion/rolling.js'
+import { startAt, planRolling, startPath } from '../src/motion/rolling.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { removeMoving } from '../src/world/idLists.js'
 import { type BallWorld } from '../src/world/createWorld.js'
@@ -43,11 +43,7 @@ export function wallsSystem(w: BallWorld): void {
       const vx = horizontal ? k * vn : B.vx[eid]!
       const vy = horizontal ? B.vy[eid]! : k * vn
       pushEvent(w.events, EventType.Wall, eid, 0, t, false, 0, 0)
-      pathStart[PS_X] = B.x[eid]!
-      pathStart[PS_Y] = B.y[eid]!
-      pathStart[PS_VX] = vx
-      pathStart[PS_VY] = vy
-      pathStart[PS_T] = t
+      startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
       startPath(w, eid)
       planRolling(w, eid)
     } else if (mark === PathEvent.Gutter) {

@@ -7,7 +7,7 @@ import { RimMode } from '../../components/RimContact.js'
 import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED } from '../config/limits.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import { sampleRimRoll } from '../motion/rimRoll.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, sampleRolling } from '../motion/rolling.js'
+import { startAt, sampleRolling } from '../motion/rolling.js'
 import { addBallEntity, forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimSlot } from '../world/rimSlots.js'
@@ -187,11 +187,7 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
   } else if (mode === BallMode.Rolling) {
     sampleRolling(w, b, w.time)
   }
-  pathStart[PS_X] = w.Ball.x[b]!
-  pathStart[PS_Y] = w.Ball.y[b]!
-  pathStart[PS_VX] = nvx
-  pathStart[PS_VY] = nvy
-  pathStart[PS_T] = w.time
+  startAt(w.Ball.x[b]!, w.Ball.y[b]!, nvx, nvy, w.time)
   launchBall(w, b)
   // fixed-tick contacts: the new path up to the next tick is checked at the next step's start
   if (w.fixed !== null) w.fixed.due = true

@@ -10,7 +10,7 @@ import { MAX_COORDINATE, MAX_RADIUS, MAX_VALUE } from '../config/limits.js'
 import { CaptureVia, cutEvents } from '../events.js'
 import { captureBall, launchBall } from '../motion/ballFate.js'
 import { sampleRimRoll } from '../motion/rimRoll.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, sampleRolling } from '../motion/rolling.js'
+import { startAt, sampleRolling } from '../motion/rolling.js'
 import { forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { addHoleToTable, cellKey, overlappingHole, removeHoleFromTable } from '../world/holeTable.js'
@@ -168,11 +168,7 @@ export function forgetHole(w: BallWorld, eid: number): void {
     if (mode === BallMode.RimRoll) {
       sampleRimRoll(w, b, w.time)
       releaseRim(w, b)
-      pathStart[PS_X] = w.Ball.x[b]!
-      pathStart[PS_Y] = w.Ball.y[b]!
-      pathStart[PS_VX] = w.Ball.vx[b]!
-      pathStart[PS_VY] = w.Ball.vy[b]!
-      pathStart[PS_T] = w.time
+      startAt(w.Ball.x[b]!, w.Ball.y[b]!, w.Ball.vx[b]!, w.Ball.vy[b]!, w.time)
       launchBall(w, b)
     } else {
       if (mode === BallMode.Rolling) sampleRolling(w, b, w.time)

@@ -274,6 +274,18 @@ function scan(F: FixedContactState, p: number, from: number, to: number): void {
   }
 }
 
+/** The dense grid's cells within `range` of candidate i: columns box[0]..box[1], rows box[2]..box[3]. */
+export const box = new Int32Array(4)
+export function gridBox(F: FixedContactState, i: number, range: number): boolean {
+  if (F.cols === 0) return false
+  const cell = F.gridCell
+  box[0] = Math.max(0, Math.floor((F.x[i]! - range - F.minX) / cell))
+  box[1] = Math.min(F.cols - 1, Math.floor((F.x[i]! + range - F.minX) / cell))
+  box[2] = Math.max(0, Math.floor((F.y[i]! - range - F.minY) / cell))
+  box[3] = Math.min(F.rows - 1, Math.floor((F.y[i]! + range - F.minY) / cell))
+  return box[0]! <= box[1]! && box[2]! <= box[3]!
+}
+
 /** Pairs big candidate i with the small candidates within its reach. */
 function pairBig(F: FixedContactState, i: number, small: number, minX: number, minY: number, cell: number, cols: number, rows: number): void {
   if (small === 0) return

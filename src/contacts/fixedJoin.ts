@@ -15,6 +15,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushListed, pushPair, reserveCandidates, reserveSort, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
 import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
+import { box, gridBox } from './fixedDense.js'
 import { unpackedJoin } from './fixedOrder.js'
 import { queryBox, sortByKeys } from './fixedSweep.js'
 
@@ -108,14 +109,9 @@ function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: numbe
     }
     const range = F.r[i]! + half + shift
     if (dense) {
-      if (F.cols === 0) continue
-      const cell = F.gridCell
-      const x0 = Math.max(0, Math.floor((F.x[i]! - range - F.minX) / cell))
-      const x1 = Math.min(F.cols - 1, Math.floor((F.x[i]! + range - F.minX) / cell))
-      const y0 = Math.max(0, Math.floor((F.y[i]! - range - F.minY) / cell))
-      const y1 = Math.min(F.rows - 1, Math.floor((F.y[i]! + range - F.minY) / cell))
-      for (let gy = y0; gy <= y1; gy++) {
-        for (let q = F.start[gy * F.cols + x0]!, end = F.start[gy * F.cols + x1 + 1]!; q < end; q++) {
+      if (!gridBox(F, i, range)) continue
+      for (let gy = box[2]!; gy <= box[3]!; gy++) {
+        for (let q = F.start[gy * F.cols + box[0]!]!, end = F.start[gy * F.cols + box[1]! + 1]!; q < end; q++) {
           const j = F.si[q]!
           if (overlapsMoving(w, F, i, F.id[j]!, j)) found = record(F, found, i, j, true)
         }

@@ -9,6 +9,7 @@
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
+import { box, gridBox } from './fixedDense.js'
 import { markWall } from './fixedGrid.js'
 import { seed, seedResting } from './fixedSeed.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
@@ -160,15 +161,9 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
 
 /** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within `range` of it. */
 function pairInGrid(F: FixedContactState, g: number, range: number): void {
-  if (F.cols === 0) return
-  const cell = F.gridCell
-  const x0 = Math.max(0, Math.floor((F.x[g]! - range - F.minX) / cell))
-  const x1 = Math.min(F.cols - 1, Math.floor((F.x[g]! + range - F.minX) / cell))
-  const y0 = Math.max(0, Math.floor((F.y[g]! - range - F.minY) / cell))
-  const y1 = Math.min(F.rows - 1, Math.floor((F.y[g]! + range - F.minY) / cell))
-  if (x1 < x0 || y1 < y0) return
-  for (let gy = y0; gy <= y1; gy++) {
-    for (let q = F.start[gy * F.cols + x0]!, e = F.start[gy * F.cols + x1 + 1]!; q < e; q++) consider(F, g, F.si[q]!)
+  if (!gridBox(F, g, range)) return
+  for (let gy = box[2]!; gy <= box[3]!; gy++) {
+    for (let q = F.start[gy * F.cols + box[0]!]!, e = F.start[gy * F.cols + box[1]! + 1]!; q < e; q++) consider(F, g, F.si[q]!)
   }
 }
 

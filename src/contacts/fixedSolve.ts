@@ -19,7 +19,7 @@
 import { BallMode } from '../../components/Ball.js'
 import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
+import { pathStart, PS_T, PS_X, PS_Y, startAt } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
@@ -304,11 +304,7 @@ export function applyChanges(w: BallWorld, F: FixedContactState, t: number): voi
     const y = F.y[i]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
-    pathStart[PS_X] = x
-    pathStart[PS_Y] = y
-    pathStart[PS_VX] = vx
-    pathStart[PS_VY] = vy
-    pathStart[PS_T] = t
+    startAt(x, y, vx, vy, t)
     if (B.mode[eid] === BallMode.Resting) {
       if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid)
       else if ((c & 2) !== 0) moveResting(w, eid)

@@ -9,7 +9,7 @@ import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { NEVER } from '../config/tolerances.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, startPath, planRolling } from './rolling.js'
+import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, planRolling, startAt, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { setNextT } from '../world/pathHot.js'
 import { touchBall } from '../world/fixedState.js'
@@ -79,11 +79,7 @@ export function launchBall(w: BallWorld, eid: number): void {
   const t = pathStart[PS_T]!
   restingRemove(w, eid)
   setBallMode(w, eid, BallMode.Rolling)
-  pathStart[PS_X] = x
-  pathStart[PS_Y] = y
-  pathStart[PS_VX] = vx
-  pathStart[PS_VY] = vy
-  pathStart[PS_T] = t
+  startAt(x, y, vx, vy, t)
   startPath(w, eid)
   planRolling(w, eid)
   addMoving(w, eid)
@@ -91,11 +87,7 @@ export function launchBall(w: BallWorld, eid: number): void {
 
 /** launchBall with the start as arguments: what `./ecs` exports as launchBall, for a game's own systems. */
 export function launchBallAt(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t: number): void {
-  pathStart[PS_X] = x
-  pathStart[PS_Y] = y
-  pathStart[PS_VX] = vx
-  pathStart[PS_VY] = vy
-  pathStart[PS_T] = t
+  startAt(x, y, vx, vy, t)
   launchBall(w, eid)
 }
 
@@ -110,11 +102,7 @@ export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: n
     w.RimContact.hole[slot] = inside
     w.RimContact.mode[slot] = RimMode.Transit
   }
-  pathStart[PS_X] = x
-  pathStart[PS_Y] = y
-  pathStart[PS_VX] = vx
-  pathStart[PS_VY] = vy
-  pathStart[PS_T] = t
+  startAt(x, y, vx, vy, t)
   launchBall(w, eid)
   // fixed-tick contacts: the new ball's path up to the next tick is checked now (a solve at this instant)
   if (w.fixed !== null) w.fixed.due = true

@@ -21,7 +21,7 @@ import { setBallMode } from '../world/ballMode.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { captureBall, emitHoleEvent } from './ballFate.js'
 import { leaveRim, planRimRoll, sampleRimRoll } from './rimRoll.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, pathOffset, planRolling, startPath } from './rolling.js'
+import { startAt, pathOffset, planRolling, startPath } from './rolling.js'
 import { atan2, cos, hypot, sin } from '../math.js'
 import { HOT, H_NEXT_T, H_UX, H_UY, H_V0 } from '../world/pathHot.js'
 
@@ -128,11 +128,7 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
       if (L > 1e-9 && duration > 0) {
         // v0·T − a·T²/2 = L: there at time T (or sooner, at L, if the deceleration would stop it first)
         const v0 = L / duration + 0.5 * w.config.ROLLING_DECEL * duration
-        pathStart[PS_X] = B.x[eid]!
-        pathStart[PS_Y] = B.y[eid]!
-        pathStart[PS_VX] = (dx / L) * v0
-        pathStart[PS_VY] = (dy / L) * v0
-        pathStart[PS_T] = t
+        startAt(B.x[eid]!, B.y[eid]!, (dx / L) * v0, (dy / L) * v0, t)
         startPath(w, eid)
         RC.mode[slot] = RimMode.Crossing
         RC.rideTo[slot] = L
@@ -140,11 +136,7 @@ function applyRimOutcome(w: BallWorld, eid: number, hole: number, cross: number)
         RC.speed0[slot] = w.pathHot[eid * HOT + H_V0]!
       } else {
         RC.mode[slot] = RimMode.Transit
-        pathStart[PS_X] = B.x[eid]!
-        pathStart[PS_Y] = B.y[eid]!
-        pathStart[PS_VX] = RC.exitVx[slot]!
-        pathStart[PS_VY] = RC.exitVy[slot]!
-        pathStart[PS_T] = t
+        startAt(B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, t)
         startPath(w, eid)
       }
       P.fromHole[eid] = hole
@@ -182,11 +174,7 @@ export function landCrossing(w: BallWorld, eid: number): void {
   const slot = B.rim[eid]!
   P.mark[eid] = PathEvent.None
   RC.mode[slot] = RimMode.Transit
-  pathStart[PS_X] = B.x[eid]!
-  pathStart[PS_Y] = B.y[eid]!
-  pathStart[PS_VX] = RC.exitVx[slot]!
-  pathStart[PS_VY] = RC.exitVy[slot]!
-  pathStart[PS_T] = w.pathHot[eid * HOT + H_NEXT_T]!
+  startAt(B.x[eid]!, B.y[eid]!, RC.exitVx[slot]!, RC.exitVy[slot]!, w.pathHot[eid * HOT + H_NEXT_T]!)
   startPath(w, eid)
   P.fromHole[eid] = P.markHole[eid]!
   planRolling(w, eid)

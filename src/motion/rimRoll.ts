@@ -7,7 +7,7 @@ import { cogRadius, popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from
 import { type BallWorld } from '../world/createWorld.js'
 import { EventType } from '../events.js'
 import { emitHoleEvent } from './ballFate.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y, planRolling, startPath } from './rolling.js'
+import { startAt, planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { setNextT } from '../world/pathHot.js'
 import { atan2, cos, hypot, sin } from '../math.js'
@@ -44,11 +44,7 @@ export function leaveRim(w: BallWorld, eid: number, hole: number, vx: number, vy
   const B = w.Ball
   w.RimContact.mode[B.rim[eid]!] = RimMode.Transit
   setBallMode(w, eid, BallMode.Rolling)
-  pathStart[PS_X] = B.x[eid]!
-  pathStart[PS_Y] = B.y[eid]!
-  pathStart[PS_VX] = vx
-  pathStart[PS_VY] = vy
-  pathStart[PS_T] = t
+  startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
   startPath(w, eid)
   w.Path.fromHole[eid] = hole
   planRolling(w, eid)
