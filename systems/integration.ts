@@ -20,7 +20,7 @@ import { HeapKind, heapPop, heapPush, pushTime, heapTopA, heapTopB, heapTopKind,
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
 import { predictBall, resumeSearch } from '../src/contacts/predict.js'
-import { AT, E, MT, MT_CAP, motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
+import { AT, E, MT, motionEnd, sampleForContact } from '../src/contacts/evalMotion.js'
 import { FROM, search } from '../src/contacts/search.js'
 import { pushId } from '../src/world/idLists.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0 } from '../src/world/pathHot.js'
@@ -263,10 +263,8 @@ function predictAfterEvent(w: BallWorld, a: number): void {
 
 /** Whether the span of a's last prediction still reaches as far as its motion is known. */
 function spanKept(w: BallWorld, a: number): boolean {
-  const C = w.collide!
-  E[MT_CAP] = C.until
   motionEnd(w, a)
-  return E[MT] <= C.spanEnd[a]!
+  return E[MT] <= w.collide!.spanEnd[a]!
 }
 
 /** Predictions per moving ball in a window above which the next window ends with its step. */

@@ -12,7 +12,7 @@ import { HOT, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/path
  *   (rim roll), else |(AX, AY)|; EXACT: 1 when (AX, AY) is the exact, piecewise constant acceleration;
  *   NEXT: when the acceleration next changes (a rolling ball's stop), s
  */
-export const E = new Float64Array(12)
+export const E = new Float64Array(11)
 export const X = 0
 export const Y = 1
 export const VX = 2
@@ -24,10 +24,8 @@ export const EXACT = 7
 export const NEXT = 8
 /** input: the time evalBall evaluates at (passed here, not as an argument, which V8 would box) */
 export const AT = 9
-/** output of motionStart and motionEnd (a time, s), and motionEnd's input cap: written, not returned or
- * passed, for the same reason */
+/** output of motionStart and motionEnd (a time, s): written, not returned, for the same reason */
 export const MT = 10
-export const MT_CAP = 11
 
 /**
  * Evaluates ball `eid` at time E[AT] on its current motion into the module's scratch state. The formulas are
@@ -96,37 +94,45 @@ export function evalBall(w: BallWorld, eid: number): void {
   }
 }
 
-/** When the ball's current motion began, into E[MT] (the search for its contacts starts there, whatever the ticks). */
-export function motionStart(w: BallWorld, eid: number): void {
+/** When the ball's current motion began (the search for its contacts starts there, whatever the ticks). */
+export function startOf(w: BallWorld, eid: number): number {
   const mode = w.Ball.mode[eid]
+  if (mode === BallMode.RimRoll) return w.RimContact.time0[w.Ball.rim[eid]!]!
   const t0 = w.pathHot[eid * HOT + H_T0]!
-  if (mode === BallMode.RimRoll) E[MT] = w.RimContact.time0[w.Ball.rim[eid]!]!
-  else if (mode === BallMode.Resting) {
-    // a ball at rest has been so since its path stopped (or since it was put down)
-    const decel = w.config.ROLLING_DECEL
-    const v0 = w.pathHot[eid * HOT + H_V0]!
-    E[MT] = v0 > 0 && decel > 0 ? t0 + v0 / decel : t0
-  } else E[MT] = t0
+  if (mode !== BallMode.Resting) return t0
+  // a ball at rest has been so since its path stopped (or since it was put down)
+  const decel = w.config.ROLLING_DECEL
+  const v0 = w.pathHot[eid * HOT + H_V0]!
+  return v0 > 0 && decel > 0 ? t0 + v0 / decel : t0
 }
 
 /**
- * End of the span over which a ball's current motion is known, capped at E[MT_CAP], into E[MT]: its next own
- * event, or for a rolling ball the later event up to which the planner found its path kept
- * (CollisionState.formulaEnd).
+ * End of the span over which a ball's current motion is known, capped at the prediction window's end
+ * (CollisionState.until): its next own event, or for a rolling ball the later event up to which the planner
+ * found its path kept (CollisionState.formulaEnd).
  */
-export function motionEnd(w: BallWorld, eid: number): void {
-  const cap = E[MT_CAP]!
+export function endOf(w: BallWorld, eid: number): number {
+  const C = w.collide!
+  const cap = C.until
   const mode = w.Ball.mode[eid]
-  if (mode === BallMode.Resting) {
-    E[MT] = cap
-    return
-  }
-  let t = w.pathHot[eid * HOT + H_NEXT_T]!
+  let t = mode === BallMode.Resting ? cap : w.pathHot[eid * HOT + H_NEXT_T]!
   if (mode === BallMode.Rolling) {
-    const f = w.collide!.formulaEnd[eid]!
+    const f = C.formulaEnd[eid]!
     if (f > t) t = f
   }
-  E[MT] = t < cap ? t : cap
+  return t < cap ? t : cap
+}
+
+/**
+ * startOf and endOf into E[MT]: for the callers V8 does not inline them into (predictBall, the capsule, the
+ * integration), where their returned doubles would be boxed at every prediction. The contact search calls
+ * them directly, once a pair: inlined there.
+ */
+export function motionStart(w: BallWorld, eid: number): void {
+  E[MT] = startOf(w, eid)
+}
+export function motionEnd(w: BallWorld, eid: number): void {
+  E[MT] = endOf(w, eid)
 }
 
 /** Writes ball `eid`'s state at time E[AT] (on its current motion) into Ball. */

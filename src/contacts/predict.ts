@@ -5,20 +5,11 @@ import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'
 import { appendId } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { HeapKind, heapPush, pushTime } from './eventHeap.js'
-import { AT, E, MT, MT_CAP, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
+import { AT, E, MT, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 import { FROM, RESULT, SearchResult, TIME, TO, search, searchContact } from './search.js'
 import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, query, staleEntry, sweptCapsule } from './sweepGrid.js'
 import { sq } from '../math.js'
 import { HOT, H_NEXT_T } from '../world/pathHot.js'
-
-/**
- * The span of the ball being predicted (its motion's start and end in the window), in slots: V8 boxes each
- * double passed to a function it does not inline, a heap number per pair tried. Its capsule is `cap`
- * (sweptCapsule), which nothing else writes during a prediction.
- */
-const span = new Float64Array(2)
-const START_A = 0
-const END_A = 1
 
 /**
  * Predicts ball `a`'s contacts with every ball near its path over [C.now, C.until] (the prediction window)
@@ -40,12 +31,14 @@ export function predictBall(w: BallWorld, a: number): void {
     }
   }
   sweptCapsule(w, a)
+  // a's span, for every pair searched (search.ts): in slots, which nothing else writes during a prediction
+  // (V8 boxes each double passed to a function it does not inline, a heap number a pair tried); its capsule
+  // is `cap` (sweptCapsule)
   motionStart(w, a)
-  span[START_A] = E[MT]
-  E[MT_CAP] = tEnd
+  search[FROM] = E[MT]
   motionEnd(w, a)
   const endA = E[MT]
-  span[END_A] = endA
+  search[TO] = endA
   if (++C.seenStamp === 0xffffffff) {
     C.seen.fill(0)
     C.seenStamp = 1
@@ -169,30 +162,19 @@ function segmentDistance2(px: number, py: number): number {
   return ex * ex + ey * ey
 }
 
-/** Searches a (the ball being predicted, span) and b over their common span in the window. */
+/** Searches a (the ball being predicted, its span in search[FROM]/search[TO]) and b over their common span. */
 function tryPair(w: BallWorld, a: number, b: number): void {
-  motionStart(w, b)
-  const startB = E[MT]
-  E[MT_CAP] = w.collide!.until
-  motionEnd(w, b)
-  const endB = E[MT]
-  search[FROM] = span[START_A]! > startB ? span[START_A]! : startB
-  search[TO] = span[END_A]! < endB ? span[END_A]! : endB
   searchAndPush(w, a, b)
 }
 
-/** Continues a search that ran out of steps, from search[FROM] (where it stopped). */
+/** Continues a search that ran out of steps, from search[FROM] (where it stopped, past b's start). */
 export function resumeSearch(w: BallWorld, a: number, b: number): void {
-  const C = w.collide!
-  E[MT_CAP] = C.until
   motionEnd(w, a)
-  const endA = E[MT]
-  motionEnd(w, b)
-  search[TO] = endA < E[MT] ? endA : E[MT]
+  search[TO] = E[MT]
   searchAndPush(w, a, b)
 }
 
-/** Searches a and b over [search[FROM], search[TO]] and pushes what it finds: their contact, or where to resume. */
+/** Searches a and b (searchContact) and pushes what it finds: their contact, or where to resume. */
 function searchAndPush(w: BallWorld, a: number, b: number): void {
   searchContact(w, a, b)
   if (search[RESULT] === SearchResult.None) return

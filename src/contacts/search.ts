@@ -4,19 +4,22 @@ import { APPROACH_EPSILON, GAP_TOLERANCE, MAX_SEARCH_STEPS, MIN_ADVANCE, SETTLE_
 import type { BallWorld } from '../world/createWorld.js'
 import { BallMode } from '../../components/Ball.js'
 import { HOT, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
-import { ACC, AT, AX, AY, E, EXACT, NEXT, VX, VY, X, Y, evalBall } from './evalMotion.js'
+import { ACC, AT, AX, AY, E, EXACT, NEXT, VX, VY, X, Y, endOf, evalBall, startOf } from './evalMotion.js'
 
 export const SearchResult = { None: 0, Contact: 1, Resume: 2 } as const
 /**
- * The search's input, the span [FROM, TO] to search (s), and its result: RESULT (a SearchResult) and its
- * TIME (s). A typed array: no allocation per write, and no double passed as an argument (V8 boxes those
- * for a function it does not inline, and a loop that starts from a boxed one may box every step)
+ * The search's input, the first ball's span [FROM, TO] (s; the search takes its intersection with the second
+ * ball's), and its result: RESULT (a SearchResult) and its TIME (s). A typed array: no allocation per write,
+ * and no double passed as an argument (V8 boxes those for a function it does not inline, and a loop that
+ * starts from a boxed one may box every step). PAIR_FROM, PAIR_TO: the pair's span, for searchStraight.
  */
-export const search = new Float64Array(4)
+export const search = new Float64Array(6)
 export const RESULT = 0
 export const TIME = 1
 export const FROM = 2
 export const TO = 3
+const PAIR_FROM = 4
+const PAIR_TO = 5
 
 /**
  * MIN_ADVANCE as a double the optimiser can see. A module constant is a variable of the bundle to V8, of no
@@ -26,19 +29,24 @@ export const TO = 3
 const MIN_STEP = new Float64Array([MIN_ADVANCE])
 
 /**
- * First contact of balls a and b in [search[FROM], search[TO]], on their current motions: the earliest time at which their
+ * First contact of balls a and b in [search[FROM], search[TO]] and b's own span (startOf, endOf), on their
+ * current motions: the earliest time at which their
  * gap is at most GAP_TOLERANCE while they approach. Sets search[RESULT]/search[TIME]: Contact at that time, None
  * if there is none before the span's end, or Resume with the time reached after MAX_SEARCH_STEPS (the search continues
  * from there when that time comes up in the heap).
  */
 export function searchContact(w: BallWorld, a: number, b: number): void {
   search[RESULT] = SearchResult.None
-  const from = search[FROM]!
-  const to = search[TO]!
+  const startB = startOf(w, b)
+  const endB = endOf(w, b)
+  const from = search[FROM]! > startB ? search[FROM]! : startB
+  const to = search[TO]! < endB ? search[TO]! : endB
   const minAdvance = MIN_STEP[0]!
   if (!(from <= to)) return
   const mode = w.Ball.mode
   if (mode[a] !== BallMode.RimRoll && mode[b] !== BallMode.RimRoll) {
+    search[PAIR_FROM] = from
+    search[PAIR_TO] = to
     searchStraight(w, a, b)
     return
   }
@@ -133,9 +141,9 @@ function loadStraight(w: BallWorld, eid: number, o: number): void {
  * side by side; keep the three copies of the rolling formula (here and evalBall) in step.
  */
 function searchStraight(w: BallWorld, a: number, b: number): void {
-  const from = search[FROM]!
+  const from = search[PAIR_FROM]!
   const minAdvance = MIN_STEP[0]!
-  const to = search[TO]!
+  const to = search[PAIR_TO]!
   const S = w.Ball.radius[a]! + w.Ball.radius[b]!
   const floor = SETTLE_FLOOR * w.config.BALL_SETTLE_SPEED
   const decel = w.config.ROLLING_DECEL

@@ -6,7 +6,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { cogRadius } from '../geometry.js'
 import { bucketOf } from '../world/restingGrid.js'
 import { heapClear } from './eventHeap.js'
-import { AT, E, MT, MT_CAP, X, Y, evalBall, motionEnd } from './evalMotion.js'
+import { AT, E, MT, X, Y, evalBall, motionEnd } from './evalMotion.js'
 
 /**
  * Fills C.cells with the buckets (of a table of mask + 1) of every grid cell that the capsule q may touch
@@ -171,7 +171,6 @@ export function sweptCapsule(w: BallWorld, eid: number): void {
   evalBall(w, eid)
   cap[X1] = E[X]
   cap[Y1] = E[Y]
-  E[MT_CAP] = C.until
   motionEnd(w, eid)
   E[AT] = E[MT]
   evalBall(w, eid)
