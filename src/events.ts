@@ -152,6 +152,27 @@ function grow(buf: EventBuffer): void {
   buf.scratch = next.scratch
 }
 
+/**
+ * Appends one event and returns its index: the caller writes its time into buf.time[i], and with `hasDV` its
+ * delta and speed into buf.delta[i], buf.speed[i]. The module's systems append events so: V8 boxes every
+ * double passed to a function it does not inline, three heap numbers an event through pushEvent.
+ */
+export function appendEvent(buf: EventBuffer, type: EventTypeCode, ball: number, hole: number, hasDV: boolean, via: CaptureViaCode = CaptureVia.None): number {
+  if (buf.count === buf.type.length) grow(buf)
+  const i = buf.count++
+  buf.type[i] = type
+  buf.ball[i] = ball
+  buf.hole[i] = hole
+  buf.time[i] = 0
+  buf.hasDV[i] = hasDV ? 1 : 0
+  buf.delta[i] = 0
+  buf.speed[i] = 0
+  buf.via[i] = via
+  buf.other[i] = 0
+  buf.impulse[i] = 0
+  return i
+}
+
 /** Appends one event. `delta`/`speed` are recorded only when `hasDV` is true; `hole` 0 means none. */
 export function pushEvent(
   buf: EventBuffer,
@@ -164,18 +185,12 @@ export function pushEvent(
   speed: number,
   via: CaptureViaCode = CaptureVia.None,
 ): void {
-  if (buf.count === buf.type.length) grow(buf)
-  const i = buf.count++
-  buf.type[i] = type
-  buf.ball[i] = ball
-  buf.hole[i] = hole
+  const i = appendEvent(buf, type, ball, hole, hasDV, via)
   buf.time[i] = time
-  buf.hasDV[i] = hasDV ? 1 : 0
-  buf.delta[i] = hasDV ? delta : 0
-  buf.speed[i] = hasDV ? speed : 0
-  buf.via[i] = via
-  buf.other[i] = 0
-  buf.impulse[i] = 0
+  if (hasDV) {
+    buf.delta[i] = delta
+    buf.speed[i] = speed
+  }
 }
 
 /** Appends a collision of balls `ball` and `other` at `time`: approach speed and normal impulse. */

@@ -12,7 +12,7 @@
 import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { RIDE_DROPS } from '../components/RimContact.js'
-import { EventType, pushEvent } from '../src/events.js'
+import { EventType, appendEvent } from '../src/events.js'
 import { pathOffset, planRolling, sampleAtDistance, sampleRolling } from '../src/motion/rolling.js'
 import { capturesClean, fliesOver } from '../src/geometry.js'
 import { sampleRimRoll } from '../src/motion/rimRoll.js'
@@ -333,7 +333,10 @@ function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
     if (kind === PathEvent.Near) {
       const h = eid * HOT
       const c = (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
-      pushEvent(w.events, EventType.NearMiss, eid, hole, t, true, Math.abs(c), P.speed[eid]!)
+      const k = appendEvent(w.events, EventType.NearMiss, eid, hole, true)
+      w.events.time[k] = t
+      w.events.delta[k] = Math.abs(c)
+      w.events.speed[k] = P.speed[eid]!
       planRolling(w, eid)
       continue
     }

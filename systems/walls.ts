@@ -6,7 +6,7 @@
 import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { EventType, pushEvent } from '../src/events.js'
+import { EventType, appendEvent } from '../src/events.js'
 import { NEVER } from '../src/config/tolerances.js'
 import { startAt, planRolling, startPath } from '../src/motion/rolling.js'
 import { releaseRim } from '../src/world/rimSlots.js'
@@ -42,13 +42,13 @@ export function wallsSystem(w: BallWorld): void {
       const k = wedged || Math.abs(vn) < settle ? 0 : -e
       const vx = horizontal ? k * vn : B.vx[eid]!
       const vy = horizontal ? B.vy[eid]! : k * vn
-      pushEvent(w.events, EventType.Wall, eid, 0, t, false, 0, 0)
+      w.events.time[appendEvent(w.events, EventType.Wall, eid, 0, false)] = t
       startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
       startPath(w, eid)
       planRolling(w, eid)
     } else if (mark === PathEvent.Gutter) {
       P.mark[eid] = PathEvent.None
-      pushEvent(w.events, EventType.Gutter, eid, 0, hotNextT(w, eid), false, 0, 0)
+      w.events.time[appendEvent(w.events, EventType.Gutter, eid, 0, false)] = hotNextT(w, eid)
       setBallMode(w, eid, BallMode.Out)
       B.vx[eid] = 0
       B.vy[eid] = 0

@@ -17,7 +17,7 @@
 // in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
 // if it leaves at BALL_SETTLE_SPEED or more.
 import { BallMode } from '../../components/Ball.js'
-import { EventType, pushCollisionEvent, pushEvent } from '../events.js'
+import { EventType, appendEvent, pushCollisionEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import { pathStart, PS_T, PS_X, PS_Y, startAt } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
@@ -213,7 +213,7 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
     block.j = j
     block.k = k
     if ((F.changed[q]! & WALL_REPORTED) === 0 && k * imq >= settle) {
-      pushEvent(w.events, EventType.Wall, F.id[q]!, 0, t, false, 0, 0)
+      w.events.time[appendEvent(w.events, EventType.Wall, F.id[q]!, 0, false)] = t
       F.changed[q]! |= WALL_REPORTED
     }
     return true
@@ -276,7 +276,7 @@ function wallVelocity(w: BallWorld, F: FixedContactState, t: number, settle: num
   }
   if (!hit) return false
   if ((F.changed[i]! & WALL_REPORTED) === 0 && Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) {
-    pushEvent(w.events, EventType.Wall, F.id[i]!, 0, t, false, 0, 0)
+    w.events.time[appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)] = t
     F.changed[i]! |= WALL_REPORTED
   }
   F.vx[i] = vx

@@ -3,7 +3,7 @@ import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { holeAt } from '../world/holeTable.js'
-import { CaptureVia, EventType, pushEvent, type CaptureViaCode } from '../events.js'
+import { CaptureVia, EventType, appendEvent, type CaptureViaCode } from '../events.js'
 import { addMoving, removeMoving } from '../world/idLists.js'
 import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { type BallWorld } from '../world/createWorld.js'
@@ -27,7 +27,13 @@ export function emitHoleEvent(
   const RC = w.RimContact
   const slot = w.Ball.rim[eid]!
   const hasLip = RC.hole[slot] === hole && RC.hasLip[slot] === 1
-  pushEvent(w.events, type, eid, hole, t, hasLip, RC.delta[slot]!, RC.speed[slot]!, via)
+  const buf = w.events
+  const i = appendEvent(buf, type, eid, hole, hasLip, via)
+  buf.time[i] = t
+  if (hasLip) {
+    buf.delta[i] = RC.delta[slot]!
+    buf.speed[i] = RC.speed[slot]!
+  }
 }
 
 /**
@@ -52,7 +58,7 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
 
 /** The ball stops on the panel, outside every hole, at time t. */
 export function restBall(w: BallWorld, eid: number, t: number): void {
-  pushEvent(w.events, EventType.Rest, eid, 0, t, false, 0, 0)
+  w.events.time[appendEvent(w.events, EventType.Rest, eid, 0, false)] = t
   const B = w.Ball
   setBallMode(w, eid, BallMode.Resting)
   B.vx[eid] = 0
