@@ -1,6 +1,6 @@
 // Outcome estimates and maps (src/api/outcomes.ts): the counts do not depend on how a run is split, a
 // throw ends the same in a batch as alone, the intervals and the payout are computed right, and a pool of
-// worker threads (tinypool, as npm run outcomes runs it) gives the counts of one thread.
+// workers (tinypool; child processes here, threads in npm run outcomes) gives the counts of one thread.
 import { build } from 'esbuild'
 import { mkdtempSync, rmSync } from 'node:fs'
 import { tmpdir } from 'node:os'
@@ -82,12 +82,15 @@ describe('outcome estimates', () => {
     expect(small.payout.high - small.payout.low).toBeGreaterThan(large.payout.high - large.payout.low)
   })
 
-  it('two worker threads through tinypool give the counts of this thread', async () => {
+  // (child processes, not worker threads: Node 20 aborts the whole process, here vitest's, when a worker
+  // thread is terminated while V8 still compiles its code in the background, "Assertion failed:
+  // (data.first) != nullptr" in NodePlatform::ForIsolate; seen once in CI. npm run outcomes runs threads.)
+  it('two workers through tinypool give the counts of this thread', async () => {
     const dir = mkdtempSync(join(tmpdir(), 'outcomes-'))
     try {
       const file = join(dir, 'worker.mjs')
       await build({ entryPoints: [resolve(import.meta.dirname, '../scripts/outcomesWorker.ts')], outfile: file, bundle: true, format: 'esm', platform: 'node', target: 'node20', logLevel: 'silent' })
-      const pool = new Tinypool({ filename: file, minThreads: 2, maxThreads: 2 })
+      const pool = new Tinypool({ filename: file, minThreads: 2, maxThreads: 2, runtime: 'child_process' })
       const chunks = [0, 2500, 5000, 7500].map((first) => pool.run({ scene, dist, count: 2500, seed: 3, first }))
       const parts = (await Promise.all(chunks)) as OutcomeTally[]
       await pool.destroy()
