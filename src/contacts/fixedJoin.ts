@@ -41,8 +41,11 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   // more than half of it
   if (movers === 0) return false
   let paired = false
-  if (C.restCount > 0 || C.bigRestCount > 0) {
-    const st = markPacked(F, n0)
+  const resting = C.restCount > 0 || C.bigRestCount > 0
+  // the candidates by id, for the resting pairs and for the moving ones of a sweep tick (those pairIfPushed
+  // packs are marked as it packs them)
+  const st = resting || F.dense !== 1 ? markPacked(F, n0) : 0
+  if (resting) {
     for (let i = 0; i < n0; i++) {
       if (!pushedFar(w, F, i)) continue
       if (++C.seenStamp === 0xffffffff) {
@@ -64,7 +67,7 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
       }
     }
   }
-  if (joinMoving(w, F, n0, shift)) paired = true
+  if (joinMoving(w, F, n0, shift, st)) paired = true
   return paired
 }
 
@@ -92,13 +95,12 @@ function pushedFar(w: BallWorld, F: FixedContactState, i: number): boolean {
  * Pairs each of the first n0 candidates the projection pushed far with the moving candidates it now overlaps
  * by more than the slop: the big ones, and the small ones of the dense grid's cells (or of the sweep order's)
  * within its radius, the largest small radius and the largest push of it. Those the sweep did not pack are
- * packed first; then the pairs, as packed indices, are listed in order, each once.
+ * packed first (on a sweep tick the packed are marked `st` by id); then the pairs, as packed indices, are
+ * listed in order, each once.
  */
-function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: number): boolean {
+function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: number, st: number): boolean {
   const half = F.cell / 2
   const dense = F.dense === 1
-  // on a sweep tick, candidates by id (the moving balls of the sweep order not packed have none)
-  const st = dense ? 0 : markPacked(F, F.n)
   let found = 0
   let joining = 0
   for (let i = 0; i < n0; i++) {
