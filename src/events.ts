@@ -193,19 +193,21 @@ export function pushEvent(
   }
 }
 
+/**
+ * Appends a collision of balls `ball` and `other` and returns its index: the caller writes its time, approach
+ * speed and normal impulse into buf.time[i], buf.speed[i], buf.impulse[i] (as appendEvent, no double passed).
+ */
+export function appendCollision(buf: EventBuffer, ball: number, other: number): number {
+  const i = appendEvent(buf, EventType.Collision, ball, 0, false)
+  buf.other[i] = other
+  return i
+}
+
 /** Appends a collision of balls `ball` and `other` at `time`: approach speed and normal impulse. */
 export function pushCollisionEvent(buf: EventBuffer, ball: number, other: number, time: number, speed: number, impulse: number): void {
-  if (buf.count === buf.type.length) grow(buf)
-  const i = buf.count++
-  buf.type[i] = EventType.Collision
-  buf.ball[i] = ball
-  buf.hole[i] = 0
+  const i = appendCollision(buf, ball, other)
   buf.time[i] = time
-  buf.hasDV[i] = 0
-  buf.delta[i] = 0
   buf.speed[i] = speed
-  buf.via[i] = CaptureVia.None
-  buf.other[i] = other
   buf.impulse[i] = impulse
 }
 

@@ -91,13 +91,13 @@ export function midRimDropSpeed(
 /** Distance rolled before stopping (Infinity when a = 0 and the ball moves). */
 export function stopDistance(v0: number, decel: number): number {
   if (v0 <= 0) return 0
-  return decel > 0 ? (v0 * v0) / (2 * decel) : Infinity
+  return decel > 0 ? (v0 * v0) / (2 * decel) : 1 / 0
 }
 
 /** Time to stop (Infinity when a = 0 and the ball moves). */
 export function stopTime(v0: number, decel: number): number {
   if (v0 <= 0) return 0
-  return decel > 0 ? v0 / decel : Infinity
+  return decel > 0 ? v0 / decel : 1 / 0
 }
 
 /**
@@ -107,9 +107,9 @@ export function stopTime(v0: number, decel: number): number {
 export function timeToDistance(d: number, v0: number, decel: number): number {
   if (d <= 0) return 0
   const disc = v0 * v0 - 2 * decel * d
-  if (disc < 0) return Infinity
+  if (disc < 0) return 1 / 0
   const denom = v0 + Math.sqrt(disc)
-  return denom > 0 ? (2 * d) / denom : Infinity
+  return denom > 0 ? (2 * d) / denom : 1 / 0
 }
 
 /** Speed after rolling distance d (0 past the stop). */
@@ -133,15 +133,15 @@ export function rollSpeed(tau: number, vt0: number, friction: number): number {
 /** Time for the rim-roll speed to fall to the drop speed (0 if it starts below; Infinity if μ = 0). */
 export function rollDropTime(vt0: number, friction: number, dropSpeed: number): number {
   if (vt0 <= dropSpeed) return 0
-  return friction > 0 ? log(vt0 / dropSpeed) / friction : Infinity
+  return friction > 0 ? log(vt0 / dropSpeed) / friction : 1 / 0
 }
 
 /** Time to roll an arc of length `arc`, or Infinity if the decaying speed never covers it. */
 export function rollPopTime(vt0: number, friction: number, arc: number): number {
-  if (vt0 <= 0) return Infinity
+  if (vt0 <= 0) return 1 / 0
   if (!(friction > 0)) return arc / vt0
   const q = (friction * arc) / vt0
-  return q < 1 ? -log1p(-q) / friction : Infinity
+  return q < 1 ? -log1p(-q) / friction : 1 / 0
 }
 
 /**

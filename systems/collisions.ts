@@ -18,7 +18,7 @@ import { WallEdge } from '../components/Walls.js'
 import { CONTACT_DURATION, MAX_STEP_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
 import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
-import { pushCollisionEvent } from '../src/events.js'
+import { appendCollision } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
 import { startAt } from '../src/motion/rolling.js'
 import { pushId } from '../src/world/idLists.js'
@@ -65,7 +65,10 @@ export function collisionsSystem(w: BallWorld): void {
     C.contacts++
     if (settle) {
       settleCluster(w, a, b, t)
-      pushCollisionEvent(w.events, a < b ? a : b, a < b ? b : a, t, approach, contactOut.impulse)
+      const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
+      w.events.time[k] = t
+      w.events.speed[k] = approach
+      w.events.impulse[k] = contactOut.impulse
       continue
     }
     const rapid = t - C.lastContact[a]! < CONTACT_DURATION || t - C.lastContact[b]! < CONTACT_DURATION
@@ -74,7 +77,10 @@ export function collisionsSystem(w: BallWorld): void {
     const o = contactOut
     C.lastContact[a] = t
     C.lastContact[b] = t
-    pushCollisionEvent(w.events, a < b ? a : b, a < b ? b : a, t, o.approach, o.impulse)
+    const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
+    w.events.time[k] = t
+    w.events.speed[k] = o.approach
+    w.events.impulse[k] = o.impulse
     startAt(B.x[a]!, B.y[a]!, o.vax, o.vay, t)
     restart(w, a)
     startAt(B.x[b]!, B.y[b]!, o.vbx, o.vby, t)

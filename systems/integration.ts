@@ -98,7 +98,10 @@ export function integrationSystem(w: BallWorld): void {
     for (let i = 0, n = todo.count; i < n; i++) {
       const eid = todo.ids[i]!
       const m = mode[eid]
-      if (m === BallMode.Rolling || m === BallMode.RimRoll) advanceThroughEvents(w, eid, tEnd)
+      if (m === BallMode.Rolling || m === BallMode.RimRoll) {
+        advanceTo[0] = tEnd
+        advanceThroughEvents(w, eid)
+      }
     }
   }
 }
@@ -155,7 +158,8 @@ function orderedIntegration(w: BallWorld): void {
     if (!live) continue
     if (t > C.now) C.now = t
     if (kind === HeapKind.Own) {
-      advanceThroughEvents(w, a, t)
+      advanceTo[0] = t
+      advanceThroughEvents(w, a)
       if (P.mark[a] !== PathEvent.None) {
         // a lip crossing the default stages will skip over or capture clean: the decision keeps the path or
         // takes the ball out, and can change nothing another ball meets; the pass takes later events too
@@ -237,7 +241,10 @@ function advanceDue(w: BallWorld, n: number, tEnd: number): void {
     acc += nextKind[e]! + nextHole[e]! + s[e]! + sHole[e]! + speed[e]! + fromHole[e]! + nextEdge[e]! + mark[e]! + radius[e]! + rim[e]!
   }
   sink.v = acc
-  for (let k = 0; k < n; k++) advanceThroughEvents(w, due[k]!, tEnd)
+  for (let k = 0; k < n; k++) {
+    advanceTo[0] = tEnd
+    advanceThroughEvents(w, due[k]!)
+  }
 }
 
 /**
@@ -303,7 +310,11 @@ function markContact(w: BallWorld, eid: number, other: number): void {
   pushId(w.marked, eid)
 }
 
-function advanceThroughEvents(w: BallWorld, eid: number, tEnd: number): void {
+/** the time advanceThroughEvents goes to, written by its callers (a double passed as an argument is boxed wherever V8 does not inline the call) */
+const advanceTo = new Float64Array(1)
+
+function advanceThroughEvents(w: BallWorld, eid: number): void {
+  const tEnd = advanceTo[0]!
   const P = w.Path
   const H = w.pathHot
   for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {

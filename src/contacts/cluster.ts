@@ -4,7 +4,7 @@ import { APPROACH_EPSILON, MAX_CAPSULE_CELLS, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_G
 import type { BallWorld } from '../world/createWorld.js'
 import { appendId } from '../world/contactState.js'
 import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
-import { capsuleCellEstimate, capsuleCells, pointQuery, staleEntry } from './sweepGrid.js'
+import { capsuleCellsOver, capsuleCells, pointQuery, staleEntry } from './sweepGrid.js'
 
 /**
  * Gathers into C.cluster the balls touching a or b (gap ≤ TOUCH_GAP at time t), and those touching
@@ -38,7 +38,7 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     // is on when it was last predicted (a cluster then differed with PREDICTION_HORIZON)
     const look = r + 2 * TOUCH_GAP
     // moving balls: through the hash (or all of them, for a member too wide for it), then the big ones
-    if (capsuleCellEstimate(C, pointQuery(x, y, look)) > MAX_CAPSULE_CELLS) {
+    if (capsuleCellsOver(C, pointQuery(x, y, look), MAX_CAPSULE_CELLS)) {
       const balls = w.moving.dense
       for (let i = 0, k = w.moving.count; i < k; i++) n = consider(w, n, balls[i]!, m, t, stamp)
     } else {
@@ -57,7 +57,7 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
     if (C.restCount > 0) {
       const rMask = C.restHead.length - 1
       const reach = look + C.maxRadius
-      if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > C.restHead.length) {
+      if (capsuleCellsOver(C, pointQuery(x, y, reach), C.restHead.length)) {
         for (let i = 0; i <= rMask; i++) {
           for (let c = C.restHead[i]!; c !== 0; c = C.restNext[c]!) n = consider(w, n, c, m, t, stamp)
         }

@@ -94,24 +94,35 @@ export function evalBall(w: BallWorld, eid: number): void {
   }
 }
 
-/** When the ball's current motion began (the search for its contacts starts there, whatever the ticks). */
-export function startOf(w: BallWorld, eid: number): number {
+/**
+ * When the ball's current motion began (the search for its contacts starts there, whatever the ticks), into
+ * E[MT]. Written into a slot, not returned: a double returned by a call V8 does not inline is boxed, and
+ * which calls it inlines changes with the caller (the contact search, the prediction, the integration) and
+ * from one process to the next.
+ */
+export function motionStart(w: BallWorld, eid: number): void {
   const mode = w.Ball.mode[eid]
-  if (mode === BallMode.RimRoll) return w.RimContact.time0[w.Ball.rim[eid]!]!
+  if (mode === BallMode.RimRoll) {
+    E[MT] = w.RimContact.time0[w.Ball.rim[eid]!]!
+    return
+  }
   const t0 = w.pathHot[eid * HOT + H_T0]!
-  if (mode !== BallMode.Resting) return t0
+  if (mode !== BallMode.Resting) {
+    E[MT] = t0
+    return
+  }
   // a ball at rest has been so since its path stopped (or since it was put down)
   const decel = w.config.ROLLING_DECEL
   const v0 = w.pathHot[eid * HOT + H_V0]!
-  return v0 > 0 && decel > 0 ? t0 + v0 / decel : t0
+  E[MT] = v0 > 0 && decel > 0 ? t0 + v0 / decel : t0
 }
 
 /**
  * End of the span over which a ball's current motion is known, capped at the prediction window's end
- * (CollisionState.until): its next own event, or for a rolling ball the later event up to which the planner
- * found its path kept (CollisionState.formulaEnd).
+ * (CollisionState.until), into E[MT] (as motionStart): its next own event, or for a rolling ball the later
+ * event up to which the planner found its path kept (CollisionState.formulaEnd).
  */
-export function endOf(w: BallWorld, eid: number): number {
+export function motionEnd(w: BallWorld, eid: number): void {
   const C = w.collide!
   const cap = C.until
   const mode = w.Ball.mode[eid]
@@ -120,19 +131,7 @@ export function endOf(w: BallWorld, eid: number): number {
     const f = C.formulaEnd[eid]!
     if (f > t) t = f
   }
-  return t < cap ? t : cap
-}
-
-/**
- * startOf and endOf into E[MT]: for the callers V8 does not inline them into (predictBall, the capsule, the
- * integration), where their returned doubles would be boxed at every prediction. The contact search calls
- * them directly, once a pair: inlined there.
- */
-export function motionStart(w: BallWorld, eid: number): void {
-  E[MT] = startOf(w, eid)
-}
-export function motionEnd(w: BallWorld, eid: number): void {
-  E[MT] = endOf(w, eid)
+  E[MT] = t < cap ? t : cap
 }
 
 /** Writes ball `eid`'s state at time E[AT] (on its current motion) into Ball. */

@@ -274,10 +274,15 @@ function scan(F: FixedContactState, p: number, from: number, to: number): void {
   }
 }
 
-/** The dense grid's cells within `range` of candidate i: columns box[0]..box[1], rows box[2]..box[3]. */
+/**
+ * The dense grid's cells within boxRange[0] of candidate i: columns box[0]..box[1], rows box[2]..box[3].
+ * (The range in a slot, not an argument: a double passed to a call V8 does not inline is boxed.)
+ */
 export const box = new Int32Array(4)
-export function gridBox(F: FixedContactState, i: number, range: number): boolean {
+export const boxRange = new Float64Array(1)
+export function gridBox(F: FixedContactState, i: number): boolean {
   if (F.cols === 0) return false
+  const range = boxRange[0]!
   const cell = F.gridCell
   box[0] = Math.max(0, Math.floor((F.x[i]! - range - F.minX) / cell))
   box[1] = Math.min(F.cols - 1, Math.floor((F.x[i]! + range - F.minX) / cell))

@@ -18,11 +18,11 @@ import { WallEdge } from '../../components/Walls.js'
 import { TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
-import { addFresh, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
+import { addFresh, keyOut, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
 
 /** The tick's reductions over the candidates: sum and largest reach, bounding box, balls big for the sweep cell. */
-const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0, key: 0.5 }
+const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0, half: 0.5 }
 
 /**
  * Gathers the candidates of a tick into F.ord (F.full of them) with their reaches (F.reachOf), the balls near
@@ -50,6 +50,8 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
     for (let p = 0; p < F.ordCount; p++) F.inOrd[F.ord[p]!] = 0
     F.ordCount = 0
   }
+  // the widest reach of a small ball for this tick's sweep cell (read per ball below)
+  acc.half = smallReach(F)
   acc.sum = 0
   acc.max = 0
   acc.minX = Infinity
@@ -119,8 +121,7 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
   const posOf = F.posOf
   const okey = F.okey
   const tick = F.tick
-  const half = smallReach(F)
-  const inv = F.sweepInv
+  const half = acc.half
   const near = w.walls !== 0
   const wx0 = walls.minX
   const wx1 = walls.maxX
@@ -138,7 +139,6 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
   let n = 0
   let svx = 0
   let svy = 0
-  const cols = F.sweepCols
   for (let i = 0; i < count; i++) {
     const e = dense[i]!
     const m = mode[e]!
@@ -160,13 +160,15 @@ function readMoving(w: BallWorld, F: FixedContactState): number {
     if (y > maxY) maxY = y
     if (near && !(x - reach > wx0 && x + reach < wx1 && y - reach > wy0 && y + reach < wy1)) F.near = pushListed(F.near, F.nearCount++, e)
     // a ball too wide or fast for the sweep cell has a key half a cell on (fixedSweep.ts)
-    let key = sweepKey(inv, cols, x, y)
+    sweepKey(F, X, Y, e)
+    let key = keyOut[0]!
     if (reach > half) {
       key += 0.5
       big++
     }
     if (inOrd[e] !== 1) {
-      addFresh(F, e, key)
+      keyOut[0] = key
+      addFresh(F, e)
       continue
     }
     okey[posOf[e]!] = key
@@ -211,7 +213,7 @@ function sortOrd(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: b
     else if (live[e] === 1 && m === BallMode.Resting && (allRest || (lookup && seen[e] === seenStamp))) {
       if (allRest) seen[e] = seenStamp
       restingKey(w, F, e)
-      k = acc.key
+      k = keyOut[0]!
       nRest++
     } else {
       F.inOrd[e] = 0
@@ -236,7 +238,7 @@ function sortOrd(w: BallWorld, F: FixedContactState, allRest: boolean, lookup: b
   return nRest
 }
 
-/** A resting candidate's reach and its part of the reductions; its key into acc.key (a returned double is boxed: 14 bytes a ball a tick in sortOrd) */
+/** A resting candidate's reach and its part of the reductions; its key into keyOut[0] (a returned double is boxed: 14 bytes a ball a tick in sortOrd) */
 function restingKey(w: BallWorld, F: FixedContactState, e: number): void {
   const x = w.Ball.x[e]!
   const y = w.Ball.y[e]!
@@ -249,18 +251,17 @@ function restingKey(w: BallWorld, F: FixedContactState, e: number): void {
   if (y < acc.minY) acc.minY = y
   if (y > acc.maxY) acc.maxY = y
   if (w.walls !== 0 && !(x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY)) F.near = pushListed(F.near, F.nearCount++, e)
-  let key = sweepKey(F.sweepInv, F.sweepCols, x, y)
-  if (reach > smallReach(F)) {
-    key += 0.5
+  sweepKey(F, w.Ball.x, w.Ball.y, e)
+  if (reach > acc.half) {
+    keyOut[0] += 0.5
     acc.big++
   }
-  acc.key = key
 }
 
 /** Resting ball e joins ord this tick. */
 function join(w: BallWorld, F: FixedContactState, e: number): void {
   restingKey(w, F, e)
-  addFresh(F, e, acc.key)
+  addFresh(F, e)
 }
 
 /**

@@ -14,10 +14,10 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushListed, pushPair, reserveCandidates, reserveSort, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
-import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
-import { box, gridBox } from './fixedDense.js'
+import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
+import { box, boxRange, gridBox } from './fixedDense.js'
 import { unpackedJoin } from './fixedOrder.js'
-import { queryBox, sortByKeys } from './fixedSweep.js'
+import { QR, QX, QY, queried, queryBox, sortByKeys } from './fixedSweep.js'
 
 /** Pairs the balls the projection moved with the unpaired balls they overlap; true when it paired any. */
 export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
@@ -59,7 +59,7 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
       // centres within the two radii, the other's at most maxRadius, found at its tick position
       const reach = F.r[i]! + C.maxRadius + shift + TOUCH_GAP
       const mask = C.restHead.length - 1
-      if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > C.restHead.length) {
+      if (capsuleCellsOver(C, pointQuery(x, y, reach), C.restHead.length)) {
         for (let c = 0; c <= mask; c++) for (let e = C.restHead[c]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
       } else {
         const k = capsuleCells(C, pointQuery(x, y, reach), mask)
@@ -111,7 +111,8 @@ function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: numbe
     }
     const range = F.r[i]! + half + shift
     if (dense) {
-      if (!gridBox(F, i, range)) continue
+      boxRange[0] = range
+      if (!gridBox(F, i)) continue
       for (let gy = box[2]!; gy <= box[3]!; gy++) {
         for (let q = F.start[gy * F.cols + box[0]!]!, end = F.start[gy * F.cols + box[1]! + 1]!; q < end; q++) {
           const j = F.si[q]!
@@ -120,7 +121,10 @@ function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: numbe
       }
       continue
     }
-    queryBox(F, F.x[i]!, F.y[i]!, range)
+    queried[QX] = F.x[i]!
+    queried[QY] = F.y[i]!
+    queried[QR] = range
+    queryBox(F)
     for (let q = 0; q < F.foundCount; q++) {
       const e = F.found[q]!
       if (F.reachOf[e]! > half) continue // a big one: in F.big

@@ -9,11 +9,11 @@
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
-import { box, gridBox } from './fixedDense.js'
+import { box, boxRange, gridBox } from './fixedDense.js'
 import { markWall } from './fixedGrid.js'
 import { seed, seedResting } from './fixedSeed.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
-import { queryBox } from './fixedSweep.js'
+import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
 /** Widens the reach of the candidates the last round sped up and pairs them again; false when none did. */
 export function widenReach(w: BallWorld, F: FixedContactState): boolean {
@@ -24,7 +24,8 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
   if (F.dense === 1) {
     for (let k = 0; k < F.widenedCount; k++) {
       const g = F.widened[k]!
-      pairInGrid(F, g, F.wide[g]! + smallReach)
+      boxRange[0] = F.wide[g]! + smallReach
+      pairInGrid(F, g)
       for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
       // resting balls not yet candidates (the gather's seen stamps skip those that are)
       seed[0] = F.x[g]!
@@ -128,7 +129,10 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
     const y1 = Math.min(F.rows - 1, Math.floor((y + range - F.minY) / cell))
     if (x1 < x0 || y1 < y0) continue
     // every candidate it can reach is within its reach plus the widest reach of any
-    queryBox(F, x, y, F.wide[g]! + F.reachMax)
+    queried[QX] = x
+    queried[QY] = y
+    queried[QR] = F.wide[g]! + F.reachMax
+    queryBox(F)
     for (let q = 0; q < F.foundCount; q++) {
       const e = F.found[q]!
       if (F.reachOf[e]! > half) continue
@@ -159,9 +163,9 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
   if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
 }
 
-/** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within `range` of it. */
-function pairInGrid(F: FixedContactState, g: number, range: number): void {
-  if (!gridBox(F, g, range)) return
+/** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within boxRange[0] of it. */
+function pairInGrid(F: FixedContactState, g: number): void {
+  if (!gridBox(F, g)) return
   for (let gy = box[2]!; gy <= box[3]!; gy++) {
     for (let q = F.start[gy * F.cols + box[0]!]!, e = F.start[gy * F.cols + box[1]! + 1]!; q < e; q++) consider(F, g, F.si[q]!)
   }

@@ -7,7 +7,7 @@ import { BallMode } from '../../components/Ball.js'
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, type FixedContactState } from '../world/fixedState.js'
-import { CR, X1, X2, Y1, Y2, capsuleCellEstimate, capsuleCells, query } from './sweepGrid.js'
+import { CR, X1, X2, Y1, Y2, capsuleCellsOver, capsuleCells, query } from './sweepGrid.js'
 
 /** Adds the resting balls moving ball eid can reach within the tick (its radius plus a tick's travel). */
 export function seedAround(w: BallWorld, F: FixedContactState, eid: number): void {
@@ -63,7 +63,7 @@ export function seedResting(w: BallWorld, F: FixedContactState): void {
   query[X1] = query[X2] = seed[0]!
   query[Y1] = query[Y2] = seed[1]!
   query[CR] = seed[2]! + C.maxRadius + 2 * TOUCH_GAP // addResting's reach + radius + gap, and a gap more
-  if (capsuleCellEstimate(C, query) > C.restHead.length) {
+  if (capsuleCellsOver(C, query, C.restHead.length)) {
     for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e)
     return
   }

@@ -17,9 +17,9 @@
 // in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
 // if it leaves at BALL_SETTLE_SPEED or more.
 import { BallMode } from '../../components/Ball.js'
-import { EventType, appendEvent, pushCollisionEvent } from '../events.js'
+import { EventType, appendCollision, appendEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
-import { pathStart, PS_T, PS_X, PS_Y, startAt } from '../motion/rolling.js'
+import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
@@ -44,9 +44,25 @@ let testedAt = new Float64Array(256)
 let changedAt = new Float64Array(256)
 let clock = 0
 
+/**
+ * The solve's numbers, in slots rather than arguments: the tick's time, the restitution, the settle speed
+ * (set once a solve), and a pair's approach and inverse masses, and its share of restitution, for
+ * applyImpulse and pairWithWall. A double passed to (or returned from) a call V8 does not inline is boxed,
+ * and which of these calls it inlines changes with the process: up to 9 bytes a ball-step on the gas.
+ */
+const S = new Float64Array(7)
+const S_T = 0
+const S_E = 1
+const S_SETTLE = 2
+const S_APPROACH = 3
+const S_IMA = 4
+const S_IMB = 5
+const S_SEPARATE = 6
+
 export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number): void {
-  const e = w.config.BALL_RESTITUTION
-  const settle = w.config.BALL_SETTLE_SPEED
+  S[S_T] = t
+  S[S_E] = w.config.BALL_RESTITUTION
+  S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
   if (testedAt.length < F.pairCount) testedAt = new Float64Array(2 * F.pairCount)
   if (changedAt.length < F.n) changedAt = new Float64Array(2 * F.n)
   // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last call)
@@ -58,12 +74,12 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     moved = false
     // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
     // Gauss-Seidel): a push runs through a row against a wall either way within a sweep
-    if (wallVelocities(w, F, t, settle)) moved = true
+    if (wallVelocities(w, F)) moved = true
     const back = (it & 1) === 1
     for (let k = 0; k < F.pairCount; k++) {
-      if (impulse(w, F, back ? F.pairCount - 1 - k : k, t, e, settle)) moved = true
+      if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
     }
-    if (wallVelocities(w, F, t, settle)) moved = true
+    if (wallVelocities(w, F)) moved = true
     if (!moved) return
   }
 }
@@ -72,7 +88,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
  * Pair p takes the two-body impulse if it approaches and its balls would touch within the tick; returns
  * whether it did.
  */
-function impulse(w: BallWorld, F: FixedContactState, p: number, t: number, e: number, settle: number): boolean {
+function impulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   const at = testedAt[p]!
@@ -81,11 +97,15 @@ function impulse(w: BallWorld, F: FixedContactState, p: number, t: number, e: nu
   if (!meetsWithinTick(F, a, b)) return false
   const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
   if (!(approach > 0)) return false
-  return applyImpulse(w, F, p, approach, t, e, settle)
+  S[S_APPROACH] = approach
+  return applyImpulse(w, F, p)
 }
 
-/** Pair p, approaching at `approach` along nrm, takes its impulse (see impulse); false if neither ball can move. */
-function applyImpulse(w: BallWorld, F: FixedContactState, p: number, approach: number, t: number, e: number, settle: number): boolean {
+/** Pair p, approaching at S[S_APPROACH] along nrm, takes its impulse (see impulse); false if neither ball can move. */
+function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
+  const approach = S[S_APPROACH]!
+  const e = S[S_E]!
+  const settle = S[S_SETTLE]!
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   const nx = nrm.x
@@ -112,8 +132,15 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number, approach: n
   F.pairHit[p] = hit | IMPULSED
   // a ball the impulse drives into a closed wall it can reach within the tick: the pair and that wall
   // solved together (below), so a squeeze or a wedge ends in one visit, not a little of the push each sweep
-  const q = ima > 0 && wallAhead(F, a, -nx, -ny) ? a : imb > 0 && wallAhead(F, b, nx, ny) ? b : -1
-  if (q >= 0 && pairWithWall(w, F, a, b, q, ima, imb, k - approach, approach, t, settle)) {
+  const q = ima > 0 && wallAhead(F, a, -1) ? a : imb > 0 && wallAhead(F, b, 1) ? b : -1
+  let walled = false
+  if (q >= 0) {
+    S[S_IMA] = ima
+    S[S_IMB] = imb
+    S[S_SEPARATE] = k - approach
+    walled = pairWithWall(w, F, a, b, q)
+  }
+  if (walled) {
     j = block.j
   } else {
     F.vx[a] = F.vx[a]! - j * ima * nx
@@ -132,7 +159,11 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number, approach: n
     F.contacts++
     const ia = F.id[a]!
     const ib = F.id[b]!
-    pushCollisionEvent(w.events, ia < ib ? ia : ib, ia < ib ? ib : ia, t, approach, j)
+    const ev = w.events
+    const i = appendCollision(ev, ia < ib ? ia : ib, ia < ib ? ib : ia)
+    ev.time[i] = S[S_T]!
+    ev.speed[i] = approach
+    ev.impulse[i] = j
   }
   return true
 }
@@ -143,17 +174,24 @@ const face = { x: 0, y: 0 }
 const block = { j: 0, k: 0 }
 
 /**
- * True when a push on candidate i along (dx, dy) drives it into a closed wall it can reach within the tick
+ * True when a push on candidate i along sign·nrm drives it into a closed wall it can reach within the tick
  * (its gap to the wall's face at most the distance it can cover in a tick); that wall's inward normal is
  * left in `face` (of two, the one the push meets more squarely).
  */
-function wallAhead(F: FixedContactState, i: number, dx: number, dy: number): boolean {
+function wallAhead(F: FixedContactState, i: number, sign: number): boolean {
+  const dx = sign * nrm.x
+  const dy = sign * nrm.y
   const x = F.x[i]!
   const y = F.y[i]!
   const r = F.r[i]!
   const travel = F.reach[i]! - r
-  const cx = into(dx, x - r - walls.minX, walls.maxX - x - r, travel)
-  const cy = into(dy, y - r - walls.minY, walls.maxY - y - r, travel)
+  // on each axis, −|d| when the push drives the ball into a face within `travel`, else 0
+  const lowX = x - r - walls.minX
+  const highX = walls.maxX - x - r
+  const cx = dx < 0 ? (lowX <= travel ? dx : 0) : dx > 0 ? (highX <= travel ? -dx : 0) : 0
+  const lowY = y - r - walls.minY
+  const highY = walls.maxY - y - r
+  const cy = dy < 0 ? (lowY <= travel ? dy : 0) : dy > 0 ? (highY <= travel ? -dy : 0) : 0
   if (cx === 0 && cy === 0) return false
   if (cx <= cy) {
     face.x = dx < 0 ? 1 : -1
@@ -166,23 +204,18 @@ function wallAhead(F: FixedContactState, i: number, dx: number, dy: number): boo
 }
 
 /**
- * On one axis, a push component d against the walls whose faces are gapLow below and gapHigh above: −|d|
- * when it drives the ball into a face within `travel`, else 0.
+ * Pair (a, b), approaching at S[S_APPROACH] along nrm (inverse masses S[S_IMA], S[S_IMB]), solved together
+ * with the wall `face` that candidate q (a or b) is pushed into: pair impulse j ≥ 0 and wall impulse k ≥ 0
+ * on q such that the pair leaves at S[S_SEPARATE] (its restitution's share) and q does not move into the
+ * wall (inelastic there), each zero when the other alone does it. Applied when both are positive and
+ * kinetic energy does not rise (with the pair inelastic if its restitution would raise it); returns false,
+ * changing nothing, otherwise.
  */
-function into(d: number, gapLow: number, gapHigh: number, travel: number): number {
-  if (d < 0) return gapLow <= travel ? d : 0
-  if (d > 0) return gapHigh <= travel ? -d : 0
-  return 0
-}
-
-/**
- * Pair (a, b), approaching at `approach` along nrm, solved together with the wall `face` that candidate q
- * (a or b) is pushed into: pair impulse j ≥ 0 and wall impulse k ≥ 0 on q such that the pair leaves at
- * `separate` (its restitution's share) and q does not move into the wall (inelastic there), each zero when
- * the other alone does it. Applied when both are positive and kinetic energy does not rise (with the pair
- * inelastic if its restitution would raise it); returns false, changing nothing, otherwise.
- */
-function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number, ima: number, imb: number, separate: number, approach: number, t: number, settle: number): boolean {
+function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number): boolean {
+  const ima = S[S_IMA]!
+  const imb = S[S_IMB]!
+  const separate = S[S_SEPARATE]!
+  const approach = S[S_APPROACH]!
   const nx = nrm.x
   const ny = nrm.y
   const imq = q === a ? ima : imb
@@ -212,8 +245,8 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
     F.vy[b] = vby
     block.j = j
     block.k = k
-    if ((F.changed[q]! & WALL_REPORTED) === 0 && k * imq >= settle) {
-      w.events.time[appendEvent(w.events, EventType.Wall, F.id[q]!, 0, false)] = t
+    if ((F.changed[q]! & WALL_REPORTED) === 0 && k * imq >= S[S_SETTLE]!) {
+      w.events.time[appendEvent(w.events, EventType.Wall, F.id[q]!, 0, false)] = S[S_T]!
       F.changed[q]! |= WALL_REPORTED
     }
     return true
@@ -250,14 +283,15 @@ function meetsWithinTick(F: FixedContactState, a: number, b: number): boolean {
 }
 
 /** A closed wall reflects the normal velocity of a candidate near one that would reach it within the tick. */
-function wallVelocities(w: BallWorld, F: FixedContactState, t: number, settle: number): boolean {
+function wallVelocities(w: BallWorld, F: FixedContactState): boolean {
   let moved = false
-  for (let k = 0; k < F.nearWallCount; k++) if (wallVelocity(w, F, t, settle, F.nearWall[k]!)) moved = true
+  for (let k = 0; k < F.nearWallCount; k++) if (wallVelocity(w, F, F.nearWall[k]!)) moved = true
   return moved
 }
 
 /** Candidate i's velocity reflected by the closed walls it would reach within the tick; returns whether it was. */
-function wallVelocity(w: BallWorld, F: FixedContactState, t: number, settle: number, i: number): boolean {
+function wallVelocity(w: BallWorld, F: FixedContactState, i: number): boolean {
+  const settle = S[S_SETTLE]!
   const tick = F.tick
   const x = F.x[i]!
   const y = F.y[i]!
@@ -267,16 +301,16 @@ function wallVelocity(w: BallWorld, F: FixedContactState, t: number, settle: num
   let hit = false
   // an open edge's face is at ±Infinity: never within a tick
   if ((vx < 0 && x - r - walls.minX <= -vx * tick) || (vx > 0 && walls.maxX - x - r <= vx * tick)) {
-    vx = bounce(vx, settle)
+    vx = Math.abs(vx) < settle ? 0 : -walls.e * vx
     hit = true
   }
   if ((vy < 0 && y - r - walls.minY <= -vy * tick) || (vy > 0 && walls.maxY - y - r <= vy * tick)) {
-    vy = bounce(vy, settle)
+    vy = Math.abs(vy) < settle ? 0 : -walls.e * vy
     hit = true
   }
   if (!hit) return false
   if ((F.changed[i]! & WALL_REPORTED) === 0 && Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) {
-    w.events.time[appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)] = t
+    w.events.time[appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)] = S[S_T]!
     F.changed[i]! |= WALL_REPORTED
   }
   F.vx[i] = vx
@@ -285,10 +319,6 @@ function wallVelocity(w: BallWorld, F: FixedContactState, t: number, settle: num
   if ((F.changed[i]! & 1) === 0) F.hit[F.hitCount++] = i
   F.changed[i]! |= 1
   return true
-}
-
-function bounce(vn: number, settle: number): number {
-  return Math.abs(vn) < settle ? 0 : -walls.e * vn
 }
 
 /** Gives every changed ball a fresh path from its state at the tick t (see the top of this file). */
@@ -300,11 +330,15 @@ export function applyChanges(w: BallWorld, F: FixedContactState, t: number): voi
     if (c === 0) continue
     const eid = F.id[i]!
     if ((c & 2) !== 0) touchBall(F, eid)
-    const x = F.x[i]!
-    const y = F.y[i]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
-    startAt(x, y, vx, vy, t)
+    // pathStart written here, not through startAt: where V8 does not inline that call, its five doubles
+    // were boxed for every ball the solve changed (5 bytes a ball-step on the gas)
+    pathStart[PS_X] = F.x[i]!
+    pathStart[PS_Y] = F.y[i]!
+    pathStart[PS_VX] = vx
+    pathStart[PS_VY] = vy
+    pathStart[PS_T] = t
     if (B.mode[eid] === BallMode.Resting) {
       if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid)
       else if ((c & 2) !== 0) moveResting(w, eid)

@@ -23,11 +23,23 @@ function cellIndex(v: number, inv: number): number {
 }
 
 /**
- * The key of the sweep cell (1/inv px) of point (x, y): row·ROW + column, or column·ROW + row when the
- * cells go column by column (`cols` 1); a big ball's key is this + 0.5.
+ * A key for sweepKey's result and addFresh's argument: a slot, not a returned or passed double (V8 boxes
+ * those for a call it does not inline, which made the gather allocate about a heap number a ball a tick
+ * under the test runner).
  */
-export function sweepKey(inv: number, cols: number, x: number, y: number): number {
-  return cols === 1 ? cellIndex(x, inv) * ROW + cellIndex(y, inv) : cellIndex(y, inv) * ROW + cellIndex(x, inv)
+export const keyOut = new Float64Array(1)
+
+/**
+ * The key of the sweep cell of ball e (at X[e], Y[e]) into keyOut[0]: row·ROW + column, or column·ROW + row
+ * when the cells go column by column (F.sweepCols 1); a big ball's key is this + 0.5.
+ */
+export function sweepKey(F: FixedContactState, X: Float64Array, Y: Float64Array, e: number): void {
+  const inv = F.sweepInv
+  let cx = Math.floor(X[e]! * inv)
+  cx = cx < -LIMIT ? -LIMIT : cx > LIMIT ? LIMIT : cx
+  let cy = Math.floor(Y[e]! * inv)
+  cy = cy < -LIMIT ? -LIMIT : cy > LIMIT ? LIMIT : cy
+  keyOut[0] = F.sweepCols === 1 ? cx * ROW + cy : cy * ROW + cx
 }
 
 /**
@@ -38,8 +50,9 @@ export function smallReach(F: FixedContactState): number {
   return F.sweepCell * 0.499999
 }
 
-/** Adds ball eid (not in ord) with key `key` to the balls joining ord this tick. */
-export function addFresh(F: FixedContactState, eid: number, key: number): void {
+/** Adds ball eid (not in ord) with key keyOut[0] to the balls joining ord this tick. */
+export function addFresh(F: FixedContactState, eid: number): void {
+  const key = keyOut[0]!
   if (F.freshCount === F.freshKey.length) {
     const k = new Float64Array(2 * F.freshKey.length)
     k.set(F.freshKey)
@@ -166,7 +179,10 @@ export function sweepPairs(w: BallWorld, F: FixedContactState): void {
   const half = smallReach(F)
   for (let k = 0; k < F.sweepBigCount; k++) {
     const e = F.sweepBig[k]!
-    queryBox(F, X[e]!, Y[e]!, reach[e]! + half)
+    queried[QX] = X[e]!
+    queried[QY] = Y[e]!
+    queried[QR] = reach[e]! + half
+    queryBox(F)
     for (let m = 0; m < F.foundCount; m++) {
       const f = F.found[m]!
       if (reach[f]! <= half) test(F, X, Y, reach, e, f)
@@ -215,8 +231,20 @@ export function radixSort(F: FixedContactState, n: number, maxKey: number): void
   if (a !== F.perm) for (let i = 0; i < n; i++) F.perm[i] = a[i]!
 }
 
-/** The balls of ord whose sweep cell meets the box [x − R, x + R] × [y − R, y + R], into F.found (F.foundCount). */
-export function queryBox(F: FixedContactState, x: number, y: number, R: number): void {
+/**
+ * The box queryBox looks up: centre x, y and half-side R, in slots (QX, QY, QR): a double passed to a call
+ * V8 does not inline is boxed.
+ */
+export const queried = new Float64Array(3)
+export const QX = 0
+export const QY = 1
+export const QR = 2
+
+/** The balls of ord whose sweep cell meets the box [x − R, x + R] × [y − R, y + R] (queried), into F.found (F.foundCount). */
+export function queryBox(F: FixedContactState): void {
+  const x = queried[QX]!
+  const y = queried[QY]!
+  const R = queried[QR]!
   const inv = F.sweepInv
   // in key terms: rows y0..y1, columns x0..x1 (the other way round when the cells go column by column)
   const u = F.sweepCols === 1 ? y : x

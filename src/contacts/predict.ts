@@ -7,8 +7,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { HeapKind, heapPush, pushTime } from './eventHeap.js'
 import { AT, E, MT, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 import { FROM, RESULT, SearchResult, TIME, TO, search, searchContact } from './search.js'
-import { CR, X1, X2, Y1, Y2, cap, capsuleCellEstimate, capsuleCells, enterCapsule, query, staleEntry, sweptCapsule } from './sweepGrid.js'
-import { sq } from '../math.js'
+import { CR, X1, X2, Y1, Y2, cap, capsuleCellsOver, capsuleCells, enterCapsule, query, staleEntry, sweptCapsule } from './sweepGrid.js'
 import { HOT, H_NEXT_T } from '../world/pathHot.js'
 
 /**
@@ -63,7 +62,7 @@ export function predictBall(w: BallWorld, a: number): void {
   query[X2] = cap[X2]!
   query[Y2] = cap[Y2]!
   query[CR] = look
-  const big = capsuleCellEstimate(C, query) > MAX_CAPSULE_CELLS
+  const big = capsuleCellsOver(C, query, MAX_CAPSULE_CELLS)
   const sMask = C.sweepHead.length - 1
   let n = big ? 0 : capsuleCells(C, query, sMask)
   for (let k = 0; k < n; k++) {
@@ -110,7 +109,7 @@ export function predictBall(w: BallWorld, a: number): void {
   if (C.restCount > 0) {
     const rMask = C.restHead.length - 1
     query[CR] = look + C.maxRadius
-    if (capsuleCellEstimate(C, query) > C.restHead.length) {
+    if (capsuleCellsOver(C, query, C.restHead.length)) {
       for (let k = 0; k <= rMask; k++) {
         for (let b = C.restHead[k]!; b !== 0; b = C.restNext[b]!) restingCandidate(w, a, b, stamp)
       }
@@ -130,7 +129,11 @@ function restingCandidate(w: BallWorld, a: number, b: number, stamp: number): vo
   if (C.seen[b] === stamp) return
   C.seen[b] = stamp
   // the bucket also holds balls of far cells that hash alike: test the distance to a's capsule first
-  if (segmentDistance2(w.Ball.x[b]!, w.Ball.y[b]!) > sq(cap[CR]! + w.Ball.radius[b]! + 2 * GAP_TOLERANCE)) return
+  seg[PX] = w.Ball.x[b]!
+  seg[PY] = w.Ball.y[b]!
+  segmentDistance2()
+  const reach = cap[CR]! + w.Ball.radius[b]! + 2 * GAP_TOLERANCE
+  if (seg[D2]! > reach * reach) return
   tryPair(w, a, b)
 }
 
@@ -144,11 +147,26 @@ function mayReach(w: BallWorld, b: number): boolean {
   evalBall(w, b)
   const travel = Math.sqrt(E[VX] * E[VX] + E[VY] * E[VY]) * (C.until - C.now)
   const r = cap[CR]! + w.Ball.radius[b]! + travel + 2 * GAP_TOLERANCE
-  return segmentDistance2(E[X], E[Y]) <= r * r
+  seg[PX] = E[X]
+  seg[PY] = E[Y]
+  segmentDistance2()
+  return seg[D2]! <= r * r
 }
 
-/** Squared distance from (px, py) to the segment of a's capsule, cap (X1, Y1)–(X2, Y2). */
-function segmentDistance2(px: number, py: number): number {
+/**
+ * segmentDistance2's point (PX, PY) and result (D2), in slots: doubles passed to and returned from a call V8
+ * does not inline are boxed (where restingCandidate was inlined into predictBall and this was not, five
+ * heap numbers a resting ball looked at).
+ */
+const seg = new Float64Array(3)
+const PX = 0
+const PY = 1
+const D2 = 2
+
+/** Squared distance from (seg[PX], seg[PY]) to the segment of a's capsule, cap (X1, Y1)–(X2, Y2), into seg[D2]. */
+function segmentDistance2(): void {
+  const px = seg[PX]!
+  const py = seg[PY]!
   const x1 = cap[X1]!
   const y1 = cap[Y1]!
   const dx = cap[X2]! - x1
@@ -159,7 +177,7 @@ function segmentDistance2(px: number, py: number): number {
   else if (s > 1) s = 1
   const ex = x1 + s * dx - px
   const ey = y1 + s * dy - py
-  return ex * ex + ey * ey
+  seg[D2] = ex * ex + ey * ey
 }
 
 /** Searches a (the ball being predicted, its span in search[FROM]/search[TO]) and b over their common span. */

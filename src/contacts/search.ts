@@ -4,7 +4,7 @@ import { APPROACH_EPSILON, GAP_TOLERANCE, MAX_SEARCH_STEPS, MIN_ADVANCE, SETTLE_
 import type { BallWorld } from '../world/createWorld.js'
 import { BallMode } from '../../components/Ball.js'
 import { HOT, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
-import { ACC, AT, AX, AY, E, EXACT, NEXT, VX, VY, X, Y, endOf, evalBall, startOf } from './evalMotion.js'
+import { ACC, AT, AX, AY, E, EXACT, MT, NEXT, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
 
 export const SearchResult = { None: 0, Contact: 1, Resume: 2 } as const
 /**
@@ -29,7 +29,7 @@ const PAIR_TO = 5
 const MIN_STEP = new Float64Array([MIN_ADVANCE])
 
 /**
- * First contact of balls a and b in [search[FROM], search[TO]] and b's own span (startOf, endOf), on their
+ * First contact of balls a and b in [search[FROM], search[TO]] and b's own span (motionStart, motionEnd), on their
  * current motions: the earliest time at which their
  * gap is at most GAP_TOLERANCE while they approach. Sets search[RESULT]/search[TIME]: Contact at that time, None
  * if there is none before the span's end, or Resume with the time reached after MAX_SEARCH_STEPS (the search continues
@@ -37,8 +37,10 @@ const MIN_STEP = new Float64Array([MIN_ADVANCE])
  */
 export function searchContact(w: BallWorld, a: number, b: number): void {
   search[RESULT] = SearchResult.None
-  const startB = startOf(w, b)
-  const endB = endOf(w, b)
+  motionStart(w, b)
+  const startB = E[MT]!
+  motionEnd(w, b)
+  const endB = E[MT]!
   const from = search[FROM]! > startB ? search[FROM]! : startB
   const to = search[TO]! < endB ? search[TO]! : endB
   const minAdvance = MIN_STEP[0]!
@@ -91,7 +93,7 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
       pieceEnd = na < E[NEXT] ? na : E[NEXT]
     } else {
       A = acca + E[ACC]
-      pieceEnd = Infinity
+      pieceEnd = 1 / 0
     }
     const gg = g > 0 ? g : 0
     let h: number
@@ -99,7 +101,7 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
       // the gap closes no sooner than the positive root of gg + vn·h − A·h²/2 (written without cancellation)
       h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
     } else {
-      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : 1 / 0
       // touching without approaching: creep on; the balls can close by at most A·MIN_ADVANCE²/2 meanwhile
       if (h < minAdvance) h = minAdvance
     }
@@ -158,7 +160,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
       xa = K[0]!
       ya = K[1]!
       vxa = vya = axa = aya = 0
-      na = Infinity
+      na = 1 / 0
     } else {
       const v0 = K[4]!
       const t0 = K[5]!
@@ -183,7 +185,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
         na = t0 + v0 / decel
       } else {
         axa = aya = 0
-        na = Infinity
+        na = 1 / 0
       }
     }
     let xb: number, yb: number, vxb: number, vyb: number, axb: number, ayb: number, nb: number
@@ -191,7 +193,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
       xb = K[6]!
       yb = K[7]!
       vxb = vyb = axb = ayb = 0
-      nb = Infinity
+      nb = 1 / 0
     } else {
       const v0 = K[10]!
       const t0 = K[11]!
@@ -216,7 +218,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
         nb = t0 + v0 / decel
       } else {
         axb = ayb = 0
-        nb = Infinity
+        nb = 1 / 0
       }
     }
     const dx = xb - xa
@@ -241,7 +243,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
     let h: number
     if (vn < 0) h = (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn)
     else {
-      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : Infinity
+      h = A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : 1 / 0
       if (h < minAdvance) h = minAdvance
     }
     let next = t + h

@@ -8,7 +8,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { isMoving, pushId, type IdList } from '../world/idLists.js'
 import { restingState } from '../world/restingGrid.js'
 import { buildSpotGrid } from '../world/spotGrid.js'
-import { capsuleCellEstimate, capsuleCells, pointQuery } from './sweepGrid.js'
+import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
 export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
@@ -39,7 +39,7 @@ function restingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: 
   if (C.restCount === 0) return out !== null && out.count > 0
   const rMask = C.restHead.length - 1
   const reach = r + C.maxRadius
-  if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > C.restHead.length) {
+  if (capsuleCellsOver(C, pointQuery(x, y, reach), C.restHead.length)) {
     for (let i = 0; i <= rMask; i++) for (let b = C.restHead[i]!; b !== 0; b = C.restNext[b]!) if (near(w, b, self, x, y, r) && found(C, out, b)) return true
   } else {
     const k = capsuleCells(C, pointQuery(x, y, reach), rMask)
@@ -70,7 +70,7 @@ function movingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: n
   if (!C.spotBuilt || C.spotTime !== w.time) buildSpotGrid(w, C)
   const reach = r + C.spotMaxR
   const mask = C.spotHead.length - 1
-  if (capsuleCellEstimate(C, pointQuery(x, y, reach)) > w.moving.count) {
+  if (capsuleCellsOver(C, pointQuery(x, y, reach), w.moving.count)) {
     const balls = w.moving.dense
     for (let i = 0, n = w.moving.count; i < n; i++) if (overlapsMoving(w, balls[i]!, self, x, y, r)) return true
     return false

@@ -179,16 +179,19 @@ export function sweptCapsule(w: BallWorld, eid: number): void {
   cap[CR] = r
 }
 
-/** About how many grid cells the capsule q (as capsuleCells reads it) covers (an upper estimate). */
-export function capsuleCellEstimate(C: CollisionState, q: Float64Array): number {
+/**
+ * Whether the capsule q (as capsuleCells reads it) covers more than `limit` grid cells, by an upper
+ * estimate. A yes or no, not the estimate: a double returned by a call V8 does not inline is boxed.
+ */
+export function capsuleCellsOver(C: CollisionState, q: Float64Array, limit: number): boolean {
   const c = C.cell
   const dx = q[X2]! - q[X1]!
   const dy = q[Y2]! - q[Y1]!
   const across = (2 * q[CR]!) / c + 2
-  return (Math.sqrt(dx * dx + dy * dy) / c + across) * across
+  return (Math.sqrt(dx * dx + dy * dy) / c + across) * across > limit
 }
 
-/** A capsule to look up (capsuleCells, capsuleCellEstimate) that is not a ball's swept one: a point's disc. */
+/** A capsule to look up (capsuleCells, capsuleCellsOver) that is not a ball's swept one: a point's disc. */
 export const query = new Float64Array(5)
 
 /** Sets query to the disc of radius rho about (x, y). */

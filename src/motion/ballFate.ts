@@ -85,7 +85,13 @@ export function launchBall(w: BallWorld, eid: number): void {
   const t = pathStart[PS_T]!
   restingRemove(w, eid)
   setBallMode(w, eid, BallMode.Rolling)
-  startAt(x, y, vx, vy, t)
+  // written back here, not through startAt: where V8 inlines launchBall but not startAt into it, a call
+  // with five doubles boxed them at every launch
+  pathStart[PS_X] = x
+  pathStart[PS_Y] = y
+  pathStart[PS_VX] = vx
+  pathStart[PS_VY] = vy
+  pathStart[PS_T] = t
   startPath(w, eid)
   planRolling(w, eid)
   addMoving(w, eid)

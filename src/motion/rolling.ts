@@ -7,11 +7,11 @@
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
-import { cogRadius, speedAtDistance, stopDistance, stopTime, timeToDistance, fliesOver } from '../geometry.js'
+import { speedAtDistance, fliesOver } from '../geometry.js'
 import { W_BOUND, W_FROM, W_UX, W_UY, W_X, W_Y, buildHoleGrid, walk, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
-import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0, setPathStart } from '../world/pathHot.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
 
 /**
@@ -39,12 +39,22 @@ export function startPath(w: BallWorld, eid: number): void {
   const speed = Math.sqrt(vx * vx + vy * vy)
   const ux = speed > 0 ? vx / speed : 0
   const uy = speed > 0 ? vy / speed : 0
-  setPathStart(w, eid, x, y, ux, uy, speed, t)
+  // the path's row, written here (a call taking these six doubles boxed them wherever V8 did not inline it)
+  const H = w.pathHot
+  const h = eid * HOT
+  H[h + H_X0] = x
+  H[h + H_Y0] = y
+  H[h + H_UX] = ux
+  H[h + H_UY] = uy
+  H[h + H_V0] = speed
+  H[h + H_T0] = t
+  const C = w.collide
+  if (C !== null) C.gen[eid] = (C.gen[eid]! + 1) >>> 0
   P.speed[eid] = speed
   P.s[eid] = 0
   P.sHole[eid] = 0
   P.fromHole[eid] = 0
-  if (w.collide !== null) w.collide.partner[eid] = 0
+  if (C !== null) C.partner[eid] = 0
   B.x[eid] = x
   B.y[eid] = y
   // the closed form's velocity at the origin, ux·v0 (what every later sample of the path gives; without
@@ -77,7 +87,29 @@ export function startPathAt(w: BallWorld, eid: number, x: number, y: number, vx:
 // heap number at every write (V8), which made every plan allocate.
 // NEVER is kept here too: a module constant is a variable of a bundle to V8, of no known type, and one
 // merged into a double (t and end in planRolling) made V8 box that double at every plan.
-const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5, stop: 0.5, change: 0.5, v0: 0.5, decel: 0.5, g: 0.5, never: NEVER }
+// Q.d and Q.t are timeTo's distance and result.
+const Q = { x0: 0.5, y0: 0.5, ux: 0.5, uy: 0.5, s: 0.5, foot: 0.5, best: 0.5, stop: 0.5, change: 0.5, v0: 0.5, decel: 0.5, g: 0.5, never: NEVER, d: 0.5, t: 0.5 }
+
+/**
+ * Q.t = the time from the path's start to its stop (`stop`) or to where it has rolled Q.d (Infinity if it
+ * stops first), for Q.v0 and Q.decel: stopTime and timeToDistance (src/geometry.ts) written out, the same
+ * bits. V8 does not always inline those two into planRolling (it spends its inlining budget there first),
+ * and a call it does not inline boxes every double it takes and returns: 16 bytes a plan. Infinity is
+ * written 1 / 0, a number literal: the global Infinity in a branch V8 has not seen taken is a generic
+ * load, and the double it merges with is boxed.
+ */
+function timeTo(stop: boolean): void {
+  const v0 = Q.v0
+  const decel = Q.decel
+  const d = Q.d
+  if (stop) Q.t = v0 <= 0 ? 0 : decel > 0 ? v0 / decel : 1 / 0
+  else if (d <= 0) Q.t = 0
+  else {
+    const disc = v0 * v0 - 2 * decel * d
+    const denom = disc < 0 ? 0 : v0 + Math.sqrt(disc)
+    Q.t = denom > 0 ? (2 * d) / denom : 1 / 0
+  }
+}
 /**
  * With ball-ball contacts on, the planner also finds the earliest candidate that may change the path's
  * closed form (Q.change): not a near miss, not the exit from a locked hole, not a lip crossing the skip-over
@@ -194,7 +226,8 @@ export function planRolling(w: BallWorld, eid: number): void {
   const slot = w.Ball.rim[eid]!
   qLocked = RC.hole[slot]!
 
-  Q.best = stopDistance(v0, decel)
+  // stopDistance, written out (as in timeTo)
+  Q.best = v0 <= 0 ? 0 : decel > 0 ? (v0 * v0) / (2 * decel) : 1 / 0
   bestHole = 0
   bestKind = Q.best === Infinity ? PathEvent.None : PathEvent.Stop
   const C = w.collide
@@ -222,7 +255,7 @@ export function planRolling(w: BallWorld, eid: number): void {
       const c2 = c * c
       let d: number
       let k: number = PathEvent.Exit
-      const rc = cogRadius(R, Q.foot)
+      const rc = R - Q.foot / 2 // cogRadius, written out (a call V8 does not inline boxes its doubles)
       if (RC.mode[slot] === RimMode.Entering && c2 < rc * rc) {
         d = p - Math.sqrt(rc * rc - c2)
         k = PathEvent.Contact
@@ -267,7 +300,9 @@ export function planRolling(w: BallWorld, eid: number): void {
   const never = Q.never
   let t = never
   if (bestKind !== PathEvent.None) {
-    t = H[h + H_T0]! + (bestKind === PathEvent.Stop ? stopTime(v0, decel) : timeToDistance(Q.best, v0, decel))
+    Q.d = Q.best
+    timeTo(bestKind === PathEvent.Stop)
+    t = H[h + H_T0]! + Q.t
     if (!(t < never)) bestKind = PathEvent.None
   }
   P.nextKind[eid] = bestKind
@@ -288,7 +323,9 @@ export function planRolling(w: BallWorld, eid: number): void {
     // when the path's closed form may change: at its next event, or later when that keeps the path
     let end = t
     if (Q.change > Q.best && v0 > 0) {
-      const tc = H[h + H_T0]! + (Q.change === Q.stop ? stopTime(v0, decel) : timeToDistance(Q.change, v0, decel))
+      Q.d = Q.change
+      timeTo(Q.change === Q.stop)
+      const tc = H[h + H_T0]! + Q.t
       end = tc < never ? tc : never
       if (end < t) end = t
     }

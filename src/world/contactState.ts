@@ -39,7 +39,7 @@ export interface CollisionState {
   bigCount: number
   /**
    * Per ball: when its rolling path's closed form may change next, s (set by the planner: its next event,
-   * or a later one when the events before it keep the path); a count of its path starts (setPathStart); and
+   * or a later one when the events before it keep the path); a count of its path starts (startPath); and
    * at its last prediction, that count and the end of the span the prediction covered
    */
   formulaEnd: Float64Array

@@ -17,20 +17,6 @@ export const H_T0 = 5
 export const H_NEXT_T = 6
 export const H_NEXT_S = 7
 
-/** Sets a path's origin, direction, speed and start time. */
-export function setPathStart(w: BallWorld, eid: number, x: number, y: number, ux: number, uy: number, v0: number, t0: number): void {
-  const H = w.pathHot
-  const h = eid * HOT
-  H[h + H_X0] = x
-  H[h + H_Y0] = y
-  H[h + H_UX] = ux
-  H[h + H_UY] = uy
-  H[h + H_V0] = v0
-  H[h + H_T0] = t0
-  const C = w.collide
-  if (C !== null) C.gen[eid] = (C.gen[eid]! + 1) >>> 0
-}
-
 /** Sets the time of a ball's next event. */
 export function setNextT(w: BallWorld, eid: number, t: number): void {
   w.pathHot[eid * HOT + H_NEXT_T] = t
