@@ -113,8 +113,8 @@ async function leastBytesPerBallStep(make: () => BallPhysics, warm: number): Pro
 
 // A heap number is 16 bytes: below 3 bytes a ball-step, fewer than one ball in five boxes a double a step.
 // (Most processes measure 0.002–0.9. The skipping stream measured 1.93 in about one process in five: after
-// the gas scenes have run in the same process, V8 sometimes runs the planner, the integration and the
-// skip-over system in code that boxes every double at their events: docs/decisions.md §1.)
+// the gas scenes have run in the same process, V8 sometimes keeps optimised code for the planner, the
+// integration and the skip-over system that calls Math.sqrt as a generic function: docs/decisions.md §1.)
 const LIMIT = 3
 
 describe('allocation per ball-step', () => {
