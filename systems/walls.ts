@@ -42,13 +42,15 @@ export function wallsSystem(w: BallWorld): void {
       const k = wedged || Math.abs(vn) < settle ? 0 : -e
       const vx = horizontal ? k * vn : B.vx[eid]!
       const vy = horizontal ? B.vy[eid]! : k * vn
-      w.events.time[appendEvent(w.events, EventType.Wall, eid, 0, false)] = t
+      const ev = appendEvent(w.events, EventType.Wall, eid, 0, false)
+      w.events.time[ev] = t
       startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
       startPath(w, eid)
       planRolling(w, eid)
     } else if (mark === PathEvent.Gutter) {
       P.mark[eid] = PathEvent.None
-      w.events.time[appendEvent(w.events, EventType.Gutter, eid, 0, false)] = hotNextT(w, eid)
+      const ev = appendEvent(w.events, EventType.Gutter, eid, 0, false)
+      w.events.time[ev] = hotNextT(w, eid)
       setBallMode(w, eid, BallMode.Out)
       B.vx[eid] = 0
       B.vy[eid] = 0

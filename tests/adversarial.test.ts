@@ -673,6 +673,34 @@ describe('contacts on: predictions kept across steps', () => {
 // ---------------------------------------------------------------- shrunk counterexamples
 
 describe('shrunk counterexamples of the long run', () => {
+  // appendEvent may grow the event buffer, replacing its arrays: `buf.time[appendEvent(buf, …)] = t` took the
+  // old time array before the call and wrote the time there, so the event that made the buffer grow kept
+  // time 0 (a wall event drained at 0 after events at later times, or outside the step's window)
+  it('contacts off, tabulated rim: the wall event that grows the event buffer keeps its time (five 1e-9-mass balls in a box 1 × 1e-6 px)', () => {
+    const ops = [
+      { t: 'burst', n: 5, x: -20, y: -20, spread: 0, speed: 5000, radius: 0.49888448746001224, mass: 1e-9, seed: 0, aim: undefined },
+      { t: 'step', dt: 1e-9 },
+      { t: 'walls', minX: -20, minY: -20, w: 1, h: 0.000001, e: 1, open: {} },
+      { t: 'addBall', x: -20, y: -20, radius: undefined, mass: undefined, place: { p: 'aim', k: 0, d: 0, off: -1.3, a: 0 }, vx: -1.2246467991473532e-16, vy: 1 },
+      { t: 'step', dt: 1 / 60 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'off', e: 0, decel: 0, rim: 'tabulated' }, ops, ['events'])
+  })
+
+  it('fixed-tick contacts: a wall event of the solve that grows the event buffer keeps its time (three 1e-9-mass balls stacked on the panel, a 22,961 px/s one)', () => {
+    const ops = [
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { bottom: false } },
+      ...PANEL_HOLES.map((h) => ({ t: 'addHole', ...h })),
+      { t: 'burst', n: 3, x: 0, y: -20, spread: 0, speed: 5000, radius: undefined, mass: 1e-9, seed: 0, aim: { p: 'aim', k: 0, d: 0, off: -1.3, a: 4.9954653 } },
+      { t: 'step', dt: 1 / 60 },
+      { t: 'addBall', x: 1000, y: -20, radius: undefined, mass: 1, place: { p: 'overlap', k: 2, f: 0.17149621, a: 5.6048895000000005 }, vx: -2.8119710922773247e-12, vy: 22961.486481123608 },
+      { t: 'addBall', x: 0, y: 1000, radius: undefined, mass: undefined, place: { p: 'inHole', k: 0, f: 0.77712, a: 5.5809432 }, vx: -12020.726243229112, vy: 214.75022685836578 },
+      { t: 'step', dt: 0.25 },
+      { t: 'step', dt: 1e-9 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['events'])
+  })
+
   // a crowd of 1e9-mass balls and light ones against closed walls: the projection's sweeps ran out with
   // 1.4e-3 px of overlap left after a tick's solve
   it('fixed-tick contacts: 1e9-mass bursts at a rim, light balls, a 1e5 px/s ball, walls open on two edges: no overlap over 1e-3 px after a tick within its projection budget', () => {

@@ -1,4 +1,6 @@
 // Reading events: drainEvents (objects) and drainEventsWith (one reused view, nothing allocated).
+import { readdirSync, readFileSync, statSync } from 'node:fs'
+import { join, relative, resolve } from 'node:path'
 import { PerformanceObserver } from 'node:perf_hooks'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type BallPhysics, type EventView } from '../src/index'
@@ -142,5 +144,28 @@ describe('drainEventsWith', () => {
     expect(kept[1]).toBe(400 * 400_000)
     expect(viewGcs).toBe(0)
     expect(objectGcs).toBeGreaterThan(0)
+  })
+})
+
+// appendEvent and appendCollision may grow the buffer, which replaces its arrays: in
+// `w.events.time[appendEvent(w.events, …)] = t` the old time array is taken before the call, so the event
+// that grew the buffer kept time 0 (found by the long adversarial run; named tests in adversarial.test.ts)
+describe('event buffer writes', () => {
+  const root = resolve(import.meta.dirname, '..')
+  const files = (dir: string): string[] =>
+    readdirSync(dir).flatMap((name) => {
+      const p = join(dir, name)
+      return statSync(p).isDirectory() ? files(p) : p.endsWith('.ts') ? [p] : []
+    })
+  /** Lines that index an array with the append call itself, as "line: code". */
+  const offences = (text: string): string[] =>
+    text.split('\n').flatMap((line, i) => (/\[\s*append(Event|Collision)\(/.test(line) ? [`${i + 1}: ${line.trim()}`] : []))
+
+  it('no file of the simulation writes an event field through an array read before the append (the append may grow the buffer)', () => {
+    const bad: string[] = []
+    for (const dir of ['src', 'systems']) for (const f of files(join(root, dir))) for (const o of offences(readFileSync(f, 'utf8'))) bad.push(`${relative(root, f)}:${o}`)
+    expect(bad).toEqual([])
+    expect(offences('w.events.time[appendEvent(w.events, EventType.Wall, e, 0, false)] = t')).toHaveLength(1)
+    expect(offences('const i = appendEvent(w.events, EventType.Wall, e, 0, false)\nw.events.time[i] = t')).toEqual([])
   })
 })

@@ -246,7 +246,8 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
     block.j = j
     block.k = k
     if ((F.changed[q]! & WALL_REPORTED) === 0 && k * imq >= S[S_SETTLE]!) {
-      w.events.time[appendEvent(w.events, EventType.Wall, F.id[q]!, 0, false)] = S[S_T]!
+      const ev = appendEvent(w.events, EventType.Wall, F.id[q]!, 0, false)
+      w.events.time[ev] = S[S_T]!
       F.changed[q]! |= WALL_REPORTED
     }
     return true
@@ -310,7 +311,8 @@ function wallVelocity(w: BallWorld, F: FixedContactState, i: number): boolean {
   }
   if (!hit) return false
   if ((F.changed[i]! & WALL_REPORTED) === 0 && Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) {
-    w.events.time[appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)] = S[S_T]!
+    const ev = appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)
+    w.events.time[ev] = S[S_T]!
     F.changed[i]! |= WALL_REPORTED
   }
   F.vx[i] = vx

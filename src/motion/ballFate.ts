@@ -58,7 +58,8 @@ export function captureBall(w: BallWorld, eid: number, hole: number, t: number, 
 
 /** The ball stops on the panel, outside every hole, at time t. */
 export function restBall(w: BallWorld, eid: number, t: number): void {
-  w.events.time[appendEvent(w.events, EventType.Rest, eid, 0, false)] = t
+  const ev = appendEvent(w.events, EventType.Rest, eid, 0, false)
+  w.events.time[ev] = t
   const B = w.Ball
   setBallMode(w, eid, BallMode.Resting)
   B.vx[eid] = 0
