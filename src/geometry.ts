@@ -3,6 +3,8 @@
 //
 // Notation (docs/design.md §1): R hole radius, r ball radius, δ offset of the ball's straight
 // path from the hole centre, v speed when the centre crosses the lip circle (radius R), g gravity.
+// Infinity is written 1 / 0, a number literal: the global `Infinity` in a branch V8 has not seen run is a
+// generic load, and the double it merges with is boxed at every call (docs/decisions.md §1).
 import type { CaptureWindowShape } from './config/design.js'
 import { exp, expm1, log, log1p } from './math.js'
 

@@ -1,5 +1,6 @@
 // The contact search: the first time two balls touch while approaching, by conservative advancement on
-// their closed-form motions (no step can pass a contact, at any dt).
+// their closed-form motions (no step can pass a contact, at any dt). Infinity is written 1 / 0 (as in
+// src/geometry.ts: a cold global `Infinity` boxes the loop's doubles).
 import { APPROACH_EPSILON, GAP_TOLERANCE, MAX_SEARCH_STEPS, MIN_ADVANCE, SETTLE_FLOOR } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { BallMode } from '../../components/Ball.js'

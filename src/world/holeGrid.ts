@@ -191,6 +191,7 @@ export function walkHoleGrid(grid: HoleGrid, visit: HoleVisitor): void {
   let cy = Math.min(ny - 1, Math.max(0, Math.floor((py - y0) / cell)))
   const stepX = ux > 0 ? 1 : -1
   const stepY = uy > 0 ? 1 : -1
+  // (1 / 0 for Infinity: the global, in a branch V8 has not seen run, boxes the walk's doubles)
   let tNextX = ux !== 0 ? tMin + (x0 + (cx + (ux > 0 ? 1 : 0)) * cell - px) / ux : 1 / 0
   let tNextY = uy !== 0 ? tMin + (y0 + (cy + (uy > 0 ? 1 : 0)) * cell - py) / uy : 1 / 0
   const dX = ux !== 0 ? cell / Math.abs(ux) : 1 / 0
