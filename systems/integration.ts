@@ -95,13 +95,11 @@ export function integrationSystem(w: BallWorld): void {
   } else {
     // continue the balls the decision systems handled in the last pass
     const todo = takeMarked(w)
+    advanceTo[0] = tEnd
     for (let i = 0, n = todo.count; i < n; i++) {
       const eid = todo.ids[i]!
       const m = mode[eid]
-      if (m === BallMode.Rolling || m === BallMode.RimRoll) {
-        advanceTo[0] = tEnd
-        advanceThroughEvents(w, eid)
-      }
+      if (m === BallMode.Rolling || m === BallMode.RimRoll) advanceThroughEvents(w, eid)
     }
   }
 }
@@ -241,10 +239,8 @@ function advanceDue(w: BallWorld, n: number, tEnd: number): void {
     acc += nextKind[e]! + nextHole[e]! + s[e]! + sHole[e]! + speed[e]! + fromHole[e]! + nextEdge[e]! + mark[e]! + radius[e]! + rim[e]!
   }
   sink.v = acc
-  for (let k = 0; k < n; k++) {
-    advanceTo[0] = tEnd
-    advanceThroughEvents(w, due[k]!)
-  }
+  advanceTo[0] = tEnd
+  for (let k = 0; k < n; k++) advanceThroughEvents(w, due[k]!)
 }
 
 /**
@@ -310,7 +306,7 @@ function markContact(w: BallWorld, eid: number, other: number): void {
   pushId(w.marked, eid)
 }
 
-/** the time advanceThroughEvents goes to, written by its callers (a double passed as an argument is boxed wherever V8 does not inline the call) */
+/** the time advanceThroughEvents goes to, written by its callers (a double passed as an argument is boxed wherever V8 does not inline the call); nothing it calls writes it */
 const advanceTo = new Float64Array(1)
 
 function advanceThroughEvents(w: BallWorld, eid: number): void {

@@ -28,14 +28,18 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   // the tick's positions)
   let shift = 0
   let movers = 0
+  if (far.length < n0) far = new Int32Array(2 * n0)
+  farCount = 0
   for (let k = 0; k < n0; k++) {
     if ((F.changed[k]! & 2) === 0) continue
     const e = F.id[k]!
     const dx = F.x[k]! - B.x[e]!
     const dy = F.y[k]! - B.y[e]!
-    const d = Math.sqrt(dx * dx + dy * dy)
+    const d2 = dx * dx + dy * dy
+    const d = Math.sqrt(d2)
     if (d > shift) shift = d
     if (d > PROJECTION_SLOP / 2) movers++
+    if (d2 > (PROJECTION_SLOP / 2) * (PROJECTION_SLOP / 2)) far[farCount++] = k
   }
   // a new overlap deeper than the slop needs the two balls to have closed by more than it: one of them moved
   // more than half of it
@@ -46,8 +50,8 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   // packs are marked as it packs them)
   const st = resting || F.dense !== 1 ? markPacked(F, n0) : 0
   if (resting) {
-    for (let i = 0; i < n0; i++) {
-      if (!pushedFar(w, F, i)) continue
+    for (let f = 0; f < farCount; f++) {
+      const i = far[f]!
       if (++C.seenStamp === 0xffffffff) {
         C.seen.fill(0)
         C.seenStamp = 1
@@ -67,7 +71,7 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
       }
     }
   }
-  if (joinMoving(w, F, n0, shift, st)) paired = true
+  if (joinMoving(w, F, shift, st)) paired = true
   return paired
 }
 
@@ -82,29 +86,27 @@ function markPacked(F: FixedContactState, n: number): number {
   return st
 }
 
-/** Whether the projection moved candidate i more than half the slop. */
-function pushedFar(w: BallWorld, F: FixedContactState, i: number): boolean {
-  if ((F.changed[i]! & 2) === 0) return false
-  const e = F.id[i]!
-  const mx = F.x[i]! - w.Ball.x[e]!
-  const my = F.y[i]! - w.Ball.y[e]!
-  return mx * mx + my * my > (PROJECTION_SLOP / 2) * (PROJECTION_SLOP / 2)
-}
+/**
+ * The candidates (of the first n0) the projection moved more than half the slop, listed by joinPushed for
+ * both of its passes (scratch: one tick at a time).
+ */
+let far = new Int32Array(64)
+let farCount = 0
 
 /**
- * Pairs each of the first n0 candidates the projection pushed far with the moving candidates it now overlaps
+ * Pairs each candidate the projection pushed far (far, listed by joinPushed) with the moving candidates it now overlaps
  * by more than the slop: the big ones, and the small ones of the dense grid's cells (or of the sweep order's)
  * within its radius, the largest small radius and the largest push of it. Those the sweep did not pack are
  * packed first (on a sweep tick the packed are marked `st` by id); then the pairs, as packed indices, are
  * listed in order, each once.
  */
-function joinMoving(w: BallWorld, F: FixedContactState, n0: number, shift: number, st: number): boolean {
+function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: number): boolean {
   const half = F.cell / 2
   const dense = F.dense === 1
   let found = 0
   let joining = 0
-  for (let i = 0; i < n0; i++) {
-    if (!pushedFar(w, F, i)) continue
+  for (let f = 0; f < farCount; f++) {
+    const i = far[f]!
     for (let m = 0; m < F.bigCount; m++) {
       const j = F.big[m]!
       if (overlapsMoving(w, F, i, F.id[j]!, j)) found = record(F, found, i, dense ? j : F.id[j]!, dense)

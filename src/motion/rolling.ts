@@ -7,7 +7,7 @@
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
 import { WallEdge } from '../../components/Walls.js'
-import { speedAtDistance, fliesOver } from '../geometry.js'
+import { speedAtDistance, stopDistance, fliesOver } from '../geometry.js'
 import { W_BOUND, W_FROM, W_UX, W_UY, W_X, W_Y, buildHoleGrid, walk, walkHoleGrid } from '../world/holeGrid.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
@@ -226,8 +226,7 @@ export function planRolling(w: BallWorld, eid: number): void {
   const slot = w.Ball.rim[eid]!
   qLocked = RC.hole[slot]!
 
-  // stopDistance, written out (as in timeTo)
-  Q.best = v0 <= 0 ? 0 : decel > 0 ? (v0 * v0) / (2 * decel) : 1 / 0
+  Q.best = stopDistance(v0, decel)
   bestHole = 0
   bestKind = Q.best === Infinity ? PathEvent.None : PathEvent.Stop
   const C = w.collide
