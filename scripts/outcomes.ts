@@ -1,9 +1,13 @@
-// npm run outcomes: where throws end, by Monte Carlo on worker threads (tinypool) and as a map.
+// npm run outcomes: where throws end, by Monte Carlo on worker processes (tinypool) and as a map.
 //   1. A throw distribution on the default panel (walls, bottom open) — power, aim and start point each
-//      with normal noise — run as chunks of 25,000 throws on 1 and on 2 worker threads, and in this
-//      thread: the counts must be identical (each throw has its own generator). Prints and writes the
+//      with normal noise — run as chunks of 25,000 throws on 1 and on 2 worker processes, and in this
+//      process: the counts must be identical (each throw has its own generator). Prints and writes the
 //      probability of each hole with 95 % intervals, the mean payout per throw for the holes' values and
-//      the return to player at a stake of 50, and the throws per second on 1 and 2 threads.
+//      the return to player at a stake of 50, and the throws per second on 1 and 2 workers.
+//      Workers are child processes, not threads: Node 20 can abort the whole process (an assertion in
+//      NodePlatform::ForIsolate) when a worker thread is terminated while V8 still compiles its code in
+//      the background, which a pool's teardown does; it aborted a test run once. The counts do not
+//      depend on which.
 //   2. The outcome map: which hole each (power, angle) of a 240 × 320 grid from the launch point ends
 //      in, drawn as docs/figures/outcome-map.svg.
 //   npm run outcomes -- --throws N        (default 1,000,000)  writes docs/results/outcomes.json
@@ -36,10 +40,10 @@ await build({ entryPoints: ['scripts/outcomesWorker.ts'], outfile: workerFile, b
 const chunks: Array<{ first: number; count: number }> = []
 for (let first = 0; first < THROWS; first += CHUNK) chunks.push({ first, count: Math.min(CHUNK, THROWS - first) })
 
-async function onThreads(threads: number): Promise<{ tally: OutcomeTally; seconds: number }> {
-  const pool = new Tinypool({ filename: workerFile, minThreads: threads, maxThreads: threads, isolateWorkers: false })
+async function onWorkers(workers: number): Promise<{ tally: OutcomeTally; seconds: number }> {
+  const pool = new Tinypool({ filename: workerFile, runtime: 'child_process', minThreads: workers, maxThreads: workers, isolateWorkers: false })
   // warm the workers (module load, JIT) on a small chunk each, not timed
-  await Promise.all(Array.from({ length: threads }, () => pool.run({ scene, dist, count: 2000, seed: 1, first: 0 })))
+  await Promise.all(Array.from({ length: workers }, () => pool.run({ scene, dist, count: 2000, seed: 1, first: 0 })))
   const t0 = performance.now()
   const parts = (await Promise.all(chunks.map((c) => pool.run({ scene, dist, count: c.count, seed: SEED, first: c.first })))) as OutcomeTally[]
   const seconds = (performance.now() - t0) / 1000
@@ -47,20 +51,20 @@ async function onThreads(threads: number): Promise<{ tally: OutcomeTally; second
   return { tally: parts.reduce(mergeTallies), seconds }
 }
 
-const one = await onThreads(1)
-const two = await onThreads(2)
-// the first chunks again in this thread, as one run: the same counts as the chunks merged
+const one = await onWorkers(1)
+const two = await onWorkers(2)
+// the first chunks again in this process, as one run: the same counts as the chunks merged
 const firstChunks = chunks.slice(0, 4)
 const sample = firstChunks.reduce((n, c) => n + c.count, 0)
 const here = sampleThrows(scene, dist, sample, SEED)
 const sameHere = JSON.stringify(here) === JSON.stringify(firstChunks.map((c) => sampleThrows(scene, dist, c.count, SEED, c.first)).reduce(mergeTallies))
 const same = JSON.stringify(one.tally) === JSON.stringify(two.tally)
 const summary = summarizeOutcomes(two.tally, payouts, STAKE)
-const perSecond = { oneThread: THROWS / one.seconds, twoThreads: THROWS / two.seconds }
+const perSecond = { oneWorker: THROWS / one.seconds, twoWorkers: THROWS / two.seconds }
 console.log(`${THROWS.toLocaleString('en-US')} throws, chunks of ${CHUNK.toLocaleString('en-US')}; cores here: ${availableParallelism()}`)
-console.log(`1 thread: ${(one.seconds).toFixed(2)} s, ${Math.round(perSecond.oneThread).toLocaleString('en-US')} throws/s`)
-console.log(`2 threads: ${(two.seconds).toFixed(2)} s, ${Math.round(perSecond.twoThreads).toLocaleString('en-US')} throws/s (${(perSecond.twoThreads / perSecond.oneThread).toFixed(2)}×)`)
-console.log(`counts identical on 1 and 2 threads: ${same}; the first ${sample.toLocaleString('en-US')} in this thread as one run and as chunks: ${sameHere}`)
+console.log(`1 worker: ${(one.seconds).toFixed(2)} s, ${Math.round(perSecond.oneWorker).toLocaleString('en-US')} throws/s`)
+console.log(`2 workers: ${(two.seconds).toFixed(2)} s, ${Math.round(perSecond.twoWorkers).toLocaleString('en-US')} throws/s (${(perSecond.twoWorkers / perSecond.oneWorker).toFixed(2)}×)`)
+console.log(`counts identical on 1 and 2 workers: ${same}; the first ${sample.toLocaleString('en-US')} in this process as one run and as chunks: ${sameHere}`)
 const pct = (x: { p: number; low: number; high: number }): string => `${(100 * x.p).toFixed(3)} % [${(100 * x.low).toFixed(3)}, ${(100 * x.high).toFixed(3)}]`
 summary.holes.forEach((h, i) => console.log(`  hole ${String(i).padStart(2)} (value ${String(payouts[i]).padStart(3)}): ${pct(h)}`))
 console.log(`  no capture: ${pct(summary.missed)}`)
@@ -71,7 +75,7 @@ const spec = { from: DEFAULT_PANEL.launch, power: { min: 0, max: 1, steps: 240 }
 const t0 = performance.now()
 const map = outcomeMap(scene, spec)
 const mapSeconds = (performance.now() - t0) / 1000
-console.log(`outcome map ${spec.power.steps} × ${spec.angle.steps}: ${mapSeconds.toFixed(2)} s (${Math.round((spec.power.steps * spec.angle.steps) / mapSeconds).toLocaleString('en-US')} throws/s, this thread)`)
+console.log(`outcome map ${spec.power.steps} × ${spec.angle.steps}: ${mapSeconds.toFixed(2)} s (${Math.round((spec.power.steps * spec.angle.steps) / mapSeconds).toLocaleString('en-US')} throws/s, this process)`)
 // a hole's name and colour: its value (the row, 100 at the top) and column; hue by column, darker rows score more
 const holeName = (h: number): string => `${payouts[h]} · column ${(h % 5) + 1}`
 const HUES = [210, 30, 120, 280, 0]
@@ -118,7 +122,8 @@ writeResult('outcomes', {
   seed: SEED,
   cores: availableParallelism(),
   throwsPerSecond: perSecond,
-  identicalOn1And2Threads: same,
+  workers: 'child processes (tinypool)',
+  identicalOn1And2Workers: same,
   identicalAsChunksInThisThread: sameHere,
   stake: STAKE,
   payouts,
