@@ -252,7 +252,13 @@ const runners: Record<string, () => number> = {
 }
 const samples: Record<string, number[]> = {}
 for (const k of Object.keys(runners)) samples[k] = []
-for (const k of Object.keys(runners)) runners[k]!() // warm-up
+// warm-up: each runner WARM_RUNS times before the timed rounds. One run was not enough: V8 optimises the
+// code each model alone runs (the table lookup, the ride) only after tens of runs, and the first 20–30
+// runs of the tabulated model cost 2–15× its steady run (measured run by run), so a median over 21
+// interleaved rounds after one warm-up run still held some of them, and the tabulated model's ratio to the
+// design swung 1.2–1.8× from one process to the next (1.25–1.31× over five processes warmed this way)
+const WARM_RUNS = 40
+for (const k of Object.keys(runners)) for (let i = 0; i < WARM_RUNS; i++) runners[k]!()
 const keys = Object.keys(runners)
 for (let rep = 0; rep < REPEATS; rep++) {
   for (let j = 0; j < keys.length; j++) {
