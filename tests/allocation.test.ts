@@ -6,6 +6,8 @@
 // the heap over 300 steps with no collection in between (checked), the least of four windows after a
 // warm-up; what contacts and walls still allocate stays below that.
 import { PerformanceObserver } from 'node:perf_hooks'
+import { setFlagsFromString } from 'node:v8'
+import { runInNewContext } from 'node:vm'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
 
@@ -67,12 +69,22 @@ function skipping(): BallPhysics {
   return sim
 }
 
-/** Bytes the heap grew by per ball-step over `steps` steps with no collection in between; NaN if one ran. */
+// a collection on demand, so that a window starts with an empty young generation (what was allocated
+// before it, by this test, the test runner or the warm-up, cannot fill it during the window)
+setFlagsFromString('--expose-gc')
+const collectGarbage = runInNewContext('gc') as () => void
+
+/**
+ * Bytes the heap grew by per ball-step over `steps` steps, after a collection, with no collection in
+ * between; NaN if one ran (300 steps that allocate 3 bytes a ball-step fill a megabyte of the young
+ * generation; only a scene that allocates many times that starts one).
+ */
 async function bytesPerBallStep(sim: BallPhysics, steps: number): Promise<number> {
   let collections = 0
   const obs = new PerformanceObserver((list) => {
     collections += list.getEntries().length
   })
+  collectGarbage()
   await new Promise((r) => setTimeout(r, 10))
   obs.observe({ entryTypes: ['gc'] })
   const before = process.memoryUsage().heapUsed
@@ -87,16 +99,22 @@ async function bytesPerBallStep(sim: BallPhysics, steps: number): Promise<number
 }
 
 /**
- * The least growth of the heap per ball-step over four windows of 300 steps with no collection in them,
- * after `warm` steps, in a fresh scene from `make` after a throwaway one has run the same steps: V8
- * optimises a function for the paths it has seen taken and drops the code when another is first taken,
- * and until it optimises again the function runs unoptimised, boxing every double (windows of 9 and 30
- * bytes a ball-step, in a scene whose steps allocate 0.1 once every path has been seen).
+ * The least growth of the heap per ball-step over windows of 300 steps (each after a collection; a window
+ * a collection ran in counts as NaN), after `warm` steps, in a fresh scene from `make` after a throwaway
+ * one has run as many steps as may be measured: V8 optimises a function for the paths it has seen taken
+ * and drops the code when another is first taken, and until it optimises again the function runs
+ * unoptimised, boxing every double (windows of 9 and 30 bytes a ball-step, in a scene whose steps allocate
+ * 0.1 once every path has been seen). Four windows; more, up to twelve, while none is under LIMIT: in one
+ * of about 40 processes run beside other test files, the exact method's prediction was still being
+ * optimised again well into the field scene (windows of 15, 14, 9 and 4.5 bytes a ball-step, then 1.6,
+ * then the usual 0.06). `moving` is the scene's moving balls after warm + 1,200 steps, whatever the
+ * windows measured: the tests check that the scene was what it says then (with the windows' count
+ * depending on the collections, under load the skipping stream had lost balls to the holes, 997 of 1,000
+ * moving, and the field had come to rest by its end, in 5 of 30 runs of this file).
  */
-async function leastBytesPerBallStep(make: () => BallPhysics, warm: number): Promise<{ least: number; windows: number[]; sim: BallPhysics }> {
-  const steps = warm + 4 * 300
+async function leastBytesPerBallStep(make: () => BallPhysics, warm: number): Promise<{ least: number; windows: number[]; moving: number }> {
   const throwaway = make()
-  for (let s = 0; s < steps; s++) {
+  for (let s = 0; s < warm + MAX_WINDOWS * 300; s++) {
     throwaway.step(1 / 120)
     throwaway.world.events.count = 0
   }
@@ -105,12 +123,18 @@ async function leastBytesPerBallStep(make: () => BallPhysics, warm: number): Pro
     sim.step(1 / 120)
     sim.world.events.count = 0
   }
-  // four windows with no collection in them (a window a collection ran in measures nothing), at most ten
   const windows: number[] = []
-  while (windows.length < 10 && windows.filter((b) => !Number.isNaN(b)).length < 4) windows.push(await bytesPerBallStep(sim, 300))
-  const clean = windows.filter((b) => !Number.isNaN(b))
-  return { least: clean.length > 0 ? Math.min(...clean) : NaN, windows, sim }
+  for (let k = 0; k < 4; k++) windows.push(await bytesPerBallStep(sim, 300))
+  const moving = sim.world.moving.count
+  const least = (): number => {
+    const clean = windows.filter((b) => !Number.isNaN(b))
+    return clean.length > 0 ? Math.min(...clean) : NaN
+  }
+  while (windows.length < MAX_WINDOWS && !(least() < LIMIT)) windows.push(await bytesPerBallStep(sim, 300))
+  return { least: least(), windows, moving }
 }
+
+const MAX_WINDOWS = 12
 
 // A heap number is 16 bytes: below 3 bytes a ball-step, fewer than one ball in five boxes a double a step.
 // (Most processes measure 0.002–0.9. The skipping stream measured 1.93 in about one process in five: after
@@ -126,15 +150,15 @@ describe('allocation per ball-step', () => {
     }, 30_000)
   }
   it(`contacts off: balls skipping over holes and off walls, events every step, allocate under ${LIMIT} bytes a ball-step`, async () => {
-    const { least, windows, sim } = await leastBytesPerBallStep(skipping, 300)
-    expect(sim.world.moving.count).toBe(N)
+    const { least, windows, moving } = await leastBytesPerBallStep(skipping, 300)
+    expect(moving).toBe(N)
     expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
   }, 30_000)
 
   for (const mode of ['on', 'fixed'] as const) {
     it(`contacts ${mode}: balls rolling through a spread-out field of resting ones allocate under ${LIMIT} bytes a ball-step`, async () => {
-      const { least, windows, sim } = await leastBytesPerBallStep(() => field(mode), 100)
-      expect(sim.world.moving.count).toBeGreaterThan(N / 4)
+      const { least, windows, moving } = await leastBytesPerBallStep(() => field(mode), 100)
+      expect(moving).toBeGreaterThan(N / 4)
       expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
     }, 30_000)
   }
