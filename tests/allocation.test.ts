@@ -3,8 +3,9 @@
 // an object: a module constant, the global Infinity in a branch it has not seen run) is a heap number, 16
 // bytes in Node; per ball, that made the exact method's steps allocate 21–25 bytes a ball-step before its
 // prediction and search were written to keep them unboxed (docs/decisions.md §1). Measured as the growth of
-// the heap over 300 steps with no collection in between (checked), the least of four windows after a
-// warm-up; what contacts and walls still allocate stays below that.
+// the heap over 300 steps started after a collection, with none in between (checked), the least of four
+// windows after a warm-up (more while none is under the limit); what contacts and walls still allocate stays
+// below that.
 import { PerformanceObserver } from 'node:perf_hooks'
 import { setFlagsFromString } from 'node:v8'
 import { runInNewContext } from 'node:vm'
