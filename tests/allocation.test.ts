@@ -77,8 +77,8 @@ const collectGarbage = runInNewContext('gc') as () => void
 
 /**
  * Bytes the heap grew by per ball-step over `steps` steps, after a collection, with no collection in
- * between; NaN if one ran (300 steps that allocate 3 bytes a ball-step fill a megabyte of the young
- * generation; only a scene that allocates many times that starts one).
+ * between; NaN if one ran (after the collection only what the window allocates can start one: about
+ * 0.9 MB for 300 steps at the limit of 3 bytes a ball-step).
  */
 async function bytesPerBallStep(sim: BallPhysics, steps: number): Promise<number> {
   let collections = 0
