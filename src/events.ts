@@ -203,14 +203,6 @@ export function appendCollision(buf: EventBuffer, ball: number, other: number): 
   return i
 }
 
-/** Appends a collision of balls `ball` and `other` at `time`: approach speed and normal impulse. */
-export function pushCollisionEvent(buf: EventBuffer, ball: number, other: number, time: number, speed: number, impulse: number): void {
-  const i = appendCollision(buf, ball, other)
-  buf.time[i] = time
-  buf.speed[i] = speed
-  buf.impulse[i] = impulse
-}
-
 /**
  * Records that entity `id` (a ball or a hole) is removed now: the events buffered so far that name it are
  * dropped at the next drain (its id may be reused by a new entity before then).

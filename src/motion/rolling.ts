@@ -64,8 +64,9 @@ export function startPath(w: BallWorld, eid: number): void {
 }
 
 /**
- * Writes pathStart: position, velocity and start time. Small enough that V8 inlines it where it is called,
- * so its arguments are never boxed (the allocation test holds with it).
+ * Writes pathStart: position, velocity and start time. Small enough that V8 inlines it at its callers (the
+ * allocation test holds with it); where it does not, its five doubles are boxed, which is why launchBall
+ * writes the slots itself.
  */
 export function startAt(x: number, y: number, vx: number, vy: number, t: number): void {
   pathStart[PS_X] = x
