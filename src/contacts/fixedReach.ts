@@ -115,19 +115,15 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
   const B = w.Ball
   const half = F.cell / 2
   const st = F.markStamp
-  const cell = F.gridCell
   let joining = 0
   F.peCount = 0
   for (let k = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
     const x = F.x[g]!
     const y = F.y[g]!
-    const range = F.wide[g]! + smallReach
-    const x0 = Math.max(0, Math.floor((x - range - F.minX) / cell))
-    const x1 = Math.min(F.cols - 1, Math.floor((x + range - F.minX) / cell))
-    const y0 = Math.max(0, Math.floor((y - range - F.minY) / cell))
-    const y1 = Math.min(F.rows - 1, Math.floor((y + range - F.minY) / cell))
-    if (x1 < x0 || y1 < y0) continue
+    // none of the ordering grid's cells within wide + smallReach of it: nothing new to reach
+    boxRange[0] = F.wide[g]! + smallReach
+    if (!gridBox(F, g)) continue
     // every candidate it can reach is within its reach plus the widest reach of any
     queried[QX] = x
     queried[QY] = y
@@ -140,7 +136,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
       const ey = B.y[e]!
       const gx = orderCol(F, ex)
       const gy = orderRow(F, ey)
-      if (gx < x0 || gx > x1 || gy < y0 || gy > y1) continue
+      if (gx < box[0]! || gx > box[1]! || gy < box[2]! || gy > box[3]!) continue
       const packed = F.packMark[e] === st && F.packAt[e]! >= 0
       const j = packed ? F.packAt[e]! : -1
       if (packed && (j === g || (F.grown[j] === 1 && j < g))) continue
