@@ -67,7 +67,8 @@ export interface EventBuffer {
   cutAt: Uint32Array
   /** true while drainEventBufferWith is calling back (a drain then is refused) */
   draining: boolean
-  /** at a drain: for each cut id, the event count when it was last cut (by entity id; 0 otherwise) */
+  /** at a drain: for each cut id, the event count when it was last cut (by entity id; 0 otherwise); while a
+   * drainEventsWith callback runs, 1 for each id it has removed */
   cutMark: Uint32Array
   /** at a drain: the kept events' indices in time order, and the merge sort's scratch */
   order: Uint32Array
@@ -209,6 +210,17 @@ export function appendCollision(buf: EventBuffer, ball: number, other: number): 
  */
 export function cutEvents(buf: EventBuffer, id: number): void {
   if (buf.count === 0) return
+  if (buf.draining) {
+    // removed by a drainEventsWith callback: the drain gives none of its remaining events that name it
+    if (buf.cutMark.length <= id) {
+      let len = buf.cutMark.length
+      while (len <= id) len *= 2
+      const mark = new Uint32Array(len)
+      mark.set(buf.cutMark)
+      buf.cutMark = mark
+    }
+    buf.cutMark[id] = 1
+  }
   if (buf.cutCount === buf.cutIds.length) {
     const ids = new Uint32Array(buf.cutCount * 2)
     ids.set(buf.cutIds)
@@ -341,19 +353,30 @@ const view: EventView = { type: 'skip', code: EventType.Skip, ball: 0, time: 0, 
 
 /**
  * Passes the buffered events, in drainEventBuffer's order, to `visit` one at a time through one reused view,
- * and empties the buffer of them; returns how many. Allocates nothing once the buffer has grown to the
- * scene. `visit` may command or step the world (remove the ball it is told was captured, say): the events
- * that records wait for the next drain. It may not drain again (an Error). If it throws, the drain ends
- * there: the events it had not yet been given are dropped with the others.
+ * and empties the buffer of them; returns how many it passed. Allocates nothing once the buffer has grown to
+ * the scene. `visit` may command or step the world (remove the ball it is told was captured, say): the
+ * events that records wait for the next drain. An entity it removes is named by none of the events the
+ * drain goes on to pass (its id may already belong to a ball added since). It may not drain again (an
+ * Error). If it throws, the drain ends there: the events it had not yet been given are dropped with the
+ * others.
  */
 export function drainEventBufferWith(buf: EventBuffer, visit: (e: EventView) => void): number {
   const n = orderEvents(buf)
   const drained = buf.count
   const order = buf.order
+  let passed = 0
   buf.draining = true
   try {
     for (let k = 0; k < n; k++) {
       const i = order[k]!
+      if (buf.cutCount > 0) {
+        // the callback has removed an entity (cutEvents marked it, orderEvents having cleared the marks)
+        const mark = buf.cutMark
+        const b = buf.ball[i]!
+        const h = buf.hole[i]!
+        const o = buf.other[i]!
+        if ((b < mark.length && mark[b] !== 0) || (h < mark.length && mark[h] !== 0) || (o < mark.length && mark[o] !== 0)) continue
+      }
       const code = buf.type[i]! as EventTypeCode
       view.type = EVENT_TYPE_NAMES[code]!
       view.code = code
@@ -366,13 +389,15 @@ export function drainEventBufferWith(buf: EventBuffer, visit: (e: EventView) => 
       view.via = VIA_NAMES[buf.via[i]!]
       view.other = buf.other[i]!
       view.impulse = buf.impulse[i]!
+      passed++
       visit(view)
     }
   } finally {
     buf.draining = false
+    for (let c = 0; c < buf.cutCount; c++) buf.cutMark[buf.cutIds[c]!] = 0
     dropFirst(buf, drained)
   }
-  return n
+  return passed
 }
 
 /** Drops the first `k` buffered events: the ones recorded after them (and the cuts made since) move down. */

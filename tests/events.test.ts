@@ -88,6 +88,41 @@ describe('drainEventsWith', () => {
     expect(d.drainEvents()).toEqual(c.drainEvents())
   })
 
+  it('gives no event, after the callback removes an entity, that names it: not even when a new ball has its id', () => {
+    for (const contacts of ['on', 'fixed'] as const) {
+      // a comes to rest at t = 0.1 s; b strikes it later in the same step
+      const sim = createBallPhysics({ BALL_COLLISIONS: contacts, ROLLING_DECEL: 300 })
+      const a = sim.addBall({ x: 100, y: 100, vx: 30, vy: 0 })
+      const b = sim.addBall({ x: 0, y: 100, vx: 400, vy: 0 })
+      const twin = createBallPhysics({ BALL_COLLISIONS: contacts, ROLLING_DECEL: 300 })
+      twin.addBall({ x: 100, y: 100, vx: 30, vy: 0 })
+      twin.addBall({ x: 0, y: 100, vx: 400, vy: 0 })
+      sim.step(0.5)
+      twin.step(0.5)
+      const all = twin.drainEvents()
+      expect(all.map((e) => e.type)).toEqual(['rest', 'collision']) // without a removal, the collision is given
+      const seen: BallEvent[] = []
+      let added = 0
+      const passed = sim.drainEventsWith((e) => {
+        seen.push(asEvent(e))
+        if (e.type === 'rest' && e.ball === a) {
+          sim.removeBall(a)
+          added = sim.addBall({ x: 300, y: 300, vx: 0, vy: 0 }) // bitECS hands the id straight back
+        }
+      })
+      expect(added).toBe(a)
+      expect(seen).toEqual([all[0]])
+      expect(passed).toBe(1)
+      // the marks are cleared: the next drains give the new ball's events and the struck ball's
+      sim.setBallVelocity(added, 50, 0)
+      sim.step(0.5)
+      const next: BallEvent[] = []
+      sim.drainEventsWith((e) => next.push(asEvent(e)))
+      expect(next.some((e) => e.ball === added && e.type === 'rest')).toBe(true)
+      expect(next.some((e) => e.ball === b)).toBe(true)
+    }
+  })
+
   it('refuses a drain from its callback, and a callback that is not a function; a callback that throws ends the drain', () => {
     const sim = burst(40)
     sim.step(0.5)

@@ -46,8 +46,9 @@ export interface BallPhysics {
   drainEvents(): BallEvent[]
   /**
    * Events since the last drain, in the same order, passed to `visit` one at a time through one reused view
-   * (copy what you keep); returns how many. Allocates nothing: for games with many balls. `visit` may
-   * command or step the world; what that records waits for the next drain.
+   * (copy what you keep); returns how many it passed. Allocates nothing: for games with many balls. `visit`
+   * may command or step the world; what that records waits for the next drain. A ball or hole it removes is
+   * named by none of the events the drain goes on to pass (its id may already be a new ball's).
    */
   drainEventsWith(visit: (e: EventView) => void): number
   ballState(ball: number): BallState

@@ -17,9 +17,10 @@ export function drainEvents(world: BallWorld): BallEvent[] {
 /**
  * The events since the last drain, in the same order as drainEvents, passed to `visit` one at a time
  * through one reused EventView (copy what you keep: its fields change with the next event); returns how
- * many. Allocates nothing once the buffer has grown to the scene: for games with many balls. `visit` may
- * command or step the world; the events that records wait for the next drain. If `visit` throws, the drain
- * ends there and the events not yet given to it are dropped.
+ * many it passed. Allocates nothing once the buffer has grown to the scene: for games with many balls.
+ * `visit` may command or step the world; the events that records wait for the next drain. A ball or hole
+ * it removes is named by none of the events the drain goes on to pass (its id may already be a new
+ * ball's). If `visit` throws, the drain ends there and the events not yet given to it are dropped.
  */
 export function drainEventsWith(world: BallWorld, visit: (e: EventView) => void): number {
   const buf = checkWorld('drainEventsWith', world).events
