@@ -6,7 +6,7 @@
 // Infinity is written 1 / 0, a number literal: the global `Infinity` in a branch V8 has not seen run is a
 // generic load, and the double it merges with is boxed at every call (docs/decisions.md §1).
 import type { CaptureWindowShape } from './config/design.js'
-import { exp, expm1, log, log1p } from './math.js'
+import { ARG, RESULT, expSlot, expm1Slot, log, log1p, mathSlot } from './math.js'
 
 /**
  * Stage 5 skip speed: v_skip(δ) = R·√(2g/r)·√(1 − δ²/R²). A ball faster than this at the lip flies over
@@ -124,12 +124,18 @@ export function speedAtDistance(d: number, v0: number, decel: number): number {
 
 /** Arc length rolled on the rim after τ seconds. */
 export function rollArc(tau: number, vt0: number, friction: number): number {
-  return friction > 0 ? (vt0 * -expm1(-friction * tau)) / friction : vt0 * tau
+  if (!(friction > 0)) return vt0 * tau
+  // expm1 through its slot: evaluated at every step's end for a ball on a rim, so no double crosses a call
+  mathSlot[ARG] = -friction * tau
+  expm1Slot()
+  return (vt0 * -mathSlot[RESULT]!) / friction
 }
 
 /** Rim-roll speed after τ seconds. */
 export function rollSpeed(tau: number, vt0: number, friction: number): number {
-  return vt0 * exp(-friction * tau)
+  mathSlot[ARG] = -friction * tau
+  expSlot()
+  return vt0 * mathSlot[RESULT]!
 }
 
 /** Time for the rim-roll speed to fall to the drop speed (0 if it starts below; Infinity if μ = 0). */

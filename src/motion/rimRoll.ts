@@ -10,7 +10,7 @@ import { emitHoleEvent } from './ballFate.js'
 import { startAt, planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { setNextT } from '../world/pathHot.js'
-import { atan2, cos, hypot, sin } from '../math.js'
+import { ARG, COS, SIN, atan2, hypot, mathSlot, sinCosSlot } from '../math.js'
 
 /** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
 export function planRimRoll(w: BallWorld, eid: number): void {
@@ -88,8 +88,10 @@ export function rimRollAt(w: BallWorld, eid: number, t: number): void {
   const v = rollSpeed(tau, vt0, mu)
   const dir = RC.direction[slot]!
   const phi = RC.angle0[slot]! + (dir * arc) / R
-  const c = cos(phi)
-  const s = sin(phi)
+  mathSlot[ARG] = phi
+  sinCosSlot()
+  const c = mathSlot[COS]!
+  const s = mathSlot[SIN]!
   const o = rimRollState
   o.x = w.Hole.x[hole]! + R * c
   o.y = w.Hole.y[hole]! + R * s
@@ -119,8 +121,10 @@ function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
   const to = RC.rideTo[slot]!
   const phi = RC.angle0[slot]! + dir * turn * f
   const rho = from + (to - from) * f
-  const c = cos(phi)
-  const s = sin(phi)
+  mathSlot[ARG] = phi
+  sinCosSlot()
+  const c = mathSlot[COS]!
+  const s = mathSlot[SIN]!
   // d(phi)/dt and d(rho)/dt
   const wPhi = T > 0 ? (dir * turn) / T : 0
   const wRho = T > 0 ? (to - from) / T : 0
