@@ -105,22 +105,6 @@ export function sinCosSlot(): void {
   WORD[0] = x
   const hx = WORDS[HI]! | 0
   const ix = hx & 0x7fffffff
-  if (ix <= 0x3fe921fb) {
-    // |x| ≲ π/4: sin x = x below 2^-26, cos x = 1 below 2^-27
-    const z = x * x
-    const w = z * z
-    const r = 0.00833333333332248946124 + z * (-1.98412698298579493134e-4 + z * 2.75573137070700676789e-6) + z * w * (-2.50507602534068634195e-8 + z * 1.58969099521155010221e-10)
-    mathSlot[SIN] = ix < 0x3e500000 ? x : x + z * x * (-1.66666666666666324348e-1 + z * r)
-    if (ix < 0x3e400000) mathSlot[COS] = 1
-    else {
-      let rc = z * (0.0416666666666666 + z * (-0.001388888888887411 + z * 0.00002480158728947673))
-      rc += w * w * (-2.7557314351390663e-7 + z * (2.087572321298175e-9 + z * -1.1359647557788195e-11))
-      const hz = 0.5 * z
-      const u = 1.0 - hz
-      mathSlot[COS] = u + ((1.0 - u - hz) + (z * rc - x * 0))
-    }
-    return
-  }
   if (ix >= 0x7ff00000) {
     mathSlot[SIN] = NaN
     mathSlot[COS] = NaN
@@ -140,7 +124,12 @@ export function sinCosSlot(): void {
   const PIO2_1T = 6.07710050650619224932e-11
   const medium =
     ix > 0x401c463b || ((ix & 0xfffff) === 0x921fb && ix <= 0x400f6a7a) || ix === 0x4012d97c || ix === 0x401921fb
-  if (medium) {
+  if (ix <= 0x3fe921fb) {
+    // |x| ≲ π/4: the kernels on x itself
+    n = 0
+    y0 = x
+    y1 = 0
+  } else if (medium) {
     // round(x·2/π) and three-part subtraction as far as the cancellation needs
     n = Math.round(x * 6.36619772367581382433e-1)
     let r = x - n * PIO2_1
@@ -194,6 +183,12 @@ export function sinCosSlot(): void {
   const hz = 0.5 * z
   const u = 1.0 - hz
   const kc = u + ((1.0 - u - hz) + (z * rc - y0 * y1))
+  if (n === 0 && ix < 0x3e500000) {
+    // sin x = x below 2^-26, cos x = 1 below 2^-27
+    mathSlot[SIN] = x
+    mathSlot[COS] = ix < 0x3e400000 ? 1 : kc
+    return
+  }
   switch (n & 3) {
     case 0:
       mathSlot[SIN] = ks
