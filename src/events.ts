@@ -210,17 +210,8 @@ export function appendCollision(buf: EventBuffer, ball: number, other: number): 
  */
 export function cutEvents(buf: EventBuffer, id: number): void {
   if (buf.count === 0) return
-  if (buf.draining) {
-    // removed by a drainEventsWith callback: the drain gives none of its remaining events that name it
-    if (buf.cutMark.length <= id) {
-      let len = buf.cutMark.length
-      while (len <= id) len *= 2
-      const mark = new Uint32Array(len)
-      mark.set(buf.cutMark)
-      buf.cutMark = mark
-    }
-    buf.cutMark[id] = 1
-  }
+  // removed by a drainEventsWith callback: the drain gives none of its remaining events that name it
+  if (buf.draining) cutMarkFor(buf, id)[id] = 1
   if (buf.cutCount === buf.cutIds.length) {
     const ids = new Uint32Array(buf.cutCount * 2)
     ids.set(buf.cutIds)
@@ -233,6 +224,18 @@ export function cutEvents(buf: EventBuffer, id: number): void {
   buf.cutAt[buf.cutCount++] = buf.count
 }
 
+/** buf.cutMark, grown (its marks kept) to index `id` */
+function cutMarkFor(buf: EventBuffer, id: number): Uint32Array {
+  if (buf.cutMark.length <= id) {
+    let len = buf.cutMark.length
+    while (len <= id) len *= 2
+    const mark = new Uint32Array(len)
+    mark.set(buf.cutMark)
+    buf.cutMark = mark
+  }
+  return buf.cutMark
+}
+
 /**
  * Puts the indices of the buffered events to report into buf.order, sorted by time (ties: by ball id, then
  * by the order they were recorded, so the order is deterministic); returns how many. Events that name an
@@ -243,12 +246,8 @@ function orderEvents(buf: EventBuffer): number {
   if (cuts > 0) {
     let top = 0
     for (let k = 0; k < cuts; k++) if (buf.cutIds[k]! > top) top = buf.cutIds[k]!
-    if (buf.cutMark.length <= top) {
-      let len = buf.cutMark.length
-      while (len <= top) len *= 2
-      buf.cutMark = new Uint32Array(len)
-    }
-    for (let k = 0; k < cuts; k++) buf.cutMark[buf.cutIds[k]!] = buf.cutAt[k]! // later cuts overwrite
+    const grown = cutMarkFor(buf, top)
+    for (let k = 0; k < cuts; k++) grown[buf.cutIds[k]!] = buf.cutAt[k]! // later cuts overwrite
   }
   const mark = buf.cutMark
   const order = buf.order
