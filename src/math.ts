@@ -81,7 +81,7 @@ export function sq(x: number): number {
 // These are the same algorithms, step for step and constant for constant (the @stdlib code above, itself
 // fdlibm's), written flat with their argument and results in mathSlot: nothing crosses a call as a double.
 // Arguments the simulation never sees (|x| ≥ 2^20·π/2 for sin and cos, results out of the normal range for
-// exp) go to the @stdlib functions themselves. tests/math.test.ts checks every bit against them.
+// exp) go to the @stdlib functions themselves. tests/mathSlots.test.ts checks every bit against them.
 
 /** The argument (ARG) and results (SIN, COS; RESULT) of sinCosSlot, expSlot and expm1Slot. */
 export const mathSlot = new Float64Array(3)
@@ -122,15 +122,13 @@ export function sinCosSlot(): void {
   let y1: number
   const PIO2_1 = 1.57079632673412561417
   const PIO2_1T = 6.07710050650619224932e-11
-  const medium =
-    ix > 0x401c463b || ((ix & 0xfffff) === 0x921fb && ix <= 0x400f6a7a) || ix === 0x4012d97c || ix === 0x401921fb
   if (ix <= 0x3fe921fb) {
     // |x| ≲ π/4: the kernels on x itself
     n = 0
     y0 = x
     y1 = 0
-  } else if (medium) {
-    // round(x·2/π) and three-part subtraction as far as the cancellation needs
+  } else if (ix > 0x401c463b || ((ix & 0xfffff) === 0x921fb && ix <= 0x400f6a7a) || ix === 0x4012d97c || ix === 0x401921fb) {
+    // past 9π/4, or near a multiple of π/2 below it: round(x·2/π) and three-part subtraction as far as the cancellation needs
     n = Math.round(x * 6.36619772367581382433e-1)
     let r = x - n * PIO2_1
     let w = n * PIO2_1T
@@ -158,8 +156,8 @@ export function sinCosSlot(): void {
   } else {
     // |x| within 9π/4, away from the multiples of π/2 the medium form handles: k·π/2 subtracted directly
     const k = ix <= 0x4002d97c ? 1 : ix <= 0x400f6a7a ? 2 : ix <= 0x4015fdbc ? 3 : 4
-    const tail = k === 1 ? PIO2_1T : k * PIO2_1T
-    const head = k === 1 ? PIO2_1 : k * PIO2_1
+    const tail = k * PIO2_1T
+    const head = k * PIO2_1
     if (hx > 0) {
       const z = x - head
       y0 = z - tail
