@@ -188,6 +188,59 @@ describe('removal', () => {
     })
   }
 
+  for (const mode of ['off', 'on', 'fixed'] as const) {
+    it(`contacts ${mode}: a game's system removes a ball stopped at an event mid-step; the step ends and the rest goes on as without it`, () => {
+      // the ball is in the pass's list of balls stopped at an event when the system removes it: it must leave
+      // that list (with contacts on the next pass took its zeroed path's events for ever; off, every later
+      // pass of the step continued it)
+      const run = (withA: boolean, how: Removal) => {
+        const w = createBallWorld({ BALL_COLLISIONS: mode })
+        addHole(w, { x: 0, y: 0 })
+        const a = withA ? addBall(w, { x: 5, y: 100, vx: 0, vy: -400 }) : 0
+        const b = addBall(w, { x: 300, y: 300, vx: -150, vy: 40 })
+        const schedule = createSchedule(w.config)
+        let removedAt = -1
+        let deepest = 0
+        // first in every pass: the list handed to this pass holds live balls only
+        schedule.unshift({
+          name: 'guard',
+          run: (ww) => {
+            for (let i = 0; i < ww.marked.count; i++) if (ww.Ball.live[ww.marked.ids[i]!] !== 1) throw new Error(`pass ${ww.pass}: marked holds removed ball ${ww.marked.ids[i]}`)
+            deepest = Math.max(deepest, ww.pass)
+          },
+        })
+        schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
+          name: 'zap',
+          run: (ww) => {
+            for (let i = 0; i < ww.marked.count; i++) {
+              if (ww.marked.ids[i] !== a || removedAt >= 0) continue
+              removedAt = ww.time
+              remove(ww, a, how)
+              return
+            }
+          },
+        })
+        const ev: BallEvent[] = []
+        for (let f = 0; f < 60; f++) {
+          runSchedule(w, schedule, 1 / 60)
+          ev.push(...drainEvents(w))
+        }
+        return { w, a, b, ev, removedAt, deepest }
+      }
+      const alone = run(false, 'removeBall')
+      for (const how of ['removeBall', 'removeEntity'] as const) {
+        const r = run(true, how)
+        expect(r.removedAt, how).toBeGreaterThanOrEqual(0)
+        expect(r.deepest, how).toBeLessThan(8)
+        expect(listBalls(r.w)).toEqual([r.b])
+        expect(r.ev.filter((e) => names(e).includes(r.a))).toEqual([])
+        // the other ball: the same bits as in a world that never had the removed one
+        expect(ballState(r.w, r.b)).toEqual(ballState(alone.w, alone.b))
+        expect(r.ev.map((e) => [e.type, e.time])).toEqual(alone.ev.map((e) => [e.type, e.time]))
+      }
+    })
+  }
+
   it("METHOD 'naive': a new ball reusing the id inherits nothing from the tick-sampled per-ball state", () => {
     // the removed ball bounced off the hole (the naive port remembers that hole to skip its near miss);
     // a new ball with its id passing the hole with its footprint over the lip gets its near miss

@@ -5,7 +5,8 @@
 //     a command puts it on the panel (addBall and throwBall do both at once);
 //   - onRemove(Ball): fired by removeEntity (ours or the game's) and by removeComponent(Ball). The
 //     simulation forgets the ball: it leaves the moving set, gives back its RimContact slot, leaves the
-//     resting grid, its pending contacts go stale, its rows are zeroed and the events buffered for it are
+//     resting grid and the step's lists of balls stopped at an event (a game's system may remove a ball
+//     mid-step), its pending contacts go stale, its rows are zeroed and the events buffered for it are
 //     dropped at the next drain (its id may be handed to a new entity before then).
 import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
 import { BallMode, clearBallRow } from '../../components/Ball.js'
@@ -14,7 +15,7 @@ import { clearSlot } from '../../components/store.js'
 import { cutEvents } from '../events.js'
 import { NO_CONTACT, forgetPredictions } from './contactState.js'
 import { ensureCapacity, type BallWorld } from './createWorld.js'
-import { removeMoving } from './idLists.js'
+import { dropId, removeMoving } from './idLists.js'
 import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
@@ -51,8 +52,14 @@ export function adoptBall(world: BallWorld, eid: number): void {
 export function forgetBall(world: BallWorld, eid: number): void {
   if (!isBall(world, eid)) return
   world.ballCount--
-  if (world.Ball.mode[eid] === BallMode.Held) dropHeld(world, eid)
+  if (world.Ball.mode[eid] === BallMode.Held) dropId(world.held, eid)
   removeMoving(world, eid)
+  // removed mid-step by a game's system: the next pass must not continue it (its zeroed path is due at
+  // once, so with contacts on the pass would take its events for ever)
+  if (world.stepping) {
+    dropId(world.marked, eid)
+    dropId(world.todo, eid)
+  }
   releaseRim(world, eid)
   restingRemove(world, eid)
   forgetPredictions(world, eid)
@@ -73,14 +80,6 @@ export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
   if (world.ballCount === 0) return
   const live = world.Ball.live
   for (let eid = 1, n = Math.min(live.length, world.entityIndex.maxId + 1); eid < n; eid++) if (live[eid] === 1) fn(eid)
-}
-
-/** Takes a ball out of the queue of held balls (keeping the others in order). */
-function dropHeld(world: BallWorld, eid: number): void {
-  const q = world.held
-  let n = 0
-  for (let i = 0; i < q.count; i++) if (q.ids[i] !== eid) q.ids[n++] = q.ids[i]!
-  q.count = n
 }
 
 /**

@@ -21,6 +21,14 @@ export function pushId(list: IdList, eid: number): void {
   list.ids[list.count++] = eid
 }
 
+/** Takes every occurrence of an id out of a list, keeping the others in order. */
+export function dropId(list: IdList, eid: number): void {
+  const ids = list.ids
+  let n = 0
+  for (let i = 0; i < list.count; i++) if (ids[i] !== eid) ids[n++] = ids[i]!
+  list.count = n
+}
+
 /**
  * The balls that move (rolling or on a rim), as a sparse set: O(1) insert and remove with no allocation,
  * so a ball that stops or falls in costs nothing afterwards. (A bitECS tag did the same job at about a
