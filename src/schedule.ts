@@ -64,6 +64,12 @@ export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEn
 export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   checkWorld('runSchedule', world)
   if (!Array.isArray(schedule)) throw new TypeError(`runSchedule: schedule must be an array of { name, run } entries, got ${describe(schedule)}`)
+  for (let i = 0; i < schedule.length; i++) {
+    const entry: unknown = schedule[i]
+    if (typeof entry !== 'object' || entry === null || typeof (entry as ScheduleEntry).run !== 'function') {
+      throw new TypeError(`runSchedule: schedule[${i}] must be a { name, run } entry whose run is a function (world) => void, got ${describe(entry)}`)
+    }
+  }
   if (typeof dt !== 'number') throw new TypeError(`dt must be a number of seconds > 0, got ${describe(dt)}`)
   if (!Number.isFinite(dt) || dt <= 0) throw new RangeError(`dt must be a finite number of seconds > 0, got ${dt}`)
   if (world.stepping) {

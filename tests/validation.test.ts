@@ -65,6 +65,23 @@ describe('steps', () => {
     expectRefused(sim, () => runSchedule({} as never, sim.schedule, 1 / 60), TypeError, /runSchedule: world must be/)
   })
 
+  it('runSchedule and sim.step refuse a schedule entry that is not { name, run } with run a function, naming the entry; the world is unchanged', () => {
+    const sim = scene()
+    const good = sim.schedule[0]!
+    const cases: [unknown[], RegExp, string][] = [
+      [[null], /schedule\[0\]/, 'got null'],
+      [[good, { name: 'mine', run: 5 }], /schedule\[1\]/, 'got an object'],
+      [[good, good, 'integration'], /schedule\[2\]/, 'got the string "integration"'],
+      [[{ name: 'no run' }], /schedule\[0\]/, 'run is a function'],
+    ]
+    for (const [bad, which, got] of cases) {
+      expectRefused(sim, () => runSchedule(sim.world, bad as never, 1 / 60), TypeError, which, got)
+      const kept = sim.schedule.splice(0, sim.schedule.length, ...(bad as never[]))
+      expectRefused(sim, () => sim.step(1 / 60), TypeError, which)
+      sim.schedule.splice(0, sim.schedule.length, ...kept)
+    }
+  })
+
   it('a step run from inside a system throws; the outer step completes exactly as without the attempt', () => {
     const tried = scene()
     const twin = scene()
