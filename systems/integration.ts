@@ -143,6 +143,9 @@ function orderedIntegration(w: BallWorld): void {
   }
   if (C.dirtyCount > 0) predictChanged(w)
   const held = w.marked
+  // the end of what is known of the balls whose crossings this pass holds: the span of each one's last
+  // prediction (its path kept through the crossing); its events after the crossing are not in the heap
+  heldSpan[0] = 1 / 0
   while (C.heapCount > 0) {
     const t = heapTopT(C)
     if (t > tEnd) break
@@ -150,8 +153,10 @@ function orderedIntegration(w: BallWorld): void {
     const kind = heapTopKind(C)
     const a = heapTopA(C)
     const b = heapTopB(C)
-    // an event of a ball whose lip crossing this pass has yet to decide waits for the decision
-    if (held.count > 0 && live && (P.mark[a] !== PathEvent.None || (b !== 0 && P.mark[b] !== PathEvent.None))) return
+    // an event of a ball whose lip crossing this pass has yet to decide waits for the decision, and so does
+    // every event from the end of a held ball's span on (its path may change there, a wall say, and meet a
+    // ball sooner than the events after it: taking those first let the two pass through each other)
+    if (held.count > 0 && live && (t >= heldSpan[0]! || P.mark[a] !== PathEvent.None || (b !== 0 && P.mark[b] !== PathEvent.None))) return
     heapPop(C)
     if (!live) continue
     if (t > C.now) C.now = t
@@ -161,7 +166,14 @@ function orderedIntegration(w: BallWorld): void {
       if (P.mark[a] !== PathEvent.None) {
         // a lip crossing the default stages will skip over or capture clean: the decision keeps the path or
         // takes the ball out, and can change nothing another ball meets; the pass takes later events too
-        if (lipBatching && keptOrTaken(w, a)) continue
+        const fate = lipBatching ? keptOrTaken(w, a) : Fate.Decided
+        if (fate === Fate.Taken) continue
+        if (fate === Fate.Kept) {
+          // its contacts are in the heap up to its span's end only if that prediction was of this path
+          const known = C.predGen[a] === C.gen[a] ? C.spanEnd[a]! : t
+          if (known < heldSpan[0]!) heldSpan[0] = known
+          continue
+        }
         return
       }
       // bookkeeping only (a lip exit, a near miss)
@@ -188,6 +200,9 @@ function orderedIntegration(w: BallWorld): void {
   C.now = tEnd
 }
 
+/** orderedIntegration's bound on the events a pass takes past held crossings, s (a slot: not a boxed double) */
+const heldSpan = new Float64Array(1)
+
 /**
  * Set by the schedule runner for a window whose systems are the default schedule's and whose rim model is
  * the design's: only then does a lip crossing's decision follow from keptOrTaken's rules.
@@ -198,18 +213,30 @@ export function setLipBatching(on: boolean): void {
   lipBatching = on
 }
 
+/** What the default stages will do with a marked lip crossing, as far as the pass needs to know. */
+const Fate = {
+  /** by the stages in their pass (the pass ends at the crossing) */
+  Decided: 0,
+  /** skipped over: the path is kept through the crossing */
+  Kept: 1,
+  /** captured clean at the crossing: the ball meets nothing after it */
+  Taken: 2,
+} as const
+
 /**
- * Whether ball a's marked lip crossing is one the default stages skip over (systems/skipOver.ts) or capture
- * clean (systems/capture.ts), from the same quantities those systems decide with; not a hero ball's.
+ * Whether ball a's marked lip crossing is one the default stages skip over (systems/skipOver.ts: Kept) or
+ * capture clean (systems/capture.ts: Taken), from the same quantities those systems decide with; not a hero
+ * ball's (Decided).
  */
-function keptOrTaken(w: BallWorld, a: number): boolean {
-  if (w.Path.mark[a] !== PathEvent.Lip || w.Ball.hero[a] === 1) return false
+function keptOrTaken(w: BallWorld, a: number): number {
+  if (w.Path.mark[a] !== PathEvent.Lip || w.Ball.hero[a] === 1) return Fate.Decided
   const hole = w.Path.markHole[a]!
   const delta = Math.abs(pathOffset(w, a, hole))
   const v = w.Path.speed[a]!
   const R = w.Hole.radius[hole]!
   const cfg = w.config
-  return fliesOver(v, delta, R, w.Ball.radius[a]!, cfg.GRAVITY) || capturesClean(delta, v, R, cfg.V_MAX, cfg.CAPTURE_WINDOW)
+  if (fliesOver(v, delta, R, w.Ball.radius[a]!, cfg.GRAVITY)) return Fate.Kept
+  return capturesClean(delta, v, R, cfg.V_MAX, cfg.CAPTURE_WINDOW) ? Fate.Taken : Fate.Decided
 }
 
 /** the balls with an event in the step, listed by the pass over the moving balls (in its order) */
