@@ -130,9 +130,20 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   F.pairHit[p] = hit | IMPULSED
-  // a ball the impulse drives into a closed wall it can reach within the tick: the pair and that wall
-  // solved together (below), so a squeeze or a wedge ends in one visit, not a little of the push each sweep
-  const q = ima > 0 && wallAhead(F, a, -1) ? a : imb > 0 && wallAhead(F, b, 1) ? b : -1
+  // a ball the impulse drives into a closed wall it can reach within the tick, at the speed it has or the
+  // one the impulse would give it: the pair and that wall solved together (below), so a squeeze or a wedge
+  // ends in one visit, not a little of the push each sweep (a ball lying by a wall, struck, was bounced
+  // between the wall and its striker, the pair closing inelastically from the second visit on, so a heavy
+  // striker stopped dead)
+  let q = -1
+  if (ima > 0) {
+    pushed[0] = speedAfter(F, a, -j * ima, nx, ny)
+    if (wallAhead(F, a, -1)) q = a
+  }
+  if (q < 0 && imb > 0) {
+    pushed[0] = speedAfter(F, b, j * imb, nx, ny)
+    if (wallAhead(F, b, 1)) q = b
+  }
   let walled = false
   if (q >= 0) {
     S[S_IMA] = ima
@@ -168,6 +179,16 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   return true
 }
 
+/** wallAhead's other speed for the ball it looks at (px/s): the one an impulse would give it (a slot: not a boxed double) */
+const pushed = new Float64Array(1)
+
+/** Candidate i's speed after a change of its velocity by dv along (nx, ny). */
+function speedAfter(F: FixedContactState, i: number, dv: number, nx: number, ny: number): number {
+  const vx = F.vx[i]! + dv * nx
+  const vy = F.vy[i]! + dv * ny
+  return Math.sqrt(vx * vx + vy * vy)
+}
+
 /** the closed wall found by wallAhead: its inward normal */
 const face = { x: 0, y: 0 }
 /** the impulses of the last pairWithWall: the pair's, the wall's */
@@ -175,8 +196,8 @@ const block = { j: 0, k: 0 }
 
 /**
  * True when a push on candidate i along sign·nrm drives it into a closed wall it can reach within the tick
- * (its gap to the wall's face at most the distance it can cover in a tick); that wall's inward normal is
- * left in `face` (of two, the one the push meets more squarely).
+ * (its gap to the wall's face at most the distance it can cover in a tick, at its speed or at pushed[0]);
+ * that wall's inward normal is left in `face` (of two, the one the push meets more squarely).
  */
 function wallAhead(F: FixedContactState, i: number, sign: number): boolean {
   const dx = sign * nrm.x
@@ -184,7 +205,9 @@ function wallAhead(F: FixedContactState, i: number, sign: number): boolean {
   const x = F.x[i]!
   const y = F.y[i]!
   const r = F.r[i]!
-  const travel = F.reach[i]! - r
+  const reach = F.reach[i]! - r
+  const after = pushed[0]! * F.tick
+  const travel = after > reach ? after : reach
   // on each axis, −|d| when the push drives the ball into a face within `travel`, else 0
   const lowX = x - r - walls.minX
   const highX = walls.maxX - x - r
