@@ -130,18 +130,19 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   F.pairHit[p] = hit | IMPULSED
-  // a ball the impulse drives into a closed wall it can reach within the tick, at the speed it has or the
-  // one the impulse would give it: the pair and that wall solved together (below), so a squeeze or a wedge
-  // ends in one visit, not a little of the push each sweep (a ball lying by a wall, struck, was bounced
-  // between the wall and its striker, the pair closing inelastically from the second visit on, so a heavy
-  // striker stopped dead)
+  // a ball the impulse drives into a closed wall it can reach within the tick (at its speed; a ball standing
+  // still, at the speed the impulse gives it): the pair and that wall solved together (below), so a squeeze
+  // or a wedge ends in one visit, not a little of the push each sweep (a ball lying by a wall, struck, was
+  // bounced between the wall and its striker, the pair closing inelastically from the second visit on, so
+  // a heavy striker stopped dead; a moving ball keeps its own reach: pinned at the wall, it would lose the
+  // part of its motion the wall sends back, and an elastic gas its energy)
   let q = -1
   if (ima > 0) {
-    pushed[0] = speedAfter(F, a, -j * ima, nx, ny)
+    pushed[0] = F.vx[a] === 0 && F.vy[a] === 0 ? j * ima : 0
     if (wallAhead(F, a, -1)) q = a
   }
   if (q < 0 && imb > 0) {
-    pushed[0] = speedAfter(F, b, j * imb, nx, ny)
+    pushed[0] = F.vx[b] === 0 && F.vy[b] === 0 ? j * imb : 0
     if (wallAhead(F, b, 1)) q = b
   }
   let walled = false
@@ -179,15 +180,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   return true
 }
 
-/** wallAhead's other speed for the ball it looks at (px/s): the one an impulse would give it (a slot: not a boxed double) */
+/** wallAhead's other speed for the ball it looks at (px/s): what an impulse gives it if it stands still, else 0 (a slot: not a boxed double) */
 const pushed = new Float64Array(1)
-
-/** Candidate i's speed after a change of its velocity by dv along (nx, ny). */
-function speedAfter(F: FixedContactState, i: number, dv: number, nx: number, ny: number): number {
-  const vx = F.vx[i]! + dv * nx
-  const vy = F.vy[i]! + dv * ny
-  return Math.sqrt(vx * vx + vy * vy)
-}
 
 /** the closed wall found by wallAhead: its inward normal */
 const face = { x: 0, y: 0 }

@@ -1,8 +1,8 @@
-// The fixed-tick method at a closed wall: a ball lying by the wall, struck by a heavier one. The pair and the
-// wall are solved together when the impulse would carry the struck ball to the wall within the tick (at the
-// speed the impulse gives it, not only the speed it had: at rest it had none). Before, it was bounced between
-// the wall and its striker sweep by sweep, the pair closing inelastically from its second visit, and the
-// striker stopped dead, short of the ball it struck.
+// The fixed-tick method at a closed wall: a ball lying still by the wall, struck by a heavier one. The pair
+// and the wall are solved together when the impulse would carry the struck ball to the wall within the tick
+// (a ball standing still has no reach of its own: the speed the impulse gives it counts). Before, it was
+// bounced between the wall and its striker sweep by sweep, the pair closing inelastically from its second
+// visit, and the striker stopped dead, short of the ball it struck.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
 
