@@ -76,6 +76,13 @@ export const MIN_PROJECTION_SHARE = 0.1
 export const MAX_WIDEN_ROUNDS = 4
 
 /**
+ * Fixed-tick contacts: the impulses a pair takes with its restitution in one tick; met again after that
+ * within the tick, it closes inelastically (so a light ball between heavy ones is not bounced to and fro
+ * without end). At 1 (once a tick) dense elastic scenes lost energy the exact method keeps: docs/decisions.md §12.
+ */
+export const RESTITUTION_VISITS = 4
+
+/**
  * Exact contacts: contacts one ball may take in one step before its later contacts in that step settle
  * (perfectly inelastic, the touching cluster leaves together). A light ball squeezed between heavy balls,
  * or between a heavy ball and a wall, would take about π·√(M/m) contacts (1e9 for a mass ratio of 1e18)

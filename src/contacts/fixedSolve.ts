@@ -4,7 +4,8 @@
 //     A pair that approaches and would touch within the tick takes the two-body impulse
 //     j = (1 + e)·w / (1/m_a + 1/m_b) (e = BALL_RESTITUTION, or 0 below BALL_SETTLE_SPEED): every impulse is
 //     a two-body contact, so momentum is kept and kinetic energy never rises, sweep by sweep; a pair takes
-//     its restitution once a tick, and closes inelastically when pushed together again within it. "Would touch
+//     its restitution up to RESTITUTION_VISITS (4) times a tick, and closes inelastically when pushed
+//     together again after that. "Would touch
 //     within the tick" is the swept test on straight lines at the present velocities, and the impulse acts
 //     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
@@ -27,10 +28,12 @@ import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { walls } from './fixedGrid.js'
 import { normal, nrm } from './fixedPairs.js'
 import { strikeLeavesRim } from './law.js'
+import { RESTITUTION_VISITS } from '../config/tolerances.js'
 
-/** pairHit bits: the pair took an impulse this tick; its contact was reported */
+/** pairHit bits: the pair took an impulse this tick; its contact was reported; above them, its impulses this tick */
 const IMPULSED = 1
 const REPORTED = 2
+const VISIT_SHIFT = 2
 /** changed bit of a candidate whose wall hit this tick was reported */
 const WALL_REPORTED = 4
 
@@ -112,11 +115,12 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   const ny = nrm.y
   let ima = F.im[a]!
   let imb = F.im[b]!
-  // restitution once a tick per pair: met again in a later sweep (a third ball pushed them together),
-  // the pair closes inelastically, so a light ball between heavy ones cannot be bounced to and fro
-  // without end within one tick
+  // restitution up to RESTITUTION_VISITS times a tick per pair (met again in a later sweep: a third ball or
+  // a wall sent them together), then inelastic, so a light ball between heavy ones cannot be bounced to
+  // and fro without end within one tick
   const hit = F.pairHit[p]!
-  const k = (1 + (approach < settle || (hit & IMPULSED) !== 0 ? 0 : e)) * approach
+  const visits = hit >> VISIT_SHIFT
+  const k = (1 + (approach < settle || visits >= RESTITUTION_VISITS ? 0 : e)) * approach
   let j = k / (ima + imb)
   // a ball at rest that this impulse would leave slower than BALL_SETTLE_SPEED stays at rest (applyChanges),
   // so it holds like a wall: the other ball takes the whole impulse (else it would go on into a ball that
@@ -129,7 +133,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     if (ima + imb === 0) return false
     j = k / (ima + imb)
   }
-  F.pairHit[p] = hit | IMPULSED
+  F.pairHit[p] = (hit | IMPULSED) + (visits < RESTITUTION_VISITS ? 1 << VISIT_SHIFT : 0)
   // a ball the impulse drives into a closed wall it can reach within the tick (at its speed; a ball standing
   // still, at the speed the impulse gives it): the pair and that wall solved together (below), so a squeeze
   // or a wedge ends in one visit, not a little of the push each sweep (a ball lying by a wall, struck, was
@@ -167,7 +171,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   F.changed[a]! |= 1
   F.changed[b]! |= 1
   if ((hit & REPORTED) === 0 && approach >= settle) {
-    F.pairHit[p] = hit | IMPULSED | REPORTED
+    F.pairHit[p] = F.pairHit[p]! | REPORTED
     F.contacts++
     const ia = F.id[a]!
     const ib = F.id[b]!
