@@ -137,9 +137,9 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   // a ball the impulse drives into a closed wall it can reach within the tick (at its speed; a ball standing
   // still, at the speed the impulse gives it): the pair and that wall solved together (below), so a squeeze
   // or a wedge ends in one visit, not a little of the push each sweep (a ball lying by a wall, struck, was
-  // bounced between the wall and its striker, the pair closing inelastically from the second visit on, so
-  // a heavy striker stopped dead; a moving ball keeps its own reach: pinned at the wall, it would lose the
-  // part of its motion the wall sends back, and an elastic gas its energy)
+  // bounced between the wall and its striker until the pair and the wall were solved together on a later
+  // visit, inelastic by then, so a heavy striker stopped dead; a moving ball keeps its own reach: pinned at
+  // the wall, it would lose the part of its motion the wall sends back, and an elastic gas its energy)
   let q = -1
   if (ima > 0) {
     pushed[0] = F.vx[a] === 0 && F.vy[a] === 0 ? j * ima : 0
