@@ -254,10 +254,15 @@ export class Game {
     if (n === 0) this.removeWhere((k) => k === Kind.Stress)
   }
 
-  /** Removes every ball that is not the player's, and stops the stress mode. */
-  clearExtra(): void {
+  /**
+   * Removes every ball that is not the player's, and stops the stress mode. Not while a replay plays (its
+   * world's balls are the recorded ones, and the recording removes them itself): returns false then.
+   */
+  clearExtra(): boolean {
+    if (this.replaying !== null) return false
     this.stressTarget = 0
     this.removeWhere((k) => k !== Kind.Player)
+    return true
   }
 
   private removeWhere(test: (kind: number) => boolean): void {

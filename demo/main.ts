@@ -74,7 +74,7 @@ async function main(): Promise<void> {
   const stageEl = el('stage')
   const params = new URLSearchParams(location.search)
   const stressN = Math.max(1000, Math.min(100_000, Number(params.get('stress')) || STRESS_BALLS))
-  el('stress').textContent = `Stress ${stressN >= 1000 ? `${Math.round(stressN / 1000)}k` : stressN}`
+  el('stress').textContent = `Stress ${stressN % 1000 === 0 ? `${stressN / 1000}k` : stressN.toLocaleString('en-US')}`
 
   // software GL (SwiftShader, llvmpipe: headless browsers, no GPU) is fill-rate bound: skip MSAA there
   const software = softwareGL()
@@ -204,9 +204,10 @@ async function main(): Promise<void> {
   canvas.addEventListener('pointercancel', endDrag)
 
   const stressBtn = el('stress')
+  // the button shows what the game does (a replay refuses the change)
   const setStress = (on: boolean): void => {
     game.setStress(on ? stressN : 0)
-    stressBtn.setAttribute('aria-pressed', String(on))
+    stressBtn.setAttribute('aria-pressed', String(game.stressTarget > 0))
   }
   const newGame = (): void => {
     input.cancel()
@@ -268,8 +269,7 @@ async function main(): Promise<void> {
   for (const n of [10, 100, 1000]) button(`multi-${n}`, () => game.burst(n))
   button('stress', () => setStress(game.stressTarget === 0))
   button('clear-balls', () => {
-    game.clearExtra()
-    stressBtn.setAttribute('aria-pressed', 'false')
+    if (game.clearExtra()) stressBtn.setAttribute('aria-pressed', 'false')
   })
   button('call-shot', () => setCalling(!calling))
   const replayBtn = el<HTMLButtonElement>('replay')
@@ -289,11 +289,23 @@ async function main(): Promise<void> {
   const contactsBtn = el<HTMLButtonElement>('contacts')
   const contactsMode = () => (game.pending ?? game.overrides).BALL_COLLISIONS ?? 'off'
   const CONTACT_LABEL = { off: 'off', on: 'exact', fixed: 'fixed tick' } as const
+  // the label follows the key, however it was set (this button, the drop-down, a preset, a reset)
+  const syncContacts = (): void => {
+    const mode = contactsMode()
+    const pressed = String(mode !== 'off')
+    if (contactsBtn.getAttribute('aria-pressed') !== pressed) contactsBtn.setAttribute('aria-pressed', pressed)
+    const label = `Contacts: ${CONTACT_LABEL[mode]}`
+    if (contactsBtn.textContent !== label) contactsBtn.textContent = label
+  }
   button('contacts', () => {
     const now = contactsMode()
     tuning.set('BALL_COLLISIONS', now === 'off' ? 'on' : now === 'on' ? 'fixed' : 'off')
-    contactsBtn.setAttribute('aria-pressed', String(contactsMode() !== 'off'))
-    contactsBtn.textContent = `Contacts: ${CONTACT_LABEL[contactsMode()]}`
+    syncContacts()
+  })
+  // lil-gui keeps key events from leaving its controls: a tuning button keeps no focus, so the keys go on
+  // working after it (as after the demo's own buttons)
+  el('gui').addEventListener('click', (e) => {
+    if (e.target instanceof HTMLElement && e.target.closest('button') !== null) e.target.closest('button')!.blur()
   })
 
   // ---- HUD ----
@@ -368,6 +380,9 @@ async function main(): Promise<void> {
     setText(hud.ballsLeft, String(game.ballsLeft))
     setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
     syncReplay()
+    syncContacts()
+    const stressOn = String(game.stressTarget > 0)
+    if (stressBtn.getAttribute('aria-pressed') !== stressOn) stressBtn.setAttribute('aria-pressed', stressOn)
     if (meter.frame(t, result.physicsMs, result.steps, performance.now() - t)) slowHud(meter)
   })
 

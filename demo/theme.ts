@@ -46,6 +46,7 @@ export const MODE_COLORS: Readonly<Record<string, number>> = {
   rimRoll: 0x4cc9ff,
   captured: 0x3ddc84,
   resting: 0x7d879a,
+  held: 0xd9b36c,
   out: 0x4a5878,
 }
 export function modeColor(mode: string): number {
