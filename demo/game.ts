@@ -32,6 +32,8 @@ export const REST_HOLD = 0.9
 export const REST_FADE = 0.6
 const STRESS_REST_HOLD = 0.25
 const STRESS_CAPTURE_HOLD = 0.6
+/** How long a burst's captured ball stays in its hole before it is taken out, s (burst after burst filled the holes with thousands of balls to draw). */
+const BURST_CAPTURE_HOLD = 1.5
 
 /** An event as the demo shows it: the core's event plus where and whose. */
 export interface DemoEvent extends BallEvent {
@@ -386,7 +388,7 @@ export class Game {
     return out
   }
 
-  /** Balls that rest fade out and go; balls that leave the panel go; stress balls are recycled. */
+  /** Balls that rest fade out and go; balls that leave the panel go; a burst's captured balls go; stress balls are recycled. */
   private retire(): void {
     const B = this.sim.world.Ball
     const X = B.x
@@ -419,6 +421,8 @@ export class Game {
       if (k === Kind.Stress) {
         if (age > (mode === BallMode.Captured ? STRESS_CAPTURE_HOLD : STRESS_REST_HOLD)) this.remove(id)
       } else if (mode === BallMode.Resting && age > REST_HOLD + REST_FADE) {
+        this.remove(id)
+      } else if (k === Kind.Burst && mode === BallMode.Captured && age > BURST_CAPTURE_HOLD) {
         this.remove(id)
       }
     }

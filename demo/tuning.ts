@@ -53,6 +53,8 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
 
   const change = (key: Key, value: unknown): void => {
     const next: ConfigOverrides = { ...overrides, [key]: value }
+    // a key set back to its design value is no override
+    if (Object.is(value, DEFAULT_CONFIG[key])) delete next[key]
     // GRAVITY and V_SKIP_MAX are one fact: the one edited last wins, the other is derived
     if (key === 'GRAVITY') delete next.V_SKIP_MAX
     if (key === 'V_SKIP_MAX') delete next.GRAVITY
@@ -101,7 +103,12 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
     physicalPreset: (): void => preset(PHYSICAL_CONFIG),
     tabulatedPreset: (): void => preset(TABULATED_CONFIG),
     applyNow: (): void => {
-      if (error) return
+      if (error) {
+        // a field with a refused value goes back to the value in effect: what runs is what the panel shows
+        error = ''
+        const result = Game.validate(overrides)
+        if (result.ok) sync(result.config)
+      }
       game.reset()
       show()
     },

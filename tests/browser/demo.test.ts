@@ -263,6 +263,9 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(Number.isFinite(fps) && fps > 0).toBe(true)
     expect(Number.isFinite(ms) && ms > 0).toBe(true)
     expect(balls).toBeGreaterThan(0)
+    // a burst leaves nothing behind: its captured balls are taken out of their holes (the holes keep the
+    // count), as the resting ones fade (burst after burst once kept thousands of captured balls to draw)
+    await page.waitForFunction(() => window.__demo.liveBalls === 0, null, { timeout: 30_000 })
     await page.click('#clear-balls')
   })
 
@@ -422,6 +425,11 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await expect.poll(() => page.textContent('#tuning-status')).toMatch(/RangeError: .*BALL_RADIUS/)
     const frames = await page.evaluate(() => window.__demo.frames)
     await page.waitForFunction((f) => window.__demo.frames > f + 3, frames)
+    // Apply now with the error shown: the field goes back to the value in effect, and the game starts
+    const radius = await page.evaluate(() => window.__demo.config.BALL_RADIUS)
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
+    expect(Number(await input.inputValue())).toBe(radius)
     await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
     await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
     expect(problems).toEqual([])
