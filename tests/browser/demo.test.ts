@@ -252,6 +252,8 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
   })
 
   it('multi-ball 1,000 shows finite fps and physics ms', async () => {
+    // the balls of the earlier tests' throws (a player's captured balls stay for the game)
+    const before = await page.evaluate(() => window.__demo.liveBalls)
     await page.click('#multi-1000')
     await page.waitForFunction(() => window.__demo.liveBalls >= 900, null, { timeout: 10_000 })
     await page.waitForTimeout(1300)
@@ -265,7 +267,7 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(balls).toBeGreaterThan(0)
     // a burst leaves nothing behind: its captured balls are taken out of their holes (the holes keep the
     // count), as the resting ones fade (burst after burst once kept thousands of captured balls to draw)
-    await page.waitForFunction(() => window.__demo.liveBalls === 0, null, { timeout: 30_000 })
+    await page.waitForFunction((n) => window.__demo.liveBalls <= n, before, { timeout: 30_000 })
     await page.click('#clear-balls')
   })
 
