@@ -172,7 +172,7 @@ async function main(): Promise<void> {
     else if (answer.found) {
       const deg = (answer.angle * 180) / Math.PI
       callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: power ${answer.power.toFixed(3)}, aim ${deg.toFixed(1)}°, from x = ${answer.from.x.toFixed(0)}; margin ±${answer.margin.power.toFixed(3)} power, ±${((answer.margin.angle * 180) / Math.PI).toFixed(2)}° (solved in ${ms.toFixed(0)} ms)`
-    } else callStatus.textContent = `No throw: ${answer.reason}`
+    } else callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: no throw found (${answer.reason})`
     return true
   }
   canvas.addEventListener('pointerdown', (e) => {
