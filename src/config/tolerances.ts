@@ -83,6 +83,15 @@ export const MAX_WIDEN_ROUNDS = 4
 export const RESTITUTION_VISITS = 4
 
 /**
+ * Fixed-tick contacts: how many times lighter than its partner a ball must be for the pair to be solved
+ * together with the closed wall the ball is driven into (inelastic at the wall). Against a partner less
+ * than this much heavier, the push runs down by m/(M + m) a sweep between the wall and the pair, and the
+ * sweeps settle it; solved with the wall, a ball lost the part of its motion the wall would send back, and
+ * an elastic gas drained (docs/decisions.md §12).
+ */
+export const SQUEEZE_MASS_RATIO = 3
+
+/**
  * Exact contacts: contacts one ball may take in one step before its later contacts in that step settle
  * (perfectly inelastic, the touching cluster leaves together). A light ball squeezed between heavy balls,
  * or between a heavy ball and a wall, would take about π·√(M/m) contacts (1e9 for a mass ratio of 1e18)

@@ -10,7 +10,8 @@
 //     along the normal at that first touch, so a glancing contact leaves as it would at its instant, up to
 //     one tick early. A closed wall within reach reflects the normal velocity with the walls' restitution.
 //     A ball at rest that an impulse would leave slower than BALL_SETTLE_SPEED holds like a wall. A pair
-//     that drives a ball into a closed wall it can reach is solved together with that wall (pairWithWall):
+//     that drives its lighter ball (SQUEEZE_MASS_RATIO times or more) into a closed wall it can reach is
+//     solved together with that wall (pairWithWall):
 //     a light ball squeezed or wedged against a wall by a heavy one would otherwise take a little of the
 //     push each sweep, and the sweeps run out with the pair still closing.
 //   positions: src/contacts/fixedProject.ts.
@@ -28,7 +29,7 @@ import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { walls } from './fixedGrid.js'
 import { normal, nrm } from './fixedPairs.js'
 import { strikeLeavesRim } from './law.js'
-import { RESTITUTION_VISITS } from '../config/tolerances.js'
+import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
 /** pairHit bits: the pair took an impulse this tick; its contact was reported; above them, its impulses this tick */
 const IMPULSED = 1
@@ -134,18 +135,19 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   F.pairHit[p] = (hit | IMPULSED) + (visits < RESTITUTION_VISITS ? 1 << VISIT_SHIFT : 0)
-  // a ball the impulse drives into a closed wall it can reach within the tick (at its speed; a ball standing
-  // still, at the speed the impulse gives it): the pair and that wall solved together (below), so a squeeze
-  // or a wedge ends in one visit, not a little of the push each sweep (a ball lying by a wall, struck, was
-  // bounced between the wall and its striker until the pair and the wall were solved together on a later
-  // visit, inelastic by then, so a heavy striker stopped dead; a moving ball keeps its own reach: pinned at
-  // the wall, it would lose the part of its motion the wall sends back, and an elastic gas its energy)
+  // a ball SQUEEZE_MASS_RATIO times lighter than its partner (or more) that the impulse drives into a closed
+  // wall it can reach within the tick (at its speed; a ball standing still, at the speed the impulse gives
+  // it): the pair and that wall solved together (below), so a squeeze or a wedge ends in one visit, not a
+  // little of the push each sweep (a ball lying by a wall, struck, was bounced between the wall and its
+  // striker until the pair and the wall were solved together on a later visit, inelastic by then, so a heavy
+  // striker stopped dead; a moving ball keeps its own reach: pinned at the wall, it would lose the part of
+  // its motion the wall sends back, and an elastic gas its energy)
   let q = -1
-  if (ima > 0) {
+  if (ima >= SQUEEZE_MASS_RATIO * imb) {
     pushed[0] = F.vx[a] === 0 && F.vy[a] === 0 ? j * ima : 0
     if (wallAhead(F, a, -1)) q = a
   }
-  if (q < 0 && imb > 0) {
+  if (q < 0 && imb >= SQUEEZE_MASS_RATIO * ima) {
     pushed[0] = F.vx[b] === 0 && F.vy[b] === 0 ? j * imb : 0
     if (wallAhead(F, b, 1)) q = b
   }
