@@ -258,13 +258,12 @@ export class Game {
 
   /**
    * Removes every ball that is not the player's, and stops the stress mode. Not while a replay plays (its
-   * world's balls are the recorded ones, and the recording removes them itself): returns false then.
+   * world's balls are the recorded ones, and the recording removes them itself).
    */
-  clearExtra(): boolean {
-    if (this.replaying !== null) return false
+  clearExtra(): void {
+    if (this.replaying !== null) return
     this.stressTarget = 0
     this.removeWhere((k) => k !== Kind.Player)
-    return true
   }
 
   private removeWhere(test: (kind: number) => boolean): void {

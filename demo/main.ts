@@ -204,15 +204,20 @@ async function main(): Promise<void> {
   canvas.addEventListener('pointercancel', endDrag)
 
   const stressBtn = el('stress')
-  // the button shows what the game does (a replay refuses the change)
+  // the button shows what the game does, however it changed (a replay refuses the change; Clear and a new
+  // game end it)
+  const syncStress = (): void => {
+    const on = String(game.stressTarget > 0)
+    if (stressBtn.getAttribute('aria-pressed') !== on) stressBtn.setAttribute('aria-pressed', on)
+  }
   const setStress = (on: boolean): void => {
     game.setStress(on ? stressN : 0)
-    stressBtn.setAttribute('aria-pressed', String(game.stressTarget > 0))
+    syncStress()
   }
   const newGame = (): void => {
     input.cancel()
     game.reset()
-    stressBtn.setAttribute('aria-pressed', 'false')
+    syncStress()
   }
   const typing = (t: EventTarget | null): boolean =>
     t instanceof HTMLElement && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT')
@@ -269,7 +274,8 @@ async function main(): Promise<void> {
   for (const n of [10, 100, 1000]) button(`multi-${n}`, () => game.burst(n))
   button('stress', () => setStress(game.stressTarget === 0))
   button('clear-balls', () => {
-    if (game.clearExtra()) stressBtn.setAttribute('aria-pressed', 'false')
+    game.clearExtra()
+    syncStress()
   })
   button('call-shot', () => setCalling(!calling))
   const replayBtn = el<HTMLButtonElement>('replay')
@@ -381,8 +387,7 @@ async function main(): Promise<void> {
     setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
     syncReplay()
     syncContacts()
-    const stressOn = String(game.stressTarget > 0)
-    if (stressBtn.getAttribute('aria-pressed') !== stressOn) stressBtn.setAttribute('aria-pressed', stressOn)
+    syncStress()
     if (meter.frame(t, result.physicsMs, result.steps, performance.now() - t)) slowHud(meter)
   })
 
