@@ -31,10 +31,9 @@ import { normal, nrm } from './fixedPairs.js'
 import { strikeLeavesRim } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
-/** pairHit bits: the pair took an impulse this tick; its contact was reported; above them, its impulses this tick */
-const IMPULSED = 1
-const REPORTED = 2
-const VISIT_SHIFT = 2
+/** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */
+const REPORTED = 1
+const VISIT_SHIFT = 1
 /** changed bit of a candidate whose wall hit this tick was reported */
 const WALL_REPORTED = 4
 
@@ -134,7 +133,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     if (ima + imb === 0) return false
     j = k / (ima + imb)
   }
-  F.pairHit[p] = (hit | IMPULSED) + (visits < RESTITUTION_VISITS ? 1 << VISIT_SHIFT : 0)
+  if (visits < RESTITUTION_VISITS) F.pairHit[p] = hit + (1 << VISIT_SHIFT)
   // a ball SQUEEZE_MASS_RATIO times lighter than its partner (or more) that the impulse drives into a closed
   // wall it can reach within the tick (at its speed; a ball standing still, at the speed the impulse gives
   // it): the pair and that wall solved together (below), so a squeeze or a wedge ends in one visit, not a
