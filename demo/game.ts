@@ -11,6 +11,7 @@ import { addComponent, hasComponent, query } from 'bitecs'
 import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, mulberry32, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
+import type { ShotCall } from './shotCall'
 import { isHoleEvent } from './theme'
 
 /** Mode code of a ball that left the panel through an open wall edge (-1 if the core has no such mode). */
@@ -180,6 +181,7 @@ export class Game {
   }
 
   private rebuild(): BallPhysics {
+    this.cancelCall()
     this.endReplay()
     this.roundKinds = null
     const sim = createBallPhysics(this.overrides)
@@ -228,6 +230,7 @@ export class Game {
   /** One of the player's throws from the launch point (or `from`). Returns false when no balls are left. */
   throwPlayer(request: ThrowRequest, from: { x: number; y: number } = this.panel.launch): boolean {
     if (this.ballsLeft <= 0 || this.replaying !== null) return false
+    this.cancelCall()
     this.applyPending()
     this.beginRound()
     if (this.gameCaptures.length !== this.holes.length) this.gameCaptures = this.holes.map(() => 0)
@@ -241,6 +244,7 @@ export class Game {
   /** n balls thrown at once from along the bottom edge toward random points of the hole field. */
   burst(n: number): void {
     if (this.replaying !== null) return
+    this.cancelCall()
     this.applyPending()
     this.beginRound()
     for (let i = 0; i < n; i++) this.spawnRandom(Kind.Burst)
@@ -249,6 +253,7 @@ export class Game {
   /** Keeps `n` balls in play (0 = off): finished ones are removed and thrown again. */
   setStress(n: number): void {
     if (this.replaying !== null) return
+    this.cancelCall()
     this.applyPending()
     // the stress mode's endless recycling is no round: a recording under way is dropped
     if (n > 0) this.dropRound()
@@ -262,6 +267,7 @@ export class Game {
    */
   clearExtra(): void {
     if (this.replaying !== null) return
+    this.cancelCall()
     this.stressTarget = 0
     this.removeWhere((k) => k !== Kind.Player)
   }
@@ -332,6 +338,8 @@ export class Game {
    */
   frame(frameSeconds: number): FrameResult {
     const dt = Number.isFinite(frameSeconds) && frameSeconds > 0 ? Math.min(frameSeconds, MAX_FRAME_SECONDS) : 0
+    // a called shot being solved: the world waits for its answer (nothing steps, nothing fades)
+    if (this.solving !== null) return { events: [], steps: 0, physicsMs: 0 }
     this.time += dt
     if (this.replaying !== null) return this.replayFrame(dt)
     let physicsMs = 0
@@ -460,20 +468,61 @@ export class Game {
 
   /** The last called shot: the hole (layout index), and the solver's answer */
   lastCall: { holeIndex: number; answer: ThrowSolution | ThrowFailure; ms: number } | null = null
+  /**
+   * A called shot being solved elsewhere (a worker): the hole (layout index) and the call's token. The
+   * physics waits while it is set (frame() runs no step), so the answer is exact for the world it gets
+   * back; a throw, a burst, a clear, a reset or a replay cancels the call.
+   */
+  solving: { holeIndex: number; token: number } | null = null
+  private calls = 0
 
   /**
-   * Call your shot: the solver finds a throw from the launch line (±160 px) that drops the player's next
-   * ball into the hole at `holeIndex` (layout order) in this world as it is, and throws it. Returns the
-   * solver's answer (null when no ball is left or a replay plays).
+   * Call your shot, first half: what the solver needs to find a throw from the launch line (±160 px) that
+   * drops the player's next ball into the hole at `holeIndex` (layout order), in this world as it is: its
+   * config and a snapshot (a world restored from them has the same entity ids, so `hole` holds there). The
+   * physics waits until finishCall or cancelCall. Null when no ball is left, a replay plays, or a call is
+   * already being solved.
    */
-  callShot(holeIndex: number): ThrowSolution | ThrowFailure | null {
-    if (this.ballsLeft <= 0 || this.replaying !== null) return null
+  beginCall(holeIndex: number): ShotCall | null {
+    if (this.ballsLeft <= 0 || this.replaying !== null || this.solving !== null) return null
+    const hole = this.holes[holeIndex]
+    if (hole === undefined) return null
     this.applyPending()
-    const t0 = performance.now()
-    const answer = solveThrow(this.sim, { from: this.panel.launch, hole: this.holes[holeIndex]!, outcome: 'capture', along: 160 })
-    this.lastCall = { holeIndex, answer, ms: performance.now() - t0 }
+    const token = ++this.calls
+    this.solving = { holeIndex, token }
+    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160 }
+    return { token, config: { ...this.sim.config }, snapshot: this.sim.snapshot(), request }
+  }
+
+  /**
+   * Call your shot, second half: the solver's answer for the call `token` (and the time it took, ms). Throws
+   * the player's ball when a throw was found, and lets the physics go on. Returns the answer, or null when
+   * the call was cancelled in the meantime (then nothing happens).
+   */
+  finishCall(token: number, answer: ThrowSolution | ThrowFailure, ms: number): ThrowSolution | ThrowFailure | null {
+    const s = this.solving
+    if (s === null || s.token !== token) return null
+    this.solving = null
+    this.lastCall = { holeIndex: s.holeIndex, answer, ms }
     if (answer.found) this.throwPlayer({ power: answer.power, angle: answer.angle }, answer.from)
     return answer
+  }
+
+  /** Drops the call being solved, if any (its answer, when it comes, is ignored); the physics goes on. */
+  cancelCall(): void {
+    this.solving = null
+  }
+
+  /**
+   * Call your shot, solved here and now (the page without workers, and the tests): beginCall, solveThrow on
+   * this world, finishCall. Returns the solver's answer (null when no ball is left or a replay plays).
+   */
+  callShot(holeIndex: number): ThrowSolution | ThrowFailure | null {
+    const call = this.beginCall(holeIndex)
+    if (call === null) return null
+    const t0 = performance.now()
+    const answer = solveThrow(this.sim, call.request)
+    return this.finishCall(call.token, answer, performance.now() - t0)
   }
 
   /** Steps of the last round (0 when there is none). */
@@ -487,6 +536,7 @@ export class Game {
    */
   replayLastRound(): boolean {
     if (this.lastRound === null || this.replaying !== null) return false
+    this.cancelCall()
     this.dropRound()
     const player = createReplayPlayer(this.lastRound)
     const D = this.DemoBall

@@ -7,7 +7,8 @@ import { ThrowInput } from './input'
 import { PanelView, type InspectorOptions } from './panelView'
 import { RegimeView } from './regimeView'
 import { MAP_SPEC, OutcomeView } from './outcomeView'
-import { BALL_MODE_NAMES, EVENT_TYPE_NAMES } from '../src/index'
+import { BALL_MODE_NAMES, EVENT_TYPE_NAMES, type ThrowFailure, type ThrowSolution } from '../src/index'
+import type { ShotReply } from './shotCall'
 import { eventColor, hex, modeColor } from './theme'
 import { createTuning } from './tuning'
 
@@ -163,16 +164,60 @@ async function main(): Promise<void> {
     const r = game.config.HOLE_RADIUS + 8
     return game.panel.holes.findIndex((h) => (h.x - p.x) ** 2 + (h.y - p.y) ** 2 <= r * r)
   }
-  const callAt = (p: { x: number; y: number }): boolean => {
-    const i = holeAt(p)
-    if (i < 0) return false
-    const answer = game.callShot(i)
+  const showAnswer = (i: number, answer: ThrowSolution | ThrowFailure | null): void => {
     const ms = game.lastCall?.ms ?? 0
+    const value = game.panel.holes[i]!.value
     if (answer === null) callStatus.textContent = game.ballsLeft <= 0 ? 'No balls left: start a new game.' : ''
     else if (answer.found) {
       const deg = (answer.angle * 180) / Math.PI
-      callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: power ${answer.power.toFixed(3)}, aim ${deg.toFixed(1)}°, from x = ${answer.from.x.toFixed(0)}; margin ±${answer.margin.power.toFixed(3)} power, ±${((answer.margin.angle * 180) / Math.PI).toFixed(2)}° (solved in ${ms.toFixed(0)} ms)`
-    } else callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: no throw found (${answer.reason})`
+      callStatus.textContent = `Hole ${value}: power ${answer.power.toFixed(3)}, aim ${deg.toFixed(1)}°, from x = ${answer.from.x.toFixed(0)}; margin ±${answer.margin.power.toFixed(3)} power, ±${((answer.margin.angle * 180) / Math.PI).toFixed(2)}° (solved in ${ms.toFixed(0)} ms)`
+    } else callStatus.textContent = `Hole ${value}: no throw found (${answer.reason})`
+  }
+  // the solver runs in a worker when the page can start one (the panel waits for its answer, the page
+  // does not); here otherwise, or when the worker fails
+  let solver: Worker | null = null
+  try {
+    solver = new Worker(new URL('./solveWorker.js', import.meta.url), { type: 'module' })
+  } catch {
+    solver = null
+  }
+  const solveHere = (i: number): void => showAnswer(i, game.callShot(i))
+  if (solver !== null) {
+    solver.onmessage = (e: MessageEvent<ShotReply>) => {
+      const reply = e.data
+      const s = game.solving
+      if (s === null || s.token !== reply.token) return // cancelled meanwhile: a throw, a burst, a reset
+      if ('error' in reply) {
+        game.cancelCall()
+        callStatus.textContent = `The solver failed: ${reply.error}`
+        return
+      }
+      showAnswer(s.holeIndex, game.finishCall(reply.token, reply.answer, reply.ms))
+    }
+    solver.onerror = (e) => {
+      e.preventDefault()
+      solver?.terminate()
+      solver = null
+      const s = game.solving
+      game.cancelCall()
+      // solved here instead, this time and from now on
+      if (s !== null) solveHere(s.holeIndex)
+    }
+  }
+  const callAt = (p: { x: number; y: number }): boolean => {
+    const i = holeAt(p)
+    if (i < 0) return false
+    if (game.solving !== null) return true // one call at a time
+    if (solver === null) {
+      solveHere(i)
+      return true
+    }
+    const call = game.beginCall(i)
+    if (call === null) showAnswer(i, null)
+    else {
+      callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: solving… (the panel waits for the answer)`
+      solver.postMessage(call)
+    }
     return true
   }
   canvas.addEventListener('pointerdown', (e) => {
@@ -480,6 +525,14 @@ async function main(): Promise<void> {
     },
     get gameOver() {
       return game.gameOver
+    },
+    /** the called shot being solved in the worker (the panel waits), or null */
+    get solving() {
+      return game.solving === null ? null : { ...game.solving }
+    },
+    /** true while the solver runs in a worker (false once it has failed, or where workers cannot start) */
+    get solverInWorker() {
+      return solver !== null
     },
     get throwsMade() {
       return game.throwsMade

@@ -1,5 +1,5 @@
 // Builds the pixi.js demo (demo/main.ts and the static files next to it) into a directory that any static
-// web server can host: index.html, style.css, main.js (+ map). pixi.js and lil-gui are bundled here only;
+// web server can host: index.html, style.css, main.js and solveWorker.js (+ maps). pixi.js and lil-gui are bundled here only;
 // the library bundle (scripts/build.mjs) never sees them.
 //
 //   node scripts/demo-build.mjs [--outdir demo-dist] [--dev]
@@ -18,8 +18,9 @@ const STATIC_FILES = ['index.html', 'style.css']
 /** esbuild options for the demo bundle. `dev`: readable output with inline-able source maps. */
 export function demoBuildOptions(outdir = DEFAULT_OUTDIR, dev = false) {
   return {
-    entryPoints: [resolve(DEMO_DIR, 'main.ts')],
-    outfile: resolve(outdir, 'main.js'),
+    // the page, and the throw solver's worker (Call your shot), which the page loads from next to it
+    entryPoints: { main: resolve(DEMO_DIR, 'main.ts'), solveWorker: resolve(DEMO_DIR, 'solveWorker.ts') },
+    outdir,
     bundle: true,
     format: 'esm',
     platform: 'browser',
@@ -46,7 +47,7 @@ export async function buildDemo({ outdir = DEFAULT_OUTDIR, dev = false } = {}) {
   return result
 }
 
-/** A watching build (for `npm run demo`): rebuilds main.js and recopies the static files on change. */
+/** A watching build (for `npm run demo`): rebuilds main.js and solveWorker.js and recopies the static files on change. */
 export async function watchDemo({ outdir = DEFAULT_OUTDIR } = {}) {
   mkdirSync(outdir, { recursive: true })
   copyStatic(outdir)

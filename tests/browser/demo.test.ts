@@ -45,6 +45,8 @@ interface DemoHook {
   outcomeMap: { rows: number; done: boolean; spec: { from: { x: number; y: number }; power: { min: number; max: number; steps: number }; angle: { min: number; max: number; steps: number } } }
   outcomeCell(row: number, col: number): number
   lastCall: { holeIndex: number; answer: { found: boolean; power: number | null; reason?: string }; ms: number } | null
+  solving: { holeIndex: number; token: number } | null
+  solverInWorker: boolean
   renderer: { type: string; software: boolean; antialias: boolean }
   pending: Record<string, unknown> | null
   config: Record<string, unknown>
@@ -401,6 +403,69 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.waitForFunction((k) => window.__demo.recent.some((e) => e.type === 'capture' && e.player && e.holeIndex === k), i, { timeout: 20_000 })
     }
     await page.click('#call-shot')
+    expect(problems).toEqual([])
+  })
+
+  it('call your shot during a 1,000-ball burst with contacts on: the worker solves while the page draws and the panel waits; a throw cancels a call', async () => {
+    await page.click('#reset')
+    await page.click('#contacts')
+    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe('on')
+    await page.click('#multi-1000')
+    await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe('on')
+    const t0 = await page.evaluate(() => window.__demo.simTime)
+    await page.waitForFunction((t) => window.__demo.simTime > t + 0.2, t0, { timeout: 30_000 })
+    expect(await page.evaluate(() => window.__demo.solverInWorker)).toBe(true)
+    await page.click('#call-shot')
+    const hole = DEFAULT_PANEL.holes[12]!
+    const at = await page.evaluate(({ x, y }) => window.__demo.toPage(x, y), hole)
+    // a call cancelled by the player's own throw: its answer, when it comes, throws nothing
+    const throws0 = await page.evaluate(() => window.__demo.throwsMade)
+    await page.mouse.click(at.x, at.y)
+    const cancelled = await page.evaluate(() => {
+      const d = window.__demo
+      const solvingAtThrow = d.solving?.holeIndex ?? -1
+      d.charge(0.5)
+      d.release()
+      return { solvingAtThrow, after: d.solving }
+    })
+    expect(cancelled).toEqual({ solvingAtThrow: 12, after: null })
+    const throws1 = throws0 + 1
+    expect(await page.evaluate(() => window.__demo.throwsMade)).toBe(throws1)
+    await page.waitForTimeout(3000) // the cancelled call's answer arrives and is dropped
+    expect(await page.evaluate(() => window.__demo.throwsMade)).toBe(throws1)
+    // now a call left to finish: frames go on while it is solved, the world's time does not
+    await page.mouse.click(at.x, at.y)
+    expect(await page.evaluate(() => window.__demo.solving?.holeIndex)).toBe(12)
+    const during = await page.evaluate(async () => {
+      const d = window.__demo
+      const f0 = d.frames
+      const s0 = d.simTime
+      const start = performance.now()
+      let moved = false
+      let polls = 0
+      while (d.solving !== null && performance.now() - start < 30_000) {
+        await new Promise((r) => requestAnimationFrame(r))
+        // the world's time, seen while the call is still being solved
+        if (d.solving !== null && d.simTime !== s0) moved = true
+        polls++
+      }
+      return { frames: d.frames - f0, ms: performance.now() - start, simTimeMoved: moved, polls, left: d.solving }
+    })
+    expect(during.left).toBe(null)
+    expect(during.simTimeMoved).toBe(false)
+    expect(during.polls).toBeGreaterThan(2)
+    // the page drew while the worker solved (at least one frame in every 200 ms of the solve)
+    expect(during.frames).toBeGreaterThanOrEqual(Math.floor(during.ms / 200))
+    expect(await page.evaluate(() => window.__demo.lastCall?.holeIndex)).toBe(12)
+    const found = await page.evaluate(() => window.__demo.lastCall?.answer.found)
+    expect(await page.evaluate(() => window.__demo.throwsMade)).toBe(found === true ? throws1 + 1 : throws1)
+    expect(await page.textContent('#call-status')).toMatch(/Hole \d+: (power .* aim .* margin|no throw found)/)
+    await page.click('#call-shot')
+    await page.click('#contacts')
+    await page.click('#contacts')
+    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS ?? 'off')).toBe('off')
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
     expect(problems).toEqual([])
   })
 
