@@ -469,6 +469,29 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(problems).toEqual([])
   })
 
+  it('narrow windows: the page never scrolls sideways, the stage scales down, the side panel goes below it', async () => {
+    try {
+      for (const width of [1000, 800, 600, 400]) {
+        await page.setViewportSize({ width, height: 860 })
+        await expect
+          .poll(() => page.evaluate(() => document.querySelector('#stage canvas')!.getBoundingClientRect().width))
+          .toBeLessThanOrEqual(width)
+        const m = await page.evaluate(() => ({
+          scroll: document.documentElement.scrollWidth,
+          client: document.documentElement.clientWidth,
+          aside: document.querySelector('aside')!.getBoundingClientRect().toJSON() as DOMRect,
+          stage: document.querySelector('#stage')!.getBoundingClientRect().toJSON() as DOMRect,
+        }))
+        expect(m.scroll, `${width} px`).toBeLessThanOrEqual(m.client)
+        if (width <= 900) expect(m.aside.top, `${width} px`).toBeGreaterThanOrEqual(m.stage.bottom - 1)
+        else expect(m.aside.left, `${width} px`).toBeGreaterThanOrEqual(m.stage.right - 1)
+      }
+    } finally {
+      await page.setViewportSize({ width: 1400, height: 860 })
+    }
+    expect(problems).toEqual([])
+  })
+
   it('the outcome map view: every cell is the hole the engine gives that throw (the same map computed here)', async () => {
     await page.waitForFunction(() => window.__demo.outcomeMap.done, null, { timeout: 30_000 })
     const { spec } = await page.evaluate(() => window.__demo.outcomeMap)
