@@ -537,7 +537,8 @@ export class Game {
   replayLastRound(): boolean {
     if (this.lastRound === null || this.replaying !== null) return false
     this.cancelCall()
-    this.dropRound()
+    // a round under way keeps its recording: the live world waits (nothing of it steps or changes) and the
+    // round goes on, and ends, after the replay
     const player = createReplayPlayer(this.lastRound)
     const D = this.DemoBall
     this.replaying = { player, live: this.sim, kinds: this.lastRoundKinds, kind: D.kind.slice(), doneAt: D.doneAt.slice() }

@@ -3,6 +3,8 @@
 // previous state is the one before the last step.
 import { describe, expect, it } from 'vitest'
 import { Game, MAX_FRAME_SECONDS, MAX_STEPS_PER_FRAME, PHYSICS_HZ } from '../../demo/game'
+import { createBallPhysics, solveThrow } from '../../src/index'
+import { BallMode } from '../../src/ecs'
 
 function play(frameSeconds: () => number, seconds = 6) {
   const g = new Game()
@@ -87,5 +89,74 @@ describe('demo game loop', () => {
     expect(g.generation).toBe(gen + 1)
     expect(g.config.BALL_RADIUS).toBe(9)
     expect(g.pending).toBeNull()
+  })
+})
+
+describe('demo game: replays and called shots', () => {
+  /** steps frames of 1/60 s until no ball moves (the round ends) or `max` frames */
+  const settle = (g: Game, max = 2000): void => {
+    const moving = (id: number): boolean => {
+      const m = g.sim.world.Ball.mode[id]
+      return m === BallMode.Rolling || m === BallMode.RimRoll || m === BallMode.Held
+    }
+    for (let i = 0; i < max && (g.replaying !== null || g.live.some(moving)); i++) g.frame(1 / 60)
+  }
+
+  it('a replay started during a round leaves that round recorded: it ends after the replay, and plays back the same', () => {
+    const g = new Game()
+    g.reset()
+    g.throwPlayer({ power: 0.5, angle: -0.22 })
+    settle(g)
+    for (let i = 0; i < 5; i++) g.frame(1 / 60)
+    expect(g.roundsRecorded).toBe(1)
+    const first = g.lastRound
+    // a second round under way, then a replay of the first
+    g.burst(30)
+    for (let i = 0; i < 20; i++) g.frame(1 / 60)
+    const liveTime = g.sim.time
+    expect(g.replayLastRound()).toBe(true)
+    for (let i = 0; i < 2000 && g.replaying !== null; i++) g.frame(1 / 60)
+    expect(g.replaying).toBe(null)
+    expect(g.sim.time).toBe(liveTime) // the live world waited
+    settle(g)
+    for (let i = 0; i < 5; i++) g.frame(1 / 60)
+    expect(g.roundsRecorded).toBe(2)
+    expect(g.lastRound).not.toBe(first)
+    const recorded = g.roundEvents
+    expect(recorded.length).toBeGreaterThan(30)
+    // the second round, played back, gives its events (a round starts with the burst: its throws are in it)
+    expect(g.replayLastRound()).toBe(true)
+    for (let i = 0; i < 4000 && g.replaying !== null; i++) g.frame(1 / 60)
+    expect(g.replayEvents).toEqual(recorded)
+  })
+
+  it('a called shot: the panel waits while it is solved; its answer throws; a throw meanwhile cancels it', () => {
+    const g = new Game()
+    g.reset()
+    g.burst(20)
+    for (let i = 0; i < 10; i++) g.frame(1 / 60)
+    const call = g.beginCall(12)!
+    expect(call).not.toBe(null)
+    expect(g.beginCall(3)).toBe(null) // one call at a time
+    const t = g.sim.time
+    for (let i = 0; i < 10; i++) expect(g.frame(1 / 60).steps).toBe(0)
+    expect(g.sim.time).toBe(t)
+    // solved on a copy, as the worker does: the same answer as in the world itself
+    const copy = createBallPhysics(call.config)
+    copy.restore(call.snapshot)
+    const answer = solveThrow(copy, call.request)
+    expect(answer).toEqual(solveThrow(g.sim, call.request))
+    expect(answer.found).toBe(true)
+    const left = g.ballsLeft
+    expect(g.finishCall(call.token, answer, 1)).toBe(answer)
+    expect(g.ballsLeft).toBe(left - 1)
+    expect(g.solving).toBe(null)
+    expect(g.frame(1 / 60).steps).toBeGreaterThan(0)
+    // a call, then the player's own throw: the call's answer is dropped
+    const again = g.beginCall(12)!
+    g.throwPlayer({ power: 0.4, angle: 0.1 })
+    expect(g.solving).toBe(null)
+    expect(g.finishCall(again.token, answer, 1)).toBe(null)
+    expect(g.ballsLeft).toBe(left - 2)
   })
 })
