@@ -16,7 +16,7 @@ import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
-import { MAX_WIDEN_ROUNDS } from '../src/config/tolerances.js'
+import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 
@@ -47,7 +47,15 @@ export function fixedContactsSystem(w: BallWorld): void {
   F.hitCount = 0
   F.overlap = false
   solveVelocities(w, F, t, iterations)
-  for (let round = 0; round < MAX_WIDEN_ROUNDS && widenReach(w, F); round++) solveVelocities(w, F, t, iterations)
+  // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
+  // could pass through another within the tick (src/config/tolerances.ts)
+  for (let round = 0; round < MAX_PASS_ROUNDS; round++) {
+    const extra = round >= MAX_WIDEN_ROUNDS
+    if (extra && !mayPass(F)) break
+    const pairs = F.pairCount
+    if (!widenReach(w, F) || (extra && F.pairCount === pairs)) break
+    solveVelocities(w, F, t, iterations)
+  }
   const capped = F.capped
   solvePositions(w, F)
   // a ball the projection pushed into a ball the tick did not pair it with: paired, projected again
@@ -72,4 +80,22 @@ function chooseBroadphase(F: FixedContactState): void {
   const share = F.pairCount / F.full
   if (F.dense === 1 && crowd < 0.25 && share < 0.25) F.denseNext = 0
   else if (F.dense === 0 && (crowd > 0.3 || share > 0.3)) F.denseNext = 1
+}
+
+/**
+ * Whether a ball the solve sped up beyond its reach (one the next widening round would pair again) moves
+ * more in a tick than its radius and the smallest candidate's: the distance at which, unpaired, it could
+ * pass through a ball instead of ending inside it.
+ */
+function mayPass(F: FixedContactState): boolean {
+  let rMin = Infinity
+  for (let k = 0; k < F.n; k++) if (F.r[k]! < rMin) rMin = F.r[k]!
+  for (let h = 0; h < F.hitCount; h++) {
+    const i = F.hit[h]!
+    const vx = F.vx[i]!
+    const vy = F.vy[i]!
+    const travel = Math.sqrt(vx * vx + vy * vy) * F.tick
+    if (travel > F.r[i]! + rMin && F.r[i]! + travel > F.reach[i]! + PROJECTION_SLOP) return true
+  }
+  return false
 }

@@ -72,8 +72,15 @@ export const PROJECTION_SLOP = 1e-4
 /** Least share of a pair's overlap each ball takes in the projection, whatever the mass ratio (positions only: no momentum or energy is involved). */
 export const MIN_PROJECTION_SHARE = 0.1
 
-/** Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts). */
+/**
+ * Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts);
+ * each carries a push one ball further along a row with gaps. After MAX_WIDEN_ROUNDS the rounds go on, up
+ * to MAX_PASS_ROUNDS, only while a ball sped up beyond its reach moves more in a tick than its radius and
+ * the smallest candidate's together, the distance at which it could pass a ball it was not paired with
+ * instead of ending inside it, where the next tick's projection would take it out.
+ */
 export const MAX_WIDEN_ROUNDS = 4
+export const MAX_PASS_ROUNDS = 256
 
 /**
  * Fixed-tick contacts: the impulses a pair takes with its restitution in one tick; met again after that

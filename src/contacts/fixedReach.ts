@@ -5,7 +5,8 @@
 // reach (src/contacts/fixedOrder.ts; found through the sweep order, fixedSweep.ts, and packed if they were
 // not), with the big ones, and with the resting balls now in its reach (they join the candidates). The
 // solve then runs again over all pairs. At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts):
-// a chain longer than that is caught at the next tick, by the projection.
+// a chain longer than that is caught at the next tick, by the projection; up to MAX_PASS_ROUNDS while a
+// sped-up ball could pass through a ball within the tick (systems/fixedContacts.ts).
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'

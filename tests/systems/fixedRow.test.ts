@@ -1,0 +1,51 @@
+// The fixed-tick method on a row of balls with gaps between them, struck end on faster than the row's balls
+// can pass each other in a tick. Each widening round carries the push one ball further along the row (a
+// ball at rest is paired only with the balls it touches). The rounds stopped at MAX_WIDEN_ROUNDS, and the
+// ball the push had reached then moved through the next one within the tick, unpaired: from a row of six,
+// balls swapped places, and at 1e5 px/s one ball left through five others at rest. The rounds now go on
+// while a ball could pass another (MAX_PASS_ROUNDS).
+import { describe, expect, it } from 'vitest'
+import { createBallPhysics } from '../../src/index'
+import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
+
+function row(radius: number, gap: number, speed: number, n: number) {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
+  const ids = [sim.addBall({ x: 0, y: 0, vx: speed, vy: 0 })]
+  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 4 * radius + i * (2 * radius + gap), y: 0, vx: 0, vy: 0 }))
+  let swapped = false
+  let collisions = 0
+  // long enough for the push to leave the row's end
+  const frames = Math.ceil(((4 * radius + n * (2 * radius + gap)) / speed) * 60) + 2
+  for (let f = 0; f < frames; f++) {
+    sim.step(1 / 60)
+    for (const e of sim.drainEvents()) if (e.type === 'collision') collisions++
+    const xs = ids.map((i) => sim.ballState(i).x)
+    for (let k = 1; k < xs.length; k++) if (!(xs[k]! > xs[k - 1]!)) swapped = true
+  }
+  return { swapped, collisions, vx: ids.map((i) => sim.ballState(i).vx) }
+}
+
+describe('fixed tick: a push along a row with gaps', () => {
+  it('the tolerances leave room beyond the widening rounds', () => {
+    expect(MAX_PASS_ROUNDS).toBeGreaterThan(MAX_WIDEN_ROUNDS)
+  })
+
+  const cases: Array<[radius: number, gap: number, speed: number, n: number]> = [
+    [11, 2, 3000, 6], // a ball moves 25 px a tick: more than a diameter and a gap
+    [11, 2, 3000, 10],
+    [11, 5, 1e5, 30],
+    [3, 1, 1000, 6],
+    [0.5, 1, 1e4, 40],
+    [11, 1, 1e5, 200],
+  ]
+  for (const [radius, gap, speed, n] of cases) {
+    it(`radius ${radius}, gap ${gap} px, ${speed} px/s into ${n} balls: no ball passes another, the last one leaves with the striker's speed`, () => {
+      const r = row(radius, gap, speed, n)
+      expect(r.swapped).toBe(false)
+      // equal masses, restitution 1: the push goes through every ball, and only the last one moves on
+      expect(r.collisions).toBe(n)
+      expect(r.vx[n]).toBeCloseTo(speed, 6)
+      for (let k = 0; k < n; k++) expect(Math.abs(r.vx[k]!)).toBeLessThan(1e-9 * speed)
+    })
+  }
+})
