@@ -61,4 +61,52 @@ describe('fixed-tick contacts, restitution 1: the energy kept', () => {
     }
     expect(last / k0).toBeGreaterThan(0.95)
   })
+
+  it('a light ball driven toward a wall by a heavy one: elastic everywhere, the two keep their energy (0.48 when the pair and the wall were solved inelastically at the wall)', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_SETTLE_SPEED: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 200, maxY: 200, restitution: 1 })
+    sim.addBall({ x: 144.778, y: 138.498, vx: 128.448, vy: -388.943, mass: 1 })
+    sim.addBall({ x: 94.464, y: 68.073, vx: 317.24, vy: -169.507, mass: 0.11883 })
+    const k0 = kinetic(sim)
+    let collisions = 0
+    for (let i = 0; i < 600; i++) {
+      sim.step(1 / 60)
+      for (const e of sim.drainEvents()) if (e.type === 'collision') collisions++
+    }
+    expect(collisions).toBeGreaterThan(10)
+    expect(kinetic(sim) / k0).toBeCloseTo(1, 9)
+  })
+
+  it('an elastic gas of mixed sizes (radii 8–14 px, masses up to 5:1) keeps its energy over 10 s (0.91 before)', () => {
+    const r = mulberry32(7)
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_SETTLE_SPEED: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 600, maxY: 600, restitution: 1 })
+    for (let i = 0; i < 200; i++) {
+      const a = r() * 2 * Math.PI
+      sim.addBall({ x: 30 + (i % 14) * 40, y: 30 + Math.floor(i / 14) * 40, vx: 200 * Math.cos(a), vy: 200 * Math.sin(a), radius: 8 + 6 * r() })
+    }
+    const k0 = kinetic(sim)
+    for (let i = 0; i < 600; i++) sim.step(1 / 60)
+    expect(kinetic(sim) / k0).toBeGreaterThan(0.999)
+  })
+})
+
+describe('fixed-tick contacts: a striker into a light ball lying at a wall, and the wall\'s restitution', () => {
+  function strike(mass: number, wallE: number): number {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: wallE })
+    const a = sim.addBall({ x: 200, y: 200, vx: 300, vy: 0 })
+    sim.addBall({ x: 389, y: 200, vx: 0, vy: 0, mass })
+    for (let i = 0; i < 60; i++) sim.step(1 / 60)
+    return sim.ballState(a).vx
+  }
+  it('a dead wall takes the push: the striker stops, as the exact method has it (it came back at full speed)', () => {
+    expect(strike(0.33, 0)).toBe(0)
+    expect(strike(0.1, 0)).toBe(0)
+  })
+  it('an elastic wall sends it back whole; in between, at most the walls\' restitution of it', () => {
+    expect(strike(0.33, 1)).toBeCloseTo(-300, 9)
+    expect(strike(0.33, 0.3)).toBeCloseTo(-90, 9)
+    expect(strike(0.1, 0.5)).toBeCloseTo(-150, 9)
+  })
 })
