@@ -7,7 +7,10 @@
 //   settling contact (approach slower than BALL_SETTLE_SPEED, or the same two balls touching again with
 //     nothing between, or a ball past MAX_STEP_CONTACTS contacts in this step: a light ball squeezed
 //     between heavy ones): the touching cluster around them leaves with its centre-of-mass velocity, less any
-//     motion into a closed wall a member touches; then nothing in it can touch again (inelastic collapse ends)
+//     motion into a closed wall a member touches; then nothing in it can touch again (inelastic collapse ends).
+//     Two balls alone that approach that slowly while sliding past each other at GRAZE_SLIDE times
+//     BALL_SETTLE_SPEED or more (a graze), with restitution above 0, take the normal impulse instead,
+//     keeping their tangential motion
 //   struck while rolling on a rim: it leaves the rim and is in transit through that hole (no new decision
 //     there; it falls in if it stops inside the lip circle), as after a pop-off
 //   struck while skipping over or entering a hole: likewise in transit (the lip decision no longer applies)
@@ -15,7 +18,7 @@
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { CONTACT_DURATION, MAX_STEP_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
+import { CONTACT_DURATION, GRAZE_SLIDE, MAX_STEP_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
 import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
 import { appendCollision } from '../src/events.js'
@@ -61,18 +64,27 @@ export function collisionsSystem(w: BallWorld): void {
     const approach = -((B.vx[b]! - B.vx[a]!) * nx + (B.vy[b]! - B.vy[a]!) * ny)
     // a glancing contact at relative speed v approaches slower than s in a share of about s²/(2v²) of
     // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
-    const settle = approach < w.config.BALL_SETTLE_SPEED || isRepeatContact(w, a, b) || countContact(C, a) > MAX_STEP_CONTACTS || countContact(C, b) > MAX_STEP_CONTACTS
+    const slow = approach < w.config.BALL_SETTLE_SPEED
+    const settle = slow || isRepeatContact(w, a, b) || countContact(C, a) > MAX_STEP_CONTACTS || countContact(C, b) > MAX_STEP_CONTACTS
     C.contacts++
+    let graze = false
     if (settle) {
-      settleCluster(w, a, b, t)
-      const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
-      w.events.time[k] = t
-      w.events.speed[k] = approach
-      w.events.impulse[k] = contactOut.impulse
-      continue
+      collectCluster(w, a, b, t)
+      // two balls alone that barely approach but slide past each other fast (a graze; restitution above 0)
+      // take the normal impulse and keep their motion along the tangent; merged, both stopped dead (a graze
+      // at 300 px/s each way left two balls at rest). Pressed, they touch again and settle then
+      graze = slow && w.config.BALL_RESTITUTION > 0 && C.clusterCount === 2 && slides(B, a, b, nx, ny) >= GRAZE_SLIDE * w.config.BALL_SETTLE_SPEED
+      if (!graze) {
+        settleCluster(w, a, b, t)
+        const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
+        w.events.time[k] = t
+        w.events.speed[k] = approach
+        w.events.impulse[k] = contactOut.impulse
+        continue
+      }
     }
     const rapid = t - C.lastContact[a]! < CONTACT_DURATION || t - C.lastContact[b]! < CONTACT_DURATION
-    const e = rapid ? 1 : w.config.BALL_RESTITUTION
+    const e = rapid && !graze ? 1 : w.config.BALL_RESTITUTION
     resolveContact(C.mass[a]!, C.mass[b]!, B.vx[a]!, B.vy[a]!, B.vx[b]!, B.vy[b]!, nx, ny, e)
     const o = contactOut
     C.lastContact[a] = t
@@ -100,11 +112,17 @@ function countContact(C: CollisionState, eid: number): number {
   return ++C.stepContacts[eid]!
 }
 
-/** The cluster touching a and b leaves with its centre-of-mass velocity (less motion into walls). */
+/** The speed at which balls a and b slide past each other: their relative velocity across the normal (nx, ny). */
+function slides(B: BallWorld['Ball'], a: number, b: number, nx: number, ny: number): number {
+  const rx = B.vx[b]! - B.vx[a]!
+  const ry = B.vy[b]! - B.vy[a]!
+  return Math.abs(rx * ny - ry * nx)
+}
+
+/** The cluster touching a and b (collectCluster, just run) leaves with its centre-of-mass velocity (less motion into walls). */
 function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
   const C = w.collide!
   const B = w.Ball
-  collectCluster(w, a, b, t)
   const n = C.clusterCount
   let m = 0
   let px = 0

@@ -117,3 +117,13 @@ export const MAX_STEP_CONTACTS = 64
  */
 export const MOVING_ORDER_MIN = 4096
 export const MOVING_ORDER_CHURN = 16
+
+/**
+ * Contacts on: a settling contact (slower than BALL_SETTLE_SPEED) of two balls alone, sliding past each other
+ * at GRAZE_SLIDE × BALL_SETTLE_SPEED or more, is a graze: the two take the normal impulse and keep their
+ * tangential motion instead of leaving with their centre-of-mass velocity (which stopped two balls grazing
+ * at 300 px/s each way dead). Lower, it reached into settling piles: a packed 15 × 15 pile with e = 0.3
+ * took 9,942 contacts to settle at 16 (1,785 without the rule, 1,822 at 64). Not with restitution 0, where
+ * the two would stay touching and creep.
+ */
+export const GRAZE_SLIDE = 64

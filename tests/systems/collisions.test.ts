@@ -372,3 +372,37 @@ describe('contact law: momentum and energy', () => {
     expect(smallestGap(sim)).toBeGreaterThan(-1e-6)
   }, 120_000)
 })
+
+describe('a graze: two balls alone touching slower than BALL_SETTLE_SPEED while sliding past each other', () => {
+  // 300 px/s each way, centres 21.99999 px apart across the paths (radius 11): they touch at 0.57 px/s.
+  // The settling rule gave both their centre-of-mass velocity, 0: two balls passing each other stopped dead
+  for (const mode of ['on', 'fixed'] as const) {
+    it(`${mode}: both keep their motion along the tangent and take the normal impulse`, () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 0.9, ROLLING_DECEL: 0 })
+      const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+      const b = sim.addBall({ x: 300, y: 21.99999, vx: -300, vy: 0 })
+      const events: BallEvent[] = []
+      for (let f = 0; f < 60; f++) {
+        sim.step(1 / 60)
+        events.push(...sim.drainEvents())
+      }
+      const A = sim.ballState(a)
+      const B = sim.ballState(b)
+      expect(A.vx).toBeCloseTo(300, 2)
+      expect(B.vx).toBeCloseTo(-300, 2)
+      // the normal impulse parted them: 0.57 px/s of approach, at most (1 + e) of it between the two
+      expect(A.vy).toBeLessThan(0)
+      expect(B.vy - A.vy).toBeGreaterThan(0.5)
+      expect(B.vy - A.vy).toBeLessThan(1.1)
+      expect(A.vx + B.vx).toBeCloseTo(0, 9)
+      if (mode === 'on') expect(events.filter((e) => e.type === 'collision').map((e) => e.impulse! < 1)).toEqual([true])
+    })
+  }
+  it('on: with restitution 0 the settling rule still merges them (they would stay touching and creep)', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    sim.addBall({ x: 300, y: 21.99999, vx: -300, vy: 0 })
+    for (let f = 0; f < 60; f++) sim.step(1 / 60)
+    expect(sim.ballState(a).vx).toBe(0)
+  })
+})
