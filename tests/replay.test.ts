@@ -146,3 +146,73 @@ describe('replays', () => {
     expect(() => sim.stopRecording()).toThrow(/not recording/)
   })
 })
+
+describe('a recording starts from the state it was started in', () => {
+  const key = (e: { type: string; ball: number; hole?: number; time: number }) => `${e.type} ${e.ball} ${e.hole ?? ''} ${e.time}`
+  const play = (s: BallPhysics, n: number, log: string[]) => {
+    for (let f = 0; f < n; f++) {
+      s.step(1 / 60)
+      for (const e of s.drainEvents()) log.push(key(e))
+    }
+  }
+  const replayed = (sim: BallPhysics): string[] => {
+    const p = createReplayPlayer(replayFromJSON(replayToJSON(sim.stopRecording())))
+    const out: string[] = []
+    while (p.next()) for (const e of p.sim.drainEvents()) out.push(key(e))
+    return out
+  }
+  const throws = (s: BallPhysics) => {
+    for (let i = 0; i < 30; i++) s.throwBall({ x: 80 + 8 * i, y: 450, power: 0.3 + 0.015 * i, angle: 0.3 - 0.02 * i, radius: 7 })
+  }
+
+  it('a world stepped while empty (an attract loop), then recorded: the replay keeps its clock (it started at 0, every event 0.5 s early)', () => {
+    const s = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    for (let f = 0; f < 30; f++) s.step(1 / 60)
+    s.startRecording()
+    addPanel(s)
+    throws(s)
+    const live: string[] = []
+    play(s, 120, live)
+    expect(live.length).toBeGreaterThan(30)
+    expect(replayed(s)).toEqual(live)
+  })
+
+  it('rim tables prepared before the recording (tabulated model, empty world): the replay has them (its outcomes differed)', () => {
+    const s = createBallPhysics(TABULATED_CONFIG)
+    prepareRimTable(s, 18, 7)
+    s.startRecording()
+    addPanel(s)
+    throws(s)
+    const live: string[] = []
+    play(s, 150, live)
+    expect(live.length).toBeGreaterThan(30)
+    expect(replayed(s)).toEqual(live)
+  })
+
+  it('a fresh world needs no start state: its replay has none', () => {
+    const s = createBallPhysics()
+    s.startRecording()
+    addPanel(s)
+    expect(s.stopRecording().start).toBeUndefined()
+  })
+
+  it('restore while recording is refused (the replay played an empty world), and changes nothing', () => {
+    const server = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    addPanel(server)
+    throws(server)
+    for (let f = 0; f < 30; f++) server.step(1 / 60)
+    const s = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    s.startRecording()
+    expect(() => s.restore(server.snapshot())).toThrow(/restore: the world is recording/)
+    expect(s.balls()).toEqual([])
+    expect(s.time).toBe(0)
+    // restore first, then record: the replay is the run
+    const t = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    t.restore(server.snapshot())
+    t.startRecording()
+    const live: string[] = []
+    play(t, 90, live)
+    expect(live.length).toBeGreaterThan(10)
+    expect(replayed(t)).toEqual(live)
+  })
+})

@@ -163,3 +163,40 @@ describe('snapshot and restore', () => {
     })
   })
 })
+
+describe('snapshots and recordings inside a drainEventsWith callback', () => {
+  // the events the callback had been handed were still in the buffer, and so was the drain's flag: a world
+  // restored from such a snapshot refused every drain, and handed the same captures out again once it could
+  it('are refused, and the world drains as usual after the callback', () => {
+    const sim = createBallPhysics()
+    addPanel(sim)
+    for (let i = 0; i < 20; i++) sim.throwBall({ x: 150 + 6 * i, y: 450, power: 0.4, angle: 0.2 - 0.02 * i })
+    const errors: string[] = []
+    let captures = 0
+    for (let f = 0; f < 240 && captures === 0; f++) {
+      sim.step(1 / 60)
+      sim.drainEventsWith((e) => {
+        if (e.type !== 'capture') return
+        captures++
+        for (const call of [() => sim.snapshot(), () => sim.startRecording()]) {
+          try {
+            call()
+          } catch (err) {
+            errors.push((err as Error).message)
+          }
+        }
+      })
+    }
+    expect(captures).toBeGreaterThan(0)
+    expect(errors.length).toBe(2 * captures)
+    expect(errors[0]).toMatch(/snapshotWorld: called from a drainEventsWith callback/)
+    expect(errors[1]).toMatch(/startReplay: called from a drainEventsWith callback/)
+    // after the callback: a snapshot restores into a world that drains, and hands out nothing twice
+    const copy = createBallPhysics(sim.config)
+    copy.restore(sim.snapshot())
+    expect(copy.drainEvents()).toEqual([])
+    sim.step(1 / 60)
+    copy.step(1 / 60)
+    expect(copy.drainEvents()).toEqual(sim.drainEvents())
+  })
+})

@@ -43,8 +43,15 @@ export interface Replay {
 export function startReplay(world: BallWorld): void {
   const w = checkWorld('startReplay', world)
   if (w.stepping) throw new Error('startReplay: the world is in the middle of a step')
+  if (w.events.draining) throw new Error('startReplay: called from a drainEventsWith callback; start the recording after the drain returns')
   w.recorder = null
-  w.recorder = { inputs: [], start: w.entityIndex.maxId === 0 ? undefined : toBase64(snapshotWorld(w)) }
+  // a world as createBallWorld makes it needs no start state (its config makes it again); any other does: a
+  // world that ever had an entity, whose clock has run (steps of an empty world), or with rim tables beyond
+  // its config's own (prepareRimTable)
+  const c = w.config
+  const ownTables = c.RIM_MODEL === 'tabulated' && c.BALL_RADIUS < c.HOLE_RADIUS ? 1 : 0
+  const fresh = w.entityIndex.maxId === 0 && w.time === 0 && w.rimTables.length === ownTables
+  w.recorder = { inputs: [], start: fresh ? undefined : toBase64(snapshotWorld(w)) }
 }
 
 /** Stops recording and returns the replay of everything since startReplay. */

@@ -58,6 +58,9 @@ function bodyKeys(w: BallWorld): string[] {
 export function snapshotWorld(world: BallWorld): Uint8Array {
   const w = checkWorld('snapshotWorld', world)
   if (w.stepping) throw new Error('snapshotWorld: the world is in the middle of a step; take the snapshot between steps')
+  // the events the callback has been handed are still in the buffer until the drain returns: a world restored
+  // from such a snapshot would hand them out again (and refuse to drain, the drain's flag set)
+  if (w.events.draining) throw new Error('snapshotWorld: called from a drainEventsWith callback; take the snapshot after the drain returns')
   exactOnly('snapshotWorld', w)
   const out = new Writer()
   for (const b of MAGIC) out.u8(b)
@@ -241,6 +244,8 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   const w = checkWorld('restoreWorld', world)
   if (!(bytes instanceof Uint8Array)) throw new TypeError(`restore: bytes must be a Uint8Array (from snapshot()), got ${bytes === null ? 'null' : typeof bytes}`)
   if (w.stepping) throw new Error('restore: the world is in the middle of a step')
+  // a recording holds the state it started from and the inputs since; a restore is neither
+  if (w.recorder !== null) throw new Error('restore: the world is recording; restore first, then start the recording (a replay starts from the state its recording started in)')
   exactOnly('restore', w)
   if (w.entityIndex.maxId !== 0) {
     throw new Error('restore: the world already has entities; restore into a world just made with the snapshot\'s config (createBallPhysics(config)), then add the game\'s own components')
