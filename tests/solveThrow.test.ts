@@ -106,5 +106,22 @@ describe('solveThrow', () => {
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, along: -1 })).toThrow(/request\.along/)
     const inside = solveThrow(sim, { from: { x: 50, y: 370 }, hole: holes[0]! })
     expect(inside.found).toBe(false)
+    for (const step of [0, -1, 1, Number.NaN]) expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step })).toThrow(/request\.step must be in \(0, 0\.25\]/)
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step: '0.1' as unknown as number })).toThrow(TypeError)
+  })
+
+  it('with balls held at the launcher (contacts on), the answer holds at the game\'s step (checked at 0.25 s, half of them missed at 1/60 s)', () => {
+    // a burst from the launch point: all but one held, released one a step
+    const { sim, holes } = panel({ BALL_COLLISIONS: 'on' })
+    for (let i = 0; i < 12; i++) sim.throwBall({ x: 210, y: 450, power: 0.3 + 0.05 * i, angle: -0.5 + 0.09 * i })
+    for (let i = 0; i < 12; i++) sim.step(1 / 60)
+    sim.drainEvents()
+    expect(sim.balls().filter((b) => sim.ballState(b).mode === 'held').length).toBeGreaterThan(5)
+    for (const i of [3, 12, 21]) {
+      const shot = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[i]!, outcome: 'capture', along: 160 })
+      expect(shot.found, `hole ${i}`).toBe(true)
+      // outcomeOf steps at 1/60 s, the default step among held balls
+      expect(outcomeOf(sim, holes[i]!, shot as ThrowSolution), `hole ${i}`).toBe('capture')
+    }
   })
 })

@@ -21,9 +21,12 @@
 import type { BallWorld } from '../world/createWorld.js'
 import { checkHole, checkWorld, describe, finite, readSpec } from '../commands/validate.js'
 import { MAX_COORDINATE } from '../config/limits.js'
+import { positive } from '../check.js'
 import { atan2, hypot } from '../math.js'
 import type { BallPhysics } from './createBallPhysics.js'
 import { WallEdge } from '../../components/Walls.js'
+import { BallMode } from '../../components/Ball.js'
+import { forEachBall } from '../world/balls.js'
 import { ExactCheck, Trial, type ThrowOutcome } from './throwTrials.js'
 
 export type { ThrowOutcome } from './throwTrials.js'
@@ -40,6 +43,12 @@ export interface ThrowRequest {
   hole: number
   /** default 'capture' */
   outcome?: ThrowOutcome
+  /**
+   * the game's step, s, in (0, MAX_STEP]: the answer is checked in a copy of the world stepped at it. Balls
+   * held at the launcher (contacts on) go one a step, so an answer among held balls holds at that step
+   * only; all else is the same at every step. Default: 1/60 s when a ball is held, else MAX_STEP
+   */
+  step?: number
 }
 
 export interface ThrowSolution {
@@ -80,7 +89,7 @@ const SPEEDS = 24
  */
 export function solveThrow(target: BallPhysics | BallWorld, request: ThrowRequest): ThrowSolution | ThrowFailure {
   const world = checkWorld('solveThrow', 'world' in target && 'step' in target ? target.world : (target as BallWorld))
-  const s = readSpec('solveThrow request', request, ['from', 'hole', 'outcome', 'along'] as const)
+  const s = readSpec('solveThrow request', request, ['from', 'hole', 'outcome', 'along', 'step'] as const)
   const f = readSpec('request.from', s.from, ['x', 'y'] as const)
   const fx = finite('request.from.x', f.x, MAX_COORDINATE)
   const fy = finite('request.from.y', f.y, MAX_COORDINATE)
@@ -89,9 +98,11 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   if (along < 0) throw new RangeError(`request.along must be a finite number in [0, ${MAX_COORDINATE}], got ${along}`)
   const outcome = s.outcome === undefined ? 'capture' : (s.outcome as ThrowOutcome)
   if (!OUTCOMES.includes(outcome)) throw new RangeError(`request.outcome must be one of ${OUTCOMES.join(', ')}, got ${describe(s.outcome)}`)
+  const maxStep = world.config.MAX_STEP
+  const step = s.step === undefined ? (anyHeld(world) ? Math.min(1 / 60, maxStep) : maxStep) : positive('request.step', s.step, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
 
-  const trial = new Trial(world, hole)
+  const trial = new Trial(world, hole, step)
   const cfg = world.config
   const H = world.Hole
   const hx = H.x[hole]!
@@ -116,7 +127,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
     return fail(`no throw ${where} gives ${outcome} at hole ${hole}: ${trial.count} throws tried, direct and off the closed walls, over the powers and aims that reach it`, trial.count)
   }
   found.sort((a, b) => b.depth - a.depth || a.order - b.order)
-  const exact = new ExactCheck(world, hole)
+  const exact = new ExactCheck(world, hole, step)
   const tries = Math.min(found.length, 4)
   for (let n = 0; n < tries; n++) {
     const c = found[n]!
@@ -290,3 +301,12 @@ function depthOf(hit: Uint8Array): Uint8Array {
   return depth
 }
 
+/** Whether a ball of the world is held at the launcher (put down on another, waiting for its spot). */
+function anyHeld(world: BallWorld): boolean {
+  const mode = world.Ball.mode
+  let held = false
+  forEachBall(world, (b) => {
+    if (mode[b] === BallMode.Held) held = true
+  })
+  return held
+}

@@ -27,7 +27,7 @@ function outcomeAt(type: number, eventHole: number, hole: number): ThrowOutcome 
  * Steps `sim` (MAX_STEP at a time, up to HORIZON) until ball `b` meets `hole` decisively or stops; the
  * outcome there (null: none) and its time after `t0`, s.
  */
-function follow(sim: BallPhysics, b: number, hole: number, t0: number): { outcome: ThrowOutcome | null; at: number } {
+function follow(sim: BallPhysics, b: number, hole: number, t0: number, dt: number): { outcome: ThrowOutcome | null; at: number } {
   const found = { outcome: null as ThrowOutcome | null, at: -1 }
   const visit = (e: { code: number; ball: number; hole: number; time: number }): void => {
     if (found.outcome !== null || e.ball !== b) return
@@ -35,7 +35,6 @@ function follow(sim: BallPhysics, b: number, hole: number, t0: number): { outcom
     if (found.outcome !== null) found.at = e.time - t0
   }
   const mode = sim.world.Ball.mode
-  const dt = sim.config.MAX_STEP
   for (let t = 0; t < HORIZON && found.outcome === null; t += dt) {
     sim.step(dt)
     sim.drainEventsWith(visit)
@@ -57,7 +56,12 @@ export class Trial {
   /** x, y, vx, vy, radius, mass of each ball on the panel (contacts on) */
   private readonly others: number[] = []
 
-  constructor(world: BallWorld, hole: number) {
+  constructor(
+    world: BallWorld,
+    hole: number,
+    /** the step the trials are stepped at */
+    private readonly dt: number,
+  ) {
     const contacts = world.collide !== null || world.fixed !== null
     this.sim = createBallPhysics(contacts ? world.config : { ...world.config, BALL_COLLISIONS: 'off' }, { capacity: 64 })
     const ids = copyPanel(world, this.sim)
@@ -67,7 +71,7 @@ export class Trial {
     const mass = world.collide !== null ? world.collide.mass : world.fixed!.mass
     forEachBall(world, (b) => {
       const m = B.mode[b]
-      if (m !== BallMode.Rolling && m !== BallMode.RimRoll && m !== BallMode.Resting) return
+      if (m !== BallMode.Rolling && m !== BallMode.RimRoll && m !== BallMode.Resting && m !== BallMode.Held) return
       this.others.push(B.x[b]!, B.y[b]!, m === BallMode.Resting ? 0 : B.vx[b]!, m === BallMode.Resting ? 0 : B.vy[b]!, B.radius[b]!, mass[b]!)
     })
   }
@@ -77,7 +81,7 @@ export class Trial {
     const sim = this.sim
     const o = this.others
     for (let i = 0; i < o.length; i += 6) sim.addBall({ x: o[i]!, y: o[i + 1]!, vx: o[i + 2]!, vy: o[i + 3]!, radius: o[i + 4]!, mass: o[i + 5]! })
-    const { outcome } = follow(sim, sim.throwBall({ x, y, power, angle }), this.hole, sim.time)
+    const { outcome } = follow(sim, sim.throwBall({ x, y, power, angle }), this.hole, sim.time, this.dt)
     for (const id of sim.balls()) sim.removeBall(id)
     sim.drainEvents()
     return outcome
@@ -91,6 +95,8 @@ export class ExactCheck {
   constructor(
     private readonly world: BallWorld,
     private readonly hole: number,
+    /** the step the copy is stepped at (the game's: balls held at the launcher go one a step) */
+    private readonly dt: number,
   ) {
     this.bytes = snapshotWorld(world)
   }
@@ -101,7 +107,7 @@ export class ExactCheck {
     const copy = createBallPhysics(this.world.config)
     copy.restore(this.bytes)
     copy.drainEvents()
-    const found = follow(copy, copy.throwBall({ x, y, power, angle }), this.hole, copy.time)
+    const found = follow(copy, copy.throwBall({ x, y, power, angle }), this.hole, copy.time, this.dt)
     return found.outcome === outcome ? found.at : -1
   }
 }
