@@ -2,6 +2,7 @@
 // physics steps, caps the catch-up after a long frame (a tab that slept) and gives the interpolation
 // factor for drawing between the last two physics states. The physics itself is exact for any dt; the
 // fixed step is for smooth, display-independent pacing.
+import { readSpec } from './check.js'
 
 export interface FixedStepClock {
   /** physics step, s */
@@ -26,12 +27,13 @@ export interface FixedStepClockOptions {
 }
 
 export function createFixedStepClock(options: FixedStepClockOptions = {}): FixedStepClock {
-  const hz = options.hz ?? 120
-  const maxSteps = options.maxStepsPerFrame ?? 8
+  const o = readSpec('clock options', options, ['hz', 'maxStepsPerFrame'] as const, 'options')
+  const hz = o.hz ?? 120
+  const maxSteps = o.maxStepsPerFrame ?? 8
   if (typeof hz !== 'number' || !Number.isFinite(hz) || hz <= 0 || hz > 10000) {
-    throw new RangeError(`hz must be in (0, 10000], got ${hz}`)
+    throw new RangeError(`hz must be in (0, 10000], got ${String(hz)}`)
   }
-  if (!Number.isInteger(maxSteps) || maxSteps < 1 || maxSteps > 1000) {
+  if (typeof maxSteps !== 'number' || !Number.isInteger(maxSteps) || maxSteps < 1 || maxSteps > 1000) {
     throw new RangeError(`maxStepsPerFrame must be an integer in [1, 1000], got ${maxSteps}`)
   }
   const dt = 1 / hz

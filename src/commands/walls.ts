@@ -47,7 +47,7 @@ function openMask(value: unknown): number {
 /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
 export function setWalls(world: BallWorld, spec: WallsSpec): void {
   const w = checkWorld('setWalls', world)
-  const s = readSpec('setWalls spec', spec, ['minX', 'minY', 'maxX', 'maxY', 'restitution', 'open'] as const)
+  const s = readSpec('setWalls spec', spec, ['minX', 'minY', 'maxX', 'maxY', 'restitution', 'open'] as const, 'walls')
   const minX = finite('walls.minX', s.minX, MAX_COORDINATE)
   const minY = finite('walls.minY', s.minY, MAX_COORDINATE)
   const maxX = finite('walls.maxX', s.maxX, MAX_COORDINATE)

@@ -1,5 +1,6 @@
 // Public data of the physical reference model (docs/reference-model.md): the input and its validation, the
 // outcome, the phase trace and the lip state. No behaviour beyond checking an input.
+import { readSpec } from '../check.js'
 
 export interface ReferenceInput {
   /** offset of the straight path from the hole centre (its closest approach); |delta| < holeRadius */
@@ -98,13 +99,15 @@ export interface LipState {
   omegaN: number
 }
 
+const INPUT_KEYS = ['delta', 'speed', 'holeRadius', 'ballRadius', 'gravity', 'inertia'] as const
+
 function checkFinite(name: string, value: number): void {
   if (typeof value !== 'number' || !Number.isFinite(value)) throw new RangeError(`${name} must be a finite number`)
 }
 
 /** Throws a RangeError naming the first field out of range. */
 export function validateReferenceInput(input: ReferenceInput): void {
-  const { delta, speed, holeRadius, ballRadius, gravity, inertia } = input
+  const { delta, speed, holeRadius, ballRadius, gravity, inertia } = readSpec('reference input', input, INPUT_KEYS, 'input') as unknown as ReferenceInput
   checkFinite('holeRadius', holeRadius)
   if (!(holeRadius > 0)) throw new RangeError('holeRadius must be in (0, ∞)')
   checkFinite('ballRadius', ballRadius)
