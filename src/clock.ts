@@ -21,9 +21,9 @@ export interface FixedStepClock {
 
 export interface FixedStepClockOptions {
   /** steps per second, (0, 10000]; default 120 */
-  hz?: number
+  hz?: number | undefined
   /** integer in [1, 1000]; default 8 */
-  maxStepsPerFrame?: number
+  maxStepsPerFrame?: number | undefined
 }
 
 export function createFixedStepClock(options: FixedStepClockOptions = {}): FixedStepClock {

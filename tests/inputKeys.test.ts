@@ -146,3 +146,30 @@ describe('unknown keys in command inputs', () => {
     expect(() => sim.throwBall({ x: 200, y: 450, power: 0.3, angle: 0, [Symbol('tag')]: 1 } as never)).not.toThrow()
   })
 })
+
+describe('an optional field given as undefined is as if it were absent (the types allow it: tests/package)', () => {
+  /** A scene run with every optional field absent, or given as undefined: the same bits. */
+  function run(u: boolean): string {
+    const none = u ? undefined : (Symbol('absent') as never)
+    const opt = <T extends object>(o: T): T => (u ? o : (Object.fromEntries(Object.entries(o).filter(([, v]) => v !== none)) as T))
+    const sim = createBallPhysics(opt({ ROLLING_DECEL: none, GRAVITY: none, V_SKIP_MAX: none, METHOD: none }), opt({ capacity: none, broadphase: none }))
+    const w = createBallWorld(opt({ CAPTURE_WINDOW: none }), opt({ capacity: none }))
+    const hole = sim.addHole(opt({ x: 210, y: 300, radius: none, value: none }))
+    addHoles(w, [opt({ x: 10, y: 10, radius: none, value: none })])
+    sim.setWalls(opt({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: none, open: none }))
+    sim.setWalls(opt({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: opt({ bottom: true, left: none }) }))
+    sim.addBall(opt({ x: 100, y: 100, vx: 50, vy: 0, radius: none, hero: none, mass: none }))
+    sim.throwBall(opt({ x: 210, y: 450, power: 0.4, angle: 0, radius: none, hero: none, mass: none }))
+    const clock = createFixedStepClock(opt({ hz: none, maxStepsPerFrame: none }))
+    clock.advance(0.1, (dt) => sim.step(dt))
+    const shot = solveThrow(sim, opt({ from: { x: 210, y: 450 }, hole, along: none, outcome: none }))
+    prepareRimTable(sim, 18, 11, opt({ inertia: none, rows: none }))
+    const scene = opt({ config: none, holes: [{ x: 210, y: 300 }], walls: none })
+    const tally = sampleThrows(scene, { power: opt({ mean: 0.4, sd: none }), angle: opt({ mean: 0, sd: none }), from: opt({ x: 210, y: 450, sdX: none, sdY: none }) }, 20, 1)
+    return JSON.stringify([sim.config, w.config, sim.snapshot().join(), shot, tally, clock.steps, clock.stepSeconds])
+  }
+
+  it('addBall, throwBall, addHole(s), setWalls (and open), the config and options, the clock, solveThrow, prepareRimTable, sampleThrows', () => {
+    expect(run(true)).toBe(run(false))
+  })
+})

@@ -18,17 +18,17 @@ import { mulberry32 } from '../random.js'
 import { createBallPhysics, type BallPhysics } from './createBallPhysics.js'
 
 export interface OutcomeScene {
-  config?: ConfigOverrides
+  config?: ConfigOverrides | undefined
   holes: readonly HoleSpec[]
-  walls?: WallsSpec
+  walls?: WallsSpec | undefined
 }
 
 /** A throw distribution: each part a mean and a normal spread (power is clipped to [0, 1]). */
 export interface ThrowDistribution {
-  power: { mean: number; sd?: number }
+  power: { mean: number; sd?: number | undefined }
   /** rad, as throwBall's */
-  angle: { mean: number; sd?: number }
-  from: { x: number; y: number; sdX?: number; sdY?: number }
+  angle: { mean: number; sd?: number | undefined }
+  from: { x: number; y: number; sdX?: number | undefined; sdY?: number | undefined }
 }
 
 /** Integer counts over a set of throws; merge with mergeTallies, read with summarizeOutcomes. */

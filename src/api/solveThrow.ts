@@ -35,11 +35,11 @@ export interface ThrowRequest {
    * px, default 0: the throw may start anywhere on the level segment from.x ± along (a launcher that
    * slides, a plinko drop line); points nearer from.x are preferred
    */
-  along?: number
+  along?: number | undefined
   /** the target hole's id */
   hole: number
   /** default 'capture' */
-  outcome?: ThrowOutcome
+  outcome?: ThrowOutcome | undefined
 }
 
 export interface ThrowSolution {

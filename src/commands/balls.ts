@@ -24,14 +24,14 @@ export interface BallSpec {
   vx: number
   vy: number
   /** px, default config.BALL_RADIUS */
-  radius?: number
+  radius?: number | undefined
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
-  hero?: boolean
+  hero?: boolean | undefined
   /**
    * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
    * (same density). Used only when config.BALL_COLLISIONS is 'on' or 'fixed'.
    */
-  mass?: number
+  mass?: number | undefined
 }
 
 export interface ThrowSpec {
@@ -42,11 +42,11 @@ export interface ThrowSpec {
   /** radians, 0 = straight up the panel (−y), positive toward +x; in [−2π, 2π] */
   angle: number
   /** px, default config.BALL_RADIUS */
-  radius?: number
+  radius?: number | undefined
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
-  hero?: boolean
+  hero?: boolean | undefined
   /** as BallSpec.mass */
-  mass?: number
+  mass?: number | undefined
 }
 
 export interface BallState {

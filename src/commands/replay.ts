@@ -34,7 +34,7 @@ export interface Replay {
   /** the recorded world's options */
   options: { capacity: number; broadphase: 'auto' | 'grid' | 'scan' }
   /** the world when recording started, as a base64 snapshot; absent when it had no entities */
-  start?: string
+  start?: string | undefined
   /** the inputs, in order: [command, ...arguments]; ['step', dt] for each step */
   inputs: ReplayInput[]
 }

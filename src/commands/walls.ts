@@ -15,9 +15,9 @@ export interface WallsSpec {
   maxX: number
   maxY: number
   /** normal restitution at the walls, [0, 1]; default 0.5 */
-  restitution?: number
+  restitution?: number | undefined
   /** open edges: a ball whose centre crosses one leaves the panel ('gutter' event, mode 'out') */
-  open?: { left?: boolean; top?: boolean; right?: boolean; bottom?: boolean }
+  open?: { left?: boolean | undefined; top?: boolean | undefined; right?: boolean | undefined; bottom?: boolean | undefined } | undefined
 }
 
 const EDGES = { left: WallEdge.Left, top: WallEdge.Top, right: WallEdge.Right, bottom: WallEdge.Bottom } as const

@@ -144,7 +144,8 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   BALL_SETTLE_SPEED: 1,
 })
 
-export type ConfigOverrides = Partial<BallPhysicsConfig>
+/** Any keys of the config; a key given as undefined is as if it were absent. */
+export type ConfigOverrides = { [K in keyof BallPhysicsConfig]?: BallPhysicsConfig[K] | undefined }
 
 interface Range {
   min: number

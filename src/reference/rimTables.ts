@@ -19,7 +19,7 @@ export function prepareRimTable(
   target: BallWorld | { world: BallWorld },
   holeRadius: number,
   ballRadius: number,
-  options: { inertia?: number; rows?: 'now' | 'lazy' } = {},
+  options: { inertia?: number | undefined; rows?: 'now' | 'lazy' | undefined } = {},
 ): number {
   const w = 'world' in target ? target.world : target
   if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
