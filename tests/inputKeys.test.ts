@@ -16,7 +16,7 @@ import {
   type Replay,
 } from '../src/index'
 import { addHole, addHoles, createBallWorld, listBalls, listHoles, playReplay, setWalls, throwBall } from '../src/ecs'
-import { referenceOutcome, referenceTrace, validateReferenceInput } from '../src/reference/index'
+import { lipEnergy, referenceOutcome, referenceTrace, rollOnLip, validateReferenceInput } from '../src/reference/index'
 
 /** What a refused call could have touched. */
 function state(sim: BallPhysics): string {
@@ -171,5 +171,54 @@ describe('an optional field given as undefined is as if it were absent (the type
 
   it('addBall, throwBall, addHole(s), setWalls (and open), the config and options, the clock, solveThrow, prepareRimTable, sampleThrows', () => {
     expect(run(true)).toBe(run(false))
+  })
+})
+
+describe('error messages say what was wrong, in the caller\'s terms', () => {
+  it("createFixedStepClock({ hz: '60' }) is a TypeError saying it got a string; advance('1') too", () => {
+    expect(() => createFixedStepClock({ hz: '60' as never })).toThrow(TypeError)
+    expect(() => createFixedStepClock({ hz: '60' as never })).toThrow('hz must be a number in (0, 10000], got the string "60"')
+    expect(() => createFixedStepClock({ maxStepsPerFrame: '8' as never })).toThrow(TypeError)
+    expect(() => createFixedStepClock({ hz: 0 })).toThrow(RangeError)
+    expect(() => createFixedStepClock().advance('1' as never, () => {})).toThrow(/frameSeconds must be a finite number ≥ 0, got the string "1"/)
+  })
+
+  it('the reference says what it got, and refuses null inputs and lip states with a clear TypeError', () => {
+    const input = { delta: 1, speed: 300, holeRadius: 18, ballRadius: 11, gravity: 6953, inertia: 0.4 }
+    expect(() => referenceOutcome({ ...input, speed: '300' as never })).toThrow(TypeError)
+    expect(() => referenceOutcome({ ...input, speed: '300' as never })).toThrow('speed must be a finite number, got the string "300"')
+    expect(() => referenceOutcome({ ...input, speed: -1 })).toThrow('speed must be in (0, ∞), got -1')
+    expect(() => referenceOutcome({ ...input, ballRadius: 20 })).toThrow('ballRadius must be in (0, holeRadius), got 20 with holeRadius 18')
+    expect(() => referenceOutcome(null as never)).toThrow(new TypeError('reference input must be an object, got null'))
+    expect(() => referenceTrace(undefined as never)).toThrow('reference input must be an object, got undefined')
+    const start = { psi: 0, theta: 0.1, psiDot: 1, thetaDot: 0, omegaN: 0 }
+    expect(() => rollOnLip(null as never, 0.1, 18, 11, 6953, 0.4)).toThrow(new TypeError('start must be an object, got null'))
+    expect(() => rollOnLip({ ...start, theta: 'x' as never }, 0.1, 18, 11, 6953, 0.4)).toThrow('start.theta must be a finite number, got the string "x"')
+    expect(() => rollOnLip(start, '1' as never, 18, 11, 6953, 0.4)).toThrow(TypeError)
+    expect(() => lipEnergy(null as never, 18, 11, 6953, 0.4)).toThrow('start must be an object, got null')
+    expect(rollOnLip(start, 0.01, 18, 11, 6953, 0.4).state.psi).toBeGreaterThan(0)
+  })
+
+  it('stopRecording when not recording names the sim methods; startRecording while recording is refused, the recording kept', () => {
+    const sim = createBallPhysics()
+    expect(() => sim.stopRecording()).toThrow('stopRecording: the simulation is not recording; call startRecording first')
+    sim.startRecording()
+    sim.addHole({ x: 10, y: 10 })
+    expect(() => sim.startRecording()).toThrow(/startRecording: the simulation is already recording; call stopRecording first/)
+    sim.step(1 / 60)
+    expect(sim.stopRecording().inputs.map((i) => i[0])).toEqual(['addHole', 'step'])
+    expect(() => sim.stopRecording()).toThrow(/not recording/)
+  })
+
+  it('a ball id given as a hole, or a hole id as a ball, says which it is', () => {
+    const sim = scene()
+    const ball = sim.balls()[0]!
+    const hole = sim.holes()[0]!
+    const before = state(sim)
+    expect(() => sim.removeHole(ball)).toThrow(new RangeError(`hole ${ball} is a ball of this world, not a hole`))
+    expect(() => sim.holeState(ball)).toThrow(/is a ball of this world, not a hole/)
+    expect(() => sim.removeBall(hole)).toThrow(new RangeError(`ball ${hole} is a hole of this world, not a ball`))
+    expect(() => sim.removeHole(99999)).toThrow(/not a live hole of this world \(unknown or removed\)/)
+    expect(state(sim)).toBe(before)
   })
 })
