@@ -86,11 +86,15 @@ export function flag(field: string, value: unknown): boolean {
   return value
 }
 
-/** A world made by createBallWorld (or createBallPhysics().world). */
+/** bitECS's key for a world's own data (a registered symbol), which its deleteWorld removes */
+const BITECS_INTERNAL = Symbol.for('bitecs_internal')
+
+/** A world made by createBallWorld (or createBallPhysics().world), not deleted by bitECS's deleteWorld. */
 export function checkWorld(caller: string, world: unknown): BallWorld {
   const w = world as BallWorld | null
   if (w === null || typeof w !== 'object' || !('Ball' in w) || !('holes' in w) || !('config' in w)) {
     throw new TypeError(`${caller}: world must be a world made by createBallWorld, got ${describe(world)}`)
   }
+  if (!(BITECS_INTERNAL in w)) throw new Error(`${caller}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
   return w
 }

@@ -222,3 +222,22 @@ describe('error messages say what was wrong, in the caller\'s terms', () => {
     expect(state(sim)).toBe(before)
   })
 })
+
+describe('a world deleted by bitECS deleteWorld (not supported)', () => {
+  it('every sim method that reaches the world then throws a clear error instead of a bitECS internal one', async () => {
+    const { deleteWorld } = await import('bitecs')
+    const sim = scene()
+    const ball = sim.balls()[0]!
+    deleteWorld(sim.world)
+    const calls: [string, () => unknown][] = [
+      ['runSchedule', () => sim.step(1 / 60)],
+      ['addBall', () => sim.addBall({ x: 0, y: 0, vx: 0, vy: 0 })],
+      ['removeBall', () => sim.removeBall(ball)],
+      ['addHole', () => sim.addHole({ x: 0, y: 0 })],
+      ['drainEvents', () => sim.drainEvents()],
+      ['snapshotWorld', () => sim.snapshot()],
+      ['setWalls', () => sim.setWalls({ minX: 0, minY: 0, maxX: 1, maxY: 1 })],
+    ]
+    for (const [name, call] of calls) expect(call).toThrow(`${name}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
+  })
+})
