@@ -215,9 +215,9 @@ describe('error messages say what was wrong, in the caller\'s terms', () => {
     const ball = sim.balls()[0]!
     const hole = sim.holes()[0]!
     const before = state(sim)
-    expect(() => sim.removeHole(ball)).toThrow(new RangeError(`hole ${ball} is a ball of this world, not a hole`))
-    expect(() => sim.holeState(ball)).toThrow(/is a ball of this world, not a hole/)
-    expect(() => sim.removeBall(hole)).toThrow(new RangeError(`ball ${hole} is a hole of this world, not a ball`))
+    expect(() => sim.removeHole(ball)).toThrow(new RangeError(`hole ${ball} is not a live hole of this world: it is a ball`))
+    expect(() => sim.holeState(ball)).toThrow(/is not a live hole of this world: it is a ball/)
+    expect(() => sim.removeBall(hole)).toThrow(new RangeError(`ball ${hole} is not a live ball of this world: it is a hole`))
     expect(() => sim.removeHole(99999)).toThrow(/not a live hole of this world \(unknown or removed\)/)
     expect(state(sim)).toBe(before)
   })

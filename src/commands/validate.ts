@@ -17,7 +17,7 @@ function checkId(field: string, eid: unknown, kind: string): number {
 export function checkBall(world: BallWorld, field: string, eid: unknown): number {
   const b = checkId(field, eid, 'ball')
   if (!isBall(world, b)) {
-    if (entityExists(world, b) && hasComponent(world, b, world.Hole)) throw new RangeError(`${field} ${b} is a hole of this world, not a ball`)
+    if (entityExists(world, b) && hasComponent(world, b, world.Hole)) throw new RangeError(`${field} ${b} is not a live ball of this world: it is a hole`)
     throw new RangeError(`${field} ${b} is not a live ball of this world (unknown or removed)`)
   }
   return b
@@ -26,7 +26,7 @@ export function checkBall(world: BallWorld, field: string, eid: unknown): number
 /** The id of a live hole of the world. */
 export function checkHole(world: BallWorld, field: string, eid: unknown): number {
   const h = checkId(field, eid, 'hole')
-  if (isBall(world, h)) throw new RangeError(`${field} ${h} is a ball of this world, not a hole`)
+  if (isBall(world, h)) throw new RangeError(`${field} ${h} is not a live hole of this world: it is a ball`)
   if (!entityExists(world, h) || !hasComponent(world, h, world.Hole)) {
     throw new RangeError(`${field} ${h} is not a live hole of this world (unknown or removed)`)
   }
