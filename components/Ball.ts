@@ -3,7 +3,7 @@
 // `live` says which ids are balls.
 import { createStore } from './store.js'
 
-export const BallMode = {
+export const BallMode = Object.freeze({
   Rolling: 0,
   RimRoll: 1,
   Captured: 2,
@@ -15,12 +15,12 @@ export const BallMode = {
    * simulation, with the velocity it was given, until the spot is clear (systems/launcher.ts)
    */
   Held: 5,
-} as const
+} as const)
 export type BallModeCode = (typeof BallMode)[keyof typeof BallMode]
-export const BALL_MODE_NAMES = ['rolling', 'rimRoll', 'captured', 'resting', 'out', 'held'] as const
+export const BALL_MODE_NAMES = Object.freeze(['rolling', 'rimRoll', 'captured', 'resting', 'out', 'held'] as const)
 export type BallModeName = (typeof BALL_MODE_NAMES)[number]
 
-export const BallSchema = {
+export const BallSchema = Object.freeze({
   /** centre, px */
   x: Float64Array,
   y: Float64Array,
@@ -37,7 +37,7 @@ export const BallSchema = {
   live: Uint8Array,
   /** the ball's RimContact slot, 0 when it has none (components/RimContact.ts) */
   rim: Uint32Array,
-}
+})
 
 export const createBallStore = (capacity: number) => createStore(BallSchema, capacity)
 export type BallStore = ReturnType<typeof createBallStore>

@@ -3,7 +3,7 @@
 // balls (the usual order) keep it small however many balls follow.
 import { createStore } from './store.js'
 
-export const HoleSchema = {
+export const HoleSchema = Object.freeze({
   /** centre, px */
   x: Float64Array,
   y: Float64Array,
@@ -11,7 +11,7 @@ export const HoleSchema = {
   radius: Float64Array,
   /** points scored by a capture */
   value: Float64Array,
-}
+})
 
 export const createHoleStore = (capacity: number) => createStore(HoleSchema, capacity)
 export type HoleStore = ReturnType<typeof createHoleStore>

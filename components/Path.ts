@@ -4,7 +4,7 @@
 import { createStore } from './store.js'
 
 /** What a ball meets next. Decision events stop the ball for the systems; the others are bookkeeping. */
-export const PathEvent = {
+export const PathEvent = Object.freeze({
   None: 0,
   /** centre crosses a hole's lip circle inward (decided by skip-over, capture, COG gate) */
   Lip: 1,
@@ -29,12 +29,12 @@ export const PathEvent = {
   Collide: 11,
   /** a tabulated bounce or skip reaches the reference's exit point (tabulated rim system) */
   Landing: 12,
-} as const
+} as const)
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
 
 // The path itself (origin, direction, speed v0 and time t0 at the origin) and the next event's time and
 // distance live in the world's interleaved rows, world.pathHot (src/world/pathHot.ts); the rest is here.
-export const PathSchema = {
+export const PathSchema = Object.freeze({
   /** speed at the ball's last event, from the closed form (so (δ, v) at an event is exact, not a hypot of components) */
   speed: Float64Array,
   /**
@@ -57,7 +57,7 @@ export const PathSchema = {
   markEdge: Uint8Array,
   /** the other ball of a marked Collide event */
   markOther: Uint32Array,
-}
+})
 
 export const createPathStore = (capacity: number) => createStore(PathSchema, capacity)
 export type PathStore = ReturnType<typeof createPathStore>

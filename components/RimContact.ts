@@ -15,7 +15,7 @@
 // (skipping, entering, in transit) hold a row but not the component.
 import { createStore } from './store.js'
 
-export const RimMode = {
+export const RimMode = Object.freeze({
   /** not inside any lip circle */
   None: 0,
   /** inside, decided, leaving (after a bounce or a pop-off, or added inside) */
@@ -28,15 +28,15 @@ export const RimMode = {
   Rolling: 4,
   /** carried across by the tabulated model: a bounce or skip on its way to the reference's exit point */
   Crossing: 5,
-} as const
+} as const)
 export type RimModeCode = (typeof RimMode)[keyof typeof RimMode]
 /** RimContact.ride: a tabulated ride round the lip that leaves at its end ('lipOut'), or drops in */
 export const RIDE_LEAVES = 1
 export const RIDE_DROPS = 2
 
-export const RIM_MODE_NAMES = ['none', 'transit', 'skipping', 'entering', 'rolling', 'crossing'] as const
+export const RIM_MODE_NAMES = Object.freeze(['none', 'transit', 'skipping', 'entering', 'rolling', 'crossing'] as const)
 
-export const RimContactSchema = {
+export const RimContactSchema = Object.freeze({
   /** entity id of the hole, 0 when none */
   hole: Uint32Array,
   /** RimMode */
@@ -81,7 +81,7 @@ export const RimContactSchema = {
   /** tabulated ride or crossing that escapes: velocity it leaves with, px/s */
   exitVx: Float64Array,
   exitVy: Float64Array,
-}
+})
 
 export const createRimContactStore = (capacity: number) => createStore(RimContactSchema, capacity)
 export type RimContactStore = ReturnType<typeof createRimContactStore>

@@ -4,9 +4,9 @@
 // before adding many balls, as for holes, and it stays small).
 import { createStore } from './store.js'
 
-export const WallEdge = { Left: 1, Top: 2, Right: 4, Bottom: 8 } as const
+export const WallEdge = Object.freeze({ Left: 1, Top: 2, Right: 4, Bottom: 8 } as const)
 
-export const WallsSchema = {
+export const WallsSchema = Object.freeze({
   /** inner faces of the rectangle, px (y down: top = minY) */
   minX: Float64Array,
   minY: Float64Array,
@@ -16,7 +16,7 @@ export const WallsSchema = {
   restitution: Float64Array,
   /** open edges, a WallEdge bit mask */
   open: Uint8Array,
-}
+})
 
 export const createWallsStore = (capacity: number) => createStore(WallsSchema, capacity)
 export type WallsStore = ReturnType<typeof createWallsStore>

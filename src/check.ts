@@ -25,9 +25,13 @@ export function describe(value: unknown): string {
   }
 }
 
-/** Reads the named fields of a spec object once each. Throws a TypeError when it is not a plain object. */
-export function readSpec<K extends string>(name: string, spec: unknown, keys: readonly K[]): Record<K, unknown> {
-  const source = specObject(name, spec)
+/**
+ * Reads the named fields of a spec object once each. Throws a TypeError when it is not a plain object, and
+ * a RangeError naming the first own key that is not one of `keys` (a misspelt optional field would
+ * otherwise be ignored); `field` names the spec in that message (default `name`).
+ */
+export function readSpec<K extends string>(name: string, spec: unknown, keys: readonly K[], field = name): Record<K, unknown> {
+  const source = specObject(name, spec, keys, field)
   const out = {} as Record<K, unknown>
   for (const key of keys) out[key] = source[key]
   return out
@@ -35,13 +39,19 @@ export function readSpec<K extends string>(name: string, spec: unknown, keys: re
 
 /**
  * The spec as a record to read fields from (for entry points that read them into locals, allocating
- * nothing). Throws a TypeError when it is not a plain object.
+ * nothing). Throws a TypeError when it is not a plain object, and a RangeError naming the first own key that
+ * is not one of `keys`; `field` names the spec in that message (default `name`).
  */
-export function specObject(name: string, spec: unknown): Record<string, unknown> {
+export function specObject(name: string, spec: unknown, keys: readonly string[], field = name): Record<string, unknown> {
   if (spec === null || typeof spec !== 'object' || Array.isArray(spec)) {
     throw new TypeError(`${name} must be an object, got ${describe(spec)}`)
   }
-  return spec as Record<string, unknown>
+  const source = spec as Record<string, unknown>
+  for (const key in source) {
+    if (!Object.prototype.hasOwnProperty.call(source, key) || keys.includes(key)) continue
+    throw new RangeError(`${field}.${key} is not a known key; known keys: ${keys.join(', ')}`)
+  }
+  return source
 }
 
 /** A finite number in [−limit, limit]. */
@@ -76,11 +86,15 @@ export function flag(field: string, value: unknown): boolean {
   return value
 }
 
-/** A world made by createBallWorld (or createBallPhysics().world). */
+/** bitECS's key for a world's own data (a registered symbol), which its deleteWorld removes */
+const BITECS_INTERNAL = Symbol.for('bitecs_internal')
+
+/** A world made by createBallWorld (or createBallPhysics().world), not deleted by bitECS's deleteWorld. */
 export function checkWorld(caller: string, world: unknown): BallWorld {
   const w = world as BallWorld | null
   if (w === null || typeof w !== 'object' || !('Ball' in w) || !('holes' in w) || !('config' in w)) {
     throw new TypeError(`${caller}: world must be a world made by createBallWorld, got ${describe(world)}`)
   }
+  if (!(BITECS_INTERNAL in w)) throw new Error(`${caller}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
   return w
 }

@@ -2,6 +2,7 @@
 // physics steps, caps the catch-up after a long frame (a tab that slept) and gives the interpolation
 // factor for drawing between the last two physics states. The physics itself is exact for any dt; the
 // fixed step is for smooth, display-independent pacing.
+import { describe, readSpec } from './check.js'
 
 export interface FixedStepClock {
   /** physics step, s */
@@ -20,17 +21,18 @@ export interface FixedStepClock {
 
 export interface FixedStepClockOptions {
   /** steps per second, (0, 10000]; default 120 */
-  hz?: number
+  hz?: number | undefined
   /** integer in [1, 1000]; default 8 */
-  maxStepsPerFrame?: number
+  maxStepsPerFrame?: number | undefined
 }
 
 export function createFixedStepClock(options: FixedStepClockOptions = {}): FixedStepClock {
-  const hz = options.hz ?? 120
-  const maxSteps = options.maxStepsPerFrame ?? 8
-  if (typeof hz !== 'number' || !Number.isFinite(hz) || hz <= 0 || hz > 10000) {
-    throw new RangeError(`hz must be in (0, 10000], got ${hz}`)
-  }
+  const o = readSpec('clock options', options, ['hz', 'maxStepsPerFrame'] as const, 'options')
+  const hz = o.hz ?? 120
+  const maxSteps = o.maxStepsPerFrame ?? 8
+  if (typeof hz !== 'number') throw new TypeError(`hz must be a number in (0, 10000], got ${describe(hz)}`)
+  if (!Number.isFinite(hz) || hz <= 0 || hz > 10000) throw new RangeError(`hz must be in (0, 10000], got ${hz}`)
+  if (typeof maxSteps !== 'number') throw new TypeError(`maxStepsPerFrame must be an integer in [1, 1000], got ${describe(maxSteps)}`)
   if (!Number.isInteger(maxSteps) || maxSteps < 1 || maxSteps > 1000) {
     throw new RangeError(`maxStepsPerFrame must be an integer in [1, 1000], got ${maxSteps}`)
   }
@@ -43,7 +45,8 @@ export function createFixedStepClock(options: FixedStepClockOptions = {}): Fixed
     alpha: 0,
     droppedSeconds: 0,
     advance(frameSeconds, step) {
-      if (typeof frameSeconds !== 'number' || !Number.isFinite(frameSeconds) || frameSeconds < 0) {
+      if (typeof frameSeconds !== 'number') throw new TypeError(`frameSeconds must be a finite number ≥ 0, got ${describe(frameSeconds)}`)
+      if (!Number.isFinite(frameSeconds) || frameSeconds < 0) {
         throw new RangeError(`frameSeconds must be a finite number ≥ 0, got ${frameSeconds}`)
       }
       acc += frameSeconds

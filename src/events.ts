@@ -1,7 +1,7 @@
 // Hole and ball events. Systems write them into a growable struct-of-arrays buffer (no object per event
 // on the hot path); drainEvents turns them into objects, in time order, once per frame.
 
-export const EventType = {
+export const EventType = Object.freeze({
   Skip: 0,
   Capture: 1,
   Bounce: 2,
@@ -13,14 +13,14 @@ export const EventType = {
   Gutter: 8,
   /** two balls touch (ball-ball contacts on): `ball` and `other` */
   Collision: 9,
-} as const
+} as const)
 export type EventTypeCode = (typeof EventType)[keyof typeof EventType]
-export const EVENT_TYPE_NAMES = ['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest', 'wall', 'gutter', 'collision'] as const
+export const EVENT_TYPE_NAMES = Object.freeze(['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest', 'wall', 'gutter', 'collision'] as const)
 export type BallEventType = (typeof EVENT_TYPE_NAMES)[number]
 
-export const CaptureVia = { None: 0, Clean: 1, RimRoll: 2, Rest: 3 } as const
+export const CaptureVia = Object.freeze({ None: 0, Clean: 1, RimRoll: 2, Rest: 3 } as const)
 export type CaptureViaCode = (typeof CaptureVia)[keyof typeof CaptureVia]
-const VIA_NAMES = [undefined, 'clean', 'rimRoll', 'rest'] as const
+const VIA_NAMES = Object.freeze([undefined, 'clean', 'rimRoll', 'rest'] as const)
 export type CaptureViaName = 'clean' | 'rimRoll' | 'rest'
 
 export interface BallEvent {

@@ -127,6 +127,47 @@ describe('snapshot and restore', () => {
       refused(bad, /checksum mismatch/)
     })
 
+    it('a changed byte anywhere after the format version is reported as a changed or cut snapshot, never as another config or a malformed body', () => {
+      // bytes 0–3 ("PBSN") and 4–5 (the format version) are read first by design: a change there says the
+      // bytes are not a snapshot, or of another version. Every later byte, config included, is covered by
+      // the lengths and the checksum, checked before anything else is read.
+      const small = (() => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: 'on' }, { capacity: 4 })
+        sim.addHole({ x: 100, y: 100 })
+        sim.addBall({ x: 100, y: 300, vx: 0, vy: -200 })
+        sim.step(1 / 60)
+        return sim.snapshot()
+      })()
+      const corrupt = /checksum mismatch|\(truncated, padded or altered\)|\(truncated or altered\)/
+      const heads: string[] = []
+      const wrong: string[] = []
+      const target = createBallPhysics({ BALL_COLLISIONS: 'on' }, { capacity: 4 }) // a refused restore changes nothing
+      for (let at = 0; at < small.length; at++) {
+        for (const flip of [1, 0x80]) {
+          const bad = small.slice()
+          bad[at] ^= flip
+          let message = ''
+          try {
+            target.restore(bad)
+          } catch (e) {
+            message = (e as Error).message
+          }
+          if (at < 6) heads.push(message)
+          else if (!corrupt.test(message)) wrong.push(`byte ${at} ^ ${flip}: ${message}`)
+        }
+      }
+      expect(wrong).toEqual([])
+      expect(target.balls()).toEqual([])
+      target.restore(small)
+      expect(same(target.snapshot(), small)).toBe(true)
+      expect(heads.slice(0, 8).every((m) => /not a snapshot/.test(m))).toBe(true)
+      expect(heads.slice(8).every((m) => /format version/.test(m))).toBe(true)
+      // the reported case: a byte of the config changed
+      const bad = good.slice()
+      bad[100] ^= 1
+      refused(bad, /checksum mismatch/)
+    })
+
     it('another format version', () => {
       const bad = good.slice()
       new DataView(bad.buffer).setUint16(4, SNAPSHOT_VERSION + 1, true)

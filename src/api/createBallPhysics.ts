@@ -88,10 +88,11 @@ export interface BallPhysics {
   restore(bytes: Uint8Array): void
   /**
    * Starts recording a replay: every command and step from now on (src/commands/replay.ts). A world that
-   * already has balls or holes puts a snapshot of itself at the replay's start.
+   * already has balls or holes puts a snapshot of itself at the replay's start. Throws while a recording is
+   * under way (stopRecording first: it returns that replay).
    */
   startRecording(): void
-  /** Stops recording and returns the replay (plain data; replayToJSON for text). */
+  /** Stops recording and returns the replay (plain data; replayToJSON for text). Throws when not recording. */
   stopRecording(): Replay
 }
 
@@ -137,7 +138,13 @@ export function physicsFor(w: BallWorld): BallPhysics {
     holes: () => listHoles(w),
     snapshot: () => snapshotWorld(w),
     restore: (bytes) => restoreWorld(w, bytes),
-    startRecording: () => startReplay(w),
-    stopRecording: () => takeReplay(w),
+    startRecording() {
+      if (w.recorder !== null) throw new Error('startRecording: the simulation is already recording; call stopRecording first (it returns the replay so far)')
+      startReplay(w)
+    },
+    stopRecording() {
+      if (w.recorder === null) throw new Error('stopRecording: the simulation is not recording; call startRecording first')
+      return takeReplay(w)
+    },
   }
 }

@@ -11,23 +11,24 @@
 import type { ConfigOverrides } from '../config/design.js'
 import type { HoleSpec } from '../commands/holes.js'
 import type { WallsSpec } from '../commands/walls.js'
+import { readSpec } from '../check.js'
 import { EventType } from '../events.js'
 import { cos, log, sin } from '../math.js'
 import { mulberry32 } from '../random.js'
 import { createBallPhysics, type BallPhysics } from './createBallPhysics.js'
 
 export interface OutcomeScene {
-  config?: ConfigOverrides
+  config?: ConfigOverrides | undefined
   holes: readonly HoleSpec[]
-  walls?: WallsSpec
+  walls?: WallsSpec | undefined
 }
 
 /** A throw distribution: each part a mean and a normal spread (power is clipped to [0, 1]). */
 export interface ThrowDistribution {
-  power: { mean: number; sd?: number }
+  power: { mean: number; sd?: number | undefined }
   /** rad, as throwBall's */
-  angle: { mean: number; sd?: number }
-  from: { x: number; y: number; sdX?: number; sdY?: number }
+  angle: { mean: number; sd?: number | undefined }
+  from: { x: number; y: number; sdX?: number | undefined; sdY?: number | undefined }
 }
 
 /** Integer counts over a set of throws; merge with mergeTallies, read with summarizeOutcomes. */
@@ -65,6 +66,20 @@ export function mergeTallies(a: OutcomeTally, b: OutcomeTally): OutcomeTally {
     lipOuts: add(a.lipOuts, b.lipOuts),
   }
 }
+
+/** Refuses a scene that is not an object of the known keys (each part is checked by its own command). */
+function checkScene(scene: unknown): void {
+  readSpec('scene', scene, ['config', 'holes', 'walls'] as const)
+}
+
+/** Refuses a spec whose parts are not objects of the known keys. */
+function checkParts(name: string, spec: unknown, parts: Record<string, readonly string[]>): void {
+  const s = readSpec(name, spec, Object.keys(parts))
+  for (const key of Object.keys(parts)) readSpec(`${name}.${key}`, s[key], parts[key]!)
+}
+
+const DIST_PARTS = { power: ['mean', 'sd'], angle: ['mean', 'sd'], from: ['x', 'y', 'sdX', 'sdY'] } as const
+const MAP_PARTS = { from: ['x', 'y'], power: ['min', 'max', 'steps'], angle: ['min', 'max', 'steps'] } as const
 
 /** The scene's world (contacts off), its hole ids in the scene's order. */
 function build(scene: OutcomeScene, capacity: number): { sim: BallPhysics; index: Map<number, number> } {
@@ -123,6 +138,8 @@ function normals(r: () => number): void {
  * and counts where they end (see the top of this file).
  */
 export function sampleThrows(scene: OutcomeScene, dist: ThrowDistribution, count: number, seed: number, first = 0): OutcomeTally {
+  checkScene(scene)
+  checkParts('distribution', dist, DIST_PARTS)
   if (!Number.isInteger(count) || count < 0) throw new RangeError(`count must be a non-negative integer, got ${count}`)
   if (!Number.isInteger(first) || first < 0) throw new RangeError(`first must be a non-negative integer, got ${first}`)
   const tally = emptyTally(scene.holes.length)
@@ -160,12 +177,15 @@ export interface OutcomeMapSpec {
  * Which hole each throw of a (power, angle) grid from one point ends in: the scene's hole index, −1 for
  * none; row-major by power (rows) then angle (columns). `rows` limits the work to powers [from, to).
  */
-export function outcomeMap(scene: OutcomeScene, spec: OutcomeMapSpec, rows: { from: number; to: number } = { from: 0, to: spec.power.steps }): Int16Array {
+export function outcomeMap(scene: OutcomeScene, spec: OutcomeMapSpec, rows?: { from: number; to: number }): Int16Array {
+  checkScene(scene)
+  checkParts('spec', spec, MAP_PARTS)
   const P = spec.power
   const A = spec.angle
+  const part = rows === undefined ? { from: 0, to: P.steps } : (readSpec('rows', rows, ['from', 'to'] as const), rows)
   if (!(P.steps >= 1 && A.steps >= 1 && Number.isInteger(P.steps) && Number.isInteger(A.steps))) throw new RangeError('power.steps and angle.steps must be integers ≥ 1')
-  const r0 = Math.max(0, rows.from)
-  const r1 = Math.min(P.steps, rows.to)
+  const r0 = Math.max(0, part.from)
+  const r1 = Math.min(P.steps, part.to)
   const out = new Int16Array(Math.max(0, r1 - r0) * A.steps)
   const per = Math.max(1, Math.floor(BATCH / A.steps))
   const buf = new Float64Array(4 * per * A.steps)

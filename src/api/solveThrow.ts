@@ -38,17 +38,17 @@ export interface ThrowRequest {
    * px, default 0: the throw may start anywhere on the level segment from.x ± along (a launcher that
    * slides, a plinko drop line); points nearer from.x are preferred
    */
-  along?: number
+  along?: number | undefined
   /** the target hole's id */
   hole: number
   /** default 'capture' */
-  outcome?: ThrowOutcome
+  outcome?: ThrowOutcome | undefined
   /**
    * the game's step, s, in (0, MAX_STEP]: the answer is checked in a copy of the world stepped at it. Balls
    * held at the launcher (contacts on) go one a step, so an answer among held balls holds at that step
    * only; all else is the same at every step. Default: 1/60 s when a ball is held, else MAX_STEP
    */
-  step?: number
+  step?: number | undefined
 }
 
 export interface ThrowSolution {

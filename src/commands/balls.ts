@@ -24,14 +24,14 @@ export interface BallSpec {
   vx: number
   vy: number
   /** px, default config.BALL_RADIUS */
-  radius?: number
+  radius?: number | undefined
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
-  hero?: boolean
+  hero?: boolean | undefined
   /**
    * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
    * (same density). Used only when config.BALL_COLLISIONS is 'on' or 'fixed'.
    */
-  mass?: number
+  mass?: number | undefined
 }
 
 export interface ThrowSpec {
@@ -42,11 +42,11 @@ export interface ThrowSpec {
   /** radians, 0 = straight up the panel (−y), positive toward +x; in [−2π, 2π] */
   angle: number
   /** px, default config.BALL_RADIUS */
-  radius?: number
+  radius?: number | undefined
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
-  hero?: boolean
+  hero?: boolean | undefined
   /** as BallSpec.mass */
-  mass?: number
+  mass?: number | undefined
 }
 
 export interface BallState {
@@ -64,6 +64,9 @@ export interface HoleState {
   radius: number
   value: number
 }
+
+const BALL_KEYS = ['x', 'y', 'vx', 'vy', 'radius', 'hero', 'mass'] as const
+const THROW_KEYS = ['x', 'y', 'power', 'angle', 'radius', 'hero', 'mass'] as const
 
 function massOf(w: BallWorld, field: string, value: unknown, radius: number): number {
   if (value === undefined) {
@@ -98,7 +101,7 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
 export function addBall(world: BallWorld, spec: BallSpec): number {
   const w = checkWorld('addBall', world)
   // each field read once, into locals (a ball added in a burst allocates nothing here)
-  const s = specObject('addBall spec', spec)
+  const s = specObject('addBall spec', spec, BALL_KEYS, 'ball')
   const sx = s.x
   const sy = s.y
   const svx = s.vx
@@ -127,7 +130,7 @@ export function throwVelocity(world: BallWorld, power: number, angle: number): {
 /** Throws a ball from (x, y) with the meter's power and an aim; returns its entity id. */
 export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const w = checkWorld('throwBall', world)
-  const s = specObject('throwBall spec', spec)
+  const s = specObject('throwBall spec', spec, THROW_KEYS, 'throw')
   const sx = s.x
   const sy = s.y
   const sPower = s.power

@@ -23,9 +23,9 @@ export interface HoleSpec {
   x: number
   y: number
   /** px, default config.HOLE_RADIUS */
-  radius?: number
+  radius?: number | undefined
   /** points, default 1 */
-  value?: number
+  value?: number | undefined
 }
 
 interface CheckedHole {

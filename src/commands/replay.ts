@@ -20,7 +20,7 @@ import { addBall, removeBall, setBallVelocity, setHeroBall, throwBall, type Ball
 import { createBallWorld } from './createBallWorld.js'
 import { addHole, addHoles, removeHole, type HoleSpec } from './holes.js'
 import { restoreWorld, snapshotWorld } from './snapshot.js'
-import { checkWorld, describe } from './validate.js'
+import { checkWorld, describe, specObject } from './validate.js'
 import { clearWalls, setWalls, type WallsSpec } from './walls.js'
 
 export const REPLAY_FORMAT = 'positron-ball-physics replay'
@@ -34,7 +34,7 @@ export interface Replay {
   /** the recorded world's options */
   options: { capacity: number; broadphase: 'auto' | 'grid' | 'scan' }
   /** the world when recording started, as a base64 snapshot; absent when it had no entities */
-  start?: string
+  start?: string | undefined
   /** the inputs, in order: [command, ...arguments]; ['step', dt] for each step */
   inputs: ReplayInput[]
 }
@@ -163,8 +163,11 @@ function apply(w: BallWorld, schedule: readonly ScheduleEntry[], input: ReplayIn
   }
 }
 
+const REPLAY_KEYS = ['format', 'version', 'config', 'options', 'start', 'inputs'] as const
+
 function checkReplay(r: Replay): void {
   if (r === null || typeof r !== 'object') throw new TypeError(`replay must be a replay object (from takeReplay), got ${describe(r)}`)
+  specObject('replay', r, REPLAY_KEYS)
   if (r.format !== REPLAY_FORMAT) throw new RangeError(`replay.format must be '${REPLAY_FORMAT}', got ${describe(r.format)}`)
   if (r.version !== REPLAY_VERSION) throw new RangeError(`replay.version ${describe(r.version)}: this module plays version ${REPLAY_VERSION}`)
   if (r.config === null || typeof r.config !== 'object') throw new TypeError(`replay.config must be a config object, got ${describe(r.config)}`)

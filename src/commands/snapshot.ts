@@ -120,7 +120,24 @@ function decode(bytes: Uint8Array, config: string): Decoded {
   }
   const version = r.u16('the header')
   if (version !== SNAPSHOT_VERSION) throw new SnapshotError(`restore: snapshot format version ${version}; this module reads version ${SNAPSHOT_VERSION}`)
+  // the lengths and the checksum before anything is read from the rest: a changed byte is reported as
+  // such, never as what it happened to turn into (another config, a malformed body)
+  const configAt = r.at
+  const configLength = r.u32('the header')
+  if (r.at + configLength + 8 > bytes.length) {
+    throw new SnapshotError(`restore: the config should be ${configLength} bytes, followed by the body's length; the snapshot has ${bytes.length} bytes (truncated or altered)`)
+  }
+  r.at += configLength
+  const bodyLength = r.u32('the header')
+  if (r.at + bodyLength + 4 !== bytes.length) {
+    throw new SnapshotError(`restore: the body should be ${bodyLength} bytes and end the snapshot with a 4-byte checksum; the snapshot has ${bytes.length} bytes (truncated, padded or altered)`)
+  }
+  const sum = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).getUint32(bytes.length - 4, true)
+  if (sum !== checksum(bytes, bytes.length - 4)) throw new SnapshotError('restore: checksum mismatch (the bytes were changed after the snapshot was taken)')
+  const bodyAt = r.at
+  r.at = configAt
   const theirs = r.ascii('the config')
+  r.at = bodyAt
   if (theirs !== config) {
     let key = '(unreadable)'
     try {
@@ -133,12 +150,6 @@ function decode(bytes: Uint8Array, config: string): Decoded {
     }
     throw new SnapshotError(`restore: the snapshot was taken with another config (${key}); make the world with the snapshot's config`)
   }
-  const bodyLength = r.u32('the header')
-  if (r.at + bodyLength + 4 !== bytes.length) {
-    throw new SnapshotError(`restore: the body should be ${bodyLength} bytes and end the snapshot with a 4-byte checksum; the snapshot has ${bytes.length} bytes (truncated or padded)`)
-  }
-  const sum = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).getUint32(bytes.length - 4, true)
-  if (sum !== checksum(bytes, bytes.length - 4)) throw new SnapshotError('restore: checksum mismatch (the bytes were changed after the snapshot was taken)')
   const maxId = r.u32('the entity index')
   const aliveCount = r.u32('the entity index')
   const n = r.u32('the entity index')

@@ -15,9 +15,9 @@ export interface WallsSpec {
   maxX: number
   maxY: number
   /** normal restitution at the walls, [0, 1]; default 0.5 */
-  restitution?: number
+  restitution?: number | undefined
   /** open edges: a ball whose centre crosses one leaves the panel ('gutter' event, mode 'out') */
-  open?: { left?: boolean; top?: boolean; right?: boolean; bottom?: boolean }
+  open?: { left?: boolean | undefined; top?: boolean | undefined; right?: boolean | undefined; bottom?: boolean | undefined } | undefined
 }
 
 const EDGES = { left: WallEdge.Left, top: WallEdge.Top, right: WallEdge.Right, bottom: WallEdge.Bottom } as const
@@ -47,7 +47,7 @@ function openMask(value: unknown): number {
 /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
 export function setWalls(world: BallWorld, spec: WallsSpec): void {
   const w = checkWorld('setWalls', world)
-  const s = readSpec('setWalls spec', spec, ['minX', 'minY', 'maxX', 'maxY', 'restitution', 'open'] as const)
+  const s = readSpec('setWalls spec', spec, ['minX', 'minY', 'maxX', 'maxY', 'restitution', 'open'] as const, 'walls')
   const minX = finite('walls.minX', s.minX, MAX_COORDINATE)
   const minY = finite('walls.minY', s.minY, MAX_COORDINATE)
   const maxX = finite('walls.maxX', s.maxX, MAX_COORDINATE)

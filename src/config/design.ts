@@ -6,14 +6,14 @@ import { describe } from '../check.js'
 import { CONSISTENCY_TOLERANCE } from './tolerances.js'
 
 /** How a world steps: the exact event-driven core, a tick-sampled port of the six stages, or v1's rule. */
-export const METHODS = ['exact', 'naive', 'v1'] as const
+export const METHODS = Object.freeze(['exact', 'naive', 'v1'] as const)
 export type SimulationMethod = (typeof METHODS)[number]
 
 /**
  * Ball-ball contacts: off (the default: balls pass through each other), on (exact: each contact at its
  * instant, systems/collisions.ts) or fixed (solved at fixed ticks of CONTACT_TICK, systems/fixedContacts.ts).
  */
-export const COLLISION_MODES = ['off', 'on', 'fixed'] as const
+export const COLLISION_MODES = Object.freeze(['off', 'on', 'fixed'] as const)
 export type CollisionMode = (typeof COLLISION_MODES)[number]
 
 export interface BallPhysicsConfig {
@@ -93,11 +93,11 @@ export interface BallPhysicsConfig {
 }
 
 /** Rim models (config.RIM_MODEL). */
-export const RIM_MODELS = ['stages', 'tabulated'] as const
+export const RIM_MODELS = Object.freeze(['stages', 'tabulated'] as const)
 export type RimModel = (typeof RIM_MODELS)[number]
 
 /** Capture window shapes (config.CAPTURE_WINDOW). */
-export const CAPTURE_WINDOW_SHAPES = ['ellipse', 'quadratic'] as const
+export const CAPTURE_WINDOW_SHAPES = Object.freeze(['ellipse', 'quadratic'] as const)
 export type CaptureWindowShape = (typeof CAPTURE_WINDOW_SHAPES)[number]
 
 const HOLE_RADIUS = 18
@@ -144,7 +144,8 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   BALL_SETTLE_SPEED: 1,
 })
 
-export type ConfigOverrides = Partial<BallPhysicsConfig>
+/** Any keys of the config; a key given as undefined is as if it were absent. */
+export type ConfigOverrides = { [K in keyof BallPhysicsConfig]?: BallPhysicsConfig[K] | undefined }
 
 interface Range {
   min: number
@@ -167,29 +168,29 @@ export const CONFIG_CHOICES: Readonly<Record<ChoiceKey, readonly string[]>> = Ob
 
 /** Allowed range of every numeric key. Open lower bounds are for values that divide or must be positive. */
 export const CONFIG_RANGES: Readonly<Record<NumericKey, Readonly<Range>>> = Object.freeze({
-  HOLE_RADIUS: { min: 0, max: 1e4, minOpen: true },
-  BALL_RADIUS: { min: 0, max: 1e4, minOpen: true },
-  V_MAX: { min: 0, max: 1e6, minOpen: true },
-  V_SKIP_MAX: { min: 0, max: 1e6, minOpen: true },
-  GRAVITY: { min: 0, max: 1e9, minOpen: true },
-  RIM_RESTITUTION: { min: 0, max: 1 },
-  RIM_FRICTION: { min: 0, max: 1 },
-  RIM_ROLL_RATIO: { min: 0, max: 1e6 },
-  RIM_ROLL_FRICTION: { min: 0, max: 1e6 },
-  RIM_ROLL_DROP_SPEED: { min: 0, max: 1e6, minOpen: true },
-  RIM_ROLL_MAX_TURNS: { min: 0, max: 100, minOpen: true },
-  MIN_VY: { min: 0, max: 1e6 },
-  MAX_VY: { min: 0, max: 1e6 },
-  ROLLING_DECEL: { min: 0, max: 1e6 },
-  BALL_INERTIA: { min: 0, max: 2 / 3, minOpen: true },
-  MAX_STEP: { min: 0, max: 10, minOpen: true },
-  MAX_EVENT_PASSES: { min: 1, max: 1e6, integer: true },
-  SUBSTEPS: { min: 1, max: 64, integer: true },
-  PREDICTION_HORIZON: { min: 0, max: 1 },
-  CONTACT_TICK: { min: 1e-4, max: 0.1 },
-  CONTACT_ITERATIONS: { min: 1, max: 64, integer: true },
-  BALL_RESTITUTION: { min: 0, max: 1 },
-  BALL_SETTLE_SPEED: { min: 0, max: 1e6 },
+  HOLE_RADIUS: Object.freeze({ min: 0, max: 1e4, minOpen: true }),
+  BALL_RADIUS: Object.freeze({ min: 0, max: 1e4, minOpen: true }),
+  V_MAX: Object.freeze({ min: 0, max: 1e6, minOpen: true }),
+  V_SKIP_MAX: Object.freeze({ min: 0, max: 1e6, minOpen: true }),
+  GRAVITY: Object.freeze({ min: 0, max: 1e9, minOpen: true }),
+  RIM_RESTITUTION: Object.freeze({ min: 0, max: 1 }),
+  RIM_FRICTION: Object.freeze({ min: 0, max: 1 }),
+  RIM_ROLL_RATIO: Object.freeze({ min: 0, max: 1e6 }),
+  RIM_ROLL_FRICTION: Object.freeze({ min: 0, max: 1e6 }),
+  RIM_ROLL_DROP_SPEED: Object.freeze({ min: 0, max: 1e6, minOpen: true }),
+  RIM_ROLL_MAX_TURNS: Object.freeze({ min: 0, max: 100, minOpen: true }),
+  MIN_VY: Object.freeze({ min: 0, max: 1e6 }),
+  MAX_VY: Object.freeze({ min: 0, max: 1e6 }),
+  ROLLING_DECEL: Object.freeze({ min: 0, max: 1e6 }),
+  BALL_INERTIA: Object.freeze({ min: 0, max: 2 / 3, minOpen: true }),
+  MAX_STEP: Object.freeze({ min: 0, max: 10, minOpen: true }),
+  MAX_EVENT_PASSES: Object.freeze({ min: 1, max: 1e6, integer: true }),
+  SUBSTEPS: Object.freeze({ min: 1, max: 64, integer: true }),
+  PREDICTION_HORIZON: Object.freeze({ min: 0, max: 1 }),
+  CONTACT_TICK: Object.freeze({ min: 1e-4, max: 0.1 }),
+  CONTACT_ITERATIONS: Object.freeze({ min: 1, max: 64, integer: true }),
+  BALL_RESTITUTION: Object.freeze({ min: 0, max: 1 }),
+  BALL_SETTLE_SPEED: Object.freeze({ min: 0, max: 1e6 }),
 })
 
 export function describeRange(r: Range): string {

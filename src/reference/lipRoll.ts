@@ -6,8 +6,9 @@ import { createDopri5Workspace, dopri5, type OdeEvent, type OdeRhs } from './dop
 import { freePathClearance } from './flight.js'
 import { P, lip } from './state.js'
 import { LIP_ATOL, LIP_MAX_STEP, LIP_MAX_STEPS, LIP_RTOL } from './tolerances.js'
-import { validateReferenceInput, type LipState } from './types.js'
+import { readLipState, validateReferenceInput, type LipState } from './types.js'
 import { cos, sin } from '../math.js'
+import { describe } from '../check.js'
 
 /** Lip ODEs (docs/reference-model.md, phase 2) in units r = g = 1; y = [ψ, θ, ψ̇, θ̇, ω_n]. */
 export const lipRhs: OdeRhs = (_t, y, dy) => {
@@ -76,7 +77,8 @@ export const LIP_OPTIONS = { rtol: LIP_RTOL, atol: LIP_ATOL, hMax: LIP_MAX_STEP,
 export const ws = createDopri5Workspace(5, HELD_EVENTS.length)
 
 /** E/m of a ball rolling on the lip: ½(1+j)(ρ²ψ̇² + r²θ̇²) + ½ j r² ω_n² + g r cosθ, ρ = R + r sinθ. */
-export function lipEnergy(s: LipState, holeRadius: number, ballRadius: number, gravity: number, inertia: number): number {
+export function lipEnergy(state: LipState, holeRadius: number, ballRadius: number, gravity: number, inertia: number): number {
+  const s = readLipState(state)
   const rho = holeRadius + ballRadius * sin(s.theta)
   const r = ballRadius
   return (
@@ -98,17 +100,19 @@ export function rollOnLip(
   gravity: number,
   inertia: number,
 ): { state: LipState; steps: number } {
+  const s = readLipState(start)
   validateReferenceInput({ delta: 0, speed: 1, holeRadius, ballRadius, gravity, inertia })
-  if (!(duration >= 0 && Number.isFinite(duration))) throw new RangeError('duration must be in [0, ∞)')
+  if (typeof duration !== 'number') throw new TypeError(`duration must be a number in [0, ∞), got ${describe(duration)}`)
+  if (!(duration >= 0 && Number.isFinite(duration))) throw new RangeError(`duration must be in [0, ∞), got ${duration}`)
   const T = Math.sqrt(ballRadius / gravity)
   P.rs = holeRadius / ballRadius
   P.j = inertia
   const y = lip
-  y[0] = start.psi
-  y[1] = start.theta
-  y[2] = start.psiDot * T
-  y[3] = start.thetaDot * T
-  y[4] = start.omegaN * T
+  y[0] = s.psi
+  y[1] = s.theta
+  y[2] = s.psiDot * T
+  y[3] = s.thetaDot * T
+  y[4] = s.omegaN * T
   const res = dopri5(ws, lipRhs, 0, y, duration / T, {
     rtol: LIP_RTOL,
     atol: LIP_ATOL,

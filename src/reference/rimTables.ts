@@ -2,6 +2,7 @@
 // late, which are the same bits whenever they are found), and what a world may use: its config's table from
 // the start, others given by prepareRimTable. src/reference/rimTable.ts builds and reads a table.
 import type { BallWorld } from '../world/createWorld.js'
+import { readSpec } from '../check.js'
 import { buildRimTable, captureSpeedAt, fillCaptureRows, type RimTable } from './rimTable.js'
 import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
 
@@ -18,13 +19,14 @@ export function prepareRimTable(
   target: BallWorld | { world: BallWorld },
   holeRadius: number,
   ballRadius: number,
-  options: { inertia?: number; rows?: 'now' | 'lazy' } = {},
+  options: { inertia?: number | undefined; rows?: 'now' | 'lazy' | undefined } = {},
 ): number {
   const w = 'world' in target ? target.world : target
   if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
   if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
-  const inertia = options.inertia ?? w.config.BALL_INERTIA
-  const rows = options.rows ?? 'now'
+  const o = readSpec('options', options, ['inertia', 'rows'] as const)
+  const inertia = (o.inertia as number | undefined) ?? w.config.BALL_INERTIA
+  const rows = o.rows ?? 'now'
   if (rows !== 'now' && rows !== 'lazy') throw new RangeError(`options.rows must be 'now' or 'lazy', got ${String(rows)}`)
   const t0 = performance.now()
   const t = rimTableFor(holeRadius / ballRadius, inertia)

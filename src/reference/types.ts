@@ -1,5 +1,6 @@
 // Public data of the physical reference model (docs/reference-model.md): the input and its validation, the
 // outcome, the phase trace and the lip state. No behaviour beyond checking an input.
+import { describe, readSpec } from '../check.js'
 
 export interface ReferenceInput {
   /** offset of the straight path from the hole centre (its closest approach); |delta| < holeRadius */
@@ -98,24 +99,36 @@ export interface LipState {
   omegaN: number
 }
 
+const INPUT_KEYS = ['delta', 'speed', 'holeRadius', 'ballRadius', 'gravity', 'inertia'] as const
+
 function checkFinite(name: string, value: number): void {
-  if (typeof value !== 'number' || !Number.isFinite(value)) throw new RangeError(`${name} must be a finite number`)
+  if (typeof value !== 'number') throw new TypeError(`${name} must be a finite number, got ${describe(value)}`)
+  if (!Number.isFinite(value)) throw new RangeError(`${name} must be a finite number, got ${value}`)
 }
 
-/** Throws a RangeError naming the first field out of range. */
+/** Throws a TypeError (not an object, a field not a number) or a RangeError naming the first field out of range, and what it got. */
 export function validateReferenceInput(input: ReferenceInput): void {
-  const { delta, speed, holeRadius, ballRadius, gravity, inertia } = input
+  const { delta, speed, holeRadius, ballRadius, gravity, inertia } = readSpec('reference input', input, INPUT_KEYS, 'input') as unknown as ReferenceInput
   checkFinite('holeRadius', holeRadius)
-  if (!(holeRadius > 0)) throw new RangeError('holeRadius must be in (0, ∞)')
+  if (!(holeRadius > 0)) throw new RangeError(`holeRadius must be in (0, ∞), got ${holeRadius}`)
   checkFinite('ballRadius', ballRadius)
-  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError('ballRadius must be in (0, holeRadius)')
+  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius} with holeRadius ${holeRadius}`)
   checkFinite('delta', delta)
-  if (!(Math.abs(delta) < holeRadius)) throw new RangeError('delta must be in (−holeRadius, holeRadius)')
+  if (!(Math.abs(delta) < holeRadius)) throw new RangeError(`delta must be in (−holeRadius, holeRadius) = (${-holeRadius}, ${holeRadius}), got ${delta}`)
   checkFinite('speed', speed)
-  if (!(speed > 0)) throw new RangeError('speed must be in (0, ∞)')
+  if (!(speed > 0)) throw new RangeError(`speed must be in (0, ∞), got ${speed}`)
   checkFinite('gravity', gravity)
-  if (!(gravity > 0)) throw new RangeError('gravity must be in (0, ∞)')
+  if (!(gravity > 0)) throw new RangeError(`gravity must be in (0, ∞), got ${gravity}`)
   checkFinite('inertia', inertia)
   // a spherically symmetric mass inside radius r has 0 < j ≤ 2/3 (the thin shell is the extreme)
-  if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError('inertia must be in (0, 2/3]')
+  if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError(`inertia must be in (0, 2/3], got ${inertia}`)
+}
+
+const LIP_STATE_KEYS = ['psi', 'theta', 'psiDot', 'thetaDot', 'omegaN'] as const
+
+/** A lip state's fields, each a finite number (TypeError or RangeError naming the field otherwise). */
+export function readLipState(start: unknown): LipState {
+  const s = readSpec('start', start, LIP_STATE_KEYS)
+  for (const key of LIP_STATE_KEYS) checkFinite(`start.${key}`, s[key] as number)
+  return s as unknown as LipState
 }

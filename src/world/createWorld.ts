@@ -108,12 +108,12 @@ export interface BallWorldOptions {
    * ids preallocated in the per-ball stores (they grow past it). Hole, Walls and RimContact start small
    * and grow with their own use.
    */
-  capacity?: number
+  capacity?: number | undefined
   /**
    * How a ball's path is tested against the holes: 'scan' tests every hole, 'grid' walks a uniform grid,
    * 'auto' (default) scans below GRID_MIN_HOLES holes and walks the grid above. Outcomes are the same.
    */
-  broadphase?: 'auto' | 'grid' | 'scan'
+  broadphase?: 'auto' | 'grid' | 'scan' | undefined
 }
 
 /** Initial length of the stores that do not grow with balls (Hole, Walls, RimContact). */

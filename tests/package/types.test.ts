@@ -90,6 +90,36 @@ sim.restore('snapshot')
 sim.drainEventsWith((e) => { const h: undefined = e.hole })
 `
 
+/**
+ * A consumer under exactOptionalPropertyTypes that passes optional values through (each may be undefined,
+ * which the library takes as absent): every optional field of the public input types must accept undefined.
+ */
+const OPTIONAL = `
+import { createBallPhysics, createFixedStepClock, outcomeMap, prepareRimTable, sampleThrows, solveThrow, DEFAULT_PANEL, type BallSpec, type ConfigOverrides, type HoleSpec, type ThrowSpec, type WallsSpec } from '${PKG}'
+import { createBallWorld } from '${PKG}/ecs'
+
+export function pass(o: { decel?: number; capacity?: number; radius?: number; hero?: boolean; mass?: number; value?: number; e?: number; bottom?: boolean; hz?: number; along?: number; sd?: number; window?: 'ellipse' | 'quadratic' }): void {
+  const overrides: ConfigOverrides = { ROLLING_DECEL: o.decel, CAPTURE_WINDOW: o.window }
+  const sim = createBallPhysics({ ROLLING_DECEL: o.decel }, { capacity: o.capacity, broadphase: undefined })
+  createBallWorld(overrides, { capacity: o.capacity })
+  const ball: BallSpec = { x: 0, y: 0, vx: 0, vy: 0, radius: o.radius, hero: o.hero, mass: o.mass }
+  sim.addBall(ball)
+  const thrown: ThrowSpec = { x: 0, y: 0, power: 0.5, angle: 0, radius: o.radius, hero: o.hero, mass: o.mass }
+  sim.throwBall(thrown)
+  const hole: HoleSpec = { x: 100, y: 100, radius: o.radius, value: o.value }
+  const id = sim.addHole(hole)
+  const walls: WallsSpec = { minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: o.e, open: { bottom: o.bottom, left: undefined } }
+  sim.setWalls(walls)
+  sim.setWalls({ ...walls, open: undefined })
+  createFixedStepClock({ hz: o.hz, maxStepsPerFrame: undefined })
+  solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: id, along: o.along, outcome: undefined })
+  prepareRimTable(sim, 18, 11, { inertia: undefined, rows: undefined })
+  const scene = { config: o.decel === undefined ? undefined : overrides, holes: DEFAULT_PANEL.holes, walls: undefined }
+  sampleThrows(scene, { power: { mean: 0.5, sd: o.sd }, angle: { mean: 0, sd: o.sd }, from: { x: 210, y: 450, sdX: o.sd, sdY: o.sd } }, 1, 1)
+  outcomeMap(scene, { from: DEFAULT_PANEL.launch, power: { min: 0, max: 1, steps: 1 }, angle: { min: 0, max: 0, steps: 1 } })
+}
+`
+
 const RESOLUTIONS = [
   { name: 'nodenext', module: 'NodeNext', moduleResolution: 'NodeNext' },
   { name: 'node16', module: 'Node16', moduleResolution: 'Node16' },
@@ -159,6 +189,9 @@ describe('published package', () => {
     await writeFile(join(fixture, 'package.json'), JSON.stringify({ name: 'fixture', private: true, type: 'module' }, null, 2))
     await writeFile(join(fixture, 'consumer.ts'), CONSUMER)
     await writeFile(join(fixture, 'runtime.mjs'), RUNTIME)
+    await writeFile(join(fixture, 'optional.ts'), OPTIONAL)
+    const exact = { module: 'ESNext', moduleResolution: 'Bundler', target: 'ES2022', lib: ['ES2022'], strict: true, exactOptionalPropertyTypes: true, skipLibCheck: false, noEmit: true, types: [] }
+    await writeFile(join(fixture, 'tsconfig.optional.json'), JSON.stringify({ compilerOptions: exact, files: ['optional.ts'] }, null, 2))
     for (const r of RESOLUTIONS) {
       const compilerOptions = {
         module: r.module,
@@ -228,6 +261,12 @@ describe('published package', () => {
       expect(files).toContain(join(installed, 'dist', 'types', ...entry.split('/')))
     }
     expect(files.some((f) => inside(bitecs, f))).toBe(true)
+  })
+
+  it('under exactOptionalPropertyTypes, every optional input field accepts a value that may be undefined', async () => {
+    const res = await sh(bin('tsc'), ['-p', 'tsconfig.optional.json', '--pretty', 'false'], fixture)
+    expect(res.stdout.split(/\r?\n/).filter((l) => /error TS\d+/.test(l))).toEqual([])
+    expect(res.code).toBe(0)
   })
 
   it('runs: the three entries share one copy of the library', async () => {
