@@ -490,7 +490,8 @@ export class Game {
     this.applyPending()
     const token = ++this.calls
     this.solving = { holeIndex, token }
-    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160 }
+    // checked at the demo's own step (balls held at the launcher go one a step)
+    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160, step: 1 / PHYSICS_HZ }
     return { token, config: { ...this.sim.config }, snapshot: this.sim.snapshot(), request }
   }
 

@@ -3,6 +3,7 @@
 // message that says what is wrong, and the world they were given to is left as it was.
 import { describe, expect, it } from 'vitest'
 import { addPanel, createBallPhysics, PHYSICAL_CONFIG, SNAPSHOT_VERSION, TABULATED_CONFIG, type BallPhysics, type ConfigOverrides } from '../src/index.js'
+import { checksum } from '../src/commands/snapshotCodec.js'
 
 function random(seed: number): () => number {
   let s = seed
@@ -239,5 +240,42 @@ describe('snapshots and recordings inside a drainEventsWith callback', () => {
     sim.step(1 / 60)
     copy.step(1 / 60)
     expect(copy.drainEvents()).toEqual(sim.drainEvents())
+  })
+})
+
+describe('bytes changed on purpose (the checksum recomputed)', () => {
+  // the checksum catches accidents; a moving set naming an id that is not a ball once made a world whose
+  // fourth step never returned
+  it('a moving set, an event list or the launcher queue naming what is not a ball, or a ball with no mode, is refused', () => {
+    const src = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    addPanel(src)
+    for (let i = 0; i < 40; i++) src.throwBall({ x: 60 + 7 * i, y: 450 - (i % 5) * 6, power: 0.2 + 0.02 * i, angle: -0.6 + 0.03 * i })
+    for (let i = 0; i < 20; i++) src.step(1 / 60)
+    const moving = src.world.moving
+    expect(moving.count).toBeGreaterThan(3)
+    const bytes = src.snapshot()
+    const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength)
+    const want = Array.from(moving.dense.subarray(0, moving.count))
+    let at = -1
+    for (let i = 0; i + 4 * want.length <= bytes.length && at < 0; i++) if (want.every((v, k) => dv.getUint32(i + 4 * k, true) === v)) at = i
+    expect(at).toBeGreaterThan(0)
+    const altered = (edit: (v: DataView) => void): Uint8Array => {
+      const b = bytes.slice()
+      const v = new DataView(b.buffer)
+      edit(v)
+      v.setUint32(b.length - 4, checksum(b, b.length - 4), true)
+      return b
+    }
+    const last = at + 4 * (want.length - 1)
+    for (const id of [want[want.length - 1]! + 200, 0, src.holes()[0]!]) {
+      const w = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      expect(() => w.restore(altered((v) => v.setUint32(last, id, true)))).toThrow(/restore: the moving set lists \d+, which is not a ball of it/)
+      expect(w.balls()).toEqual([])
+    }
+    // the same ball twice
+    const twice = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    expect(() => twice.restore(altered((v) => v.setUint32(last, want[0]!, true)))).toThrow(/moving set lists/)
+    // unchanged bytes still restore
+    createBallPhysics({ BALL_COLLISIONS: 'on' }).restore(bytes)
   })
 })

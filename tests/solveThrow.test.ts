@@ -110,18 +110,22 @@ describe('solveThrow', () => {
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step: '0.1' as unknown as number })).toThrow(TypeError)
   })
 
-  it('with balls held at the launcher (contacts on), the answer holds at the game\'s step (checked at 0.25 s, half of them missed at 1/60 s)', () => {
+  it('with balls held at the launcher (contacts on), every answer holds at the game\'s step (checked at 0.25 s, 11 of 24 missed at 1/60 s)', () => {
     // a burst from the launch point: all but one held, released one a step
     const { sim, holes } = panel({ BALL_COLLISIONS: 'on' })
     for (let i = 0; i < 12; i++) sim.throwBall({ x: 210, y: 450, power: 0.3 + 0.05 * i, angle: -0.5 + 0.09 * i })
     for (let i = 0; i < 12; i++) sim.step(1 / 60)
     sim.drainEvents()
     expect(sim.balls().filter((b) => sim.ballState(b).mode === 'held').length).toBeGreaterThan(5)
-    for (const i of [3, 12, 21]) {
+    let found = 0
+    for (let i = 0; i < holes.length; i++) {
       const shot = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[i]!, outcome: 'capture', along: 160 })
-      expect(shot.found, `hole ${i}`).toBe(true)
+      if (!shot.found) continue
+      found++
       // outcomeOf steps at 1/60 s, the default step among held balls
-      expect(outcomeOf(sim, holes[i]!, shot as ThrowSolution), `hole ${i}`).toBe('capture')
+      expect(outcomeOf(sim, holes[i]!, shot), `hole ${i}`).toBe('capture')
     }
+    // fewer than without held balls: throws the grid finds at 0.25 s steps that miss at 1/60 s are refused
+    expect(found).toBeGreaterThanOrEqual(12)
   })
 })

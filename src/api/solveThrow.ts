@@ -102,7 +102,9 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const step = s.step === undefined ? (anyHeld(world) ? Math.min(1 / 60, maxStep) : maxStep) : positive('request.step', s.step, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
 
-  const trial = new Trial(world, hole, step)
+  // the grid's throws at the largest step (a grid of them among a thousand balls costs seconds at 1/60 s);
+  // the answer is checked at the game's
+  const trial = new Trial(world, hole, maxStep)
   const cfg = world.config
   const H = world.Hole
   const hx = H.x[hole]!

@@ -71,7 +71,7 @@ export class Trial {
     const mass = world.collide !== null ? world.collide.mass : world.fixed!.mass
     forEachBall(world, (b) => {
       const m = B.mode[b]
-      if (m !== BallMode.Rolling && m !== BallMode.RimRoll && m !== BallMode.Resting && m !== BallMode.Held) return
+      if (m !== BallMode.Rolling && m !== BallMode.RimRoll && m !== BallMode.Resting) return
       this.others.push(B.x[b]!, B.y[b]!, m === BallMode.Resting ? 0 : B.vx[b]!, m === BallMode.Resting ? 0 : B.vy[b]!, B.radius[b]!, mass[b]!)
     })
   }

@@ -21,6 +21,7 @@ import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimTableFor } from '../reference/rimTables.js'
 import { checkWorld } from './validate.js'
+import { BALL_MODE_NAMES } from '../../components/Ball.js'
 import { checksum, configText, kindOf, readValue, Reader, SnapshotError, writeValue, Writer } from './snapshotCodec.js'
 
 /** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps; 3: the path's origin and next event in world.pathHot; 4: the contact state keeps where each path may change next and what each prediction covered; 5: and the planner's distance to that change, with the path it was found for; the event heap as times and pool entries). */
@@ -230,6 +231,38 @@ function checkFinite(name: string, store: Record<string, unknown>): void {
   }
 }
 
+/**
+ * Throws unless the snapshot's lists of balls name balls: every ball's mode is one of BALL_MODE_NAMES; the
+ * moving set's ids are live balls, each once (its index the inverse of its list); the event pass's lists and
+ * the launcher's queue hold live balls. The checksum catches accidents, not changes made on purpose (it
+ * can be recomputed); a ball id that was not a ball in the moving set once made a step that never returned.
+ */
+function checkLists(d: Decoded): void {
+  const balls = new Set<number>()
+  for (let i = 0; i < d.aliveCount; i++) if ((d.members[i]! & BALL) !== 0) balls.add(d.dense[i]!)
+  const f = d.fields as Record<string, Record<string, unknown>>
+  const mode = f['Ball']!['mode'] as ArrayLike<number>
+  for (const b of balls) {
+    if (!(b < mode.length && mode[b]! >= 0 && mode[b]! < BALL_MODE_NAMES.length)) throw new SnapshotError(`restore: ball ${b} has no mode a ball can have (malformed bytes)`)
+  }
+  const moving = f['moving']!
+  const count = moving['count'] as number
+  const dense = moving['dense'] as Uint32Array
+  const sparse = moving['sparse'] as Uint32Array
+  if (!(Number.isInteger(count) && count >= 0 && count <= dense.length)) throw new SnapshotError(`restore: the moving set's count ${count} does not fit its list (malformed bytes)`)
+  for (let i = 0; i < count; i++) {
+    const b = dense[i]!
+    if (!balls.has(b) || b >= sparse.length || sparse[b] !== i) throw new SnapshotError(`restore: the moving set lists ${b}, which is not a ball of it (malformed bytes)`)
+  }
+  for (const k of ['marked', 'todo', 'held']) {
+    const list = f[k]!
+    const n = list['count'] as number
+    const ids = list['ids'] as Uint32Array
+    if (!(Number.isInteger(n) && n >= 0 && n <= ids.length)) throw new SnapshotError(`restore: the list ${k} has a count ${n} that does not fit it (malformed bytes)`)
+    for (let i = 0; i < n; i++) if (!balls.has(ids[i]!)) throw new SnapshotError(`restore: the list ${k} holds ${ids[i]}, which is not a ball (malformed bytes)`)
+  }
+}
+
 /** Writes value `v` into field `key` of `parent` (objects kept and filled in, arrays and values replaced). */
 function apply(parent: Record<string, unknown>, key: string, v: unknown): void {
   const t = parent[key]
@@ -270,6 +303,7 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   for (const k of keys) checkShape(k, (w as unknown as Record<string, unknown>)[k], d.fields[k])
   for (const k of STORES) checkFinite(k, d.fields[k] as Record<string, unknown>)
   checkFinite('world', { pathHot: d.fields['pathHot'] })
+  checkLists(d)
   const tables = d.tables.map(([ratio, inertia]) => rimTableFor(ratio, inertia))
   // nothing below throws: the world changes only now
   // ids 1..maxId made through bitECS, the ones not alive removed again; then the index's order (which id
