@@ -105,7 +105,7 @@ function placeHole(w: BallWorld, h: CheckedHole): number {
   w.Hole.value[eid] = h.value
   addHoleToTable(w, eid)
   // balls already out there: a ball inside the new lip circle follows the rule for a ball added inside a
-  // hole (a resting one falls in)
+  // hole (a resting one falls in), unless it is not smaller than the hole
   forEachBall(w, (b) => {
     const mode = w.Ball.mode[b]
     if (mode === BallMode.Rolling) sampleRolling(w, b, w.time)
@@ -113,6 +113,8 @@ function placeHole(w: BallWorld, h: CheckedHole): number {
     const dx = w.Ball.x[b]! - h.x
     const dy = w.Ball.y[b]! - h.y
     if (dx * dx + dy * dy >= h.radius * h.radius) return
+    // a ball not smaller than the hole bridges it
+    if (!(w.Ball.radius[b]! < h.radius)) return
     const slot = acquireRim(w, b)
     w.RimContact.hole[slot] = eid
     w.RimContact.hasLip[slot] = 0

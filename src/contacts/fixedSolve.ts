@@ -385,7 +385,7 @@ function moveResting(w: BallWorld, eid: number): void {
   w.Ball.x[eid] = x
   w.Ball.y[eid] = y
   // pushed over a hole, it falls in (in transit there, it stops inside the lip circle)
-  if (holeAt(w, x, y) !== 0) {
+  if (holeAt(w, x, y, w.Ball.radius[eid]!) !== 0) {
     placeBall(w, eid, x, y, 0, 0, pathStart[PS_T]!)
     return
   }

@@ -109,7 +109,7 @@ export function launchBallAt(w: BallWorld, eid: number, x: number, y: number, vx
  * is in transit through that hole: no decision is made for it there, and if it stops before leaving, it falls in.
  */
 export function placeBall(w: BallWorld, eid: number, x: number, y: number, vx: number, vy: number, t = w.time): void {
-  const inside = holeAt(w, x, y)
+  const inside = holeAt(w, x, y, w.Ball.radius[eid]!)
   if (inside !== 0) {
     const slot = acquireRim(w, eid)
     w.RimContact.hole[slot] = inside

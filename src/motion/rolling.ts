@@ -134,6 +134,8 @@ function considerHole(i: number): void {
   const hx = qXyr[3 * i]! - Q.x0
   const hy = qXyr[3 * i + 1]! - Q.y0
   const R = qXyr[3 * i + 2]!
+  // a ball not smaller than the hole bridges it: it rolls over, with no event there
+  if (Q.foot >= R) return
   const p = hx * Q.ux + hy * Q.uy
   // every event of this hole lies at a distance ≥ p − R: nothing here can beat the best so far
   const bound = qTrack ? Q.change : Q.best

@@ -91,9 +91,9 @@ export function removeHoleFromTable(world: BallWorld, eid: number): void {
  * The hole whose lip circle contains (x, y) (strictly inside), or 0. Lip circles never overlap, so there is
  * at most one. From the hole count at which the planner walks the hole grid, the holes of the 3 × 3 cells
  * around the point (one list of the grid: a cell is at least as wide as the largest lip radius); below it,
- * every hole.
+ * every hole. Only a hole wider than `radius` (a ball's: one not smaller than the hole bridges it).
  */
-export function holeAt(world: BallWorld, x: number, y: number): number {
+export function holeAt(world: BallWorld, x: number, y: number, radius = 0): number {
   const t = world.holes
   if (t.count > 0 && t.count >= world.gridFrom) {
     const g = world.holeGrid
@@ -108,7 +108,7 @@ export function holeAt(world: BallWorld, x: number, y: number): number {
       const dx = x - t.xyr[3 * i]!
       const dy = y - t.xyr[3 * i + 1]!
       const R = t.xyr[3 * i + 2]!
-      if (dx * dx + dy * dy < R * R) return t.ids[i]!
+      if (dx * dx + dy * dy < R * R) return R > radius ? t.ids[i]! : 0
     }
     return 0
   }
@@ -116,7 +116,7 @@ export function holeAt(world: BallWorld, x: number, y: number): number {
     const dx = x - t.xyr[3 * i]!
     const dy = y - t.xyr[3 * i + 1]!
     const R = t.xyr[3 * i + 2]!
-    if (dx * dx + dy * dy < R * R) return t.ids[i]!
+    if (dx * dx + dy * dy < R * R) return R > radius ? t.ids[i]! : 0
   }
   return 0
 }

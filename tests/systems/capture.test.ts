@@ -49,3 +49,41 @@ describe('capture system (Stage 1)', () => {
     expect(sequence(sim.drainEvents())).toEqual(['capture:rest'])
   })
 })
+
+describe('a ball not smaller than the hole bridges it', () => {
+  // it fell in cleanly, through a hole narrower than itself
+  for (const [name, config] of [['design', {}], ['tabulated', { RIM_MODEL: 'tabulated' as const, BALL_INERTIA: 0.4 }], ['contacts on', { BALL_COLLISIONS: 'on' as const }], ['fixed tick', { BALL_COLLISIONS: 'fixed' as const }]] as const) {
+    it(`${name}: rolled across it, put down on it, a hole added under it: no event there, never captured`, () => {
+      const sim = createBallPhysics(config)
+      const hole = sim.addHole({ x: 0, y: 0 }) // radius 18
+      const across = sim.addBall({ x: 0, y: 80, vx: 0, vy: -400, radius: 18 })
+      const onIt = sim.addBall({ x: 300, y: 0, vx: 0, vy: 0, radius: 40 })
+      sim.addHole({ x: 300, y: 0, radius: 30 })
+      sim.addHole({ x: 600, y: 0, radius: 20 })
+      const putDown = sim.addBall({ x: 600, y: 0, vx: 0, vy: 0, radius: 25 })
+      const events: string[] = []
+      for (let i = 0; i < 120; i++) {
+        sim.step(1 / 60)
+        for (const e of sim.drainEvents()) if (e.hole !== undefined) events.push(`${e.type} ${e.ball} ${e.hole}`)
+      }
+      expect(events).toEqual([])
+      expect(sim.ballState(across).mode).toBe('resting')
+      expect(sim.ballState(across).y).toBeLessThan(-18) // rolled over the hole's far lip
+      expect(sim.ballState(onIt).mode).toBe('resting')
+      expect(sim.ballState(putDown).mode).toBe('resting')
+      expect(sim.balls().filter((b) => sim.ballState(b).mode === 'captured')).toEqual([])
+      expect(sim.holeState(hole).radius).toBe(18)
+    })
+  }
+  it('a config whose balls are wider than its holes: 200 throws, no capture', () => {
+    const sim = createBallPhysics({ BALL_RADIUS: 50, HOLE_RADIUS: 10 })
+    sim.addHole({ x: 210, y: 200 })
+    let captures = 0
+    for (let i = 0; i < 200; i++) sim.throwBall({ x: 200 + (i % 20), y: 450, power: (i % 10) / 10, angle: 0 })
+    for (let i = 0; i < 240; i++) {
+      sim.step(1 / 60)
+      for (const e of sim.drainEvents()) if (e.type === 'capture') captures++
+    }
+    expect(captures).toBe(0)
+  })
+})
