@@ -37,7 +37,7 @@ const STRESS_CAPTURE_HOLD = 0.6
 const BURST_CAPTURE_HOLD = 1.5
 
 /** An event as the demo shows it: the core's event plus where and whose. */
-export interface DemoEvent extends BallEvent {
+export type DemoEvent = BallEvent & {
   /** index of the hole in the panel layout, -1 for none */
   holeIndex: number
   /** points of the hole (0 for none) */

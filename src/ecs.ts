@@ -54,7 +54,7 @@ export type { WallsStore } from '../components/Walls.js'
 
 // for a game's own systems: events, and the motion a decision restarts
 export { CaptureVia, EventType, pushEvent } from './events.js'
-export type { BallEvent, CaptureViaCode, EventTypeCode, EventView } from './events.js'
+export type { BallEvent, BallOnlyEvent, CaptureEvent, CaptureViaCode, CollisionEvent, EventTypeCode, EventView, HoleEvent } from './events.js'
 export { planRolling, sampleAtDistance, sampleRolling, startPathAt as startPath } from './motion/rolling.js'
 export { planRimRoll, sampleRimRoll, startRimRoll } from './motion/rimRoll.js'
 export { captureBall, emitHoleEvent, launchBallAt as launchBall, restBall } from './motion/ballFate.js'

@@ -15,32 +15,13 @@ export const EventType = Object.freeze({
   Collision: 9,
 } as const)
 export type EventTypeCode = (typeof EventType)[keyof typeof EventType]
-export const EVENT_TYPE_NAMES = Object.freeze(['skip', 'capture', 'bounce', 'rimRoll', 'lipOut', 'nearMiss', 'rest', 'wall', 'gutter', 'collision'] as const)
-export type BallEventType = (typeof EVENT_TYPE_NAMES)[number]
+import { EVENT_TYPE_NAMES, type BallEvent, type BallEventType, type CaptureViaName } from './eventTypes.js'
+export { EVENT_TYPE_NAMES }
+export type { BallEvent, BallEventType, BallOnlyEvent, CaptureEvent, CaptureViaName, CollisionEvent, HoleEvent } from './eventTypes.js'
 
 export const CaptureVia = Object.freeze({ None: 0, Clean: 1, RimRoll: 2, Rest: 3 } as const)
 export type CaptureViaCode = (typeof CaptureVia)[keyof typeof CaptureVia]
 const VIA_NAMES = Object.freeze([undefined, 'clean', 'rimRoll', 'rest'] as const)
-export type CaptureViaName = 'clean' | 'rimRoll' | 'rest'
-
-export interface BallEvent {
-  type: BallEventType
-  ball: number
-  /** the hole, for hole events */
-  hole?: number
-  /** simulation time of the event, s (exact: from the closed-form path, not the tick) */
-  time: number
-  /** δ at the lip crossing, px (for a nearMiss without a crossing: the closest approach) */
-  delta?: number
-  /** v at the lip crossing, px/s (for a nearMiss without a crossing: the speed at closest approach) */
-  speed?: number
-  /** how a capture happened */
-  via?: CaptureViaName
-  /** the other ball of a collision */
-  other?: number
-  /** normal impulse of a collision, mass·px/s (masses in units of a default ball) */
-  impulse?: number
-}
 
 export interface EventBuffer {
   count: number
@@ -327,12 +308,14 @@ export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
   const out = new Array<BallEvent>(n)
   for (let k = 0; k < n; k++) {
     const i = order[k]!
-    const e: BallEvent = { type: EVENT_TYPE_NAMES[buf.type[i]!]!, ball: buf.ball[i]!, time: buf.time[i]! }
+    // built field by field (a hole event's delta and speed only when it crossed the lip); each kind has
+    // exactly the fields of its type in src/eventTypes.ts
+    const e: Loose = { type: EVENT_TYPE_NAMES[buf.type[i]!]!, ball: buf.ball[i]!, time: buf.time[i]! }
     if (buf.type[i] === EventType.Collision) {
       e.other = buf.other[i]!
       e.speed = buf.speed[i]!
       e.impulse = buf.impulse[i]!
-      out[k] = e
+      out[k] = e as BallEvent
       continue
     }
     if (buf.hole[i] !== 0) e.hole = buf.hole[i]!
@@ -342,10 +325,23 @@ export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
     }
     const via = VIA_NAMES[buf.via[i]!]
     if (via !== undefined) e.via = via
-    out[k] = e
+    out[k] = e as BallEvent
   }
   buf.count = 0
   return out
+}
+
+/** An event being built by drainEventBuffer: every field a kind can have, each optional */
+interface Loose {
+  type: BallEvent['type']
+  ball: number
+  time: number
+  hole?: number
+  delta?: number
+  speed?: number
+  via?: CaptureViaName
+  other?: number
+  impulse?: number
 }
 
 const view: EventView = { type: 'skip', code: EventType.Skip, ball: 0, time: 0, hole: 0, hasLip: false, delta: 0, speed: 0, via: undefined, other: 0, impulse: 0 }

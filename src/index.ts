@@ -40,7 +40,7 @@ export type { OutcomeMapSpec, OutcomeScene, OutcomeSummary, OutcomeTally, ThrowD
 export type { ThrowFailure, ThrowOutcome, ThrowRequest, ThrowSolution } from './api/solveThrow.js'
 export type { ReplayPlayer } from './api/replayPlayer.js'
 export { EVENT_TYPE_NAMES } from './events.js'
-export type { BallEvent, BallEventType, CaptureViaName, EventView } from './events.js'
+export type { BallEvent, BallEventType, BallOnlyEvent, CaptureEvent, CaptureViaName, CollisionEvent, EventView, HoleEvent } from './events.js'
 export { BALL_MODE_NAMES } from '../components/Ball.js'
 export type { BallModeName } from '../components/Ball.js'
 export {

@@ -18,15 +18,15 @@ function burst(n: number, contacts: 'off' | 'fixed' = 'fixed'): BallPhysics {
 
 /** The view as the object drainEvents gives for the same event. */
 function asEvent(e: EventView): BallEvent {
-  const out: BallEvent = { type: e.type, ball: e.ball, time: e.time }
-  if (e.code === EventType.Collision) return { ...out, other: e.other, speed: e.speed, impulse: e.impulse }
+  const out: Record<string, unknown> = { type: e.type, ball: e.ball, time: e.time }
+  if (e.code === EventType.Collision) return { ...out, other: e.other, speed: e.speed, impulse: e.impulse } as BallEvent
   if (e.hole !== 0) out.hole = e.hole
   if (e.hasLip) {
     out.delta = e.delta
     out.speed = e.speed
   }
   if (e.via !== undefined) out.via = e.via
-  return out
+  return out as unknown as BallEvent
 }
 
 describe('drainEventsWith', () => {
@@ -202,5 +202,36 @@ describe('event buffer writes', () => {
     expect(bad).toEqual([])
     expect(offences('w.events.time[appendEvent(w.events, EventType.Wall, e, 0, false)] = t')).toHaveLength(1)
     expect(offences('const i = appendEvent(w.events, EventType.Wall, e, 0, false)\nw.events.time[i] = t')).toEqual([])
+  })
+})
+
+describe('events by kind', () => {
+  // every drained event has exactly the fields of its kind's type (src/eventTypes.ts), so a check of
+  // `type` narrows them: a capture its hole and via, a collision its other ball, speed and impulse
+  it('each kind has the fields its type says, and no others', () => {
+    const allowed: Record<string, { must: string[]; may: string[] }> = {
+      capture: { must: ['type', 'ball', 'time', 'hole', 'via'], may: ['delta', 'speed'] },
+      collision: { must: ['type', 'ball', 'time', 'other', 'speed', 'impulse'], may: [] },
+      rest: { must: ['type', 'ball', 'time'], may: [] },
+      wall: { must: ['type', 'ball', 'time'], may: [] },
+      gutter: { must: ['type', 'ball', 'time'], may: [] },
+    }
+    for (const t of ['skip', 'bounce', 'rimRoll', 'lipOut', 'nearMiss']) allowed[t] = { must: ['type', 'ball', 'time', 'hole'], may: ['delta', 'speed'] }
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    addPanel(sim, DEFAULT_PANEL)
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5, open: { bottom: true } })
+    for (let i = 0; i < 200; i++) sim.throwBall({ x: 20 + 1.9 * i, y: 450, power: (i * 0.618) % 1, angle: ((i * 0.377) % 1) - 0.5 })
+    const seen = new Set<string>()
+    for (let f = 0; f < 600; f++) {
+      sim.step(1 / 60)
+      for (const e of sim.drainEvents()) {
+        const keys = Object.keys(e)
+        const a = allowed[e.type]!
+        for (const k of a.must) expect(keys, e.type).toContain(k)
+        for (const k of keys) expect([...a.must, ...a.may], `${e.type}.${k}`).toContain(k)
+        seen.add(e.type)
+      }
+    }
+    expect([...seen].sort()).toEqual(expect.arrayContaining(['bounce', 'capture', 'collision', 'nearMiss', 'rest', 'skip', 'wall']))
   })
 })

@@ -66,7 +66,25 @@ const replay: Replay = sim.stopRecording()
 const player = createReplayPlayer(replayFromJSON(replayToJSON(replay)))
 const more: boolean = player.next()
 const tally = sampleThrows({ holes: DEFAULT_PANEL.holes }, { power: { mean: 0.5 }, angle: { mean: 0 }, from: DEFAULT_PANEL.launch }, 10, 1)
-export const used = [holes, kinds, rolling, captured, drained, latest, power, bytes, more, tally.throws]
+export const used: unknown[] = [holes, kinds, rolling, captured, drained, latest, power, bytes, more, tally.throws]
+// a check of an event's type narrows its fields
+for (const e of events) {
+  if (e.type === 'capture') {
+    const h: number = e.hole
+    const via: 'clean' | 'rimRoll' | 'rest' = e.via
+    used.push(h, via)
+  } else if (e.type === 'collision') {
+    const pair: [number, number, number, number] = [e.ball, e.other, e.speed, e.impulse]
+    used.push(pair)
+  } else if (e.type === 'skip' || e.type === 'nearMiss') {
+    const h: number = e.hole
+    const d: number | undefined = e.delta
+    used.push(h, d)
+  }
+  // fields a kind never has read as undefined on any event
+  const other: number | undefined = e.other
+  used.push(other)
+}
 
 // Each line below is an error only while the types are real: were any of them \`any\`, the directive would
 // be unused (TS2578) and the check would fail.
@@ -86,6 +104,10 @@ export const notNumber: number = outcome
 solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: 1, outcome: 'drop' })
 // @ts-expect-error a snapshot is restored from bytes
 sim.restore('snapshot')
+// @ts-expect-error a wall event has no hole
+export const noHole = (e: BallEvent): number => (e.type === 'wall' ? e.hole : 0)
+// @ts-expect-error a skip has no via
+export const noVia = (e: BallEvent): string => (e.type === 'skip' ? e.via : '')
 // @ts-expect-error an event view's hole is a number (0: none), not optional
 sim.drainEventsWith((e) => { const h: undefined = e.hole })
 `
