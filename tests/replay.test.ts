@@ -165,28 +165,28 @@ describe('a recording starts from the state it was started in', () => {
     for (let i = 0; i < 30; i++) s.throwBall({ x: 80 + 8 * i, y: 450, power: 0.3 + 0.015 * i, angle: 0.3 - 0.02 * i, radius: 7 })
   }
 
+  /** On a world recording: the panel, 30 throws, `frames` steps; the replay gives the same events. */
+  const expectSameReplay = (s: BallPhysics, frames: number): void => {
+    addPanel(s)
+    throws(s)
+    const live: string[] = []
+    play(s, frames, live)
+    expect(live.length).toBeGreaterThan(30)
+    expect(replayed(s)).toEqual(live)
+  }
+
   it('a world stepped while empty (an attract loop), then recorded: the replay keeps its clock (it started at 0, every event 0.5 s early)', () => {
     const s = createBallPhysics({ BALL_COLLISIONS: 'on' })
     for (let f = 0; f < 30; f++) s.step(1 / 60)
     s.startRecording()
-    addPanel(s)
-    throws(s)
-    const live: string[] = []
-    play(s, 120, live)
-    expect(live.length).toBeGreaterThan(30)
-    expect(replayed(s)).toEqual(live)
+    expectSameReplay(s, 120)
   })
 
   it('rim tables prepared before the recording (tabulated model, empty world): the replay has them (its outcomes differed)', () => {
     const s = createBallPhysics(TABULATED_CONFIG)
     prepareRimTable(s, 18, 7)
     s.startRecording()
-    addPanel(s)
-    throws(s)
-    const live: string[] = []
-    play(s, 150, live)
-    expect(live.length).toBeGreaterThan(30)
-    expect(replayed(s)).toEqual(live)
+    expectSameReplay(s, 150)
   })
 
   it('a fresh world needs no start state: its replay has none', () => {

@@ -141,6 +141,14 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
   let page: Page
   let outdir = ''
   const problems: string[] = []
+  /** From contacts 'on' (exact) back to off (the toggle cycles off, exact, fixed tick), applied now, balls cleared. */
+  const contactsOffFromExact = async (): Promise<void> => {
+    await page.click('#contacts')
+    await page.click('#contacts')
+    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS ?? 'off')).toBe('off')
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
+  }
   const measured: Record<string, unknown> = {}
 
   beforeAll(async () => {
@@ -380,11 +388,7 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect({ first, recorded: recorded.slice(first, first + 3), replayed: replayed.slice(first, first + 3) }).toEqual({ first: -1, recorded: [], replayed: [] })
     expect(replayed).toEqual(recorded)
     // back to contacts off for the tests after this one
-    await page.click('#contacts')
-    await page.click('#contacts')
-    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS ?? 'off')).toBe('off')
-    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
-    await page.click('#clear-balls')
+    await contactsOffFromExact()
     expect(problems).toEqual([])
   })
 
@@ -461,11 +465,7 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(await page.evaluate(() => window.__demo.throwsMade)).toBe(found === true ? throws1 + 1 : throws1)
     expect(await page.textContent('#call-status')).toMatch(/Hole \d+: (power .* aim .* margin|no throw found)/)
     await page.click('#call-shot')
-    await page.click('#contacts')
-    await page.click('#contacts')
-    await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS ?? 'off')).toBe('off')
-    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
-    await page.click('#clear-balls')
+    await contactsOffFromExact()
     expect(problems).toEqual([])
   })
 
