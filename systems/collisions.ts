@@ -65,15 +65,20 @@ export function collisionsSystem(w: BallWorld): void {
     // a glancing contact at relative speed v approaches slower than s in a share of about s²/(2v²) of
     // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
     const slow = approach < w.config.BALL_SETTLE_SPEED
-    const settle = slow || isRepeatContact(w, a, b) || countContact(C, a) > MAX_STEP_CONTACTS || countContact(C, b) > MAX_STEP_CONTACTS
+    const repeat = isRepeatContact(w, a, b)
+    const settle = slow || repeat || countContact(C, a) > MAX_STEP_CONTACTS || countContact(C, b) > MAX_STEP_CONTACTS
     C.contacts++
     let graze = false
     if (settle) {
       collectCluster(w, a, b, t)
       // two balls alone that barely approach but slide past each other fast (a graze; restitution above 0)
       // take the normal impulse and keep their motion along the tangent; merged, both stopped dead (a graze
-      // at 300 px/s each way left two balls at rest). Pressed, they touch again and settle then
-      graze = slow && w.config.BALL_RESTITUTION > 0 && C.clusterCount === 2 && slides(B, a, b, nx, ny) >= GRAZE_SLIDE * w.config.BALL_SETTLE_SPEED
+      // at 300 px/s each way left two balls at rest). Only a first touch, counted with the step's contacts
+      // (the count was skipped for a slow one): pressed together, the two touch again and settle then (a
+      // graze each time, they once made a thousand contacts a second and a step that hung on the pass cap)
+      graze =
+        slow && !repeat && w.config.BALL_RESTITUTION > 0 && C.clusterCount === 2 && slides(B, a, b, nx, ny) >= GRAZE_SLIDE * w.config.BALL_SETTLE_SPEED &&
+        countContact(C, a) <= MAX_STEP_CONTACTS && countContact(C, b) <= MAX_STEP_CONTACTS
       if (!graze) {
         settleCluster(w, a, b, t)
         const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)

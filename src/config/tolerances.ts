@@ -124,6 +124,7 @@ export const MOVING_ORDER_CHURN = 16
  * tangential motion instead of leaving with their centre-of-mass velocity (which stopped two balls grazing
  * at 300 px/s each way dead). Lower, it reached into settling piles: a packed 15 × 15 pile with e = 0.3
  * took 9,942 contacts to settle at 16 (1,785 without the rule, 1,822 at 64). Not with restitution 0, where
- * the two would stay touching and creep.
+ * the two would stay touching and creep; only at a pair's first touch, and counted toward MAX_STEP_CONTACTS
+ * (pressed together again, they settle).
  */
 export const GRAZE_SLIDE = 64
