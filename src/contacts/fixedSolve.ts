@@ -62,14 +62,21 @@ const S_IMA = 4
 const S_IMB = 5
 const S_SEPARATE = 6
 
-export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number): void {
+/**
+ * The velocity sweeps over the tick's pairs; true when a sweep left every pair as it was (converged).
+ * `fresh`: pairs below it were met by a call that converged, at the velocities the balls still have (a
+ * widening round in between only adds pairs): they are passed by until a ball of theirs changes.
+ */
+export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number, fresh = 0): boolean {
   S[S_T] = t
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
   if (testedAt.length < F.pairCount) testedAt = new Float64Array(2 * F.pairCount)
   if (changedAt.length < F.n) changedAt = new Float64Array(2 * F.n)
-  // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last call)
-  testedAt.fill(-1, 0, F.pairCount)
+  // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last call),
+  // but for those a converged call met at these velocities: tested at clock 0, before any change
+  testedAt.fill(0, 0, fresh)
+  testedAt.fill(-1, fresh, F.pairCount)
   changedAt.fill(0, 0, F.n)
   clock = 0
   let moved = false
@@ -83,8 +90,9 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
       if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
     }
     if (wallVelocities(w, F)) moved = true
-    if (!moved) return
+    if (!moved) return true
   }
+  return false
 }
 
 /**
