@@ -52,7 +52,7 @@ describe('capture system (Stage 1)', () => {
 
 describe('a ball not smaller than the hole bridges it', () => {
   // it fell in cleanly, through a hole narrower than itself
-  for (const [name, config] of [['design', {}], ['tabulated', { RIM_MODEL: 'tabulated' as const, BALL_INERTIA: 0.4 }], ['contacts on', { BALL_COLLISIONS: 'on' as const }], ['fixed tick', { BALL_COLLISIONS: 'fixed' as const }]] as const) {
+  for (const [name, config] of [['design', {}], ['tabulated', { RIM_MODEL: 'tabulated' as const, BALL_INERTIA: 0.4 }], ['contacts on', { BALL_COLLISIONS: 'on' as const }], ['fixed tick', { BALL_COLLISIONS: 'fixed' as const }], ['naive method', { METHOD: 'naive' as const }], ['v1 method', { METHOD: 'v1' as const }]] as const) {
     it(`${name}: rolled across it, put down on it, a hole added under it: no event there, never captured`, () => {
       const sim = createBallPhysics(config)
       const hole = sim.addHole({ x: 0, y: 0 }) // radius 18

@@ -71,6 +71,8 @@ export function naiveDetectSystem(w: BallWorld): void {
         }
         continue
       }
+      // a ball not smaller than the hole bridges it
+      if (!(foot < R)) continue
       if (d2 < R * R) {
         if (RC.hole[rim] !== 0) continue // inside two lip circles cannot happen (they do not overlap)
         rim = lockAtLip(w, eid, hid, speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2), speed, t, RimMode.Transit)

@@ -35,7 +35,8 @@ export function v1CaptureSystem(w: BallWorld): void {
         const dy = y - xyr[3 * j + 1]!
         const R = xyr[3 * j + 2]!
         const d2 = dx * dx + dy * dy
-        if (d2 >= R * R) continue
+        // a ball not smaller than the hole bridges it
+        if (d2 >= R * R || !(B.radius[eid]! < R)) continue
         const hole = table.ids[j]!
         lockAtLip(w, eid, hole, speed > 0 ? Math.abs(dx * vy - dy * vx) / speed : Math.sqrt(d2), speed, st.t, RimMode.None)
         captureBall(w, eid, hole, st.t, speed > 0 ? CaptureVia.Clean : CaptureVia.Rest)
