@@ -227,11 +227,14 @@ export class Game {
     return c.MIN_VY + power * (c.MAX_VY - c.MIN_VY)
   }
 
-  /** One of the player's throws from the launch point (or `from`). Returns false when no balls are left. */
-  throwPlayer(request: ThrowRequest, from: { x: number; y: number } = this.panel.launch): boolean {
+  /**
+   * One of the player's throws from the launch point (or `from`), with the pending settings applied first
+   * (unless `apply` is false). Returns false when no balls are left.
+   */
+  throwPlayer(request: ThrowRequest, from: { x: number; y: number } = this.panel.launch, apply = true): boolean {
     if (this.ballsLeft <= 0 || this.replaying !== null) return false
     this.cancelCall()
-    this.applyPending()
+    if (apply) this.applyPending()
     this.beginRound()
     if (this.gameCaptures.length !== this.holes.length) this.gameCaptures = this.holes.map(() => 0)
     this.spawn(Kind.Player, from.x, from.y, request.power, request.angle)
@@ -505,7 +508,9 @@ export class Game {
     if (s === null || s.token !== token) return null
     this.solving = null
     this.lastCall = { holeIndex: s.holeIndex, answer, ms }
-    if (answer.found) this.throwPlayer({ power: answer.power, angle: answer.angle }, answer.from)
+    // thrown into the world it was solved in: settings changed meanwhile wait for the next throw (applied
+    // now, they would rebuild the world, and the solved throw would go into another)
+    if (answer.found) this.throwPlayer({ power: answer.power, angle: answer.angle }, answer.from, false)
     return answer
   }
 

@@ -173,6 +173,9 @@ async function main(): Promise<void> {
       callStatus.textContent = `Hole ${value}: power ${answer.power.toFixed(3)}, aim ${deg.toFixed(1)}°, from x = ${answer.from.x.toFixed(0)}; margin ±${answer.margin.power.toFixed(3)} power, ±${((answer.margin.angle * 180) / Math.PI).toFixed(2)}° (solved in ${ms.toFixed(0)} ms)`
     } else callStatus.textContent = `Hole ${value}: no throw found (${answer.reason})`
   }
+  // the hole of the call whose answer the status line waits for (-1: none): a call cancelled meanwhile (a
+  // throw, a burst, a reset) says so at once, not when its answer comes
+  let awaiting = -1
   // the solver runs in a worker when the page can start one (the panel waits for its answer, the page
   // does not); here otherwise, or when the worker fails
   let solver: Worker | null = null
@@ -187,6 +190,7 @@ async function main(): Promise<void> {
       const reply = e.data
       const s = game.solving
       if (s === null || s.token !== reply.token) return // cancelled meanwhile: a throw, a burst, a reset
+      awaiting = -1
       if ('error' in reply) {
         game.cancelCall()
         callStatus.textContent = `The solver failed: ${reply.error}`
@@ -199,10 +203,16 @@ async function main(): Promise<void> {
       solver?.terminate()
       solver = null
       const s = game.solving
+      awaiting = -1
       game.cancelCall()
       // solved here instead, this time and from now on
       if (s !== null) solveHere(s.holeIndex)
     }
+  }
+  const syncCall = (): void => {
+    if (awaiting < 0 || game.solving !== null) return
+    callStatus.textContent = `Hole ${game.panel.holes[awaiting]!.value}: call cancelled (a throw, a burst, a clear or a new game came first)`
+    awaiting = -1
   }
   const callAt = (p: { x: number; y: number }): boolean => {
     const i = holeAt(p)
@@ -216,6 +226,7 @@ async function main(): Promise<void> {
     if (call === null) showAnswer(i, null)
     else {
       callStatus.textContent = `Hole ${game.panel.holes[i]!.value}: solving… (the panel waits for the answer)`
+      awaiting = i
       solver.postMessage(call)
     }
     return true
@@ -431,6 +442,7 @@ async function main(): Promise<void> {
     setText(hud.ballsLeft, String(game.ballsLeft))
     setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
     syncReplay()
+    syncCall()
     syncContacts()
     syncStress()
     if (meter.frame(t, result.physicsMs, result.steps, performance.now() - t)) slowHud(meter)

@@ -433,6 +433,8 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       return { solvingAtThrow, after: d.solving }
     })
     expect(cancelled).toEqual({ solvingAtThrow: 12, after: null })
+    // the status says so at once, not when the cancelled answer comes (it said "solving…" until then)
+    await expect.poll(() => page.textContent('#call-status')).toMatch(/call cancelled/)
     const throws1 = throws0 + 1
     expect(await page.evaluate(() => window.__demo.throwsMade)).toBe(throws1)
     await page.waitForTimeout(3000) // the cancelled call's answer arrives and is dropped
@@ -471,7 +473,7 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
 
   it('narrow windows: the page never scrolls sideways, the stage scales down, the side panel goes below it', async () => {
     try {
-      for (const width of [1000, 800, 600, 400]) {
+      for (const width of [1000, 947, 920, 901, 800, 600, 400]) {
         await page.setViewportSize({ width, height: 860 })
         await expect
           .poll(() => page.evaluate(() => document.querySelector('#stage canvas')!.getBoundingClientRect().width))

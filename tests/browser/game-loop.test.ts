@@ -152,11 +152,24 @@ describe('demo game: replays and called shots', () => {
     expect(g.ballsLeft).toBe(left - 1)
     expect(g.solving).toBe(null)
     expect(g.frame(1 / 60).steps).toBeGreaterThan(0)
+    // settings changed while a call is solved wait for the next throw: the answer goes into the world it
+    // was solved in (applied first, they rebuilt the world and the solved throw went into another)
+    const before = g.sim
+    const ballsBefore = g.live.length
+    const settled = g.beginCall(12)!
+    g.setPending({ ...g.overrides, ROLLING_DECEL: 120 })
+    const replyCopy = createBallPhysics(settled.config)
+    replyCopy.restore(settled.snapshot)
+    const reply = solveThrow(replyCopy, settled.request)
+    expect(g.finishCall(settled.token, reply, 1)).toBe(reply)
+    expect(g.sim).toBe(before)
+    expect(g.live.length).toBe(ballsBefore + (reply.found ? 1 : 0))
+    expect(g.pending).toEqual({ ...g.overrides, ROLLING_DECEL: 120 })
     // a call, then the player's own throw: the call's answer is dropped
     const again = g.beginCall(12)!
     g.throwPlayer({ power: 0.4, angle: 0.1 })
     expect(g.solving).toBe(null)
     expect(g.finishCall(again.token, answer, 1)).toBe(null)
-    expect(g.ballsLeft).toBe(left - 2)
+    expect(g.ballsLeft).toBe(left - 2 - (reply.found ? 1 : 0))
   })
 })
