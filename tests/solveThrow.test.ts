@@ -104,6 +104,20 @@ describe('solveThrow', () => {
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, outcome: 'drop' as ThrowOutcome })).toThrow(/request\.outcome must be one of capture, skip, lipOut, bounce/)
     expect(() => solveThrow(sim, { from: { x: Number.NaN, y: 450 }, hole: holes[0]! })).toThrow(/request\.from\.x/)
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, along: -1 })).toThrow(/request\.along/)
+    // inside a drain's callback: refused in its own name (the snapshot it takes named snapshotWorld)
+    sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0 })
+    let inDrain = ''
+    for (let i = 0; i < 60 && inDrain === ''; i++) {
+      sim.step(1 / 60)
+      sim.drainEventsWith(() => {
+        try {
+          solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]! })
+        } catch (e) {
+          inDrain = (e as Error).message
+        }
+      })
+    }
+    expect(inDrain).toMatch(/^solveThrow: called from a drainEventsWith callback/)
     const inside = solveThrow(sim, { from: { x: 50, y: 370 }, hole: holes[0]! })
     expect(inside.found).toBe(false)
     for (const step of [0, -1, 1, Number.NaN]) expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step })).toThrow(/request\.step must be in \(0, 0\.25\]/)

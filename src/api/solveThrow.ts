@@ -101,6 +101,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const maxStep = world.config.MAX_STEP
   const step = s.step === undefined ? (anyHeld(world) ? Math.min(1 / 60, maxStep) : maxStep) : positive('request.step', s.step, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
+  if (world.events.draining) throw new Error('solveThrow: called from a drainEventsWith callback (it copies the world by snapshot); call it after the drain returns')
 
   // the grid's throws at the largest step (a grid of them among a thousand balls costs seconds at 1/60 s);
   // the answer is checked at the game's
