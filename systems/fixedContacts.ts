@@ -48,8 +48,8 @@ export function fixedContactsSystem(w: BallWorld): void {
   F.overlap = false
   let converged = solveVelocities(w, F, t, iterations)
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
-  // could pass through another within the tick (src/config/tolerances.ts), and those rounds start from the
-  // new pairs when the last round converged (a full first sweep each round made rows of fast balls 10x slower)
+  // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
+  // (src/config/tolerances.ts); those rounds start from the new pairs when the last round converged
   for (let round = 0; round < MAX_PASS_ROUNDS; round++) {
     const extra = round >= MAX_WIDEN_ROUNDS
     if (extra && (!mayPass(F) || F.pairCount > PASS_PAIRS_PER_BALL * F.n)) break
