@@ -16,7 +16,7 @@ import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
-import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PROJECTION_SLOP } from '../src/config/tolerances.js'
+import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 
@@ -50,11 +50,15 @@ export function fixedContactsSystem(w: BallWorld): void {
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts); those rounds start from the new pairs when the last round converged
+  let added = 0
+  let widened = 1
   for (let round = 0; round < MAX_PASS_ROUNDS; round++) {
     const extra = round >= MAX_WIDEN_ROUNDS
-    if (extra && (!mayPass(F) || F.pairCount > PASS_PAIRS_PER_BALL * F.n)) break
+    if (extra && (!mayPass(F) || F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened)) break
     const pairs = F.pairCount
     if (!widenReach(w, F) || (extra && F.pairCount === pairs)) break
+    added = F.pairCount - pairs
+    widened = F.widenedCount > 0 ? F.widenedCount : 1
     converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0)
   }
   const capped = F.capped

@@ -82,12 +82,16 @@ export const MIN_PROJECTION_SHARE = 0.1
 export const MAX_WIDEN_ROUNDS = 4
 export const MAX_PASS_ROUNDS = 256
 /**
- * The rounds after MAX_WIDEN_ROUNDS stop once the tick has PASS_PAIRS_PER_BALL pairs a candidate: each
- * widened ball is paired with every ball within a tick's travel, so rows of tiny balls struck at 1e5 px/s
+ * The rounds after MAX_WIDEN_ROUNDS stop once the tick has PASS_PAIRS_PER_BALL pairs a candidate, or the
+ * last round paired each ball it widened with more than PASS_PAIRS_PER_WIDENED balls: each widened ball
+ * is paired with every ball within a tick's travel, so rows of tiny balls side by side struck at 1e5 px/s
  * added tens of thousands of pairs a round (20 rows of 200 balls of radius 0.5, 4 px apart: 7.2 million
- * pairs by the 50th round, a 2.7 s step against 0.38 s with the four rounds alone)
+ * pairs by the 50th round, a 2.7 s step against 0.38 s with the four rounds alone; 0.49 s with these
+ * bounds). A bound of 64 pairs a candidate alone cut single rows short: a ball went through a row of 250
+ * radius-0.5 balls from the 82nd at 5e4 px/s.
  */
-export const PASS_PAIRS_PER_BALL = 64
+export const PASS_PAIRS_PER_BALL = 256
+export const PASS_PAIRS_PER_WIDENED = 1024
 
 /**
  * Fixed-tick contacts: the impulses a pair takes with its restitution in one tick; met again after that

@@ -37,6 +37,11 @@ describe('fixed tick: a push along a row with gaps', () => {
     [3, 1, 1000, 6],
     [0.5, 1, 1e4, 40],
     [11, 1, 1e5, 200],
+    // rows of small balls longer than the pairs one ball's widening adds: a bound of 64 pairs a candidate
+    // on the rounds let a ball through from the 82nd (5e4 px/s) or 161st (2e4 px/s)
+    [0.5, 1, 2e4, 250],
+    [0.5, 1, 5e4, 250],
+    [3, 1, 2e5, 250],
   ]
   for (const [radius, gap, speed, n] of cases) {
     it(`radius ${radius}, gap ${gap} px, ${speed} px/s into ${n} balls: no ball passes another, the last one leaves with the striker's speed`, () => {
