@@ -211,7 +211,7 @@ async function main(): Promise<void> {
   }
   const syncCall = (): void => {
     if (awaiting < 0 || game.solving !== null) return
-    callStatus.textContent = `Hole ${game.panel.holes[awaiting]!.value}: call cancelled (a throw, a burst, a clear or a new game came first)`
+    callStatus.textContent = `Hole ${game.panel.holes[awaiting]!.value}: call cancelled (a throw, a burst, a clear, the stress mode, a replay or a new game came first)`
     awaiting = -1
   }
   const callAt = (p: { x: number; y: number }): boolean => {
