@@ -25,8 +25,6 @@ import { positive } from '../check.js'
 import { atan2, hypot } from '../math.js'
 import type { BallPhysics } from './createBallPhysics.js'
 import { WallEdge } from '../../components/Walls.js'
-import { BallMode } from '../../components/Ball.js'
-import { forEachBall } from '../world/balls.js'
 import { ExactCheck, Trial, type ThrowOutcome } from './throwTrials.js'
 
 export type { ThrowOutcome } from './throwTrials.js'
@@ -99,13 +97,13 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const outcome = s.outcome === undefined ? 'capture' : (s.outcome as ThrowOutcome)
   if (!OUTCOMES.includes(outcome)) throw new RangeError(`request.outcome must be one of ${OUTCOMES.join(', ')}, got ${describe(s.outcome)}`)
   const maxStep = world.config.MAX_STEP
-  const step = s.step === undefined ? (anyHeld(world) ? Math.min(1 / 60, maxStep) : maxStep) : positive('request.step', s.step, maxStep)
+  const step = s.step === undefined ? (world.held.count > 0 ? Math.min(1 / 60, maxStep) : maxStep) : positive('request.step', s.step, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
   if (world.events.draining) throw new Error('solveThrow: called from a drainEventsWith callback (it copies the world by snapshot); call it after the drain returns')
 
-  // the grid's throws at the largest step (a grid of them among a thousand balls costs seconds at 1/60 s);
-  // the answer is checked at the game's
-  const trial = new Trial(world, hole, maxStep)
+  // the grid's throws at MAX_STEP (a grid of them among a thousand balls costs seconds at 1/60 s); the
+  // answer is checked at the game's step
+  const trial = new Trial(world, hole)
   const cfg = world.config
   const H = world.Hole
   const hx = H.x[hole]!
@@ -302,14 +300,4 @@ function depthOf(hit: Uint8Array): Uint8Array {
     }
   }
   return depth
-}
-
-/** Whether a ball of the world is held at the launcher (put down on another, waiting for its spot). */
-function anyHeld(world: BallWorld): boolean {
-  const mode = world.Ball.mode
-  let held = false
-  forEachBall(world, (b) => {
-    if (mode[b] === BallMode.Held) held = true
-  })
-  return held
 }

@@ -56,12 +56,7 @@ export class Trial {
   /** x, y, vx, vy, radius, mass of each ball on the panel (contacts on) */
   private readonly others: number[] = []
 
-  constructor(
-    world: BallWorld,
-    hole: number,
-    /** the step the trials are stepped at */
-    private readonly dt: number,
-  ) {
+  constructor(world: BallWorld, hole: number) {
     const contacts = world.collide !== null || world.fixed !== null
     this.sim = createBallPhysics(contacts ? world.config : { ...world.config, BALL_COLLISIONS: 'off' }, { capacity: 64 })
     const ids = copyPanel(world, this.sim)
@@ -81,7 +76,7 @@ export class Trial {
     const sim = this.sim
     const o = this.others
     for (let i = 0; i < o.length; i += 6) sim.addBall({ x: o[i]!, y: o[i + 1]!, vx: o[i + 2]!, vy: o[i + 3]!, radius: o[i + 4]!, mass: o[i + 5]! })
-    const { outcome } = follow(sim, sim.throwBall({ x, y, power, angle }), this.hole, sim.time, this.dt)
+    const { outcome } = follow(sim, sim.throwBall({ x, y, power, angle }), this.hole, sim.time, sim.config.MAX_STEP)
     for (const id of sim.balls()) sim.removeBall(id)
     sim.drainEvents()
     return outcome
