@@ -16,6 +16,7 @@ import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
+import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -47,6 +48,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   F.hitCount = 0
   F.overlap = false
   let converged = solveVelocities(w, F, t, iterations)
+  beginWidening()
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts); those rounds start from the new pairs when the last round converged
@@ -100,7 +102,7 @@ function mayPass(F: FixedContactState): boolean {
     const vx = F.vx[i]!
     const vy = F.vy[i]!
     const travel = Math.sqrt(vx * vx + vy * vy) * F.tick
-    if (travel > F.r[i]! + rMin && F.r[i]! + travel > F.reach[i]! + PROJECTION_SLOP) return true
+    if (travel > F.r[i]! + rMin && F.r[i]! + travel > F.reach[i]! + PROJECTION_SLOP && !withinCapsule(F, i)) return true
   }
   return false
 }

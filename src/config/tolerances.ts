@@ -83,14 +83,19 @@ export const MAX_WIDEN_ROUNDS = 4
 export const MAX_PASS_ROUNDS = 256
 /**
  * The rounds after MAX_WIDEN_ROUNDS stop once the tick has PASS_PAIRS_PER_BALL pairs a candidate, or the
- * last round paired each ball it widened with more than PASS_PAIRS_PER_WIDENED balls: each widened ball
- * is paired with every ball within a tick's travel, so rows of tiny balls side by side struck at 1e5 px/s
- * added tens of thousands of pairs a round (20 rows of 200 balls of radius 0.5, 4 px apart: 7.2 million
- * pairs by the 50th round, a 2.7 s step against 0.38 s with the four rounds alone; 0.49 s with these
- * bounds). A bound of 64 pairs a candidate alone cut single rows short: a ball went through a row of 250
- * radius-0.5 balls from the 82nd at 5e4 px/s.
+ * last round paired each ball it widened with more than PASS_PAIRS_PER_WIDENED balls. A ball widened by
+ * its whole travel in every direction is paired with every ball within it: rows of tiny balls side by
+ * side struck at 1e5 px/s added tens of thousands of pairs a round (20 rows of 200 balls of radius 0.5,
+ * 4 px apart: 7.2 million pairs by the 50th round without these bounds). Such a ball is now widened along
+ * its path (CAPSULE_TRAVEL), a row's length of pairs. A bound of 64 pairs a candidate alone cut single
+ * rows short: a ball went through a row of 250 radius-0.5 balls from the 82nd at 5e4 px/s.
  */
 export const PASS_PAIRS_PER_BALL = 256
+/**
+ * Fixed-tick contacts: a ball the solve sped up so that it would move more than CAPSULE_TRAVEL times its
+ * radius in a tick is widened along its path only, to the capsule it sweeps (src/contacts/fixedCapsule.ts).
+ */
+export const CAPSULE_TRAVEL = 4
 export const PASS_PAIRS_PER_WIDENED = 1024
 
 /**

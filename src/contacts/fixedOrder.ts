@@ -14,6 +14,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { gridShape } from './fixedDense.js'
 import { radixSort, sortByKeys, sweepPairs } from './fixedSweep.js'
+import { renumberCapsules } from './fixedCapsule.js'
 
 /** Finds the tick's pairs (F.pairA, F.pairB, F.pairCount, in solve order) and packs their balls. */
 export function findPairs(w: BallWorld, F: FixedContactState): void {
@@ -233,6 +234,7 @@ export function unpackedJoin(w: BallWorld, F: FixedContactState, list: Uint32Arr
   for (let k = 0; k < F.nearWallCount; k++) F.nearWall[k] = moved[F.nearWall[k]!]!
   for (let k = 0; k < F.widenedCount; k++) F.widened[k] = moved[F.widened[k]!]!
   for (let k = 0; k < F.bigCount; k++) F.big[k] = moved[F.big[k]!]!
+  renumberCapsules(moved, old, total)
 }
 
 /** A packed ball's place in the order: moving by id, then resting by id. */

@@ -3,21 +3,24 @@
 // move into them before the next tick. After each solve round, every such ball's reach is widened to its
 // new speed and it is paired again: with the tick's candidates in the ordering grid's cells within its new
 // reach (src/contacts/fixedOrder.ts; found through the sweep order, fixedSweep.ts, and packed if they were
-// not), with the big ones, and with the resting balls now in its reach (they join the candidates). The
-// solve then runs again over all pairs. At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts):
+// not), with the big ones, and with the resting balls now in its reach (they join the candidates); a ball
+// far faster than its size only along its path (src/contacts/fixedCapsule.ts). The solve then runs again
+// over all pairs. At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts):
 // a chain longer than that is caught at the next tick, by the projection; up to MAX_PASS_ROUNDS while a
 // sped-up ball could pass through a ball within the tick (systems/fixedContacts.ts).
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
-import { markWall } from './fixedGrid.js'
-import { seed, seedResting } from './fixedSeed.js'
+import { markWall, walls } from './fixedGrid.js'
+import { seed, seedAlong, seedResting } from './fixedSeed.js'
+import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, roundNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
 /** Widens the reach of the candidates the last round sped up and pairs them again; false when none did. */
 export function widenReach(w: BallWorld, F: FixedContactState): boolean {
+  nextRound(F.x.length)
   const widest = widenHits(F)
   if (F.widenedCount === 0) return false
   const smallReach = Math.max(F.cell / 2, widest)
@@ -25,24 +28,156 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
   if (F.dense === 1) {
     for (let k = 0; k < F.widenedCount; k++) {
       const g = F.widened[k]!
-      boxRange[0] = F.wide[g]! + smallReach
-      pairInGrid(F, g)
-      for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
-      // resting balls not yet candidates (the gather's seen stamps skip those that are)
-      seed[0] = F.x[g]!
-      seed[1] = F.y[g]!
-      seed[2] = F.wide[g]!
-      seedResting(w, F)
+      if (hasCapsule(g)) {
+        pairAll(F, g, restFrom)
+        pushPartners(F, g)
+      } else {
+        boxRange[0] = F.wide[g]! + smallReach
+        pairInGrid(F, g)
+        for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
+      }
+      seedFrom(w, F, g)
     }
     addResting(w, F, restFrom)
   } else widenSwept(w, F, smallReach, widest)
+  pairHolders(F)
   for (let k = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
     F.reach[g] = F.wide[g]!
     F.grown[g] = 0
-    markWall(F, g)
+    if (hasCapsule(g)) markSwept(F, g)
+    else markWall(F, g)
   }
   return true
+}
+
+/** The resting balls not yet candidates (the gather's seen stamps skip those that are) that widened g now reaches. */
+function seedFrom(w: BallWorld, F: FixedContactState, g: number): void {
+  if (hasCapsule(g)) {
+    seedAlong(w, F, g)
+    return
+  }
+  seed[0] = F.x[g]!
+  seed[1] = F.y[g]!
+  seed[2] = F.wide[g]!
+  seedResting(w, F)
+}
+
+/** A widened candidate's partners with a capsule (scratch, one widening at a time), listed by ball id. */
+let partners = new Int32Array(64)
+let partnerCount = 0
+/** pairAll's widest candidate circle, and the call it was found for */
+let maxCircle = 0
+let maxUpTo = -1
+let maxRound = -1
+
+/**
+ * Widened candidate g, which has a capsule (src/contacts/fixedCapsule.ts): the candidates before `upTo`
+ * that what it covers now meets and did not before, into partners; with a widened one that has a capsule
+ * too, from the lower id.
+ */
+function pairAll(F: FixedContactState, g: number, upTo: number): void {
+  partnerCount = 0
+  if (maxUpTo !== upTo || maxRound !== roundNow()) {
+    // the widest circle of the candidates this round (a cheap box test below)
+    maxUpTo = upTo
+    maxRound = roundNow()
+    maxCircle = 0
+    for (let j = 0; j < upTo; j++) {
+      const c = F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!
+      if (c > maxCircle) maxCircle = c
+    }
+  }
+  coverBounds(F, g, maxCircle)
+  const x0 = bounds[0]!
+  const x1 = bounds[1]!
+  const y0 = bounds[2]!
+  const y1 = bounds[3]!
+  setTarget(F, g)
+  for (let j = 0; j < upTo; j++) {
+    if (j === g) continue
+    // beyond the box of g's cover grown by every circle, or with a capsule whose box misses g's: no meeting
+    if (hasCapsule(j)) {
+      if (beyondBox(F, j)) continue
+    } else {
+      const x = F.x[j]!
+      const y = F.y[j]!
+      if (x < x0 || x > x1 || y < y0 || y > y1) continue
+    }
+    const grownJ = F.grown[j] === 1
+    if (grownJ && F.id[j]! < F.id[g]! && hasCapsule(j)) continue
+    if (!covers(F, g, true, j, grownJ) || covers(F, g, false, j, false)) continue
+    addPartner(j)
+  }
+}
+
+function addPartner(j: number): void {
+  if (partnerCount === partners.length) {
+    const next = new Int32Array(2 * partners.length)
+    next.set(partners)
+    partners = next
+  }
+  partners[partnerCount++] = j
+}
+
+/** Pairs g with its partners in the order of their ball ids (the same whichever broadphase found them). */
+function pushPartners(F: FixedContactState, g: number): void {
+  const n = partnerCount
+  // heapsort by id: no scratch beyond the list
+  for (let i = (n >> 1) - 1; i >= 0; i--) siftDown(F, i, n)
+  for (let end = n - 1; end > 0; end--) {
+    const top = partners[0]!
+    partners[0] = partners[end]!
+    partners[end] = top
+    siftDown(F, 0, end)
+  }
+  for (let k = 0; k < n; k++) {
+    const j = partners[k]!
+    pushPair(F, g < j ? g : j, g < j ? j : g)
+  }
+  partnerCount = 0
+}
+
+function siftDown(F: FixedContactState, i: number, n: number): void {
+  for (;;) {
+    let m = i
+    const a = 2 * i + 1
+    const b = a + 1
+    if (a < n && F.id[partners[a]!]! > F.id[partners[m]!]!) m = a
+    if (b < n && F.id[partners[b]!]! > F.id[partners[m]!]!) m = b
+    if (m === i) return
+    const t = partners[i]!
+    partners[i] = partners[m]!
+    partners[m] = t
+    i = m
+  }
+}
+
+/**
+ * Each widened candidate without a capsule against the candidates with one that were not widened this
+ * round (those widened pair with every candidate themselves, pairAll).
+ */
+function pairHolders(F: FixedContactState): void {
+  const count = holdersNow()
+  if (count === 0) return
+  const list = holderList()
+  for (let k = 0; k < F.widenedCount; k++) {
+    const g = F.widened[k]!
+    if (hasCapsule(g)) continue
+    for (let h = 0; h < count; h++) {
+      const c = list[h]!
+      if (F.grown[c] === 1) continue
+      if (!covers(F, g, true, c, false) || covers(F, g, false, c, false)) continue
+      pushPair(F, g < c ? g : c, g < c ? c : g)
+    }
+  }
+}
+
+/** A candidate with a capsule is listed near the walls when the box of its sweep crosses one. */
+function markSwept(F: FixedContactState, g: number): void {
+  coverBounds(F, g, 0)
+  if (bounds[0]! > walls.minX && bounds[1]! < walls.maxX && bounds[2]! > walls.minY && bounds[3]! < walls.maxY) return
+  F.nearWall[F.nearWallCount++] = g
 }
 
 /** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); returns the widest new reach. */
@@ -54,10 +189,12 @@ function widenHits(F: FixedContactState): number {
     const i = F.hit[h]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
-    const wide = F.r[i]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
+    let wide = F.r[i]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
     // wider by no more than the projection's slop: at worst it moves that far into a neighbour, which the
     // next tick's projection takes out
-    if (!(wide > F.reach[i]! + PROJECTION_SLOP)) continue
+    if (!(wide > F.reach[i]! + PROJECTION_SLOP) || withinCapsule(F, i)) continue
+    // far beyond its size: along its path only (src/contacts/fixedCapsule.ts)
+    if (widenAlong(F, i)) wide = F.reach[i]!
     F.wide[i] = wide
     F.grown[i] = 1
     F.widened[F.widenedCount++] = i
@@ -78,6 +215,15 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
   const restFrom = F.n
   for (let k = 0, t = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
+    const holder = hasCapsule(g)
+    if (holder) {
+      // with a capsule: every candidate packed before this round's resting ones (gridPartners packed
+      // those it meets), by id
+      pairAll(F, g, restFrom)
+      pushPartners(F, g)
+      seedFrom(w, F, g)
+      continue
+    }
     // its partners in the grid's cells, by place (cell, then index)
     const from = t
     for (; t < F.peCount && F.pe1[t] === k; t++) {
@@ -98,11 +244,7 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
       pushPair(F, g < j ? g : j, g < j ? j : g)
     }
     for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
-    // resting balls not yet candidates (the gather's seen stamps skip those that are)
-    seed[0] = F.x[g]!
-    seed[1] = F.y[g]!
-    seed[2] = F.wide[g]!
-    seedResting(w, F)
+    seedFrom(w, F, g)
   }
   addResting(w, F, restFrom)
 }
@@ -122,13 +264,24 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
     const g = F.widened[k]!
     const x = F.x[g]!
     const y = F.y[g]!
-    // none of the ordering grid's cells within wide + smallReach of it: nothing new to reach
-    boxRange[0] = F.wide[g]! + smallReach
-    if (!gridBox(F, g)) continue
-    // every candidate it can reach is within its reach plus the widest reach of any
-    queried[QX] = x
-    queried[QY] = y
-    queried[QR] = F.wide[g]! + F.reachMax
+    // with a capsule: only the balls not packed (pairAll pairs the packed ones)
+    const holder = hasCapsule(g)
+    if (holder) {
+      coverBounds(F, g, smallReach)
+      if (!boundsBox(F)) continue
+      coverBounds(F, g, F.reachMax)
+      queried[QX] = (bounds[0]! + bounds[1]!) / 2
+      queried[QY] = (bounds[2]! + bounds[3]!) / 2
+      queried[QR] = Math.max(bounds[1]! - bounds[0]!, bounds[3]! - bounds[2]!) / 2
+    } else {
+      // none of the ordering grid's cells within wide + smallReach of it: nothing new to reach
+      boxRange[0] = F.wide[g]! + smallReach
+      if (!gridBox(F, g)) continue
+      // every candidate it can reach is within its reach plus the widest reach of any
+      queried[QX] = x
+      queried[QY] = y
+      queried[QR] = F.wide[g]! + F.reachMax
+    }
     queryBox(F)
     for (let q = 0; q < F.foundCount; q++) {
       const e = F.found[q]!
@@ -140,7 +293,21 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
       if (gx < box[0]! || gx > box[1]! || gy < box[2]! || gy > box[3]!) continue
       const packed = F.packMark[e] === st && F.packAt[e]! >= 0
       const j = packed ? F.packAt[e]! : -1
-      if (packed && (j === g || (F.grown[j] === 1 && j < g))) continue
+      if (holder) {
+        if (packed) continue
+        circle[0] = ex
+        circle[1] = ey
+        circle[2] = F.reachOf[e]!
+        if (!meetsCircle(F, g, true) || meetsCircle(F, g, false)) continue
+        // packed now, paired with the others (pairAll)
+        if (F.packMark[e] !== st) {
+          F.packMark[e] = st
+          F.packAt[e] = -1
+          F.fresh = pushListed(F.fresh, joining++, e)
+        }
+        continue
+      }
+      if (packed && (j === g || (F.grown[j] === 1 && j < g) || hasCapsule(j))) continue
       const dx = ex - x
       const dy = ey - y
       const d2 = dx * dx + dy * dy
@@ -160,6 +327,17 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
   if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
 }
 
+/** The ordering grid's cells of the box in bounds (columns box[0]..box[1], rows box[2]..box[3]); false if none. */
+function boundsBox(F: FixedContactState): boolean {
+  if (F.cols === 0) return false
+  const cell = F.gridCell
+  box[0] = Math.max(0, Math.floor((bounds[0]! - F.minX) / cell))
+  box[1] = Math.min(F.cols - 1, Math.floor((bounds[1]! - F.minX) / cell))
+  box[2] = Math.max(0, Math.floor((bounds[2]! - F.minY) / cell))
+  box[3] = Math.min(F.rows - 1, Math.floor((bounds[3]! - F.minY) / cell))
+  return box[0]! <= box[1]! && box[2]! <= box[3]!
+}
+
 /** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within boxRange[0] of it. */
 function pairInGrid(F: FixedContactState, g: number): void {
   if (!gridBox(F, g)) return
@@ -174,7 +352,7 @@ function pairInGrid(F: FixedContactState, g: number): void {
  * lower index.
  */
 function consider(F: FixedContactState, g: number, j: number): void {
-  if (j === g || (F.grown[j] === 1 && j < g)) return
+  if (j === g || (F.grown[j] === 1 && j < g) || hasCapsule(j)) return
   const dx = F.x[j]! - F.x[g]!
   const dy = F.y[j]! - F.y[g]!
   const d2 = dx * dx + dy * dy
@@ -192,6 +370,13 @@ function addResting(w: BallWorld, F: FixedContactState, from: number): void {
     setRestingCandidate(w, F, k)
     for (let m = 0; m < F.widenedCount; m++) {
       const g = F.widened[m]!
+      if (hasCapsule(g)) {
+        circle[0] = F.x[k]!
+        circle[1] = F.y[k]!
+        circle[2] = F.reach[k]!
+        if (meetsCircle(F, g, true)) pushPair(F, g < k ? g : k, g < k ? k : g)
+        continue
+      }
       const dx = F.x[k]! - F.x[g]!
       const dy = F.y[k]! - F.y[g]!
       const s = F.wide[g]! + F.reach[k]!

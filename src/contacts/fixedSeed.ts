@@ -8,6 +8,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, type FixedContactState } from '../world/fixedState.js'
 import { CR, X1, X2, Y1, Y2, capsuleCellsOver, capsuleCells, query } from './sweepGrid.js'
+import { bounds, circle, meetsCircle, readSweep } from './fixedCapsule.js'
 
 /** Adds the resting balls moving ball eid can reach within the tick (its radius plus a tick's travel). */
 export function seedAround(w: BallWorld, F: FixedContactState, eid: number): void {
@@ -79,6 +80,42 @@ function addResting(w: BallWorld, F: FixedContactState, e: number): void {
   const dy = B.y[e]! - seed[1]!
   const s = seed[2]! + B.radius[e]! + TOUCH_GAP
   if (dx * dx + dy * dy >= s * s) return
+  C.seen[e] = C.seenStamp
+  pushCandidate(F, e)
+}
+
+/**
+ * Adds the resting balls that what widened candidate g newly covers reaches (its circle and its capsule,
+ * src/contacts/fixedCapsule.ts), once each, to F.id.
+ */
+export function seedAlong(w: BallWorld, F: FixedContactState, g: number): void {
+  const C = F.rest
+  for (let i = 0; i < C.bigRestCount; i++) addCovered(w, F, g, C.bigRest[i]!)
+  if (C.restCount === 0) return
+  const mask = C.restHead.length - 1
+  // the capsule query of the sweep, as wide as the wider of the circle and the capsule, and a resting ball
+  readSweep(g)
+  query[X1] = F.x[g]!
+  query[Y1] = F.y[g]!
+  query[X2] = F.x[g]! + bounds[0]!
+  query[Y2] = F.y[g]! + bounds[1]!
+  query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + C.maxRadius + 2 * TOUCH_GAP
+  if (capsuleCellsOver(C, query, C.restHead.length)) {
+    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addCovered(w, F, g, e)
+    return
+  }
+  const k = capsuleCells(C, query, mask)
+  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addCovered(w, F, g, e)
+}
+
+function addCovered(w: BallWorld, F: FixedContactState, g: number, e: number): void {
+  const C = F.rest
+  if (C.seen[e] === C.seenStamp) return
+  const B = w.Ball
+  circle[0] = B.x[e]!
+  circle[1] = B.y[e]!
+  circle[2] = B.radius[e]! + TOUCH_GAP
+  if (!meetsCircle(F, g, true)) return
   C.seen[e] = C.seenStamp
   pushCandidate(F, e)
 }
