@@ -17,7 +17,7 @@ import { BallMode } from '../../components/Ball.js'
 import { WallEdge } from '../../components/Walls.js'
 import { TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { pushListed, sweepStores, type FixedContactState } from '../world/fixedState.js'
+import { pushListed, reserveCandidates, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { addFresh, keyOut, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
 
@@ -360,5 +360,15 @@ export function markWall(F: FixedContactState, i: number): void {
   const reach = F.reach[i]!
   // far from every wall: the common case
   if (x - reach > walls.minX && x + reach < walls.maxX && y - reach > walls.minY && y + reach < walls.maxY) return
+  listNearWall(F, i)
+}
+
+/**
+ * Lists candidate i near a wall. The widening rounds list a ball again each time it is widened, so the
+ * list can outgrow the candidates: then every candidate array doubles (together, as reserveCandidates
+ * keeps them).
+ */
+export function listNearWall(F: FixedContactState, i: number): void {
+  if (F.nearWallCount === F.nearWall.length) reserveCandidates(F, 2 * F.nearWall.length)
   F.nearWall[F.nearWallCount++] = i
 }

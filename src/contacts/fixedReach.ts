@@ -12,7 +12,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
-import { markWall, walls } from './fixedGrid.js'
+import { listNearWall, markWall, walls } from './fixedGrid.js'
 import { seed, seedAlong, seedResting } from './fixedSeed.js'
 import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, roundNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
@@ -177,7 +177,7 @@ function pairHolders(F: FixedContactState): void {
 function markSwept(F: FixedContactState, g: number): void {
   coverBounds(F, g, 0)
   if (bounds[0]! > walls.minX && bounds[1]! < walls.maxX && bounds[2]! > walls.minY && bounds[3]! < walls.maxY) return
-  F.nearWall[F.nearWallCount++] = g
+  listNearWall(F, g)
 }
 
 /** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); returns the widest new reach. */

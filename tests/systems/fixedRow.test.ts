@@ -103,3 +103,27 @@ describe('fixed tick: rows side by side of tiny balls struck at 1e5 px/s', () =>
     expect(r.deepest).toBeLessThan(1e-3)
   })
 })
+
+describe('fixed tick: a row along a wall struck at 1e5 px/s', () => {
+  it('every ball the rounds widen near a wall is kept in the near-wall list (it outgrew the candidates and later entries were dropped: no wall for those balls that tick)', () => {
+    const n = 60
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 5 + 2 * n, maxY: 40, restitution: 1 })
+    for (let c = 0; c < n; c++) sim.addBall({ x: 4 + 2 * c, y: 0.6, vx: 0, vy: 0 })
+    sim.addBall({ x: 1, y: 0.6, vx: 1e5, vy: 0 })
+    const F = sim.world.fixed!
+    let listed = 0
+    for (let i = 0; i < 12; i++) {
+      sim.step(1 / 120) // one contact tick a step: each tick's list is seen
+      expect(F.nearWallCount).toBeLessThanOrEqual(F.nearWall.length)
+      listed = Math.max(listed, F.nearWallCount)
+      sim.drainEvents()
+      for (const b of sim.balls()) {
+        const s = sim.ballState(b)
+        expect(s.x).toBeGreaterThanOrEqual(0)
+        expect(s.x).toBeLessThanOrEqual(5 + 2 * n)
+      }
+    }
+    expect(listed).toBeGreaterThan(n)
+  })
+})
