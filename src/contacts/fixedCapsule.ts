@@ -7,8 +7,9 @@
 // move more than CAPSULE_TRAVEL radii in the tick is widened to that capsule (once a tick; a second
 // widening in a new direction widens its circle as before). What a candidate covers is then its reach
 // circle and, this tick, its capsule; a pair is listed once, when the two covers first meet, whichever
-// way round they are found: the pairs of a ball with a capsule are found through the list of such balls
-// (every widened ball is tested against it), the others as before, through the grids.
+// way round they are found: a widened ball with a capsule is tested against every candidate (a box test
+// first), a widened ball without one against the list of balls with one, and the other pairs are found
+// as before, through the grids.
 import { CAPSULE_TRAVEL, PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
