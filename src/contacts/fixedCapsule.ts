@@ -11,6 +11,7 @@
 // first), a widened ball without one against the list of balls with one, and the other pairs are found
 // as before, through the grids.
 import { CAPSULE_TRAVEL, PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import { grown } from '../world/contactState.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
 /** Per candidate: its capsule's sweep (velocity × tick) and the round that made it; the tick's balls with one. */
@@ -68,16 +69,8 @@ function reserve(n: number): void {
     capX = grown(capX, len)
     capY = grown(capY, len)
     capAt = grown(capAt, len)
-    const h = new Int32Array(len)
-    h.set(holders)
-    holders = h
+    holders = grown(holders, len)
   }
-}
-
-function grown(a: Float64Array, n: number): Float64Array<ArrayBuffer> {
-  const next = new Float64Array(n)
-  next.set(a)
-  return next
 }
 
 /** Whether candidate i has a capsule this tick. */
@@ -104,16 +97,7 @@ export function holdersNow(): number {
  */
 export function withinCapsule(F: FixedContactState, i: number): boolean {
   if (!hasCapsule(i)) return false
-  const ux = capX[i]!
-  const uy = capY[i]!
-  const ex = F.vx[i]! * F.tick
-  const ey = F.vy[i]! * F.tick
-  const uu = ux * ux + uy * uy
-  let s = uu > 0 ? (ex * ux + ey * uy) / uu : 0
-  s = s < 0 ? 0 : s > 1 ? 1 : s
-  const dx = ex - s * ux
-  const dy = ey - s * uy
-  return dx * dx + dy * dy <= PROJECTION_SLOP * PROJECTION_SLOP
+  return axisFrom2(i, F.vx[i]! * F.tick, F.vy[i]! * F.tick) <= PROJECTION_SLOP * PROJECTION_SLOP
 }
 
 /**
@@ -136,13 +120,15 @@ export function widenAlong(F: FixedContactState, i: number): boolean {
 
 /** Squared distance from (px, py) to the capsule axis of candidate i. */
 function toAxis2(F: FixedContactState, i: number, px: number, py: number): number {
+  return axisFrom2(i, px - F.x[i]!, py - F.y[i]!)
+}
+
+/** Squared distance from the point (dx, dy) from candidate i's centre to its capsule axis. */
+function axisFrom2(i: number, dx: number, dy: number): number {
   const ux = capX[i]!
   const uy = capY[i]!
-  const dx = px - F.x[i]!
-  const dy = py - F.y[i]!
   const uu = ux * ux + uy * uy
-  let s = uu > 0 ? (dx * ux + dy * uy) / uu : 0
-  s = s < 0 ? 0 : s > 1 ? 1 : s
+  const s = clamp01(uu > 0 ? (dx * ux + dy * uy) / uu : 0)
   const ex = dx - s * ux
   const ey = dy - s * uy
   return ex * ex + ey * ey

@@ -64,7 +64,7 @@ function seedFrom(w: BallWorld, F: FixedContactState, g: number): void {
 }
 
 /** A widened candidate's partners with a capsule (scratch, one widening at a time), listed by ball id. */
-let partners = new Int32Array(64)
+let partners: Uint32Array = new Uint32Array(64)
 let partnerCount = 0
 /** pairAll's widest candidate circle, and the call it was found for */
 let maxCircle = 0
@@ -107,17 +107,8 @@ function pairAll(F: FixedContactState, g: number, upTo: number): void {
     const grownJ = F.grown[j] === 1
     if (grownJ && F.id[j]! < F.id[g]! && hasCapsule(j)) continue
     if (!covers(F, g, true, j, grownJ) || covers(F, g, false, j, false)) continue
-    addPartner(j)
+    partners = pushListed(partners, partnerCount++, j)
   }
-}
-
-function addPartner(j: number): void {
-  if (partnerCount === partners.length) {
-    const next = new Int32Array(2 * partners.length)
-    next.set(partners)
-    partners = next
-  }
-  partners[partnerCount++] = j
 }
 
 /** Pairs g with its partners in the order of their ball ids (the same whichever broadphase found them). */

@@ -58,18 +58,33 @@ export const seed = new Float64Array(3)
 /** Adds the resting balls the circle `seed` reaches, once each (the seen stamp), to F.id. */
 export function seedResting(w: BallWorld, F: FixedContactState): void {
   const C = F.rest
-  for (let i = 0; i < C.bigRestCount; i++) addResting(w, F, C.bigRest[i]!)
-  if (C.restCount === 0) return
-  const mask = C.restHead.length - 1
   query[X1] = query[X2] = seed[0]!
   query[Y1] = query[Y2] = seed[1]!
   query[CR] = seed[2]! + C.maxRadius + 2 * TOUCH_GAP // addResting's reach + radius + gap, and a gap more
+  walkResting(w, F, -1)
+}
+
+/**
+ * The resting balls of the cells `query` touches (every one when it covers more cells than the table has,
+ * the big ones always), each offered to addResting (g < 0: the circle `seed`) or to addCovered (what
+ * widened candidate g covers).
+ */
+function walkResting(w: BallWorld, F: FixedContactState, g: number): void {
+  const C = F.rest
+  for (let i = 0; i < C.bigRestCount; i++) offer(w, F, g, C.bigRest[i]!)
+  if (C.restCount === 0) return
+  const mask = C.restHead.length - 1
   if (capsuleCellsOver(C, query, C.restHead.length)) {
-    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e)
+    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) offer(w, F, g, e)
     return
   }
   const k = capsuleCells(C, query, mask)
-  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addResting(w, F, e)
+  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) offer(w, F, g, e)
+}
+
+function offer(w: BallWorld, F: FixedContactState, g: number, e: number): void {
+  if (g < 0) addResting(w, F, e)
+  else addCovered(w, F, g, e)
 }
 
 function addResting(w: BallWorld, F: FixedContactState, e: number): void {
@@ -89,23 +104,14 @@ function addResting(w: BallWorld, F: FixedContactState, e: number): void {
  * src/contacts/fixedCapsule.ts), once each, to F.id.
  */
 export function seedAlong(w: BallWorld, F: FixedContactState, g: number): void {
-  const C = F.rest
-  for (let i = 0; i < C.bigRestCount; i++) addCovered(w, F, g, C.bigRest[i]!)
-  if (C.restCount === 0) return
-  const mask = C.restHead.length - 1
   // the capsule query of the sweep, as wide as the wider of the circle and the capsule, and a resting ball
   readSweep(g)
   query[X1] = F.x[g]!
   query[Y1] = F.y[g]!
   query[X2] = F.x[g]! + bounds[0]!
   query[Y2] = F.y[g]! + bounds[1]!
-  query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + C.maxRadius + 2 * TOUCH_GAP
-  if (capsuleCellsOver(C, query, C.restHead.length)) {
-    for (let b = 0; b <= mask; b++) for (let e = C.restHead[b]!; e !== 0; e = C.restNext[e]!) addCovered(w, F, g, e)
-    return
-  }
-  const k = capsuleCells(C, query, mask)
-  for (let i = 0; i < k; i++) for (let e = C.restHead[C.cells[i]!]!; e !== 0; e = C.restNext[e]!) addCovered(w, F, g, e)
+  query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + F.rest.maxRadius + 2 * TOUCH_GAP
+  walkResting(w, F, g)
 }
 
 function addCovered(w: BallWorld, F: FixedContactState, g: number, e: number): void {
