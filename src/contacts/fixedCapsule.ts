@@ -4,13 +4,15 @@
 // by its velocity over the tick. Widened by its whole travel in every direction instead, a radius-0.5 ball
 // at 1e5 px/s is paired with every ball within 833 px: in rows of tiny balls side by side, thousands of
 // pairs a ball and a round, and the rounds' bounds stop the push halfway along a row. So a ball that would
-// move more than CAPSULE_TRAVEL radii in the tick is widened to that capsule (once a tick; a second
-// widening in a new direction widens its circle as before). What a candidate covers is then its reach
-// circle and, this tick, its capsule; a pair is listed once, when the two covers first meet, whichever
-// way round they are found: a widened ball with a capsule is tested against every candidate (a box test
-// first), a widened ball without one against the list of balls with one, and the other pairs are found
-// as before, through the grids.
-import { CAPSULE_TRAVEL, PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+// move more than CAPSULE_TRAVEL radii in the tick, with a circle wider than CAPSULE_CELLS of the tick's
+// cells (among balls about as fast a capsule saves nothing), is widened to that capsule (once a tick; a
+// second widening in a new direction widens its circle as before). What a candidate covers is then its
+// reach circle and, this tick, its capsule; a pair is listed once, when the two covers first meet,
+// whichever way round they are found: a widened ball with a capsule looks up the candidates where they
+// can be (the grids' cells of its cover, the big ones, those the widening added, the list of balls with
+// a capsule), a widened ball without one is tested against that list, and the other pairs are found as
+// before, through the grids.
+import { CAPSULE_CELLS, CAPSULE_TRAVEL, PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import { grown } from '../world/contactState.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
@@ -110,7 +112,7 @@ export function widenAlong(F: FixedContactState, i: number): boolean {
   const vx = F.vx[i]!
   const vy = F.vy[i]!
   const travel = Math.sqrt(vx * vx + vy * vy) * F.tick
-  if (!(travel > CAPSULE_TRAVEL * (F.r[i]! + TOUCH_GAP))) return false
+  if (!(travel > CAPSULE_TRAVEL * (F.r[i]! + TOUCH_GAP)) || !(F.r[i]! + travel > CAPSULE_CELLS * F.cell)) return false
   capX[i] = vx * F.tick
   capY[i] = vy * F.tick
   capAt[i] = round

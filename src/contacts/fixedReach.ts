@@ -14,7 +14,7 @@ import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContact
 import { box, boxRange, gridBox } from './fixedDense.js'
 import { listNearWall, markWall, walls } from './fixedGrid.js'
 import { seed, seedAlong, seedResting } from './fixedSeed.js'
-import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, roundNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
+import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
@@ -29,7 +29,7 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
     for (let k = 0; k < F.widenedCount; k++) {
       const g = F.widened[k]!
       if (hasCapsule(g)) {
-        pairAll(F, g, restFrom)
+        pairNear(F, g, 0, 0, restFrom, smallReach)
         pushPartners(F, g)
       } else {
         boxRange[0] = F.wide[g]! + smallReach
@@ -66,49 +66,45 @@ function seedFrom(w: BallWorld, F: FixedContactState, g: number): void {
 /** A widened candidate's partners with a capsule (scratch, one widening at a time), listed by ball id. */
 let partners: Uint32Array = new Uint32Array(64)
 let partnerCount = 0
-/** pairAll's widest candidate circle, and the call it was found for */
-let maxCircle = 0
-let maxUpTo = -1
-let maxRound = -1
-
 /**
- * Widened candidate g, which has a capsule (src/contacts/fixedCapsule.ts): the candidates before `upTo`
- * that what it covers now meets and did not before, into partners; with a widened one that has a capsule
- * too, from the lower id.
+ * Widened candidate g, which has a capsule (src/contacts/fixedCapsule.ts): into partners, the candidates
+ * before `upTo` that what it covers now meets and did not before. Looked up where they can be: the small
+ * ones of the tick's gather in the dense grid's cells of its cover (dense ticks; on sweep ticks
+ * gridPartners listed them, F.pe2[peFrom..peTo)), the big ones, those the widening added, and the
+ * balls with a capsule (a capsule reaches far from its ball: those only through their list, with a widened
+ * one from the lower id).
  */
-function pairAll(F: FixedContactState, g: number, upTo: number): void {
+function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number, upTo: number, smallReach: number): void {
   partnerCount = 0
-  if (maxUpTo !== upTo || maxRound !== roundNow()) {
-    // the widest circle of the candidates this round (a cheap box test below)
-    maxUpTo = upTo
-    maxRound = roundNow()
-    maxCircle = 0
-    for (let j = 0; j < upTo; j++) {
-      const c = F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!
-      if (c > maxCircle) maxCircle = c
+  if (F.dense === 1) {
+    coverBounds(F, g, smallReach)
+    if (boundsBox(F)) {
+      for (let gy = box[2]!; gy <= box[3]!; gy++) {
+        for (let q = F.start[gy * F.cols + box[0]!]!, e = F.start[gy * F.cols + box[1]! + 1]!; q < e; q++) offer(F, g, F.si[q]!)
+      }
     }
+  } else {
+    for (let t = peFrom; t < peTo; t++) offer(F, g, F.packAt[F.pe2[t]!]!)
   }
-  coverBounds(F, g, maxCircle)
-  const x0 = bounds[0]!
-  const x1 = bounds[1]!
-  const y0 = bounds[2]!
-  const y1 = bounds[3]!
+  for (let m = 0; m < F.bigCount; m++) offer(F, g, F.big[m]!)
+  for (let j = F.gathered; j < upTo; j++) offer(F, g, j)
   setTarget(F, g)
-  for (let j = 0; j < upTo; j++) {
-    if (j === g) continue
-    // beyond the box of g's cover grown by every circle, or with a capsule whose box misses g's: no meeting
-    if (hasCapsule(j)) {
-      if (beyondBox(F, j)) continue
-    } else {
-      const x = F.x[j]!
-      const y = F.y[j]!
-      if (x < x0 || x > x1 || y < y0 || y > y1) continue
-    }
+  const list = holderList()
+  for (let h = 0, count = holdersNow(); h < count; h++) {
+    const j = list[h]!
+    if (j === g || j >= upTo || beyondBox(F, j)) continue
     const grownJ = F.grown[j] === 1
-    if (grownJ && F.id[j]! < F.id[g]! && hasCapsule(j)) continue
-    if (!covers(F, g, true, j, grownJ) || covers(F, g, false, j, false)) continue
-    partners = pushListed(partners, partnerCount++, j)
+    if (grownJ && F.id[j]! < F.id[g]!) continue
+    if (!covers(F, g, false, j, false) && covers(F, g, true, j, grownJ)) partners = pushListed(partners, partnerCount++, j)
   }
+}
+
+/** Candidate j, without a capsule, into g's partners if what g covers now meets it and did not before. */
+function offer(F: FixedContactState, g: number, j: number): void {
+  if (j === g || hasCapsule(j)) return
+  const grownJ = F.grown[j] === 1
+  // listed already (most of those near it: a circle test) first
+  if (!covers(F, g, false, j, false) && covers(F, g, true, j, grownJ)) partners = pushListed(partners, partnerCount++, j)
 }
 
 /** Pairs g with its partners in the order of their ball ids (the same whichever broadphase found them). */
@@ -146,7 +142,7 @@ function siftDown(F: FixedContactState, i: number, n: number): void {
 
 /**
  * Each widened candidate without a capsule against the candidates with one that were not widened this
- * round (those widened pair with every candidate themselves, pairAll).
+ * round (those widened find their partners themselves, pairNear).
  */
 function pairHolders(F: FixedContactState): void {
   const count = holdersNow()
@@ -155,10 +151,11 @@ function pairHolders(F: FixedContactState): void {
   for (let k = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
     if (hasCapsule(g)) continue
+    setTarget(F, g)
     for (let h = 0; h < count; h++) {
       const c = list[h]!
-      if (F.grown[c] === 1) continue
-      if (!covers(F, g, true, c, false) || covers(F, g, false, c, false)) continue
+      if (F.grown[c] === 1 || beyondBox(F, c)) continue
+      if (covers(F, g, false, c, false) || !covers(F, g, true, c, false)) continue
       pushPair(F, g < c ? g : c, g < c ? c : g)
     }
   }
@@ -208,9 +205,10 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
     const g = F.widened[k]!
     const holder = hasCapsule(g)
     if (holder) {
-      // with a capsule: every candidate packed before this round's resting ones (gridPartners packed
-      // those it meets), by id
-      pairAll(F, g, restFrom)
+      // with a capsule: those gridPartners listed (packed now) and the rest where they can be, by id
+      const from = t
+      for (; t < F.peCount && F.pe1[t] === k; t++);
+      pairNear(F, g, from, t, restFrom, smallReach)
       pushPartners(F, g)
       seedFrom(w, F, g)
       continue
@@ -255,7 +253,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
     const g = F.widened[k]!
     const x = F.x[g]!
     const y = F.y[g]!
-    // with a capsule: only the balls not packed (pairAll pairs the packed ones)
+    // with a capsule: the small balls in the box of its cover, for pairNear
     const holder = hasCapsule(g)
     if (holder) {
       coverBounds(F, g, smallReach)
@@ -285,12 +283,19 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
       const packed = F.packMark[e] === st && F.packAt[e]! >= 0
       const j = packed ? F.packAt[e]! : -1
       if (holder) {
-        if (packed) continue
+        // packed: listed for pairNear, which tests it; not packed: packed first if it is reached
+        if (packed) {
+          if (j === g || hasCapsule(j)) continue
+          F.pe1 = pushListed(F.pe1, F.peCount, k)
+          F.pe2 = pushListed(F.pe2, F.peCount++, e)
+          continue
+        }
         circle[0] = ex
         circle[1] = ey
         circle[2] = F.reachOf[e]!
         if (!meetsCircle(F, g, true) || meetsCircle(F, g, false)) continue
-        // packed now, paired with the others (pairAll)
+        F.pe1 = pushListed(F.pe1, F.peCount, k)
+        F.pe2 = pushListed(F.pe2, F.peCount++, e)
         if (F.packMark[e] !== st) {
           F.packMark[e] = st
           F.packAt[e] = -1
