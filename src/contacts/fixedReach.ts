@@ -35,6 +35,7 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
         boxRange[0] = F.wide[g]! + smallReach
         pairInGrid(F, g)
         for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
+        pairJoined(F, g, restFrom)
       }
       seedFrom(w, F, g)
     }
@@ -233,6 +234,7 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
       pushPair(F, g < j ? g : j, g < j ? j : g)
     }
     for (let m = 0; m < F.bigCount; m++) consider(F, g, F.big[m]!)
+    pairJoined(F, g, restFrom)
     seedFrom(w, F, g)
   }
   addResting(w, F, restFrom)
@@ -332,6 +334,15 @@ function boundsBox(F: FixedContactState): boolean {
   box[2] = Math.max(0, Math.floor((bounds[2]! - F.minY) / cell))
   box[3] = Math.min(F.rows - 1, Math.floor((bounds[3]! - F.minY) / cell))
   return box[0]! <= box[1]! && box[2]! <= box[3]!
+}
+
+/**
+ * Widened candidate g against the resting balls an earlier round's widening added (from F.gathered to
+ * `upTo`): in neither grid, and passed over by the resting seeds (seen), they were paired only with the
+ * balls widened in the round that added them.
+ */
+function pairJoined(F: FixedContactState, g: number, upTo: number): void {
+  for (let j = F.gathered; j < upTo; j++) consider(F, g, j)
 }
 
 /** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within boxRange[0] of it. */

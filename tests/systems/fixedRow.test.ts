@@ -127,3 +127,38 @@ describe('fixed tick: a row along a wall struck at 1e5 px/s', () => {
     expect(listed).toBeGreaterThan(n)
   })
 })
+
+describe('fixed tick: a resting ball an earlier widening round added', () => {
+  it('is paired with a ball a later round widens: struck toward it, that ball meets it at the same tick (it moved into it, unpaired, and met it a tick late)', () => {
+    // a random scene (two rows of 30 balls of radii 0.5–3, 7 px apart, a third of them thrown at
+    // 1e4–1e5 px/s), seed 19: at the fourth tick ball 11 strikes ball 10 toward ball 9, 1.6 px away; ball 9
+    // joined the tick's candidates through another ball's widening in an earlier round
+    let s = (19 * 7919) >>> 0
+    const R = () => {
+      s = (s * 1664525 + 1013904223) >>> 0
+      return s / 4294967296
+    }
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 1 })
+    for (let i = 0; i < 60; i++) {
+      const r = 0.5 + R() * 2.5
+      R()
+      R()
+      const x = 10 + (i % 30) * 7
+      const y = 20 + Math.floor(i / 30) * 9 + R() * 2
+      const sp = R() < 0.3 ? 1e4 + R() * 9e4 : 0
+      const a = R() * Math.PI * 2
+      try {
+        sim.addBall({ x, y, radius: r, vx: sp * Math.cos(a), vy: sp * Math.sin(a) })
+      } catch {
+        // put down where another ball already is: refused, as in the scene this reproduces
+      }
+    }
+    const times = new Map<string, number>()
+    for (let f = 0; f < 6; f++) {
+      sim.step(1 / 120)
+      for (const e of sim.drainEvents()) if (e.type === 'collision' && !times.has(`${e.ball}-${e.other}`)) times.set(`${e.ball}-${e.other}`, e.time)
+    }
+    expect(times.get('10-11')).toBe(4 / 120)
+    expect(times.get('9-10')).toBe(times.get('10-11'))
+  })
+})
