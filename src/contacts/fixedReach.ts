@@ -284,35 +284,27 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
       if (gx < box[0]! || gx > box[1]! || gy < box[2]! || gy > box[3]!) continue
       const packed = F.packMark[e] === st && F.packAt[e]! >= 0
       const j = packed ? F.packAt[e]! : -1
+      let reached: boolean
       if (holder) {
-        // packed: listed for pairNear, which tests it; not packed: packed first if it is reached
-        if (packed) {
-          if (j === g || hasCapsule(j)) continue
-          F.pe1 = pushListed(F.pe1, F.peCount, k)
-          F.pe2 = pushListed(F.pe2, F.peCount++, e)
-          continue
+        // packed: listed for pairNear, which tests it; not packed: listed (and packed first) if it is reached
+        if (packed) reached = j !== g && !hasCapsule(j)
+        else {
+          circle[0] = ex
+          circle[1] = ey
+          circle[2] = F.reachOf[e]!
+          reached = meetsCircle(F, g, true) && !meetsCircle(F, g, false)
         }
-        circle[0] = ex
-        circle[1] = ey
-        circle[2] = F.reachOf[e]!
-        if (!meetsCircle(F, g, true) || meetsCircle(F, g, false)) continue
-        F.pe1 = pushListed(F.pe1, F.peCount, k)
-        F.pe2 = pushListed(F.pe2, F.peCount++, e)
-        if (F.packMark[e] !== st) {
-          F.packMark[e] = st
-          F.packAt[e] = -1
-          F.fresh = pushListed(F.fresh, joining++, e)
-        }
-        continue
+      } else {
+        if (packed && (j === g || (F.grown[j] === 1 && j < g) || hasCapsule(j))) continue
+        const dx = ex - x
+        const dy = ey - y
+        const d2 = dx * dx + dy * dy
+        const rj = packed ? F.reach[j]! : F.reachOf[e]!
+        const now = F.wide[g]! + (packed && F.grown[j] === 1 ? F.wide[j]! : rj)
+        const before = F.reach[g]! + rj
+        reached = d2 < now * now && d2 >= before * before
       }
-      if (packed && (j === g || (F.grown[j] === 1 && j < g) || hasCapsule(j))) continue
-      const dx = ex - x
-      const dy = ey - y
-      const d2 = dx * dx + dy * dy
-      const rj = packed ? F.reach[j]! : F.reachOf[e]!
-      const now = F.wide[g]! + (packed && F.grown[j] === 1 ? F.wide[j]! : rj)
-      const before = F.reach[g]! + rj
-      if (d2 >= now * now || d2 < before * before) continue
+      if (!reached) continue
       F.pe1 = pushListed(F.pe1, F.peCount, k)
       F.pe2 = pushListed(F.pe2, F.peCount++, e)
       if (F.packMark[e] !== st) {
