@@ -97,9 +97,10 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     runWindow(world, schedule, end)
     return
   }
-  // fixed-tick contacts: the step is split at the contact ticks k·CONTACT_TICK (the same instants at every
-  // frame rate), and the contacts are solved at each (by the schedule's fixedContacts system); a solve
-  // asked for between steps (a ball put down or given a new velocity) runs in the next step's first pass
+  // fixed-tick contacts: the step is split at the contact ticks k·tick, tick = CONTACT_TICK / 2^halvings
+  // (the same instants at every frame rate), and the contacts are solved at each (by the schedule's
+  // fixedContacts system); a solve asked for between steps (a ball put down or given a new velocity) runs in
+  // the next step's first pass
   for (;;) {
     const tick = F.nextTick * F.tick
     if (tick <= world.time) {
@@ -116,7 +117,10 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     const stop = onTick || tick < end ? tick : end
     runWindow(world, schedule, stop)
     F.due = false
-    if (stop === tick) {
+    // a solve at the window's start (one a command asked for) that halved the tick ended the window at the
+    // next tick of the finer spacing (src/contacts/fixedHalve.ts)
+    const cut = world.time < stop
+    if (stop === tick || cut) {
       // the tick's solve right at the end of the window that reaches it: a step that ends on a tick ends
       // solved (what the game draws), and the next window starts from the solved state
       F.nextTick++
@@ -125,7 +129,7 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
       F.due = false
     }
-    if (onTick || stop === end) return
+    if (!cut && (onTick || stop === end)) return
   }
 }
 

@@ -1,5 +1,6 @@
 // Ball-ball contacts by the fixed-tick method (not a design stage; opt-in with config.BALL_COLLISIONS =
-// 'fixed'). Contacts are solved at the times k·CONTACT_TICK of the world's clock, whatever the frame rate:
+// 'fixed'). Contacts are solved at the times k·CONTACT_TICK of the world's clock, whatever the frame rate
+// (the tick halved where the balls cover many of their spacings a tick: src/contacts/fixedHalve.ts):
 // the step is split at those times, and at the first pass after each one this system pairs the balls that
 // can touch within a tick (where the balls crowd, src/contacts/fixedDense.ts; where they are spread out, the
 // sweep of src/contacts/fixedGrid.ts, fixedSweep.ts and fixedOrder.ts: the same pairs in the same order),
@@ -16,6 +17,7 @@ import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
+import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
@@ -33,15 +35,16 @@ export function fixedContactsSystem(w: BallWorld): void {
     // back to the sweep: its order is rebuilt
     if (F.dense === 0) F.sweepNext = F.sweepCell
   }
-  if (F.dense === 1) {
-    gatherDense(w, F)
-    if (F.full < 2) return
-    findPairsDense(F)
-  } else {
-    gatherCandidates(w, F)
-    if (F.full < 2) return
-    findPairs(w, F)
+  coarsenTick(w, F)
+  if (F.dense === 1) gatherDense(w, F)
+  else gatherCandidates(w, F)
+  if (F.full < 2) {
+    F.tickPairs = 0
+    return
   }
+  if (F.dense === 1) findPairsDense(F)
+  else findPairs(w, F)
+  halveTick(w, F)
   chooseBroadphase(F)
   if (F.pairCount === 0) return
   const iterations = w.config.CONTACT_ITERATIONS

@@ -73,6 +73,16 @@ export const PROJECTION_SLOP = 1e-4
 export const MIN_PROJECTION_SHARE = 0.1
 
 /**
+ * Fixed-tick contacts: a tick whose pairs outnumber TICK_PAIRS_PER_CANDIDATE a candidate is halved as many
+ * times (up to MAX_TICK_HALVINGS, a tick of CONTACT_TICK / 1,024) as makes the least work over its span
+ * (src/contacts/fixedHalve.ts): where the balls cover many of their spacings a tick, each paired with every
+ * ball it could reach. Coarsened again once a tick's pairs are within a quarter of the bound. Piles, a gas at
+ * area fraction 0.2 and the panel's bursts have a few pairs a candidate at most; thousands of radius-0.5
+ * balls at 3e4 px/s in a 1,000 px box have hundreds at 1/120 s.
+ */
+export const TICK_PAIRS_PER_CANDIDATE = 16
+export const MAX_TICK_HALVINGS = 10
+/**
  * Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts);
  * each carries a push one ball further along a row with gaps. After MAX_WIDEN_ROUNDS the rounds go on, up
  * to MAX_PASS_ROUNDS, only while a ball sped up beyond its reach moves more in a tick than its radius and

@@ -19,10 +19,12 @@ export interface FixedContactState {
   touchedCount: number
   /** packed candidates from this index on rest (the resting ones the gather found, then those the widening added) */
   restFrom: number
-  /** contact tick, s (config.CONTACT_TICK); contacts are solved at the times k·tick, k = 1, 2, … */
+  /** contact tick, s: CONTACT_TICK halved `halvings` times (src/contacts/fixedHalve.ts); solved at k·tick; k of the next */
   tick: number
-  /** k of the next contact tick */
   nextTick: number
+  halvings: number
+  /** pairs and candidates of the last tick's broadphase (after any halving) */ tickPairs: number
+  tickFull: number
   /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
   due: boolean
   /**
@@ -168,6 +170,9 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     restFrom: 0,
     tick: config.CONTACT_TICK,
     nextTick: 1,
+    halvings: 0,
+    tickPairs: 0,
+    tickFull: 0,
     due: false,
     n: 0,
     id: new Uint32Array(n),

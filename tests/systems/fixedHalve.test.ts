@@ -1,0 +1,264 @@
+// The fixed-tick method halves its tick where the balls cover many of their spacings a tick
+// (src/contacts/fixedHalve.ts). A ball is paired with every ball it could reach within a tick in any
+// direction, so in a crowd of tiny fast balls every ball was paired with nearly every other: 5,000 balls of
+// radius 0.5 at up to 3e4 px/s in a 1,000 px box had hundreds of pairs a candidate, and the solve's sweeps
+// over them took 2.6 s for the first step. The halved ticks stay on the world's clock (k·tick), decided from
+// the tick's balls alone: the same bits at every frame rate, in both broadphases and across a snapshot.
+import { describe, expect, it } from 'vitest'
+import fc from 'fast-check'
+import { createBallPhysics, type BallPhysics } from '../../src/index'
+import { MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE } from '../../src/config/tolerances'
+import { rng } from '../helpers'
+
+const SIDE = 200
+const RADIUS = 0.5
+
+/** n balls of radius 0.5 on a lattice in a closed box, at up to vmax px/s in random directions. */
+function gas(n: number, vmax: number, decel = 0, restitution = 1): BallPhysics {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: decel, BALL_RESTITUTION: restitution }, { capacity: n + 8 })
+  sim.setWalls({ minX: 0, minY: 0, maxX: SIDE, maxY: SIDE, restitution })
+  const r = rng(4242)
+  const k = Math.ceil(Math.sqrt(n))
+  const pitch = SIDE / k
+  for (let i = 0; i < n; i++) {
+    const a = r() * 2 * Math.PI
+    const v = vmax * r()
+    sim.addBall({ x: pitch * ((i % k) + 0.5), y: pitch * (Math.floor(i / k) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: RADIUS })
+  }
+  return sim
+}
+
+/** Every ball's state to the last bit. */
+function state(sim: BallPhysics): string {
+  const B = sim.world.Ball
+  return sim
+    .balls()
+    .map((b) => `${b} ${B.mode[b]} ${B.x[b]} ${B.y[b]} ${B.vx[b]} ${B.vy[b]}`)
+    .join('\n')
+}
+
+/** Pairs of balls within each other's reach (radius + speed · tick + 1e-6) at a tick of `tick` s, per ball. */
+function pairsPerBall(sim: BallPhysics, tick: number): number {
+  const bs = sim.balls().map((b) => sim.ballState(b))
+  let pairs = 0
+  for (let i = 0; i < bs.length; i++) {
+    for (let j = i + 1; j < bs.length; j++) {
+      const a = bs[i]!
+      const b = bs[j]!
+      const s = a.radius + Math.hypot(a.vx, a.vy) * tick + b.radius + Math.hypot(b.vx, b.vy) * tick + 2e-6
+      if ((a.x - b.x) ** 2 + (a.y - b.y) ** 2 < s * s) pairs++
+    }
+  }
+  return pairs / bs.length
+}
+
+describe('fixed tick: halved where balls cover many spacings a tick', () => {
+  it('400 radius-0.5 balls at up to 3e4 px/s in a 200 px box: the tick is halved, its pairs stay near the bound, no overlap survives a tick', () => {
+    const sim = gas(400, 3e4)
+    const F = sim.world.fixed!
+    // at the configured tick every ball reaches most of the box
+    expect(pairsPerBall(sim, sim.config.CONTACT_TICK)).toBeGreaterThan(100)
+    let most = 0
+    let halved = 0
+    for (let i = 0; i < 30; i++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      most = Math.max(most, F.tickPairs / F.tickFull)
+      halved = Math.max(halved, F.halvings)
+      expect(F.tick).toBe(sim.config.CONTACT_TICK / 2 ** F.halvings)
+      // a step of 1/60 s ends on a tick at every spacing: solved, no overlap deeper than the projection's slop
+      const bs = sim.balls().map((b) => sim.ballState(b))
+      let deepest = 0
+      for (let p = 0; p < bs.length; p++) {
+        for (let q = p + 1; q < bs.length; q++) {
+          const d = 2 * RADIUS - Math.hypot(bs[p]!.x - bs[q]!.x, bs[p]!.y - bs[q]!.y)
+          if (d > deepest) deepest = d
+        }
+      }
+      expect(deepest).toBeLessThan(1e-3)
+    }
+    expect(halved).toBeGreaterThanOrEqual(3)
+    expect(halved).toBeLessThanOrEqual(MAX_TICK_HALVINGS)
+    expect(most).toBeLessThanOrEqual(2 * TICK_PAIRS_PER_CANDIDATE)
+    expect(F.capped).toBe(0)
+  })
+
+  it('kinetic energy never rises and momentum is kept in the halved ticks (no walls, restitution 1)', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 }, { capacity: 400 })
+    const r = rng(99)
+    for (let i = 0; i < 300; i++) {
+      const a = r() * 2 * Math.PI
+      const v = 3e4 * r()
+      sim.addBall({ x: (i % 20) * 8, y: Math.floor(i / 20) * 8, vx: v * Math.cos(a), vy: v * Math.sin(a), radius: RADIUS })
+    }
+    const totals = () => {
+      let px = 0
+      let py = 0
+      let ke = 0
+      for (const b of sim.balls()) {
+        const s = sim.ballState(b)
+        px += s.vx
+        py += s.vy
+        ke += s.vx * s.vx + s.vy * s.vy
+      }
+      return { px, py, ke }
+    }
+    const start = totals()
+    let last = start.ke
+    let halved = 0
+    for (let i = 0; i < 20; i++) {
+      sim.step(1 / 120)
+      halved = Math.max(halved, sim.world.fixed!.halvings)
+      const now = totals()
+      expect(now.ke).toBeLessThanOrEqual(last * (1 + 1e-12))
+      expect(Math.abs(now.px - start.px)).toBeLessThan(1e-9 * Math.sqrt(start.ke) * 300)
+      expect(Math.abs(now.py - start.py)).toBeLessThan(1e-9 * Math.sqrt(start.ke) * 300)
+      last = now.ke
+    }
+    expect(halved).toBeGreaterThan(0)
+  })
+
+  it('the same bits at 30, 60, 120 and 240 Hz, with a ball thrown in between steps', () => {
+    // the first solve (the balls just put down) halves the tick at the start of the first step's window, which
+    // then ends at the finer tick (at 30 Hz it had run on to 1/120 s, at 240 Hz to 1/240 s)
+    const at: Record<number, string[]> = {}
+    for (const hz of [30, 60, 120, 240]) {
+      const sim = gas(300, 2e4)
+      const out: string[] = []
+      const per = hz / 30
+      let halved = 0
+      for (let i = 0; i < 15 * per; i++) {
+        if (i === 5 * per) sim.addBall({ x: 1, y: 100, vx: 1e5, vy: 3, radius: 0.7 })
+        sim.step(1 / hz)
+        halved = Math.max(halved, sim.world.fixed!.halvings)
+        if ((i + 1) % per === 0) out.push(state(sim))
+      }
+      expect(halved).toBeGreaterThan(0)
+      at[hz] = out
+    }
+    for (const hz of [60, 120, 240]) for (let k = 0; k < at[30]!.length; k++) expect(at[hz]![k]).toBe(at[30]![k])
+  })
+
+  it('both broadphases give the same bits when the tick is halved', () => {
+    const run = (broadphase: number) => {
+      const sim = gas(300, 2e4)
+      sim.world.fixed!.broadphase = broadphase
+      const out: string[] = []
+      let halved = 0
+      for (let i = 0; i < 20; i++) {
+        sim.step(1 / 60)
+        halved = Math.max(halved, sim.world.fixed!.halvings)
+        for (const e of sim.drainEvents()) out.push(JSON.stringify(e))
+        out.push(state(sim))
+      }
+      return { out, halved }
+    }
+    const sweep = run(0)
+    const dense = run(1)
+    expect(sweep.halved).toBeGreaterThan(0)
+    expect(sweep.out.length).toBe(dense.out.length)
+    for (let i = 0; i < sweep.out.length; i++) if (sweep.out[i] !== dense.out[i]) expect(sweep.out[i]).toBe(dense.out[i])
+  })
+
+  it('a snapshot taken between halved ticks restores to the same run', () => {
+    const a = gas(300, 2e4)
+    for (let i = 0; i < 7; i++) a.step(1 / 60)
+    // between ticks of every spacing: 1/7 of a configured tick on
+    a.step(a.config.CONTACT_TICK / 7)
+    expect(a.world.fixed!.halvings).toBeGreaterThan(0)
+    const bytes = a.snapshot()
+    const b = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 }, { capacity: 308 })
+    b.restore(bytes)
+    for (let i = 0; i < 10; i++) {
+      a.step(1 / 60)
+      b.step(1 / 60)
+      expect(state(b)).toBe(state(a))
+    }
+  })
+
+  it('back to the configured tick once the balls slow down', () => {
+    // a deceleration that stops a 2e4 px/s ball within 0.1 s
+    const sim = gas(300, 2e4, 2e5, 0.5)
+    const F = sim.world.fixed!
+    let halved = 0
+    for (let i = 0; i < 60; i++) {
+      sim.step(1 / 60)
+      halved = Math.max(halved, F.halvings)
+    }
+    expect(halved).toBeGreaterThan(0)
+    expect(F.halvings).toBe(0)
+    expect(F.tick).toBe(sim.config.CONTACT_TICK)
+  })
+
+  it('no halving on the scenes the method is for: a gas at area fraction 0.2 and a pile pressed by a stream', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 0.9 }, { capacity: 700 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 0.9 })
+    const r = rng(5)
+    for (let i = 0; i < 200; i++) {
+      const a = r() * 2 * Math.PI
+      sim.addBall({ x: 20 + (i % 14) * 26.5, y: 20 + Math.floor(i / 14) * 26.5, vx: 350 * Math.cos(a), vy: 350 * Math.sin(a) })
+    }
+    for (let i = 0; i < 240; i++) {
+      if (i % 4 === 0) sim.addBall({ x: 200, y: 380, vx: 0, vy: -1500 })
+      sim.step(1 / 120)
+      expect(sim.world.fixed!.halvings).toBe(0)
+    }
+  })
+
+  it('random crowds (100–300 balls of radius 0.05–3 px at up to 1e5 px/s, boxes of 40–400 px, any restitution): kinetic energy never rises, no overlap over 1e-3 px after a step, ticks on the halved spacing', () => {
+    let halved = 0
+    fc.assert(
+      fc.property(
+        fc.record({
+          n: fc.integer({ min: 100, max: 300 }),
+          radius: fc.double({ min: 0.05, max: 3, noNaN: true }),
+          vmax: fc.constantFrom(3e3, 3e4, 1e5),
+          side: fc.constantFrom(40, 100, 400),
+          e: fc.constantFrom(0, 0.5, 1),
+          seed: fc.nat(1e6),
+        }),
+        ({ n, radius, vmax, side, e, seed }) => {
+          const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: e }, { capacity: n + 8 })
+          sim.setWalls({ minX: 0, minY: 0, maxX: side, maxY: side, restitution: e })
+          const r = rng(seed)
+          const k = Math.ceil(Math.sqrt(n))
+          // a lattice with room for the balls (radius cut to fit: balls put down on others would be held)
+          const pitch = side / k
+          const rad = Math.min(radius, 0.45 * pitch)
+          for (let i = 0; i < n; i++) {
+            const a = r() * 2 * Math.PI
+            const v = vmax * r()
+            sim.addBall({ x: pitch * ((i % k) + 0.5), y: pitch * (Math.floor(i / k) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: rad })
+          }
+          const F = sim.world.fixed!
+          let ke = Infinity
+          let most = 0
+          for (let s = 0; s < 12; s++) {
+            sim.step(1 / 60)
+            most = Math.max(most, F.halvings)
+            expect(F.tick).toBe(sim.config.CONTACT_TICK / 2 ** F.halvings)
+            const bs = sim.balls().map((b) => sim.ballState(b))
+            let now = 0
+            for (const b of bs) now += b.vx * b.vx + b.vy * b.vy
+            // finite, and not rising
+            expect(Number.isFinite(now)).toBe(true)
+            expect(now).toBeLessThanOrEqual(ke * (1 + 1e-9))
+            ke = now
+            if (F.capped > 0) continue
+            let deepest = 0
+            for (let p = 0; p < bs.length; p++) {
+              for (let q = p + 1; q < bs.length; q++) {
+                const d = bs[p]!.radius + bs[q]!.radius - Math.hypot(bs[p]!.x - bs[q]!.x, bs[p]!.y - bs[q]!.y)
+                if (d > deepest) deepest = d
+              }
+            }
+            expect(deepest).toBeLessThan(1e-3)
+          }
+          if (most > 0) halved++
+        },
+      ),
+      { seed: 77, numRuns: 24 },
+    )
+    expect(halved).toBeGreaterThan(6)
+  }, 120_000)
+})
