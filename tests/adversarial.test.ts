@@ -93,6 +93,8 @@ interface Limits {
   burst: number
   /** walls at all (setWalls, clearWalls) */
   walls: boolean
+  /** bursts' speeds, px/s (default 0, 50, 300, 1,000, 5,000) */
+  burstSpeeds?: number[]
 }
 
 const FULL: Limits = { radius: [1e-3, 200], huge: true, mass: [1e-9, 1e9], narrowWalls: true, holes: true, burst: 30, walls: true }
@@ -158,7 +160,7 @@ function opArbs(L: Limits) {
     x,
     y,
     spread: fc.constantFrom(0, 0, 1, 22, 60, 400),
-    speed: fc.constantFrom(0, 50, 300, 1000, 5000),
+    speed: fc.constantFrom(...(L.burstSpeeds ?? [0, 50, 300, 1000, 5000])),
     radius,
     mass,
     seed: fc.nat(1000),
@@ -223,7 +225,7 @@ class OverBudget extends Error {}
 /** the slowest step seen per property, for the report */
 const worst: Record<string, number> = {}
 /** what the runs of a property exercised: runs, steps, most balls at once, energy or overlap checks made, events by type */
-const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; events: Record<string, number> }> = {}
+const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; halved: number; events: Record<string, number> }> = {}
 
 const PANEL_MODES = new Set(['rolling', 'rimRoll', 'resting'])
 
@@ -296,7 +298,8 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (ms > STEP_BUDGET_MS) throw new OverBudget(`step still running after ${ms.toFixed(0)} ms (pass ${sim.world.pass})`)
     },
   })
-  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, events: {} })
+  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, halved: 0, events: {} })
+  let halved = false
   stats.runs++
   let lastSpawn = 0
   // fixed-tick contacts resolve overlaps at each contact tick; between ticks a ball whose path changes (a
@@ -495,6 +498,11 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
     const events: BallEvent[] = sim.drainEvents()
     trace.push(JSON.stringify(events))
     if (op.t === 'step') stats.steps++
+    // runs whose fixed tick was halved (src/contacts/fixedHalve.ts)
+    if (!halved && (sim.world.fixed?.halvings ?? 0) > 0) {
+      halved = true
+      stats.halved++
+    }
     stats.balls = Math.max(stats.balls, sim.balls().length)
     for (const e of events) stats.events[e.type] = (stats.events[e.type] ?? 0) + 1
     if (on('events')) {
@@ -591,6 +599,8 @@ const report: Record<string, object> = {}
 const NO_RUNAWAY: Limits = { radius: [2, 200], huge: false, mass: [1e-3, 1e3], narrowWalls: false, holes: true, burst: 30, walls: true }
 /** full ranges without walls: a step with a wall event is not checked for energy, and with walls most steps have one */
 const FULL_NO_WALLS: Limits = { ...FULL, walls: false }
+/** bursts of up to 150 balls of radii up to 3 px (now and then a huge one), up to 1e5 px/s: crowds whose balls reach many others a tick, where the fixed tick is halved */
+const CROWDS: Limits = { ...FULL, radius: [1e-3, 3], burst: 150, burstSpeeds: [300, 5000, 3e4, 1e5] }
 
 describe('adversarial API sequences (fast-check, seeded)', () => {
   it('every element of every Ball and Path store of every live ball stays finite; every mode is a BALL_MODE_NAMES mode', () => {
@@ -625,6 +635,16 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
 
   it('fixed-tick contacts, full ranges: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
     property('overlap (fixed, full)', scenario(FULL, ['fixed']), ['overlap'], 80, SEED + 13)
+  }, 120_000 * SCALE)
+
+  it('fixed-tick contacts, bursts of up to 150 balls (the tick halved in some): stores finite, events in order and in their window, every step within its time budget, no overlap over 1e-3 px 0.5 s after the last spawn', () => {
+    property('crowds (fixed)', scenario(CROWDS, ['fixed']), ['finite', 'events', 'time', 'overlap'], 60, SEED + 15)
+    expect(seen['crowds (fixed)']!.halved).toBeGreaterThan(0)
+  }, 120_000 * SCALE)
+
+  it('fixed-tick contacts, bursts of up to 150 balls, no walls: kinetic energy does not rise across a step with collisions', () => {
+    property('energy (fixed, crowds)', scenario({ ...CROWDS, walls: false }, ['fixed']), ['energy'], 40, SEED + 16)
+    expect(seen['energy (fixed, crowds)']!.halved).toBeGreaterThan(0)
   }, 120_000 * SCALE)
 
   // radii and masses where balls collide more often than they fly apart (two million contacts in the long run)
