@@ -15,7 +15,7 @@ import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { orderMoving } from './world/idLists.js'
-import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN } from './config/tolerances.js'
+import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN, TICK_SNAP } from './config/tolerances.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
@@ -117,10 +117,10 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     const stop = onTick || tick < end ? tick : end
     runWindow(world, schedule, stop)
     F.due = false
-    // a solve at the window's start (one a command asked for) that halved the tick ended the window at the
-    // next tick of the finer spacing (src/contacts/fixedHalve.ts)
-    const cut = world.time < stop
-    if (stop === tick || cut) {
+    // the window reached the next tick: `tick`, or, when a solve at its start (one a command asked for)
+    // halved the tick, the next tick of the finer spacing, where the window then ended (or ends anyway:
+    // src/contacts/fixedHalve.ts)
+    if (world.time === F.nextTick * F.tick) {
       // the tick's solve right at the end of the window that reaches it: a step that ends on a tick ends
       // solved (what the game draws), and the next window starts from the solved state
       F.nextTick++
@@ -129,12 +129,12 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
       F.due = false
     }
-    if (!cut && (onTick || stop === end)) return
+    // the step's end, or the tick it ends on (a window that a halving took to a tick within TICK_SNAP past
+    // the end ends there too)
+    if (world.time >= end || (onTick && world.time === stop)) return
   }
 }
 
-/** Relative gap below which a step's end and a contact tick are the same instant (a few ulps). */
-const TICK_SNAP = 8 * Number.EPSILON
 
 /** Runs the passes from the world's time to tEnd. */
 function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {

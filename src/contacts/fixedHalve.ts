@@ -4,23 +4,27 @@
 // every ball was paired with every other: 5,000 radius-0.5 balls at up to 3e4 px/s in a 1,000 px box had
 // hundreds of pairs a candidate at 1/120 s, the solve's sweeps over them took 2.7 s for a step, and the
 // visits bound on restitution (RESTITUTION_VISITS) drained an elastic gas of that kind. A tick whose pairs
-// outnumber TICK_PAIRS_PER_CANDIDATE a candidate is halved h times, h the one that makes the least work over
-// the tick's span, 2^h ticks of (candidates + pairs at that spacing) each, up to MAX_TICK_HALVINGS; where the
-// radii make the pairs (balls around a big one), halving leaves them and is not done. The pairs of the finer
-// tick are those of the tick whose reaches at the finer tick still meet (reaches only shrink: a subset, taken
-// from the list in its order), and the ticks go on at that spacing. The spacing is coarsened back, one
-// halving at a time, at a tick of the coarser spacing once the last tick's pairs were within a quarter of
-// the bound. Ticks stay k·tick of the world's clock (tick = CONTACT_TICK / 2^halvings, so every tick of a
-// coarser spacing is one of the finer), and the decisions are taken from the tick's balls alone: the ticks
-// are the same at every frame rate and in both broadphases (which give the same pairs in the same order),
-// and a snapshot keeps them.
-import { MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TOUCH_GAP } from '../config/tolerances.js'
+// outnumber TICK_PAIRS_PER_CANDIDATE a candidate is halved h times, h the one that makes the least modelled
+// work over the tick's span (work, below), up to MAX_TICK_HALVINGS; where the radii make the pairs (balls
+// around a big one), halving leaves them and is not done. The pairs of the finer tick are those of the tick
+// whose reaches at the finer tick still meet (reaches only shrink: a subset, taken from the list in its
+// order), every candidate takes its finer reach, and the ticks go on at that spacing. The spacing is
+// coarsened back, one halving at a time, at a tick of the coarser spacing once the last tick's pairs were
+// within a quarter of the bound; a try that is halved again at once doubles the ticks before the next. Ticks
+// stay k·tick of the world's clock (tick = CONTACT_TICK / 2^halvings, so every tick of a coarser spacing is
+// one of the finer), and every decision is taken from the world's state at a solve (its balls, the last
+// solve's pairs, the back-off), never from where a step ends: the ticks are the same at every frame rate and
+// in both broadphases (which list the same pairs in the same order), and a snapshot keeps them.
+import { BallMode } from '../../components/Ball.js'
+import { MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
 /** Per packed candidate: its speed, and its reach at each further halving (level h at [h·n + k]; scratch). */
 let speed = new Float64Array(64)
 let reachAt = new Float64Array(64)
+/** Whether this solve's coarsenTick went to the coarser spacing (halveTick reads it in the same solve). */
+let coarsened = false
 /** Pairs kept at each further halving (scratch). */
 const keptAt = new Float64Array(MAX_TICK_HALVINGS + 1)
 
@@ -30,12 +34,18 @@ const keptAt = new Float64Array(MAX_TICK_HALVINGS + 1)
  * cover much ground, so the coarser tick should stay within it; if not, it is halved again).
  */
 export function coarsenTick(w: BallWorld, F: FixedContactState): void {
+  coarsened = false
   if (F.halvings === 0) return
   // only at a tick's own solve, which runs at the end of the window that reaches it (not at a solve a command
   // asked for at a window's start, whose window ends at the tick of this spacing)
   const k = F.nextTick - 1
   if (w.time !== w.tickEnd || k % 2 !== 0 || w.time !== k * F.tick) return
   if (4 * F.tickPairs > TICK_PAIRS_PER_CANDIDATE * F.tickFull) return
+  if (F.coarsenWait > 0) {
+    F.coarsenWait--
+    return
+  }
+  coarsened = true
   F.halvings--
   F.tick = tickOf(w, F.halvings)
   F.nextTick = k / 2 + 1
@@ -43,20 +53,30 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
 
 /**
  * After a tick's pairs are found: when they outnumber TICK_PAIRS_PER_CANDIDATE a candidate, the tick is
- * halved h times, h the one that makes the least work of this tick's span, 2^h ticks of (candidates + pairs
- * at that spacing) each; 0 when the pairs hardly fall (the radii make them). Its reaches and pairs are then
- * those of the finer tick, and the next tick comes that much sooner. Records the tick's pairs for
- * coarsenTick.
+ * halved h times, h the one that makes the least work over this tick's span (see work); 0 when the pairs
+ * hardly fall (the radii make them). Its pairs and every candidate's reach are then those of the finer tick,
+ * and the next tick comes that much sooner. Records the tick's pairs for coarsenTick, and backs coarsening
+ * off when the coarser tick it just tried is halved again at once.
  */
 export function halveTick(w: BallWorld, F: FixedContactState): void {
   const levels = MAX_TICK_HALVINGS - F.halvings
+  let h = 0
   if (levels > 0 && F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full) {
-    const h = bestHalvings(w, F, levels)
+    h = bestHalvings(w, F, levels)
     if (h > 0) halve(w, F, h)
+  }
+  if (coarsened) {
+    // a coarser tick that had to be halved again: try again only after twice as many ticks as last time
+    F.coarsenBackoff = h > 0 ? Math.min(2 * F.coarsenBackoff, MAX_COARSEN_WAIT) : 1
+    if (h > 0) F.coarsenWait = F.coarsenBackoff
+    coarsened = false
   }
   F.tickPairs = F.pairCount
   F.tickFull = F.full
 }
+
+/** Most ticks coarsening waits after tries that were halved again at once (doubling from 2). */
+const MAX_COARSEN_WAIT = 1024
 
 /** The halvings, up to `levels`, that make the least work (see halveTick), from the pairs each keeps. */
 function bestHalvings(w: BallWorld, F: FixedContactState, levels: number): number {
@@ -81,16 +101,28 @@ function bestHalvings(w: BallWorld, F: FixedContactState, levels: number): numbe
     while (h <= levels && meetsAt(F, a, b, h * n)) keptAt[h++]!++
   }
   let best = 0
-  let least = F.full + F.pairCount
+  let least = work(F.full, F.pairCount, 0)
   for (let h = 1; h <= levels; h++) {
-    const work = (1 << h) * (F.full + keptAt[h]!)
-    if (work < least) {
-      least = work
+    const at = work(F.full, keptAt[h]!, h)
+    if (at < least) {
+      least = at
       best = h
     }
   }
   return best
 }
+
+/**
+ * The modelled work over a tick's span halved h times: 2^h ticks of n candidates and `pairs` pairs each, a
+ * pair costing more the more pairs each ball has (each impulse tests again every pair of the balls it
+ * changes, and a tick of many pairs a ball has many impulses): 1 + pairs a candidate / PAIR_DEGREE. Fitted
+ * to measured ticks: 400 balls in a 100 px box, 199 pairs a candidate, 2 µs a pair; 12 pairs a candidate,
+ * 0.3 µs a pair or candidate.
+ */
+function work(n: number, pairs: number, h: number): number {
+  return (1 << h) * (n + pairs * (1 + pairs / (PAIR_DEGREE * n)))
+}
+const PAIR_DEGREE = 32
 
 /** Halves the tick h times: the pairs and reaches of the finer tick, the clock's next tick at its spacing. */
 function halve(w: BallWorld, F: FixedContactState, h: number): void {
@@ -110,13 +142,40 @@ function halve(w: BallWorld, F: FixedContactState, h: number): void {
   for (let k = 0; k < n; k++) F.reach[k] = reachAt[o + k]!
   F.halvings += h
   F.tick = tickOf(w, F.halvings)
+  if (F.dense === 0) sweepReaches(w, F)
   // the next tick of the finer spacing after now: the one after this tick, or after now when the solve runs
   // between ticks (one a command asked for)
   let next = (1 << h) * (F.nextTick - 1) + 1
   while (next * F.tick <= w.time) next++
   F.nextTick = next
-  // a solve at a window's start: the window ends at that tick (src/schedule.ts solves it there)
-  if (next * F.tick < w.tickEnd) w.tickEnd = next * F.tick
+  // a solve at a window's start: the window ends at that tick at the latest, or on it when the window would
+  // end a few ulps short of it (TICK_SNAP, as a step does at a tick); src/schedule.ts solves a window that
+  // ends on the next tick
+  const at = next * F.tick
+  const gap = at - w.tickEnd
+  if (gap <= 0 || (gap <= TICK_SNAP * at && gap < 0.5 * (w.tickEnd - w.time))) w.tickEnd = at
+}
+
+/**
+ * On a sweep tick, the finer reach of the candidates the sweep gathered and did not pack too (F.reachOf: the
+ * widening rounds look them up there, and pack those they reach with it), as the dense broadphase has for
+ * every candidate; the big ones keep theirs, so the two places that tell them apart (reachOf over half the
+ * ordering cell: they were paired through F.big) still do (the packed ones, every big one among them, have
+ * their finer reach in F.reach).
+ */
+function sweepReaches(w: BallWorld, F: FixedContactState): void {
+  const B = w.Ball
+  const half = F.cell / 2
+  const tick = F.tick
+  for (let p = 0; p < F.ordCount; p++) {
+    const e = F.ord[p]!
+    const m = B.mode[e]
+    if (m !== BallMode.Rolling && m !== BallMode.RimRoll) continue
+    if (F.reachOf[e]! > half) continue
+    const vx = B.vx[e]!
+    const vy = B.vy[e]!
+    F.reachOf[e] = B.radius[e]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
+  }
 }
 
 /** Whether packed candidates a and b are within each other's reach at the halving whose reaches start at o (the broadphases' test). */

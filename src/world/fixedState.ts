@@ -19,19 +19,22 @@ export interface FixedContactState {
   touchedCount: number
   /** packed candidates from this index on rest (the resting ones the gather found, then those the widening added) */
   restFrom: number
-  /** contact tick, s: CONTACT_TICK halved `halvings` times (src/contacts/fixedHalve.ts); solved at k·tick; k of the next */
+  /** contact tick, s: CONTACT_TICK halved `halvings` times (src/contacts/fixedHalve.ts); solved at k·tick */
   tick: number
+  /** k of the next contact tick; times CONTACT_TICK was halved */
   nextTick: number
   halvings: number
-  /** pairs and candidates of the last tick's broadphase (after any halving) */ tickPairs: number
+  /** fixedHalve.ts: the last tick's pairs and candidates; ticks to wait before coarsening, and the wait after a try that fails */
+  tickPairs: number
   tickFull: number
+  coarsenWait: number
+  coarsenBackoff: number
   /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
   due: boolean
   /**
-   * The tick's candidates (the moving balls, and the resting balls that can be touched), kept from tick to
-   * tick sorted by sweep cell (src/contacts/fixedSweep.ts): ids and cell keys. A ball moves a few px a tick,
-   * so the order needs few changes; only the balls that can touch another are then copied into the packed
-   * arrays below.
+   * The tick's candidates (moving balls, and resting ones that can be touched), kept sorted by sweep cell from
+   * tick to tick (src/contacts/fixedSweep.ts: a ball moves a few px a tick); only those that can touch another
+   * are then copied into the packed arrays below.
    */
   ord: Uint32Array
   /** the keys of ord's balls, in its order (written by the gather at each ball's place of the last tick) */
@@ -173,6 +176,8 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     halvings: 0,
     tickPairs: 0,
     tickFull: 0,
+    coarsenWait: 0,
+    coarsenBackoff: 1,
     due: false,
     n: 0,
     id: new Uint32Array(n),
@@ -332,8 +337,7 @@ export function pushListed(list: Uint32Array, count: number, eid: number): Uint3
 /** Makes room in the ordered sweep arrays for n balls (keeping their contents). */
 export function reserveOrd(F: FixedContactState, n: number): void {
   if (F.ord.length >= n) return
-  let len = F.ord.length
-  while (len < n) len *= 2
+  const len = doubled(F.ord.length, n)
   F.ord = grownTo(F.ord, len)
   F.okey = grownTo(F.okey, len)
 }
@@ -341,8 +345,7 @@ export function reserveOrd(F: FixedContactState, n: number): void {
 /** Makes room in the sort scratch for n keys (contents not kept). */
 export function reserveSort(F: FixedContactState, n: number): void {
   if (F.perm.length >= n) return
-  let len = F.perm.length
-  while (len < n) len *= 2
+  const len = doubled(F.perm.length, n)
   F.key1 = new Float64Array(len)
   F.key2 = new Float64Array(len)
   F.perm = new Int32Array(len)
@@ -351,24 +354,15 @@ export function reserveSort(F: FixedContactState, n: number): void {
 
 /** Appends ball eid to the candidate ids (F.n counts them); the other candidate arrays follow in reserveCandidates. */
 export function pushCandidate(F: FixedContactState, eid: number): void {
-  if (F.n === F.id.length) {
-    const id = new Uint32Array(2 * F.id.length)
-    id.set(F.id)
-    F.id = id
-  }
+  if (F.n === F.id.length) F.id = grownTo(F.id, 2 * F.id.length)
   F.id[F.n++] = eid
 }
 
 /** Makes room in every per-candidate array (keeping their contents) for n candidates. */
 export function reserveCandidates(F: FixedContactState, n: number): void {
-  if (F.id.length < n) {
-    let len = F.id.length
-    while (len < n) len *= 2
-    F.id = grownTo(F.id, len)
-  }
+  if (F.id.length < n) F.id = grownTo(F.id, doubled(F.id.length, n))
   if (F.x.length >= n) return
-  let len = F.x.length
-  while (len < n) len *= 2
+  const len = doubled(F.x.length, n)
   F.x = grownTo(F.x, len)
   F.y = grownTo(F.y, len)
   F.r = grownTo(F.r, len)
@@ -388,6 +382,12 @@ export function reserveCandidates(F: FixedContactState, n: number): void {
   F.nearWall = grownTo(F.nearWall, len)
   F.widened = grownTo(F.widened, len)
   F.hit = grownTo(F.hit, len)
+}
+
+/** len doubled until it is at least n. */
+function doubled(len: number, n: number): number {
+  while (len < n) len *= 2
+  return len
 }
 
 function grownTo<T extends Float64Array | Int32Array | Uint8Array | Uint32Array>(a: T, n: number): T {

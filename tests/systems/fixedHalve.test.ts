@@ -261,4 +261,95 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     )
     expect(halved).toBeGreaterThan(6)
   }, 120_000)
+
+  it('a crowd that crosses its box in a tick (300 radius-0.3 balls at up to 1e5 px/s in a 100 px box, restitution 1) is halved and keeps its energy', () => {
+    // every pair stays listed through the first halvings (the box bounds the reach), so a model that counted a
+    // pair as one candidate never halved: the visits bound on restitution then drained the gas to 0.72 of its
+    // energy in 1/6 s
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 }, { capacity: 308 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 100, maxY: 100, restitution: 1 })
+    const r = rng(11)
+    for (let i = 0; i < 300; i++) {
+      const a = r() * 2 * Math.PI
+      const v = 1e5 * r()
+      sim.addBall({ x: 100 / 18 * ((i % 18) + 0.5), y: 100 / 18 * (Math.floor(i / 18) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: 0.3 })
+    }
+    const ke = () => sim.balls().reduce((e, b) => e + sim.ballState(b).vx ** 2 + sim.ballState(b).vy ** 2, 0)
+    const start = ke()
+    let halved = 0
+    for (let i = 0; i < 10; i++) {
+      sim.step(1 / 60)
+      halved = Math.max(halved, sim.world.fixed!.halvings)
+    }
+    expect(halved).toBeGreaterThanOrEqual(4)
+    expect(ke() / start).toBeGreaterThan(0.98)
+  })
+
+  it('coarsening backs off when the coarser tick is halved again at once (a pile beside balls whose coarse reach covers it)', () => {
+    // a touching 50 × 50 pile (pairs from the radii, about 2 a candidate) and 40 balls bouncing up and down
+    // at 23,000 px/s 100–144 px from its sides: at the configured tick their reach covers the pile, at half
+    // of it not, so each try at the coarser tick lists about 100,000 pairs and is halved again
+    const P = 50
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 }, { capacity: P * P + 48 })
+    const W = 800
+    const H = 2 * P + 60
+    sim.setWalls({ minX: 0, minY: 0, maxX: W, maxY: H, restitution: 1 })
+    const px0 = W / 2 - P
+    const py0 = H / 2 - P
+    for (let i = 0; i < P * P; i++) sim.addBall({ x: px0 + 1 + (2 + 1e-7) * (i % P), y: py0 + 1 + (2 + 1e-7) * Math.floor(i / P), vx: 1.5, vy: 0, radius: 1 })
+    for (let k = 0; k < 20; k++) {
+      for (const side of [-1, 1]) {
+        const x = side < 0 ? px0 - 100 - 2.2 * k : px0 + 2 * P + 100 + 2.2 * k
+        sim.addBall({ x, y: 5 + ((k * 37) % (H - 10)), vx: 0, vy: (k % 2 === 0 ? 1 : -1) * 23000, radius: 1 })
+      }
+    }
+    const F = sim.world.fixed!
+    let backoff = 1
+    let halved = 0
+    for (let i = 0; i < 30; i++) {
+      sim.step(1 / 60)
+      backoff = Math.max(backoff, F.coarsenBackoff)
+      halved = Math.max(halved, F.halvings)
+    }
+    expect(halved).toBeGreaterThan(0)
+    // tries after 2, 4, 8, … ticks: within 30 steps (60 configured ticks) the wait has grown past 8
+    expect(backoff).toBeGreaterThanOrEqual(8)
+  })
+
+  it("on a halved sweep tick both broadphases list the same pairs (the sweep's unpacked balls get the finer reach too)", () => {
+    // a hot gas that halves the tick 7 times, and far from it a row struck through to its last ball g, with a
+    // lone ball e beyond g at 1,200 px/s: at the configured tick e's reach (11 px) covers g, at the finer one
+    // not. The sweep did not pack e, kept its coarse reach, and listed (g, e) when the widening reached it.
+    const pairsOf = (broadphase: number) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 }, { capacity: 600 })
+      const r = rng(12345)
+      for (let i = 0; i < 400; i++) {
+        const a = r() * 2 * Math.PI
+        const v = 3e4 * r()
+        sim.addBall({ x: 5 * (i % 20) + 2.5, y: 5 * Math.floor(i / 20) + 2.5, vx: v * Math.cos(a), vy: v * Math.sin(a), radius: 0.5 })
+      }
+      sim.addBall({ x: 1000, y: 500, vx: 6000, vy: 2, radius: 1 })
+      let x = 1000
+      for (let k = 0; k < 30; k++) {
+        x += 2 + 1e-7
+        sim.addBall({ x, y: 500, vx: 0, vy: 2, radius: 1 })
+      }
+      sim.addBall({ x: x + 12.2, y: 500, vx: 0, vy: 1200, radius: 1 })
+      const F = sim.world.fixed!
+      F.broadphase = broadphase
+      const out: string[] = []
+      // the first solve (the balls just put down) and the last tick of each later step
+      for (const dt of [1e-9, 1 / 60, 1 / 60]) {
+        sim.step(dt)
+        const pairs: string[] = []
+        for (let p = 0; p < F.pairCount; p++) pairs.push(`${F.id[F.pairA[p]!]}-${F.id[F.pairB[p]!]}`)
+        out.push(`${F.halvings}: ${pairs.sort().join(' ')}`)
+      }
+      return out
+    }
+    const sweep = pairsOf(0)
+    const dense = pairsOf(1)
+    expect(Number(sweep[0]!.split(':')[0])).toBeGreaterThanOrEqual(5)
+    expect(sweep).toEqual(dense)
+  })
 })
