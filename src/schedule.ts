@@ -153,6 +153,9 @@ function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: n
   // out of passes: the balls still behind wait out the step (src/motion/pause.ts), none is left behind
   if (world.pass === maxPasses && world.config.METHOD === 'exact') waitOutStep(world)
   world.time = world.tickEnd
+  // the last pass's list is spent (a pass takes `marked` into it): kept, it named balls a game could remove
+  // between steps, and a snapshot after a step of one pass carried them (restore refused it)
+  world.todo.count = 0
 }
 
 /** The default schedule's systems, in its order (a copy from createSchedule is one). */

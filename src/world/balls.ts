@@ -55,11 +55,10 @@ export function forgetBall(world: BallWorld, eid: number): void {
   if (world.Ball.mode[eid] === BallMode.Held) dropId(world.held, eid)
   removeMoving(world, eid)
   // removed mid-step by a game's system: the next pass must not continue it (its zeroed path is due at
-  // once, so with contacts on the pass would take its events for ever)
-  if (world.stepping) {
-    dropId(world.marked, eid)
-    dropId(world.todo, eid)
-  }
+  // once, so with contacts on the pass would take its events for ever); between steps no list names it
+  // (a window ends with `todo` spent, and `marked` is empty unless its passes ran out)
+  dropId(world.marked, eid)
+  if (world.stepping) dropId(world.todo, eid)
   releaseRim(world, eid)
   restingRemove(world, eid)
   forgetPredictions(world, eid)
