@@ -13,17 +13,30 @@ import { rng } from '../helpers'
 const SIDE = 200
 const RADIUS = 0.5
 
-/** n balls of radius 0.5 on a lattice in a closed box, at up to vmax px/s in random directions. */
-function gas(n: number, vmax: number, decel = 0, restitution = 1): BallPhysics {
+interface GasOptions {
+  decel?: number
+  restitution?: number
+  /** the box's side, px (default SIDE) */
+  side?: number
+  /** px (default RADIUS; cut to fit the lattice) */
+  radius?: number
+  seed?: number
+}
+
+/** n balls on a lattice in a closed box (walls of the balls' restitution), at up to vmax px/s in random directions. */
+function gas(n: number, vmax: number, o: GasOptions = {}): BallPhysics {
+  const { decel = 0, restitution = 1, side = SIDE, radius = RADIUS, seed = 4242 } = o
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: decel, BALL_RESTITUTION: restitution }, { capacity: n + 8 })
-  sim.setWalls({ minX: 0, minY: 0, maxX: SIDE, maxY: SIDE, restitution })
-  const r = rng(4242)
+  sim.setWalls({ minX: 0, minY: 0, maxX: side, maxY: side, restitution })
+  const r = rng(seed)
   const k = Math.ceil(Math.sqrt(n))
-  const pitch = SIDE / k
+  const pitch = side / k
+  // balls put down on others would be held
+  const rad = Math.min(radius, 0.45 * pitch)
   for (let i = 0; i < n; i++) {
     const a = r() * 2 * Math.PI
     const v = vmax * r()
-    sim.addBall({ x: pitch * ((i % k) + 0.5), y: pitch * (Math.floor(i / k) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: RADIUS })
+    sim.addBall({ x: pitch * ((i % k) + 0.5), y: pitch * (Math.floor(i / k) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: rad })
   }
   return sim
 }
@@ -178,7 +191,7 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
 
   it('back to the configured tick once the balls slow down', () => {
     // a deceleration that stops a 2e4 px/s ball within 0.1 s
-    const sim = gas(300, 2e4, 2e5, 0.5)
+    const sim = gas(300, 2e4, { decel: 2e5, restitution: 0.5 })
     const F = sim.world.fixed!
     let halved = 0
     for (let i = 0; i < 60; i++) {
@@ -218,18 +231,7 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
           seed: fc.nat(1e6),
         }),
         ({ n, radius, vmax, side, e, seed }) => {
-          const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: e }, { capacity: n + 8 })
-          sim.setWalls({ minX: 0, minY: 0, maxX: side, maxY: side, restitution: e })
-          const r = rng(seed)
-          const k = Math.ceil(Math.sqrt(n))
-          // a lattice with room for the balls (radius cut to fit: balls put down on others would be held)
-          const pitch = side / k
-          const rad = Math.min(radius, 0.45 * pitch)
-          for (let i = 0; i < n; i++) {
-            const a = r() * 2 * Math.PI
-            const v = vmax * r()
-            sim.addBall({ x: pitch * ((i % k) + 0.5), y: pitch * (Math.floor(i / k) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: rad })
-          }
+          const sim = gas(n, vmax, { restitution: e, side, radius, seed })
           const F = sim.world.fixed!
           let ke = Infinity
           let most = 0
@@ -266,14 +268,7 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     // every pair stays listed through the first halvings (the box bounds the reach), so a model that counted a
     // pair as one candidate never halved: the visits bound on restitution then drained the gas to 0.72 of its
     // energy in 1/6 s
-    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 }, { capacity: 308 })
-    sim.setWalls({ minX: 0, minY: 0, maxX: 100, maxY: 100, restitution: 1 })
-    const r = rng(11)
-    for (let i = 0; i < 300; i++) {
-      const a = r() * 2 * Math.PI
-      const v = 1e5 * r()
-      sim.addBall({ x: 100 / 18 * ((i % 18) + 0.5), y: 100 / 18 * (Math.floor(i / 18) + 0.5), vx: v * Math.cos(a), vy: v * Math.sin(a), radius: 0.3 })
-    }
+    const sim = gas(300, 1e5, { side: 100, radius: 0.3, seed: 11 })
     const ke = () => sim.balls().reduce((e, b) => e + sim.ballState(b).vx ** 2 + sim.ballState(b).vy ** 2, 0)
     const start = ke()
     let halved = 0
