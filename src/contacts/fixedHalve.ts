@@ -10,11 +10,12 @@
 // whose reaches at the finer tick still meet (reaches only shrink: a subset, taken from the list in its
 // order), every candidate takes its finer reach, and the ticks go on at that spacing. The spacing is
 // coarsened back, one halving at a time, at a tick of the coarser spacing once the last tick's pairs were
-// within a quarter of the bound; a try that is halved again at once doubles the ticks before the next. Ticks
-// stay k·tick of the world's clock (tick = CONTACT_TICK / 2^halvings, so every tick of a coarser spacing is
-// one of the finer), and every decision is taken from the world's state at a solve (its balls, the last
-// solve's pairs, the back-off), never from where a step ends: the ticks are the same at every frame rate and
-// in both broadphases (which list the same pairs in the same order), and a snapshot keeps them.
+// within a quarter of the bound, or a finer tick would not have thinned them; a try that is halved again at
+// once doubles the ticks before the next. Ticks stay k·tick of the world's clock (tick = CONTACT_TICK /
+// 2^halvings, so every tick of a coarser spacing is one of the finer), and every decision is taken from the
+// world's state at a solve (its balls, the last solve's pairs, the back-off), never from where a step ends:
+// the ticks are the same at every frame rate and in both broadphases (which list the same pairs in the same
+// order), and a snapshot keeps them.
 import { BallMode } from '../../components/Ball.js'
 import { MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
@@ -55,15 +56,21 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
  * After a tick's pairs are found: when they outnumber TICK_PAIRS_PER_CANDIDATE a candidate, the tick is
  * halved h times, h the one that makes the least work over this tick's span (see work); 0 when the pairs
  * hardly fall (the radii make them). Its pairs and every candidate's reach are then those of the finer tick,
- * and the next tick comes that much sooner. Records the tick's pairs for coarsenTick, and backs coarsening
- * off when the coarser tick it just tried is halved again at once.
+ * and the next tick comes that much sooner. Records the tick's pairs for coarsenTick (none, on a halved tick
+ * whose pairs a finer one would not thin), and backs coarsening off when the coarser tick it just tried is
+ * halved again at once.
  */
 export function halveTick(w: BallWorld, F: FixedContactState): void {
   const levels = MAX_TICK_HALVINGS - F.halvings
   let h = 0
-  if (levels > 0 && F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full) {
-    h = bestHalvings(w, F, levels)
+  let saturated = false
+  if (F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full) {
+    h = levels > 0 ? bestHalvings(w, F, levels) : 0
     if (h > 0) halve(w, F, h)
+    // a halved tick whose pairs a finer one would not thin (half of them or more kept: balls sped up beyond
+    // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser
+    // ticks, as when its pairs are few
+    else saturated = F.halvings > 0 && (levels === 0 || 2 * keptAt[1]! >= F.pairCount)
   }
   if (coarsened) {
     // a coarser tick that had to be halved again: try again only after twice as many ticks as last time
@@ -71,7 +78,7 @@ export function halveTick(w: BallWorld, F: FixedContactState): void {
     if (h > 0) F.coarsenWait = F.coarsenBackoff
     coarsened = false
   }
-  F.tickPairs = F.pairCount
+  F.tickPairs = saturated ? 0 : F.pairCount
   F.tickFull = F.full
 }
 
