@@ -32,7 +32,8 @@ const keptAt = new Float64Array(MAX_TICK_HALVINGS + 1)
 /**
  * Before a tick's gather: back to the coarser spacing when the world is on one of its ticks and the last
  * tick's pairs were within a quarter of the bound (halving a tick about quarters the pairs of balls that
- * cover much ground, so the coarser tick should stay within it; if not, it is halved again).
+ * cover much ground, so the coarser tick should stay within it; if not, it is halved again), or recorded as
+ * none (halveTick: a finer tick would not have thinned them), unless an earlier try is being waited out.
  */
 export function coarsenTick(w: BallWorld, F: FixedContactState): void {
   coarsened = false
