@@ -15,7 +15,8 @@ import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { orderMoving } from './world/idLists.js'
-import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN, TICK_SNAP } from './config/tolerances.js'
+import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN } from './config/tolerances.js'
+import { nearTick } from './contacts/fixedHalve.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
@@ -110,10 +111,8 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     }
     // a step whose end is the tick but for rounding (a clock summed from 1/120 s steps drifts a few ulps
     // from k·(1/120)) ends at the tick, solved, and the clock is back on the ticks; else a sliver window
-    // before or after the tick integrated every ball again. Never by half a step or more (at a clock of
-    // months, 8ε of it passes a step of 1e-9 s)
-    const gap = Math.abs(tick - end)
-    const onTick = gap <= TICK_SNAP * tick && gap < 0.5 * dt
+    // before or after the tick integrated every ball again
+    const onTick = nearTick(tick, end, dt)
     const stop = onTick || tick < end ? tick : end
     runWindow(world, schedule, stop)
     F.due = false
@@ -134,7 +133,6 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     if (world.time >= end || (onTick && world.time === stop)) return
   }
 }
-
 
 /** Runs the passes from the world's time to tEnd. */
 function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {

@@ -80,13 +80,14 @@ export const MIN_PROJECTION_SHARE = 0.1
  * area fraction 0.2 and the panel's bursts have a few pairs a candidate at most; thousands of radius-0.5
  * balls at 3e4 px/s in a 1,000 px box have hundreds at 1/120 s.
  */
-/**
- * Fixed-tick contacts: relative gap below which a step's end and a contact tick are the same instant (a few
- * ulps: a clock summed from 1/120 s steps drifts from k·(1/120)); the step then ends at the tick, solved.
- */
-export const TICK_SNAP = 8 * Number.EPSILON
 export const TICK_PAIRS_PER_CANDIDATE = 16
 export const MAX_TICK_HALVINGS = 10
+/**
+ * Fixed-tick contacts: relative gap below which a step's end and a contact tick are the same instant (a few
+ * ulps: a clock summed from 1/120 s steps drifts from k·(1/120)); the step then ends at the tick, solved
+ * (src/contacts/fixedHalve.ts, nearTick).
+ */
+export const TICK_SNAP = 8 * Number.EPSILON
 /**
  * Fixed-tick contacts: rounds a tick of widening the reach of balls the solve sped up (src/contacts/fixedReach.ts);
  * each carries a push one ball further along a row with gaps. After MAX_WIDEN_ROUNDS the rounds go on, up

@@ -160,8 +160,17 @@ function halve(w: BallWorld, F: FixedContactState, h: number): void {
   // end a few ulps short of it (TICK_SNAP, as a step does at a tick); src/schedule.ts solves a window that
   // ends on the next tick
   const at = next * F.tick
-  const gap = at - w.tickEnd
-  if (gap <= 0 || (gap <= TICK_SNAP * at && gap < 0.5 * (w.tickEnd - w.time))) w.tickEnd = at
+  if (at <= w.tickEnd || nearTick(at, w.tickEnd, w.tickEnd - w.time)) w.tickEnd = at
+}
+
+/**
+ * Whether a window ending at `end` ends on the tick at `tick` but for rounding: within TICK_SNAP of it
+ * (relative), and never by half the window's `span` or more (at a clock of months, 8ε of it passes a step
+ * of 1e-9 s).
+ */
+export function nearTick(tick: number, end: number, span: number): boolean {
+  const gap = Math.abs(tick - end)
+  return gap <= TICK_SNAP * tick && gap < 0.5 * span
 }
 
 /**
