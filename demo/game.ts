@@ -493,7 +493,7 @@ export class Game {
     this.applyPending()
     const token = ++this.calls
     this.solving = { holeIndex, token }
-    // checked at the demo's own step (balls held at the launcher go one a step)
+    // checked at the demo's own step (the outcome is the same at every step; the cost is not)
     const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160, step: 1 / PHYSICS_HZ }
     return { token, config: { ...this.sim.config }, snapshot: this.sim.snapshot(), request }
   }

@@ -92,12 +92,21 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
 }
 
 function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
-  const end = world.time + dt
   const F = world.fixed
   if (F === null) {
-    runWindow(world, schedule, end)
-    return
+    const end = clockEnd(world, world.time + dt, dt)
+    if (world.collide === null) {
+      runWindow(world, schedule, end)
+      return
+    }
+    // exact contacts: while balls are held, the step is split at the launch instants, where the launcher acts
+    for (;;) {
+      const next = launchInstant(world)
+      runWindow(world, schedule, next < end ? next : end)
+      if (world.time >= end) return
+    }
   }
+  const end = world.time + dt
   // fixed-tick contacts: the step is split at the contact ticks k·tick, tick = CONTACT_TICK / 2^halvings
   // (the same instants at every frame rate), and the contacts are solved at each (by the schedule's
   // fixedContacts system); a solve asked for between steps (a ball put down or given a new velocity) runs in
@@ -114,6 +123,9 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     // before or after the tick integrated every ball again
     const onTick = nearTick(tick, end, dt)
     const stop = onTick || tick < end ? tick : end
+    // the launch instants are ticks of every spacing (k·CONTACT_TICK = (k·2^h)·(CONTACT_TICK / 2^h), the
+    // same double): the window needs no split for them
+    launchInstant(world)
     runWindow(world, schedule, stop)
     F.due = false
     // the window reached the next tick: `tick`, or, when a solve at its start (one a command asked for)
@@ -134,6 +146,47 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
   }
 }
 
+/**
+ * The step's end on the exact method's clock: an end that is k·CONTACT_TICK but for rounding is that
+ * instant (a clock summed from 1/30 s steps and one summed from 1/240 s steps part by a few ulps within a
+ * second; on the grid, the same simulated time is the same double at 30, 60, 120 and 240 Hz, so commands
+ * given there act at the same instant, and held balls leave at the same launch instants). The fixed tick
+ * does the same at its ticks (runPasses); the tick-sampled methods keep the summed clock.
+ */
+function clockEnd(world: BallWorld, end: number, dt: number): number {
+  if (world.config.METHOD !== 'exact') return end
+  const L = world.config.CONTACT_TICK
+  const at = Math.round(end / L) * L
+  return nearTick(at, end, dt) ? at : end
+}
+
+/**
+ * Held balls leave at launch instants, k·CONTACT_TICK of the world's clock, in either contact method: the
+ * same instants at every frame rate, where a step's start would make the release time depend on it. Sets
+ * world.launchDue (the window that starts now starts on one, and a ball is held) and returns the first
+ * instant after the world's time (Infinity when no ball is held, or when the clock is too coarse for the
+ * tick: then the launcher acts at every window's start, as it did at every step's).
+ */
+function launchInstant(world: BallWorld): number {
+  if (world.held.count === 0) {
+    world.launchDue = false
+    return Infinity
+  }
+  const L = world.config.CONTACT_TICK
+  const t = world.time
+  let k = Math.ceil(t / L)
+  while (k > 0 && (k - 1) * L >= t) k--
+  while (k * L < t) k++
+  const due = k * L === t
+  const next = (due ? k + 1 : k) * L
+  if (!(next > t)) {
+    world.launchDue = true
+    return Infinity
+  }
+  world.launchDue = due
+  return next
+}
+
 /** Runs the passes from the world's time to tEnd. */
 function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {
   world.tickEnd = tEnd
@@ -147,6 +200,7 @@ function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: n
     }
   } finally {
     setLipBatching(false)
+    world.launchDue = false
   }
   // out of passes: the balls still behind wait out the step (src/motion/pause.ts), none is left behind
   if (world.pass === maxPasses && world.config.METHOD === 'exact') waitOutStep(world)

@@ -1,15 +1,17 @@
 // Launcher (not a design stage; ball-ball contacts on only). A ball put down where another ball is waits
-// there, held (mode 'held'), with the velocity it was given; at the start of each step the held balls whose
-// spots are clear are launched, in the order they came, from their spots with those velocities. An arcade
-// launcher firing many balls from one point so lets them out one after another, each as the one before it
-// clears the spot, instead of starting them inside one another. The rule adds no kinetic energy (a held ball
-// keeps its velocity and is launched only where it overlaps nothing), and a released ball starts
-// where it was put, at the step's start: release times are quantised to steps. A spot held only by resting
-// balls is cleared: the launcher knocks them off it (kick, below; the one place it adds energy, as a throw
+// there, held (mode 'held'), with the velocity it was given; at each launch instant, k·CONTACT_TICK of the
+// world's clock, the held balls whose spots are clear are launched, in the order they came, from their spots
+// with those velocities (the step ends a window on each instant while a ball is held, and sets
+// world.launchDue for the window that starts there: src/schedule.ts). An arcade launcher firing many balls
+// from one point so lets them out one after another, each as the one before it clears the spot, instead of
+// starting them inside one another. The rule adds no kinetic energy (a held ball keeps its velocity and is
+// launched only where it overlaps nothing), and a released ball starts where it was put, at the instant:
+// release times are the same at every frame rate (before, they were the steps' starts). A spot held only by
+// resting balls is cleared: the launcher knocks them off it (kick, below; the one place it adds energy, as a throw
 // does), so a ball that stops on a launcher's spot does not hold the balls behind it for good.
-// Bounded work: at most MAX_SPOT_CHECKS full checks per step (each against the moving and resting balls
-// near the spot, through grids); a held ball overlapping the held ball just before it in the queue waits
-// without one. The rest wait for later steps.
+// Bounded work: at most MAX_SPOT_CHECKS full checks per launch instant (each against the moving and resting
+// balls near the spot, through grids); a held ball overlapping the held ball just before it in the queue
+// waits without one. The rest wait for later instants.
 // Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact.
 import { BallMode } from '../components/Ball.js'
 import { MAX_SPEED } from '../src/config/limits.js'
@@ -21,7 +23,7 @@ import { createIdList } from '../src/world/idLists.js'
 import { hypot } from '../src/math.js'
 
 export function launcherSystem(w: BallWorld): void {
-  if (w.pass !== 0 || w.held.count === 0) return
+  if (w.pass !== 0 || w.held.count === 0 || !w.launchDue) return
   const q = w.held
   const B = w.Ball
   let kept = 0

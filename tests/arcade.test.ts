@@ -498,6 +498,79 @@ describe('a launcher firing many balls from one point', () => {
     }
   })
 
+  /** A burst of n balls from the launch point at t = 0 (walls open at the bottom), run to T at steps of dt: every event, and the final states. */
+  function burstRun(mode: 'on' | 'fixed', n: number, dt: number, T: number): { events: string[]; state: number[] } {
+    const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+    addPanel(sim)
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: { bottom: true } })
+    for (let i = 0; i < n; i++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + (0.5 * ((i * 7) % 11)) / 11, angle: -0.3 + (0.6 * ((i * 5) % 13)) / 13 })
+    const events: string[] = []
+    while (sim.time < T - 1e-9) {
+      sim.step(dt)
+      for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+    }
+    const B = sim.world.Ball
+    const state: number[] = [sim.time]
+    for (const b of sim.balls()) state.push(b, B.x[b]!, B.y[b]!, B.vx[b]!, B.vy[b]!, B.mode[b]!)
+    return { events, state }
+  }
+
+  for (const mode of ['on', 'fixed'] as const) {
+    it(`held balls leave at launch instants of the world's clock (${mode}): a 40-ball burst gives the same events and final states, bit for bit, at 30, 60, 120 and 240 Hz and at 1/50, 1/144 and 0.1 s steps (it parted from the first collision when balls left at step starts)`, () => {
+      const ref = burstRun(mode, 40, 1 / 240, 1.5)
+      expect(ref.events.filter((e) => e.startsWith('collision')).length).toBeGreaterThan(5)
+      for (const dt of [1 / 30, 1 / 60, 1 / 120]) {
+        const run = burstRun(mode, 40, dt, 1.5)
+        expect(run.events, `${1 / dt} Hz`).toEqual(ref.events)
+        expect(run.state, `${1 / dt} Hz`).toEqual(ref.state)
+      }
+      // steps that share no boundary with the launch instants: the same events (the final states are sampled at other times)
+      for (const dt of [1 / 50, 1 / 144, 0.1]) expect(burstRun(mode, 40, dt, 1.5).events, `dt ${dt}`).toEqual(ref.events)
+    })
+  }
+
+  it('a held ball leaves at a launch instant k·CONTACT_TICK, never between (CONTACT_TICK 1/50 s, steps of 1/240 s)', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', CONTACT_TICK: 1 / 50 })
+    const first = sim.addBall({ x: 100, y: 100, vx: 0, vy: -300 })
+    const held = sim.addBall({ x: 100, y: 100, vx: 0, vy: -300 })
+    expect(sim.ballState(held).mode).toBe('held')
+    let left = -1
+    for (let i = 0; i < 24; i++) {
+      sim.step(1 / 240)
+      if (left < 0 && sim.ballState(held).mode !== 'held') left = i
+    }
+    expect(sim.ballState(first).mode).toBe('rolling')
+    // the first ball clears its spot (22 px at 300 px/s, slowing at 300 px/s²) at 0.0775 s; the next instant
+    // is 4/50 s, inside the step [19/240, 20/240]: the ball leaves in that step, from the instant itself
+    expect(left).toBe(19)
+    expect(sim.world.pathHot[held * HOT + H_T0]).toBe(4 * (1 / 50))
+    // after 24 steps the clock reads the instant 5/50 s (their sum is 0.09999999999999999)
+    expect(sim.time).toBe(5 * (1 / 50))
+  })
+
+  it("the exact method's clock keeps to k·CONTACT_TICK: the same simulated time is the same double at 30 and 240 Hz, so throws given every second act at the same instants (contacts on and off)", () => {
+    for (const mode of ['off', 'on'] as const) {
+      const run = (hz: number) => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+        addPanel(sim)
+        const events: string[] = []
+        const times: number[] = []
+        for (let s = 0; s < 30 * 8; s++) {
+          for (let j = 0; j < hz / 30; j++) sim.step(1 / hz)
+          times.push(sim.time)
+          if (s % 30 === 7) for (let b = 0; b < 6; b++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.08 * b, angle: 0.05 * b - 0.2 })
+          for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+        }
+        return { events, times }
+      }
+      const a = run(30)
+      const b = run(240)
+      expect(b.times, mode).toEqual(a.times)
+      expect(b.events.length, mode).toBeGreaterThan(40)
+      expect(b.events, mode).toEqual(a.events)
+    }
+  })
+
   it('10,000 balls from one point in one frame: every step does bounded work and returns; the panel stays free of overlaps', () => {
     const { sim, balls } = burst(10_000)
     expect(sim.world.held.count).toBe(9_999)

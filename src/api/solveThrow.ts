@@ -42,9 +42,9 @@ export interface ThrowRequest {
   /** default 'capture' */
   outcome?: ThrowOutcome | undefined
   /**
-   * the game's step, s, in (0, MAX_STEP]: the answer is checked in a copy of the world stepped at it. Balls
-   * held at the launcher (contacts on) go one a step, so an answer among held balls holds at that step
-   * only; all else is the same at every step. Default: 1/60 s when a ball is held, else MAX_STEP
+   * s, in (0, MAX_STEP]: the step the answer is checked at, in a copy of the world. The outcome is the same
+   * at every step (balls held at the launcher leave at launch instants of the world's clock, not at step
+   * starts), so this changes only the check's cost. Default: MAX_STEP
    */
   step?: number | undefined
 }
@@ -97,12 +97,12 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const outcome = s.outcome === undefined ? 'capture' : (s.outcome as ThrowOutcome)
   if (!OUTCOMES.includes(outcome)) throw new RangeError(`request.outcome must be one of ${OUTCOMES.join(', ')}, got ${describe(s.outcome)}`)
   const maxStep = world.config.MAX_STEP
-  const step = s.step === undefined ? (world.held.count > 0 ? Math.min(1 / 60, maxStep) : maxStep) : positive('request.step', s.step, maxStep)
+  const step = s.step === undefined ? maxStep : positive('request.step', s.step, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
   if (world.events.draining) throw new Error('solveThrow: called from a drainEventsWith callback (it copies the world by snapshot); call it after the drain returns')
 
   // the grid's throws at MAX_STEP (a grid of them among a thousand balls costs seconds at 1/60 s); the
-  // answer is checked at the game's step
+  // answer is checked at request.step
   const trial = new Trial(world, hole)
   const cfg = world.config
   const H = world.Hole

@@ -90,7 +90,7 @@ export class ExactCheck {
   constructor(
     private readonly world: BallWorld,
     private readonly hole: number,
-    /** the step the copy is stepped at (the game's: balls held at the launcher go one a step) */
+    /** the step the copy is stepped at (the outcome is the same at every step; the cost is not) */
     private readonly dt: number,
   ) {
     this.bytes = snapshotWorld(world)

@@ -45,7 +45,7 @@ export const GRID_MIN_HOLES = 32
 /** Largest number of cells the hole grid may have; a sparser grid is made coarser to stay under it. */
 export const MAX_GRID_CELLS = 1 << 22
 
-/** Full spot checks the launcher makes per step for held balls (each a lookup in the moving and resting grids). */
+/** Full spot checks the launcher makes per launch instant for held balls (each a lookup in the moving and resting grids). */
 export const MAX_SPOT_CHECKS = 64
 
 /**

@@ -95,6 +95,11 @@ export interface BallWorldData {
   ballStores: object[]
   /** balls held at their spawn spot until it is clear (ball-ball contacts on), in the order they came */
   held: IdList
+  /**
+   * true during a window that starts on a launch instant (k·CONTACT_TICK of the world's clock) while balls
+   * are held: the launcher acts only then (set by the step, src/schedule.ts)
+   */
+  launchDue: boolean
   /** balls the launcher has knocked off its spots since the world was made (systems/launcher.ts) */
   kicks: number
   /** the inputs recorded for a replay while the world records (src/commands/replay.ts), else null */
@@ -157,6 +162,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     stepping: false,
     ballStores: [],
     held: createIdList(16),
+    launchDue: false,
     kicks: 0,
     recorder: null,
   }

@@ -203,7 +203,7 @@ describe('ball-ball contacts (opt-in)', () => {
       const sim = createBallPhysics({ ...ON, BALL_RESTITUTION: 0.8 })
       sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.6 })
       for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) sim.addHole({ x: 90 + 120 * i, y: 100 + 120 * j })
-      // put down apart (a ball put down on another is held until its spot is clear, at a step's start)
+      // put down apart (a ball put down on another is held until its spot is clear, at a launch instant)
       const placed: [number, number][] = []
       while (placed.length < 40) {
         const a = r() * 2 * Math.PI
