@@ -529,6 +529,37 @@ describe('a launcher firing many balls from one point', () => {
     })
   }
 
+  it('a snapshot taken while balls are held, on a launch instant or between two, restores into a world that releases them at the same instants (both methods)', () => {
+    for (const mode of ['on', 'fixed'] as const) {
+      const make = () => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+        addPanel(sim)
+        for (let i = 0; i < 20; i++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.4 + 0.02 * i, angle: -0.2 + 0.02 * i })
+        return sim
+      }
+      const trace = (sim: ReturnType<typeof createBallPhysics>, steps: number, dt: number) => {
+        const out: string[] = []
+        for (let i = 0; i < steps; i++) {
+          sim.step(dt)
+          for (const e of sim.drainEvents()) out.push(`${e.type} ${e.ball} ${e.time}`)
+        }
+        return out
+      }
+      // 1/240 s steps: the cut falls on an instant (after 10 steps) or half-way between two (after 11)
+      for (const cut of [10, 11]) {
+        const whole = make()
+        const before = trace(whole, cut, 1 / 240)
+        const after = trace(whole, 240, 1 / 240)
+        const first = make()
+        expect(trace(first, cut, 1 / 240)).toEqual(before)
+        expect(first.world.held.count).toBeGreaterThan(5)
+        const copy = createBallPhysics(first.config)
+        copy.restore(first.snapshot())
+        expect(trace(copy, 240, 1 / 240), `${mode}, cut after ${cut} steps`).toEqual(after)
+      }
+    }
+  })
+
   it('a held ball leaves at a launch instant k·CONTACT_TICK, never between (CONTACT_TICK 1/50 s, steps of 1/240 s)', () => {
     const sim = createBallPhysics({ BALL_COLLISIONS: 'on', CONTACT_TICK: 1 / 50 })
     const first = sim.addBall({ x: 100, y: 100, vx: 0, vy: -300 })
