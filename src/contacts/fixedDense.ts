@@ -13,7 +13,7 @@ import { TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
 import { markWall, readWalls } from './fixedGrid.js'
-import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
+import { seedAround, seedOverlapping, seedTouched, sortIdRange } from './fixedSeed.js'
 
 /**
  * Gathers the candidates of a dense tick: the moving balls in id order, then the resting balls within reach of
@@ -113,20 +113,7 @@ function gatherRestingDense(w: BallWorld, F: FixedContactState): void {
   seedOverlapping(w, F, moving)
   // ids in ascending order, whatever order the grid gave them in (the same candidates in the same order
   // at every frame rate)
-  const ids = F.id
-  if (F.n - moving > 64) {
-    ids.subarray(moving, F.n).sort()
-    return
-  }
-  for (let i = moving + 1; i < F.n; i++) {
-    const v = ids[i]!
-    let j = i - 1
-    while (j >= moving && ids[j]! > v) {
-      ids[j + 1] = ids[j]!
-      j--
-    }
-    ids[j + 1] = v
-  }
+  sortIdRange(F.id, moving, F.n)
 }
 
 function close(F: FixedContactState, i: number, j: number): boolean {

@@ -14,6 +14,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushListed, pushPair, reserveCandidates, reserveSort, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
+import { sortIdRange } from './fixedSeed.js'
 import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
 import { unpackedJoin } from './fixedOrder.js'
@@ -58,17 +59,23 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
       }
       const x = F.x[i]!
       const y = F.y[i]!
-      for (let b = 0; b < C.bigRestCount; b++) if (pairIfPushed(w, F, i, C.bigRest[b]!, st)) paired = true
-      if (C.restCount === 0) continue
-      // centres within the two radii, the other's at most maxRadius, found at its tick position
-      const reach = F.r[i]! + C.maxRadius + shift + TOUCH_GAP
-      const mask = C.restHead.length - 1
-      if (capsuleCellsOver(C, pointQuery(x, y, reach), C.restHead.length)) {
-        for (let c = 0; c <= mask; c++) for (let e = C.restHead[c]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
-      } else {
-        const k = capsuleCells(C, pointQuery(x, y, reach), mask)
-        for (let c = 0; c < k; c++) for (let e = C.restHead[C.cells[c]!]!; e !== 0; e = C.restNext[e]!) if (pairIfPushed(w, F, i, e, st)) paired = true
+      pushedCount = 0
+      for (let b = 0; b < C.bigRestCount; b++) listIfPushed(w, F, i, C.bigRest[b]!, st)
+      if (C.restCount > 0) {
+        // centres within the two radii, the other's at most maxRadius, found at its tick position
+        const reach = F.r[i]! + C.maxRadius + shift + TOUCH_GAP
+        const mask = C.restHead.length - 1
+        if (capsuleCellsOver(C, pointQuery(x, y, reach), C.restHead.length)) {
+          for (let c = 0; c <= mask; c++) for (let e = C.restHead[c]!; e !== 0; e = C.restNext[e]!) listIfPushed(w, F, i, e, st)
+        } else {
+          const k = capsuleCells(C, pointQuery(x, y, reach), mask)
+          for (let c = 0; c < k; c++) for (let e = C.restHead[C.cells[c]!]!; e !== 0; e = C.restNext[e]!) listIfPushed(w, F, i, e, st)
+        }
       }
+      // paired by id, not in the resting grid's order (it depends on where a step split the tick: sortIdRange)
+      sortIdRange(pushed, 0, pushedCount)
+      for (let p = 0; p < pushedCount; p++) pairPushed(w, F, i, pushed[p]!, st)
+      if (pushedCount > 0) paired = true
     }
   }
   if (joinMoving(w, F, shift, st)) paired = true
@@ -188,20 +195,30 @@ function record(F: FixedContactState, found: number, i: number, b: number, dense
   return found + 1
 }
 
+/** The resting balls listIfPushed found for one pushed candidate (scratch, one candidate at a time). */
+let pushed: Uint32Array = new Uint32Array(64)
+let pushedCount = 0
+
 /**
- * Pairs candidate i with resting ball e when they overlap by more than PROJECTION_SLOP (e at its position
- * in the packed candidates, if it is one; else it joins them); once per e for this i (the seen stamp).
+ * Lists resting ball e (in `pushed`) when it overlaps candidate i by more than PROJECTION_SLOP (e at its
+ * position in the packed candidates, if it is one); once per e for this i (the seen stamp).
  */
-function pairIfPushed(w: BallWorld, F: FixedContactState, i: number, e: number, st: number): boolean {
+function listIfPushed(w: BallWorld, F: FixedContactState, i: number, e: number, st: number): void {
   const B = w.Ball
   const C = F.rest
-  if (C.seen[e] === C.seenStamp || e === F.id[i] || B.live[e] !== 1 || B.mode[e] !== BallMode.Resting) return false
+  if (C.seen[e] === C.seenStamp || e === F.id[i] || B.live[e] !== 1 || B.mode[e] !== BallMode.Resting) return
   C.seen[e] = C.seenStamp
-  let j = F.packMark[e] === st ? F.packAt[e]! : -1
+  const j = F.packMark[e] === st ? F.packAt[e]! : -1
   const dx = (j >= 0 ? F.x[j]! : B.x[e]!) - F.x[i]!
   const dy = (j >= 0 ? F.y[j]! : B.y[e]!) - F.y[i]!
   const s = F.r[i]! + B.radius[e]! - PROJECTION_SLOP
-  if (!(s > 0) || dx * dx + dy * dy >= s * s) return false
+  if (!(s > 0) || dx * dx + dy * dy >= s * s) return
+  pushed = pushListed(pushed, pushedCount++, e)
+}
+
+/** Pairs candidate i with resting ball e, listed by listIfPushed (if e is not a candidate, it joins them). */
+function pairPushed(w: BallWorld, F: FixedContactState, i: number, e: number, st: number): void {
+  let j = F.packMark[e] === st ? F.packAt[e]! : -1
   if (j < 0) {
     j = F.n
     pushCandidate(F, e)
@@ -211,5 +228,4 @@ function pairIfPushed(w: BallWorld, F: FixedContactState, i: number, e: number, 
     F.packAt[e] = j
   }
   pushPair(F, i < j ? i : j, i < j ? j : i)
-  return true
 }

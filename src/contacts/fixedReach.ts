@@ -13,7 +13,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
 import { listNearWall, markWall, walls } from './fixedGrid.js'
-import { seed, seedAlong, seedResting } from './fixedSeed.js'
+import { seed, seedAlong, seedResting, sortIdRange } from './fixedSeed.js'
 import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
@@ -361,9 +361,14 @@ function consider(F: FixedContactState, g: number, j: number): void {
   pushPair(F, g < j ? g : j, g < j ? j : g)
 }
 
-/** Gives the resting balls that joined (ids from index `from`) their candidate data and pairs them with the widened candidates. */
+/**
+ * Gives the resting balls that joined (ids from index `from`) their candidate data and pairs them with the
+ * widened candidates: in id order, not the resting grid's (whose chains' order depends on where a step split
+ * the tick: sortIdRange).
+ */
 function addResting(w: BallWorld, F: FixedContactState, from: number): void {
   if (F.n === from) return
+  sortIdRange(F.id, from, F.n)
   reserveCandidates(F, F.n)
   for (let k = from; k < F.n; k++) {
     setRestingCandidate(w, F, k)
