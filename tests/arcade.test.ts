@@ -579,8 +579,8 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.time).toBe(5 * (1 / 50))
   })
 
-  it("the exact method's clock keeps to k·CONTACT_TICK: the same simulated time is the same double at 30 and 240 Hz, so throws given every second act at the same instants (contacts on and off)", () => {
-    for (const mode of ['off', 'on'] as const) {
+  it("the clock keeps to k·CONTACT_TICK: the same simulated time is the same double at 30 and 240 Hz, so throws given every second act at the same instants (contacts off, on and fixed)", () => {
+    for (const mode of ['off', 'on', 'fixed'] as const) {
       const run = (hz: number) => {
         const sim = createBallPhysics({ BALL_COLLISIONS: mode })
         addPanel(sim)

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest'
 import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
 import { contactOut, resolveContact } from '../../src/contacts/law'
 import { PathEvent } from '../../components/Path'
-import { EXACT, rng, shoot } from '../helpers'
+import { EXACT, rng, shoot, timeBudget } from '../helpers'
 
 const ON: ConfigOverrides = { BALL_COLLISIONS: 'on' }
 
@@ -370,7 +370,7 @@ describe('contact law: momentum and energy', () => {
     expect(worstP).toBeLessThan(1e-9)
     expect(worstE).toBeLessThanOrEqual(1e-12)
     expect(smallestGap(sim)).toBeGreaterThan(-1e-6)
-  }, 120_000)
+  }, timeBudget(60_000)) // 115 s in a full run on a machine whose reference workload runs 3.5× slower than the development machine
 })
 
 describe('a graze: two balls alone touching slower than BALL_SETTLE_SPEED while sliding past each other', () => {
