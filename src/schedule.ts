@@ -123,9 +123,10 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     // before or after the tick integrated every ball again
     const onTick = nearTick(tick, end, dt)
     const stop = onTick || tick < end ? tick : end
-    // the launch instants are ticks of every spacing (k·CONTACT_TICK = (k·2^h)·(CONTACT_TICK / 2^h), the
-    // same double): the window needs no split for them
-    launchInstant(world)
+    // held balls leave at the ticks, the halved ones too (ticks of the world's clock, decided from its state,
+    // so the same at every frame rate; k·CONTACT_TICK = (k·2^h)·(CONTACT_TICK / 2^h), the same double, is
+    // among them): a window that starts on one
+    world.launchDue = world.held.count > 0 && world.time === (F.nextTick - 1) * F.tick
     runWindow(world, schedule, stop)
     F.due = false
     // the window reached the next tick: `tick`, or, when a solve at its start (one a command asked for)
@@ -161,8 +162,9 @@ function clockEnd(world: BallWorld, end: number, dt: number): number {
 }
 
 /**
- * Held balls leave at launch instants, k·CONTACT_TICK of the world's clock, in either contact method: the
- * same instants at every frame rate, where a step's start would make the release time depend on it. Sets
+ * Held balls leave at launch instants, k·CONTACT_TICK of the world's clock, with exact contacts (the fixed
+ * tick's are its ticks: runPasses): the same instants at every frame rate, where a step's start would make
+ * the release time depend on it. Sets
  * world.launchDue (the window that starts now starts on one, and a ball is held) and returns the first
  * instant after the world's time (Infinity when no ball is held, or when the clock is too coarse for the
  * tick: then the launcher acts at every window's start, as it did at every step's).

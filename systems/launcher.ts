@@ -1,6 +1,6 @@
 // Launcher (not a design stage; ball-ball contacts on only). A ball put down where another ball is waits
-// there, held (mode 'held'), with the velocity it was given; at each launch instant, k·CONTACT_TICK of the
-// world's clock, the held balls whose spots are clear are launched, in the order they came, from their spots
+// there, held (mode 'held'), with the velocity it was given; at each launch instant (k·CONTACT_TICK of the
+// world's clock with exact contacts, every tick with the fixed tick, halved ones too), the held balls whose spots are clear are launched, in the order they came, from their spots
 // with those velocities (the step ends a window on each instant while a ball is held, and sets
 // world.launchDue for the window that starts there: src/schedule.ts). An arcade launcher firing many balls
 // from one point so lets them out one after another, each as the one before it clears the spot, instead of

@@ -96,8 +96,9 @@ export interface BallWorldData {
   /** balls held at their spawn spot until it is clear (ball-ball contacts on), in the order they came */
   held: IdList
   /**
-   * true during a window that starts on a launch instant (k·CONTACT_TICK of the world's clock) while balls
-   * are held: the launcher acts only then (set by the step, src/schedule.ts)
+   * true during a window that starts on a launch instant (k·CONTACT_TICK of the world's clock; with the
+   * fixed tick, any of its ticks) while balls are held: the launcher acts only then (set by the step,
+   * src/schedule.ts)
    */
   launchDue: boolean
   /** balls the launcher has knocked off its spots since the world was made (systems/launcher.ts) */
