@@ -3,6 +3,7 @@ import { BallMode } from '../../components/Ball.js'
 import { APPROACH_EPSILON, MAX_CAPSULE_CELLS, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { appendId } from '../world/contactState.js'
+import { sortIdRange } from '../world/idLists.js'
 import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
 import { capsuleCellsOver, capsuleCells, pointQuery, staleEntry } from './sweepGrid.js'
 
@@ -69,17 +70,8 @@ export function collectCluster(w: BallWorld, a: number, b: number, t: number): v
       }
     }
     for (let i = 0; i < C.bigRestCount; i++) n = consider(w, n, C.bigRest[i]!, m, t, stamp)
-    // this member's new neighbours in id order (an insertion sort: a ball touches a few others)
-    const list = C.cluster
-    for (let i = first + 1; i < n; i++) {
-      const v = list[i]!
-      let j = i - 1
-      while (j >= first && list[j]! > v) {
-        list[j + 1] = list[j]!
-        j--
-      }
-      list[j + 1] = v
-    }
+    // this member's new neighbours in id order
+    sortIdRange(C.cluster, first, n)
   }
   C.clusterCount = n < MAX_CLUSTER ? n : MAX_CLUSTER
 }

@@ -13,7 +13,8 @@ import { TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, pushPair, reserveCandidates, type FixedContactState } from '../world/fixedState.js'
 import { markWall, readWalls } from './fixedGrid.js'
-import { seedAround, seedOverlapping, seedTouched, sortIdRange } from './fixedSeed.js'
+import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
+import { sortIdRange } from '../world/idLists.js'
 
 /**
  * Gathers the candidates of a dense tick: the moving balls in id order, then the resting balls within reach of

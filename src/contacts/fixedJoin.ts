@@ -14,7 +14,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushListed, pushPair, reserveCandidates, reserveSort, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
-import { sortIdRange } from './fixedSeed.js'
+import { sortIdRange } from '../world/idLists.js'
 import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
 import { unpackedJoin } from './fixedOrder.js'
@@ -72,7 +72,8 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
           for (let c = 0; c < k; c++) for (let e = C.restHead[C.cells[c]!]!; e !== 0; e = C.restNext[e]!) listIfPushed(w, F, i, e, st)
         }
       }
-      // paired by id, not in the resting grid's order (it depends on where a step split the tick: sortIdRange)
+      // paired by id, not in the resting grid's order (it depends on where a step split the tick: a 240 Hz
+      // step splits it at its half, and two balls that stop in one tick enter the grid in another order)
       sortIdRange(pushed, 0, pushedCount)
       for (let p = 0; p < pushedCount; p++) pairPushed(w, F, i, pushed[p]!, st)
       if (pushedCount > 0) paired = true

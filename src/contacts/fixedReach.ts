@@ -13,7 +13,8 @@ import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
 import { listNearWall, markWall, walls } from './fixedGrid.js'
-import { seed, seedAlong, seedResting, sortIdRange } from './fixedSeed.js'
+import { seed, seedAlong, seedResting } from './fixedSeed.js'
+import { sortIdRange } from '../world/idLists.js'
 import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
@@ -364,7 +365,7 @@ function consider(F: FixedContactState, g: number, j: number): void {
 /**
  * Gives the resting balls that joined (ids from index `from`) their candidate data and pairs them with the
  * widened candidates: in id order, not the resting grid's (whose chains' order depends on where a step split
- * the tick: sortIdRange).
+ * the tick: docs/decisions.md §12).
  */
 function addResting(w: BallWorld, F: FixedContactState, from: number): void {
   if (F.n === from) return

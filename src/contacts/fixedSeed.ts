@@ -50,28 +50,6 @@ export function seedOverlapping(w: BallWorld, F: FixedContactState, from: number
 }
 
 /**
- * Sorts ids[from..to) ascending. The resting grid hands its balls out in the order of its chains, which is
- * the order they came to rest in, reversed; two balls that stop within one tick stop in the integration's
- * order over its window, and a step split at a half-tick (240 Hz) splits that window: sorted by id, the
- * resting balls join the candidates in the same order at every frame rate.
- */
-export function sortIdRange(ids: Uint32Array, from: number, to: number): void {
-  if (to - from > 64) {
-    ids.subarray(from, to).sort()
-    return
-  }
-  for (let i = from + 1; i < to; i++) {
-    const v = ids[i]!
-    let j = i - 1
-    while (j >= from && ids[j]! > v) {
-      ids[j + 1] = ids[j]!
-      j--
-    }
-    ids[j + 1] = v
-  }
-}
-
-/**
  * seedResting's circle (x, y, reach), written by the caller just before the call: V8 boxes each double passed
  * to a function it does not inline, three heap numbers a moving ball a tick in seedAround.
  */

@@ -118,3 +118,24 @@ export function orderMoving(world: BallWorld): void {
 
 /** orderMoving's bitmap: all zero between calls (each call clears the words it set) */
 let bits = new Int32Array(1024)
+
+/**
+ * Sorts ids[from..to) ascending (an insertion sort for a few, the typed array's sort beyond 64). Lists built by
+ * walking a grid or the moving set come in an order that depends on when each ball was put there, which
+ * can differ between frame rates; the code that acts on them in turn sorts them by id first.
+ */
+export function sortIdRange(ids: Uint32Array, from: number, to: number): void {
+  if (to - from > 64) {
+    ids.subarray(from, to).sort()
+    return
+  }
+  for (let i = from + 1; i < to; i++) {
+    const v = ids[i]!
+    let j = i - 1
+    while (j >= from && ids[j]! > v) {
+      ids[j + 1] = ids[j]!
+      j--
+    }
+    ids[j + 1] = v
+  }
+}
