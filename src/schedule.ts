@@ -164,10 +164,9 @@ function clockEnd(world: BallWorld, end: number, dt: number): number {
 /**
  * Held balls leave at launch instants, k·CONTACT_TICK of the world's clock, with exact contacts (the fixed
  * tick's are its ticks: runPasses): the same instants at every frame rate, where a step's start would make
- * the release time depend on it. Sets
- * world.launchDue (the window that starts now starts on one, and a ball is held) and returns the first
- * instant after the world's time (Infinity when no ball is held, or when the clock is too coarse for the
- * tick: then the launcher acts at every window's start, as it did at every step's).
+ * the release time depend on it. Sets world.launchDue (the window that starts now starts on one, and a ball
+ * is held) and returns the first instant after the world's time (Infinity when no ball is held, or when
+ * the clock is too coarse for the tick: then the launcher acts at every window's start).
  */
 function launchInstant(world: BallWorld): number {
   if (world.held.count === 0) {

@@ -1,14 +1,15 @@
 // Launcher (not a design stage; ball-ball contacts on only). A ball put down where another ball is waits
-// there, held (mode 'held'), with the velocity it was given; at each launch instant (k·CONTACT_TICK of the
-// world's clock with exact contacts, every tick with the fixed tick, halved ones too), the held balls whose spots are clear are launched, in the order they came, from their spots
-// with those velocities (the step ends a window on each instant while a ball is held, and sets
-// world.launchDue for the window that starts there: src/schedule.ts). An arcade launcher firing many balls
-// from one point so lets them out one after another, each as the one before it clears the spot, instead of
-// starting them inside one another. The rule adds no kinetic energy (a held ball keeps its velocity and is
-// launched only where it overlaps nothing), and a released ball starts where it was put, at the instant:
-// release times are the same at every frame rate (before, they were the steps' starts). A spot held only by
-// resting balls is cleared: the launcher knocks them off it (kick, below; the one place it adds energy, as a throw
-// does), so a ball that stops on a launcher's spot does not hold the balls behind it for good.
+// there, held (mode 'held'), with the velocity it was given. At each launch instant (k·CONTACT_TICK of the
+// world's clock with exact contacts; every tick, halved ones too, with the fixed tick) the held balls whose
+// spots are clear are launched, in the order they came, from their spots with those velocities: the step
+// ends a window on each instant while a ball is held and sets world.launchDue for the window that starts
+// there (src/schedule.ts). An arcade launcher firing many balls from one point so lets them out one after
+// another, each as the one before it clears the spot, instead of starting them inside one another. The rule
+// adds no kinetic energy (a held ball keeps its velocity and is launched only where it overlaps nothing),
+// and a released ball starts where it was put, at the instant: release times are the same at every frame
+// rate (before, they were the steps' starts). A spot held only by resting balls is cleared: the launcher
+// knocks them off it (kick, below; the one place it adds energy, as a throw does), so a ball that stops on
+// a launcher's spot does not hold the balls behind it for good.
 // Bounded work: at most MAX_SPOT_CHECKS full checks per launch instant (each against the moving and resting
 // balls near the spot, through grids); a held ball overlapping the held ball just before it in the queue
 // waits without one. The rest wait for later instants.
