@@ -15,7 +15,7 @@ import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
 import { orderMoving } from './world/idLists.js'
-import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN } from './config/tolerances.js'
+import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN, TICK_SNAP } from './config/tolerances.js'
 import { nearTick } from './contacts/fixedHalve.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
@@ -106,7 +106,8 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       if (world.time >= end) return
     }
   }
-  const end = world.time + dt
+  // a step's end off the ticks is on its rate's grid (rateEnd), as with the exact method
+  const end = world.config.METHOD === 'exact' ? rateEnd(world.time + dt, dt) : world.time + dt
   // fixed-tick contacts: the step is split at the contact ticks k·tick, tick = CONTACT_TICK / 2^halvings
   // (the same instants at every frame rate), and the contacts are solved at each (by the schedule's
   // fixedContacts system); a solve asked for between steps (a ball put down or given a new velocity) runs in
@@ -151,13 +152,30 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
  * The step's end on the exact method's clock: an end that is k·CONTACT_TICK but for rounding is that
  * instant (a clock summed from 1/30 s steps and one summed from 1/240 s steps part by a few ulps within a
  * second; on the grid, the same simulated time is the same double at 30, 60, 120 and 240 Hz, so commands
- * given there act at the same instant, and held balls leave at the same launch instants). The fixed tick
- * does the same at its ticks (runPasses); the tick-sampled methods keep the summed clock.
+ * given there act at the same instant, and held balls leave at the same launch instants); any other end on
+ * its rate's grid (rateEnd). The fixed tick does the same at its ticks (runPasses); the tick-sampled methods
+ * keep the summed clock.
  */
 function clockEnd(world: BallWorld, end: number, dt: number): number {
   if (world.config.METHOD !== 'exact') return end
   const L = world.config.CONTACT_TICK
   const at = Math.round(end / L) * L
+  return nearTick(at, end, dt) ? at : rateEnd(end, dt)
+}
+
+/**
+ * A step of 1/n s, n a whole number (1/50, 1/100, 1/144 s), whose end is m/n s but for rounding ends on
+ * the double nearest m/n (m / n: a division of two whole numbers, rounded once). That double depends on
+ * the rational time alone, so two rates read the same clock at every boundary they share, those off
+ * CONTACT_TICK's grid too (50 and 100 Hz share every 1/50 s; on the 1/120 s grid, one in five). A step
+ * that is not 1/n s, or a clock off its grid (after steps of other lengths), keeps the summed end.
+ */
+function rateEnd(end: number, dt: number): number {
+  const n = Math.round(1 / dt)
+  if (!(n >= 1) || Math.abs(dt * n - 1) > TICK_SNAP) return end
+  const m = Math.round(end * n)
+  if (!(m <= Number.MAX_SAFE_INTEGER)) return end
+  const at = m / n
   return nearTick(at, end, dt) ? at : end
 }
 

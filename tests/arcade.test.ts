@@ -446,9 +446,11 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
   }, 120_000)
 
   // Launchers: one to three spots, each fed bursts of balls (radii 6–16, masses alike or 1e-3 to 1e3) at
-  // times the two rates share (multiples of 1/30 s), contacts exact or fixed, walls, the panel's holes:
-  // held balls leave at launch instants, so every event and final state is the same bits at 30 and 240 Hz.
-  it('bursts from one to three launcher spots at shared frame boundaries, either contact method: 30 Hz and 240 Hz give the same bits', () => {
+  // times the two rates share (multiples of 1/30 s, or of 1/50 or 1/48 s, most of them off the 1/120 s grid),
+  // contacts exact or fixed, walls, the panel's holes: held balls leave at launch instants and the clocks
+  // read the same double at every shared frame, so every event and final state is the same bits at 30 and
+  // 240 Hz, 50 and 100 Hz, 48 and 144 Hz.
+  it('bursts from one to three launcher spots at shared frame boundaries, either contact method: 30 and 240 Hz, 50 and 100, 48 and 144 give the same bits', () => {
     let held = 0
     const scene = fc.record({
       seed: fc.integer({ min: 1, max: 2 ** 31 - 2 }),
@@ -458,9 +460,11 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
       masses: fc.boolean(),
       e: fc.double({ min: 0, max: 1, noNaN: true }),
       open: fc.boolean(),
+      rates: fc.constantFrom([30, 240], [50, 100], [48, 144]),
     })
     fc.assert(
       fc.property(scene, (sc) => {
+        const base = sc.rates[0]!
         const run = (hz: number) => {
           const sim = createBallPhysics({ BALL_COLLISIONS: sc.fixed ? 'fixed' : 'on', BALL_RESTITUTION: sc.e, MAX_EVENT_PASSES: 1e6 })
           addPanel(sim)
@@ -478,17 +482,17 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
               }
             }
             peak = Math.max(peak, sim.world.held.count)
-            for (let k = 0; k < hz / 30; k++) sim.step(1 / hz)
+            for (let k = 0; k < hz / base; k++) sim.step(1 / hz)
             for (const e of sim.drainEvents()) out.push(`${e.type} ${e.ball} ${e.time}`)
           }
           return { out, peak, time: sim.time, states: JSON.stringify(sim.balls().map((b) => sim.ballState(b))) }
         }
-        const slow = run(30)
-        const fast = run(240)
+        const slow = run(base)
+        const fast = run(sc.rates[1]!)
         if (slow.peak > 0) held++
         expect(fast.time).toBe(slow.time)
         const i = slow.out.findIndex((line, k) => line !== fast.out[k])
-        if (i >= 0 || slow.out.length !== fast.out.length) throw new Error(`event ${i}: 30 Hz ${slow.out[i]} | 240 Hz ${fast.out[i]}`)
+        if (i >= 0 || slow.out.length !== fast.out.length) throw new Error(`event ${i}: ${base} Hz ${slow.out[i]} | ${sc.rates[1]} Hz ${fast.out[i]}`)
         expect(fast.states).toBe(slow.states)
       }),
       { seed: 20261128, numRuns: Number(process.env.FRAME_RATE_RUNS ?? 300) / 3 },
@@ -631,26 +635,35 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.time).toBe(5 * (1 / 50))
   })
 
-  it("the clock keeps to k·CONTACT_TICK: the same simulated time is the same double at 30 and 240 Hz, so throws given every second act at the same instants (contacts off, on and fixed)", () => {
-    for (const mode of ['off', 'on', 'fixed'] as const) {
-      const run = (hz: number) => {
-        const sim = createBallPhysics({ BALL_COLLISIONS: mode })
-        addPanel(sim)
-        const events: string[] = []
-        const times: number[] = []
-        for (let s = 0; s < 30 * 8; s++) {
-          for (let j = 0; j < hz / 30; j++) sim.step(1 / hz)
-          times.push(sim.time)
-          if (s % 30 === 7) for (let b = 0; b < 6; b++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.08 * b, angle: 0.05 * b - 0.2 })
-          for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+  // [shared frame rate, faster rate, seconds]: 30 Hz frames are on CONTACT_TICK's 1/120 s grid; 50 Hz frames
+  // one in five, 48 and 25 Hz ones one in five and one in five (0.1 s, 0.2 s), the rest on their rates' grids
+  const clocks: [number, number, number][] = [[30, 240, 8], [50, 100, 4], [48, 144, 4], [25, 200, 4]]
+  it("the clock keeps to k·CONTACT_TICK and to each rate's grid: the same simulated time is the same double at 30 and 240 Hz, 50 and 100, 48 and 144, 25 and 200, so throws given at their shared frames act at the same instants (contacts off, on and fixed)", () => {
+    for (const [base, fast, seconds] of clocks) {
+      for (const mode of ['off', 'on', 'fixed'] as const) {
+        const run = (hz: number) => {
+          const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+          addPanel(sim)
+          const events: string[] = []
+          const times: number[] = []
+          for (let s = 0; s < base * seconds; s++) {
+            for (let j = 0; j < hz / base; j++) sim.step(1 / hz)
+            times.push(sim.time)
+            // throws at frames off the 1/120 s grid (frame 7 of each second at 50 Hz is 0.14 s)
+            if (s % base === 7) for (let b = 0; b < 6; b++) sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.3 + 0.08 * b, angle: 0.05 * b - 0.2 })
+            for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+          }
+          return { events, times }
         }
-        return { events, times }
+        const a = run(base)
+        const b = run(fast)
+        const label = `${mode}, ${base} and ${fast} Hz`
+        expect(b.times, label).toEqual(a.times)
+        // each frame's time is the double nearest its rational time (k·CONTACT_TICK where it is on that grid)
+        a.times.forEach((t, s) => expect(t === (s + 1) / base || t === Math.round(((s + 1) / base) * 120) * (1 / 120), `${label}, frame ${s + 1}`).toBe(true))
+        expect(b.events.length, label).toBeGreaterThan(5 * seconds)
+        expect(b.events, label).toEqual(a.events)
       }
-      const a = run(30)
-      const b = run(240)
-      expect(b.times, mode).toEqual(a.times)
-      expect(b.events.length, mode).toBeGreaterThan(40)
-      expect(b.events, mode).toEqual(a.events)
     }
   })
 
