@@ -5,7 +5,7 @@
 //     kept (resolveContact in src/contacts/law.ts); elastic when either ball touched another within
 //     CONTACT_DURATION (a push runs along a row of touching balls as in Newton's cradle)
 //   settling contact (approach slower than BALL_SETTLE_SPEED, or the same two balls touching again with
-//     nothing between, or a ball past MAX_STEP_CONTACTS contacts in this step: a light ball squeezed
+//     nothing between, or a ball past MAX_TICK_CONTACTS contacts in this contact tick: a light ball squeezed
 //     between heavy ones): the touching cluster around them leaves with its centre-of-mass velocity, less any
 //     motion into a closed wall a member touches; then nothing in it can touch again (inelastic collapse ends).
 //     Two balls alone that approach that slowly while sliding past each other at GRAZE_SLIDE times
@@ -18,7 +18,7 @@
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { CONTACT_DURATION, GRAZE_SLIDE, MAX_STEP_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
+import { CONTACT_DURATION, GRAZE_SLIDE, MAX_TICK_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
 import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
 import { appendCollision } from '../src/events.js'
@@ -66,19 +66,21 @@ export function collisionsSystem(w: BallWorld): void {
     // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
     const slow = approach < w.config.BALL_SETTLE_SPEED
     const repeat = isRepeatContact(w, a, b)
-    const settle = slow || repeat || countContact(C, a) > MAX_STEP_CONTACTS || countContact(C, b) > MAX_STEP_CONTACTS
+    // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate)
+    const tick = Math.floor(t / w.config.CONTACT_TICK) + 1
+    const settle = slow || repeat || countContact(C, a, tick) > MAX_TICK_CONTACTS || countContact(C, b, tick) > MAX_TICK_CONTACTS
     C.contacts++
     let graze = false
     if (settle) {
       collectCluster(w, a, b, t)
       // two balls alone that barely approach but slide past each other fast (a graze; restitution above 0)
       // take the normal impulse and keep their motion along the tangent; merged, both stopped dead (a graze
-      // at 300 px/s each way left two balls at rest). Only a first touch, counted with the step's contacts
+      // at 300 px/s each way left two balls at rest). Only a first touch, counted with the tick's contacts
       // (the count was skipped for a slow one): pressed together, the two touch again and settle then (a
       // graze each time, they once made a thousand contacts a second and a step that hung on the pass cap)
       graze =
         slow && !repeat && w.config.BALL_RESTITUTION > 0 && C.clusterCount === 2 && slides(B, a, b, nx, ny) >= GRAZE_SLIDE * w.config.BALL_SETTLE_SPEED &&
-        countContact(C, a) <= MAX_STEP_CONTACTS && countContact(C, b) <= MAX_STEP_CONTACTS
+        countContact(C, a, tick) <= MAX_TICK_CONTACTS && countContact(C, b, tick) <= MAX_TICK_CONTACTS
       if (!graze) {
         settleCluster(w, a, b, t)
         const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
@@ -108,13 +110,13 @@ export function collisionsSystem(w: BallWorld): void {
   }
 }
 
-/** Counts a contact of ball eid in this step; returns its contacts in the step so far. */
-function countContact(C: CollisionState, eid: number): number {
-  if (C.stepContactsAt[eid] !== C.step) {
-    C.stepContactsAt[eid] = C.step
-    C.stepContacts[eid] = 0
+/** Counts a contact of ball eid in contact tick `tick` (k + 1); returns its contacts in that tick so far. */
+function countContact(C: CollisionState, eid: number, tick: number): number {
+  if (C.tickContactsAt[eid] !== tick) {
+    C.tickContactsAt[eid] = tick
+    C.tickContacts[eid] = 0
   }
-  return ++C.stepContacts[eid]!
+  return ++C.tickContacts[eid]!
 }
 
 /** The speed at which balls a and b slide past each other: their relative velocity across the normal (nx, ny). */

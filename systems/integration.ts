@@ -121,10 +121,6 @@ function orderedIntegration(w: BallWorld): void {
   const P = w.Path
   if (w.pass === 0) {
     w.marked.count = 0
-    if (++C.step === 0xffffffff) {
-      C.stepContactsAt.fill(0)
-      C.step = 1
-    }
     if (tEnd > C.until) {
       // a window whose balls were predicted again more than CHURN times each on average (a pile, whose
       // paths change many times a step) gains nothing from its length and pays for longer capsules: the

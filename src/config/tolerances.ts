@@ -138,12 +138,15 @@ export const RESTITUTION_VISITS = 4
 export const SQUEEZE_MASS_RATIO = 3
 
 /**
- * Exact contacts: contacts one ball may take in one step before its later contacts in that step settle
- * (perfectly inelastic, the touching cluster leaves together). A light ball squeezed between heavy balls,
- * or between a heavy ball and a wall, would take about π·√(M/m) contacts (1e9 for a mass ratio of 1e18)
- * and stop the world at the pass cap; a Newton's cradle or a burst takes a few a step.
+ * Exact contacts: contacts one ball may take within one contact tick of the world's clock, [k·CONTACT_TICK,
+ * (k + 1)·CONTACT_TICK), before its later contacts in that tick settle (perfectly inelastic, the touching
+ * cluster leaves together). A light ball squeezed between heavy balls, or between a heavy ball and a wall,
+ * would take about π·√(M/m) contacts (1e9 for a mass ratio of 1e18) and stop the world at the pass cap; a
+ * Newton's cradle or a burst takes a few a tick. Counted on the clock, not per step (it was, and a scene
+ * that reached it differed between frame rates), so a step takes at most this many contacts a ball for each
+ * tick it spans.
  */
-export const MAX_STEP_CONTACTS = 64
+export const MAX_TICK_CONTACTS = 64
 
 /**
  * Contacts off or exact: the moving balls are put back in id order (src/world/idLists.ts, orderMoving) at a step's
@@ -163,7 +166,7 @@ export const MOVING_ORDER_CHURN = 16
  * tangential motion instead of leaving with their centre-of-mass velocity (which stopped two balls grazing
  * at 300 px/s each way dead). Lower, it reached into settling piles: a packed 15 × 15 pile with e = 0.3
  * took 9,942 contacts to settle at 16 (1,785 without the rule, 1,822 at 64). Not with restitution 0, where
- * the two would stay touching and creep; only at a pair's first touch, and counted toward MAX_STEP_CONTACTS
+ * the two would stay touching and creep; only at a pair's first touch, and counted toward MAX_TICK_CONTACTS
  * (pressed together again, they settle).
  */
 export const GRAZE_SLIDE = 64

@@ -64,8 +64,6 @@ export interface CollisionState {
   dirty: Uint32Array
   dirtyCount: number
   isDirty: Uint8Array
-  /** stamp of the current step (for stepContacts) */
-  step: number
   /** resting balls per radius class (restingGrid.ts), each ball's class, and the highest class in use */
   restClassCount: Uint32Array
   restClass: Uint8Array
@@ -129,9 +127,12 @@ export interface CollisionState {
   spotTime: number
   spotMaxR: number
   spotBuilt: boolean
-  /** contacts each ball took in this step (valid where stepContactsAt[ball] === step) */
-  stepContacts: Uint32Array
-  stepContactsAt: Uint32Array
+  /**
+   * contacts each ball took within one contact tick of the world's clock, [k·CONTACT_TICK, (k + 1)·CONTACT_TICK)
+   * (valid where tickContactsAt[ball] === k + 1; 0: none yet)
+   */
+  tickContacts: Uint32Array
+  tickContactsAt: Float64Array
   /** time of the last event handled, s */
   now: number
   /** contacts resolved since the world was made */
@@ -171,7 +172,6 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     dirty: new Uint32Array(16),
     dirtyCount: 0,
     isDirty: new Uint8Array(capacity),
-    step: 0,
     restClassCount: new Uint32Array(RADIUS_CLASSES),
     restClass: new Uint8Array(capacity),
     restTopClass: -1,
@@ -204,8 +204,8 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     eFree: new Uint32Array(1 << 10),
     eFreeCount: 0,
     eCount: 0,
-    stepContacts: new Uint32Array(capacity),
-    stepContactsAt: new Uint32Array(capacity),
+    tickContacts: new Uint32Array(capacity),
+    tickContactsAt: new Float64Array(capacity),
     spotHead: new Uint32Array(1 << 8),
     spotNext: new Uint32Array(capacity),
     spotIn: new Uint32Array(capacity),
@@ -254,8 +254,8 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.entStart = grown(C.entStart, capacity)
   C.entLen = grown(C.entLen, capacity)
   C.entStep = grown(C.entStep, capacity)
-  C.stepContacts = grown(C.stepContacts, capacity)
-  C.stepContactsAt = grown(C.stepContactsAt, capacity)
+  C.tickContacts = grown(C.tickContacts, capacity)
+  C.tickContactsAt = grown(C.tickContactsAt, capacity)
 }
 
 /** Marks a ball's motion as changed: its heap entries become stale. */
