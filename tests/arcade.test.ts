@@ -382,6 +382,33 @@ describe('lip crossings taken several to a pass never pass a contact', () => {
   })
 })
 
+/**
+ * One command drawn from rnd, as a game gives them between frames: walls moved or opened, a hole added (above
+ * the panel's rows, unless it would overlap one added before) or removed, a ball removed or put down, a ball
+ * given a new velocity.
+ */
+function randomCommand(sim: ReturnType<typeof createBallPhysics>, rnd: () => number): void {
+  const c = Math.floor(rnd() * 6)
+  const balls = sim.balls()
+  const holes = sim.holes()
+  if (c === 0) sim.setWalls({ minX: 0, minY: 0, maxX: 420 - 60 * rnd(), maxY: 480, restitution: rnd(), open: { bottom: rnd() < 0.5 } })
+  else if (c === 1) {
+    // refused (and nothing changed) where its lip circle would overlap another hole's
+    try {
+      sim.addHole({ x: 40 + 340 * rnd(), y: 40 + 60 * rnd() })
+    } catch (e) {
+      if (!(e instanceof RangeError)) throw e
+    }
+  } else if (c === 2 && balls.length > 0) sim.removeBall(balls[Math.floor(rnd() * balls.length)]!)
+  else if (c === 3 && holes.length > 0) sim.removeHole(holes[Math.floor(rnd() * holes.length)]!)
+  else if (c === 4) sim.addBall({ x: 40 + 340 * rnd(), y: 40 + 400 * rnd(), vx: 600 * (rnd() - 0.5), vy: 600 * (rnd() - 0.5), radius: 4 + 12 * rnd() })
+  else if (balls.length > 0) {
+    const id = balls[Math.floor(rnd() * balls.length)]!
+    const mode = sim.ballState(id).mode
+    if (mode === 'rolling' || mode === 'resting') sim.setBallVelocity(id, 300 * (rnd() - 0.5), -300 * rnd())
+  }
+}
+
 describe('contacts on: the same events at every frame rate (fast-check)', () => {
   // Two to ten balls on the panel, apart, in a box closed or open at the bottom, restitutions 0–1, the
   // design's deceleration or none, masses alike or 1e-3 to 1e3, the design's rim model or the tabulated
@@ -447,9 +474,9 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
 
   // Launchers: one to three spots, each fed bursts of balls (radii 6–16, masses alike or 1e-3 to 1e3) at
   // times the two rates share (multiples of 1/30 s, or of 1/50 or 1/48 s, most of them off the 1/120 s grid),
-  // contacts exact or fixed, walls, the panel's holes: held balls leave at launch instants and the clocks
-  // read the same double at every shared frame, so every event and final state is the same bits at 30 and
-  // 240 Hz, 50 and 100 Hz, 48 and 144 Hz.
+  // contacts exact or fixed, walls, the panel's holes, in half the scenes a command with each burst
+  // (randomCommand): held balls leave at launch instants and the clocks read the same double at every
+  // shared frame, so every event and final state is the same bits at 30 and 240 Hz, 50 and 100, 48 and 144.
   it('bursts from one to three launcher spots at shared frame boundaries, either contact method: 30 and 240 Hz, 50 and 100, 48 and 144 give the same bits', () => {
     let held = 0
     const scene = fc.record({
@@ -461,6 +488,7 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
       e: fc.double({ min: 0, max: 1, noNaN: true }),
       open: fc.boolean(),
       rates: fc.constantFrom([30, 240], [50, 100], [48, 144]),
+      commands: fc.boolean(),
     })
     fc.assert(
       fc.property(scene, (sc) => {
@@ -480,6 +508,7 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
                 const at = spots[i % spots.length]!
                 sim.throwBall({ ...at, power: 0.2 + 0.8 * rnd(), angle: (rnd() - 0.5) * 1.4, radius: 6 + 10 * rnd(), mass: sc.masses ? 10 ** (6 * rnd() - 3) : undefined })
               }
+              if (sc.commands) randomCommand(sim, rnd)
             }
             peak = Math.max(peak, sim.world.held.count)
             for (let k = 0; k < hz / base; k++) sim.step(1 / hz)
@@ -644,19 +673,7 @@ describe('a launcher firing many balls from one point', () => {
             for (const b of sc.bursts) {
               if (b.frame !== frame) continue
               for (let i = 0; i < b.n; i++) sim.throwBall({ ...spots[i % spots.length]!, power: 0.2 + 0.8 * rnd(), angle: (rnd() - 0.5) * 1.4, radius: 6 + 10 * rnd() })
-              const c = Math.floor(rnd() * 6)
-              const balls = sim.balls()
-              const holes = sim.holes()
-              if (c === 0) sim.setWalls({ minX: 0, minY: 0, maxX: 420 - 60 * rnd(), maxY: 480, restitution: rnd(), open: { bottom: rnd() < 0.5 } })
-              else if (c === 1) sim.addHole({ x: 40 + 340 * rnd(), y: 40 + 60 * rnd() })
-              else if (c === 2 && balls.length > 0) sim.removeBall(balls[Math.floor(rnd() * balls.length)]!)
-              else if (c === 3 && holes.length > 0) sim.removeHole(holes[Math.floor(rnd() * holes.length)]!)
-              else if (c === 4) sim.addBall({ x: 40 + 340 * rnd(), y: 40 + 400 * rnd(), vx: 600 * (rnd() - 0.5), vy: 600 * (rnd() - 0.5), radius: 4 + 12 * rnd() })
-              else if (balls.length > 0) {
-                const id = balls[Math.floor(rnd() * balls.length)]!
-                const mode = sim.ballState(id).mode
-                if (mode === 'rolling' || mode === 'resting') sim.setBallVelocity(id, 300 * (rnd() - 0.5), -300 * rnd())
-              }
+              randomCommand(sim, rnd)
             }
             for (let k = 0; k < per; k++) {
               if (frame * per + k === cut) {
