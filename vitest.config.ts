@@ -13,7 +13,8 @@ const root = import.meta.dirname
  * exports object, which keeps V8 from inlining one module's functions into another's: the reference
  * workload of tests/helpers.ts took 112–122 ms a run that way against 16–17 ms bundled, and a fixed-tick
  * sequence of the adversarial suite 17.1 s against 8.5–9.5 s. The tests' time budgets then measured the
- * test runner, not the code that ships.
+ * test runner, not the code that ships. Compiled once per vitest process: watch mode does not see a change
+ * to the sources (restart it).
  */
 function nativeSources(): Plugin {
   const folders = ['src', 'systems', 'components'].map((f) => join(root, f))
