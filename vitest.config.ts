@@ -1,4 +1,4 @@
-import { existsSync, mkdirSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs'
+import { existsSync, mkdirSync, readdirSync, rmSync, writeFileSync } from 'node:fs'
 import { dirname, join, relative, resolve, sep } from 'node:path'
 import { buildSync } from 'esbuild'
 import { defineConfig, type Plugin } from 'vitest/config'
@@ -22,21 +22,13 @@ function nativeSources(): Plugin {
   // own), removed when it exits; folders left by processes no longer alive are removed at the next build
   const cache = join(root, 'node_modules', '.cache', 'native-sources')
   const out = join(cache, String(process.pid))
-  const sources: string[] = []
-  const walk = (dir: string) => {
-    for (const name of readdirSync(dir)) {
-      const p = join(dir, name)
-      if (statSync(p).isDirectory()) walk(p)
-      else if (name.endsWith('.ts') && !name.endsWith('.d.ts')) sources.push(p)
-    }
-  }
   const inLibrary = (file: string) => folders.some((f) => file.startsWith(f + sep))
   const built = (file: string) => join(out, relative(root, file)).replace(/\.ts$/, '.js')
   let ready = false
   const build = () => {
     if (ready) return
     ready = true
-    for (const f of folders) walk(f)
+    const sources = folders.flatMap((f) => readdirSync(f, { recursive: true, encoding: 'utf8' }).filter((n) => n.endsWith('.ts') && !n.endsWith('.d.ts')).map((n) => join(f, n)))
     mkdirSync(cache, { recursive: true })
     for (const name of readdirSync(cache)) if (!alive(Number(name))) rmSync(join(cache, name), { recursive: true, force: true })
     mkdirSync(out, { recursive: true })

@@ -93,8 +93,8 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
 
 function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   const F = world.fixed
+  const end = clockEnd(world, world.time + dt, dt)
   if (F === null) {
-    const end = clockEnd(world, world.time + dt, dt)
     if (world.collide === null) {
       runWindow(world, schedule, end)
       return
@@ -106,8 +106,6 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       if (world.time >= end) return
     }
   }
-  // a step's end off the ticks is on its rate's grid (rateEnd), as with the exact method
-  const end = world.config.METHOD === 'exact' ? rateEnd(world.time + dt, dt) : world.time + dt
   // fixed-tick contacts: the step is split at the contact ticks k·tick, tick = CONTACT_TICK / 2^halvings
   // (the same instants at every frame rate), and the contacts are solved at each (by the schedule's
   // fixedContacts system); a solve asked for between steps (a ball put down or given a new velocity) runs in
@@ -153,8 +151,9 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
  * instant (a clock summed from 1/30 s steps and one summed from 1/240 s steps part by a few ulps within a
  * second; on the grid, the same simulated time is the same double at 30, 60, 120 and 240 Hz, so commands
  * given there act at the same instant, and held balls leave at the same launch instants); any other end on
- * its rate's grid (rateEnd). The fixed tick does the same at its ticks (runPasses); the tick-sampled methods
- * keep the summed clock.
+ * its rate's grid (rateEnd). Both contact methods' steps end there (k·CONTACT_TICK is a tick of every spacing
+ * of the fixed tick, which also ends a step that falls a few ulps off any of its ticks on the tick); the
+ * tick-sampled methods keep the summed clock.
  */
 function clockEnd(world: BallWorld, end: number, dt: number): number {
   if (world.config.METHOD !== 'exact') return end

@@ -387,6 +387,21 @@ describe('lip crossings taken several to a pass never pass a contact', () => {
  * the panel's rows, unless it would overlap one added before) or removed, a ball removed or put down, a ball
  * given a new velocity.
  */
+/**
+ * Throws the bursts due at `frame`, each ball from the next of `spots` in turn (radii 6–16; masses 1e-3 to 1e3
+ * when `masses`), each burst followed by a randomCommand when `commands`: the launcher scenes of the
+ * properties below.
+ */
+function throwBursts(sim: ReturnType<typeof createBallPhysics>, rnd: () => number, sc: { bursts: { frame: number; n: number }[]; masses: boolean; commands: boolean }, spots: { x: number; y: number }[], frame: number): void {
+  for (const b of sc.bursts) {
+    if (b.frame !== frame) continue
+    for (let i = 0; i < b.n; i++) {
+      sim.throwBall({ ...spots[i % spots.length]!, power: 0.2 + 0.8 * rnd(), angle: (rnd() - 0.5) * 1.4, radius: 6 + 10 * rnd(), mass: sc.masses ? 10 ** (6 * rnd() - 3) : undefined })
+    }
+    if (sc.commands) randomCommand(sim, rnd)
+  }
+}
+
 function randomCommand(sim: ReturnType<typeof createBallPhysics>, rnd: () => number): void {
   const c = Math.floor(rnd() * 6)
   const balls = sim.balls()
@@ -502,14 +517,7 @@ describe('contacts on: the same events at every frame rate (fast-check)', () => 
           const out: string[] = []
           let peak = 0
           for (let frame = 0; frame < 30; frame++) {
-            for (const b of sc.bursts) {
-              if (b.frame !== frame) continue
-              for (let i = 0; i < b.n; i++) {
-                const at = spots[i % spots.length]!
-                sim.throwBall({ ...at, power: 0.2 + 0.8 * rnd(), angle: (rnd() - 0.5) * 1.4, radius: 6 + 10 * rnd(), mass: sc.masses ? 10 ** (6 * rnd() - 3) : undefined })
-              }
-              if (sc.commands) randomCommand(sim, rnd)
-            }
+            throwBursts(sim, rnd, sc, spots, frame)
             peak = Math.max(peak, sim.world.held.count)
             for (let k = 0; k < hz / base; k++) sim.step(1 / hz)
             for (const e of sim.drainEvents()) out.push(`${e.type} ${e.ball} ${e.time}`)
@@ -670,11 +678,7 @@ describe('a launcher firing many balls from one point', () => {
           const out: string[] = []
           const per = sc.hz / 30
           for (let frame = 0; frame < 30; frame++) {
-            for (const b of sc.bursts) {
-              if (b.frame !== frame) continue
-              for (let i = 0; i < b.n; i++) sim.throwBall({ ...spots[i % spots.length]!, power: 0.2 + 0.8 * rnd(), angle: (rnd() - 0.5) * 1.4, radius: 6 + 10 * rnd() })
-              randomCommand(sim, rnd)
-            }
+            throwBursts(sim, rnd, { ...sc, masses: false, commands: true }, spots, frame)
             for (let k = 0; k < per; k++) {
               if (frame * per + k === cut) {
                 const copy = createBallPhysics(sim.config)
@@ -688,7 +692,7 @@ describe('a launcher firing many balls from one point', () => {
           return { out, states: JSON.stringify(sim.balls().map((b) => [b, sim.ballState(b)])) }
         }
         const whole = run(-1)
-        const cut = run(sc.cut % (30 * (sc.hz / 30)))
+        const cut = run(sc.cut % sc.hz)
         const i = whole.out.findIndex((line, k) => line !== cut.out[k])
         if (i >= 0 || whole.out.length !== cut.out.length) throw new Error(`event ${i}: whole ${whole.out[i]} | restored ${cut.out[i]}`)
         expect(cut.states).toBe(whole.states)
@@ -716,8 +720,9 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.time).toBe(5 * (1 / 50))
   })
 
-  // [shared frame rate, faster rate, seconds]: 30 Hz frames are on CONTACT_TICK's 1/120 s grid; 50 Hz frames
-  // one in five, 48 and 25 Hz ones one in five and one in five (0.1 s, 0.2 s), the rest on their rates' grids
+  // [shared frame rate, faster rate, seconds]: every 30 Hz frame is on CONTACT_TICK's 1/120 s grid; of the
+  // 50 Hz frames one in five (every 0.1 s), of the 48 Hz ones one in two, of the 25 Hz ones one in five (every
+  // 0.2 s); the rest only on their rates' grids
   const clocks: [number, number, number][] = [[30, 240, 8], [50, 100, 4], [48, 144, 4], [25, 200, 4]]
   it("the clock keeps to k·CONTACT_TICK and to each rate's grid: the same simulated time is the same double at 30 and 240 Hz, 50 and 100, 48 and 144, 25 and 200, so throws given at their shared frames act at the same instants (contacts off, on and fixed)", () => {
     for (const [base, fast, seconds] of clocks) {
