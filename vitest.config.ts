@@ -1,7 +1,7 @@
 import { existsSync, mkdirSync, readdirSync, rmSync, writeFileSync } from 'node:fs'
 import { dirname, join, relative, resolve, sep } from 'node:path'
 import { buildSync } from 'esbuild'
-import { defineConfig, type Plugin } from 'vitest/config'
+import { configDefaults, defineConfig, type Plugin } from 'vitest/config'
 
 const root = import.meta.dirname
 
@@ -13,8 +13,10 @@ const root = import.meta.dirname
  * exports object, which keeps V8 from inlining one module's functions into another's: the reference
  * workload of tests/helpers.ts took 112–122 ms a run that way against 16–17 ms bundled, and a fixed-tick
  * sequence of the adversarial suite 17.1 s against 8.5–9.5 s. The tests' time budgets then measured the
- * test runner, not the code that ships. Compiled once per vitest process: watch mode does not see a change
- * to the sources (restart it).
+ * test runner, not the code that ships. In watch mode a changed or new source file is compiled again
+ * before the tests re-run (`forceRerunTriggers` below re-runs the files being watched: a native module is
+ * not in vite's module graph, so vite cannot tell which tests import it; each test file runs in a new worker
+ * process, which imports the rebuilt modules afresh).
  */
 function nativeSources(): Plugin {
   const folders = ['src', 'systems', 'components'].map((f) => join(root, f))
@@ -24,6 +26,8 @@ function nativeSources(): Plugin {
   const out = join(cache, String(process.pid))
   const inLibrary = (file: string) => folders.some((f) => file.startsWith(f + sep))
   const built = (file: string) => join(out, relative(root, file)).replace(/\.ts$/, '.js')
+  const compile = (entryPoints: string[]) =>
+    buildSync({ entryPoints, outdir: out, outbase: root, bundle: false, format: 'esm', platform: 'node', target: 'node20', sourcemap: 'inline', logLevel: 'warning' })
   let ready = false
   const build = () => {
     if (ready) return
@@ -35,11 +39,26 @@ function nativeSources(): Plugin {
     process.on('exit', () => rmSync(out, { recursive: true, force: true }))
     // ES modules by this folder's own package.json (node_modules/ holds no other)
     writeFileSync(join(out, 'package.json'), '{ "type": "module" }\n')
-    buildSync({ entryPoints: sources, outdir: out, outbase: root, bundle: false, format: 'esm', platform: 'node', target: 'node20', sourcemap: 'inline', logLevel: 'warning' })
+    compile(sources)
+  }
+  /** watch mode: a source changed or added after the first build is compiled again (a syntax error is
+   * reported by esbuild and leaves the last good build in place) */
+  const rebuild = (file: string) => {
+    if (!ready || !inLibrary(file) || !file.endsWith('.ts') || file.endsWith('.d.ts')) return
+    try {
+      compile([file])
+    } catch {
+      // esbuild has printed the error; the tests re-run against the previous build of the file
+    }
   }
   return {
     name: 'native-sources',
     enforce: 'pre',
+    configureServer(server) {
+      // runs before vitest's own re-run (which waits out a short debounce after the same event)
+      server.watcher.on('change', rebuild)
+      server.watcher.on('add', rebuild)
+    },
     resolveId(source, importer) {
       if (!source.startsWith('.') && !source.startsWith('/')) return null
       const base = source.startsWith('/') ? source : resolve(importer ? dirname(importer) : root, source)
@@ -77,5 +96,7 @@ export default defineConfig({
     include: ['tests/**/*.test.ts'],
     environment: 'node',
     testTimeout: 60_000,
+    // a change to the library re-runs the test files being watched (see nativeSources)
+    forceRerunTriggers: [...configDefaults.forceRerunTriggers, ...['src', 'systems', 'components'].map((f) => `${root.split(sep).join('/')}/${f}/**/*.ts`)],
   },
 })
