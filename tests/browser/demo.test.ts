@@ -450,19 +450,27 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       const start = performance.now()
       let moved = false
       let polls = 0
+      let last = start
+      let longest = 0
       while (d.solving !== null && performance.now() - start < 30_000) {
         await new Promise((r) => requestAnimationFrame(r))
+        const now = performance.now()
+        longest = Math.max(longest, now - last)
+        last = now
         // the world's time, seen while the call is still being solved
         if (d.solving !== null && d.simTime !== s0) moved = true
         polls++
       }
-      return { frames: d.frames - f0, ms: performance.now() - start, simTimeMoved: moved, polls, left: d.solving }
+      return { frames: d.frames - f0, ms: performance.now() - start, longest, simTimeMoved: moved, polls, left: d.solving }
     })
     expect(during.left).toBe(null)
     expect(during.simTimeMoved).toBe(false)
+    // the page drew while the worker solved: frames all through the solve, none of them held up for a
+    // large part of it (a solve on the page's own thread is one gap as long as the solve). A ratio of two
+    // times measured together, not a frame rate: a machine under other load slows both
     expect(during.polls).toBeGreaterThan(2)
-    // the page drew while the worker solved (at least one frame in every 200 ms of the solve)
-    expect(during.frames).toBeGreaterThanOrEqual(Math.floor(during.ms / 200))
+    expect(during.frames).toBeGreaterThan(2)
+    expect(during.longest).toBeLessThan(0.5 * during.ms)
     expect(await page.evaluate(() => window.__demo.lastCall?.holeIndex)).toBe(12)
     const found = await page.evaluate(() => window.__demo.lastCall?.answer.found)
     expect(await page.evaluate(() => window.__demo.throwsMade)).toBe(found === true ? throws1 + 1 : throws1)
