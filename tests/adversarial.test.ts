@@ -261,7 +261,11 @@ function worstOverlap(sim: BallPhysics): { depth: number; a: number; b: number }
     for (let j = i + 1; j < on.length; j++) {
       const p = on[i]!
       const q = on[j]!
-      const depth = B.radius[p]! + B.radius[q]! - Math.hypot(B.x[p]! - B.x[q]!, B.y[p]! - B.y[q]!)
+      const dx = B.x[p]! - B.x[q]!
+      const dy = B.y[p]! - B.y[q]!
+      const reach = B.radius[p]! + B.radius[q]! - out.depth
+      if (dx * dx + dy * dy >= reach * reach) continue // not deeper than the worst so far
+      const depth = B.radius[p]! + B.radius[q]! - Math.hypot(dx, dy)
       if (depth > out.depth) Object.assign(out, { depth, a: p, b: q })
     }
   }
@@ -318,10 +322,16 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         // a tick whose projection spent its budget may leave more than its slop: the next ticks take it out
         const spent = w.fixed!.capped !== capped
         capped = w.fixed!.capped
-        if (spent || w.time - lastSpawn < 0.5 || crowded(sim)) return
-        const o = worstOverlap(sim)
-        stats.checked++
-        if (o.depth > (tickOverlap?.depth ?? 1e-3)) tickOverlap = { ...o, t: w.time }
+        if (spent || w.time - lastSpawn < 0.5) return
+        // the probe's own time is not the step's: the time budgets hold the library's work (the probe's
+        // all-pairs pass was half the stepping of a 250-ball crowd whose tick was halved, 15,495 ticks)
+        const probeStart = performance.now()
+        if (!crowded(sim)) {
+          const o = worstOverlap(sim)
+          stats.checked++
+          if (o.depth > (tickOverlap?.depth ?? 1e-3)) tickOverlap = { ...o, t: w.time }
+        }
+        stepStart += performance.now() - probeStart
       },
     })
   }
