@@ -4,6 +4,8 @@ import { buildSync } from 'esbuild'
 import { configDefaults, defineConfig, type Plugin } from 'vitest/config'
 
 const root = import.meta.dirname
+/** the checkout's path as a glob of itself: forward slashes, glob characters escaped */
+const globRoot = root.split(sep).join('/').replace(/[()[\]{}*?!+@]/g, '\\$&')
 
 /**
  * The library's sources (src/, systems/, components/) run as plain ES modules compiled by esbuild, file by
@@ -97,6 +99,6 @@ export default defineConfig({
     environment: 'node',
     testTimeout: 60_000,
     // a change to the library re-runs the test files being watched (see nativeSources)
-    forceRerunTriggers: [...configDefaults.forceRerunTriggers, ...['src', 'systems', 'components'].map((f) => `${root.split(sep).join('/')}/${f}/**/*.ts`)],
+    forceRerunTriggers: [...configDefaults.forceRerunTriggers, ...['src', 'systems', 'components'].map((f) => `${globRoot}/${f}/**/*.ts`)],
   },
 })
