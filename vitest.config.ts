@@ -4,6 +4,10 @@ import { buildSync } from 'esbuild'
 import { configDefaults, defineConfig, type Plugin } from 'vitest/config'
 
 const root = import.meta.dirname
+/** the library's source folders, which the tests import as native modules (nativeSources) */
+const LIBRARY = ['src', 'systems', 'components']
+/** a TypeScript source file, not a declaration file */
+const isSource = (name: string) => name.endsWith('.ts') && !name.endsWith('.d.ts')
 /** the checkout's path as a glob of itself: forward slashes, glob characters escaped */
 const globRoot = root.split(sep).join('/').replace(/[()[\]{}*?!+@]/g, '\\$&')
 
@@ -21,7 +25,7 @@ const globRoot = root.split(sep).join('/').replace(/[()[\]{}*?!+@]/g, '\\$&')
  * process, which imports the rebuilt modules afresh).
  */
 function nativeSources(): Plugin {
-  const folders = ['src', 'systems', 'components'].map((f) => join(root, f))
+  const folders = LIBRARY.map((f) => join(root, f))
   // one folder a vitest process (two may run at once in one checkout: the long adversarial run spawns its
   // own), removed when it exits; folders left by processes no longer alive are removed at the next build
   const cache = join(root, 'node_modules', '.cache', 'native-sources')
@@ -34,7 +38,7 @@ function nativeSources(): Plugin {
   const build = () => {
     if (ready) return
     ready = true
-    const sources = folders.flatMap((f) => readdirSync(f, { recursive: true, encoding: 'utf8' }).filter((n) => n.endsWith('.ts') && !n.endsWith('.d.ts')).map((n) => join(f, n)))
+    const sources = folders.flatMap((f) => readdirSync(f, { recursive: true, encoding: 'utf8' }).filter(isSource).map((n) => join(f, n)))
     mkdirSync(cache, { recursive: true })
     for (const name of readdirSync(cache)) if (!alive(Number(name))) rmSync(join(cache, name), { recursive: true, force: true })
     mkdirSync(out, { recursive: true })
@@ -46,7 +50,7 @@ function nativeSources(): Plugin {
   /** watch mode: a source changed or added after the first build is compiled again (a syntax error is
    * reported by esbuild and leaves the last good build in place) */
   const rebuild = (file: string) => {
-    if (!ready || !inLibrary(file) || !file.endsWith('.ts') || file.endsWith('.d.ts')) return
+    if (!ready || !inLibrary(file) || !isSource(file)) return
     try {
       compile([file])
     } catch {
@@ -99,6 +103,6 @@ export default defineConfig({
     environment: 'node',
     testTimeout: 60_000,
     // a change to the library re-runs the test files being watched (see nativeSources)
-    forceRerunTriggers: [...configDefaults.forceRerunTriggers, ...['src', 'systems', 'components'].map((f) => `${globRoot}/${f}/**/*.ts`)],
+    forceRerunTriggers: [...configDefaults.forceRerunTriggers, ...LIBRARY.map((f) => `${globRoot}/${f}/**/*.ts`)],
   },
 })

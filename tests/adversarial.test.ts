@@ -263,9 +263,10 @@ function worstOverlap(sim: BallPhysics): { depth: number; a: number; b: number }
       const q = on[j]!
       const dx = B.x[p]! - B.x[q]!
       const dy = B.y[p]! - B.y[q]!
-      const reach = B.radius[p]! + B.radius[q]! - out.depth
+      const sum = B.radius[p]! + B.radius[q]!
+      const reach = sum - out.depth
       if (dx * dx + dy * dy >= reach * reach) continue // not deeper than the worst so far
-      const depth = B.radius[p]! + B.radius[q]! - Math.hypot(dx, dy)
+      const depth = sum - Math.hypot(dx, dy)
       if (depth > out.depth) Object.assign(out, { depth, a: p, b: q })
     }
   }

@@ -383,11 +383,6 @@ describe('lip crossings taken several to a pass never pass a contact', () => {
 })
 
 /**
- * One command drawn from rnd, as a game gives them between frames: walls moved or opened, a hole added (above
- * the panel's rows, unless it would overlap one added before) or removed, a ball removed or put down, a ball
- * given a new velocity.
- */
-/**
  * Throws the bursts due at `frame`, each ball from the next of `spots` in turn (radii 6–16; masses 1e-3 to 1e3
  * when `masses`), each burst followed by a randomCommand when `commands`: the launcher scenes of the
  * properties below.
@@ -402,6 +397,11 @@ function throwBursts(sim: ReturnType<typeof createBallPhysics>, rnd: () => numbe
   }
 }
 
+/**
+ * One command drawn from rnd, as a game gives them between frames: walls moved or opened, a hole added (above
+ * the panel's rows, unless it would overlap one added before) or removed, a ball removed or put down, a ball
+ * given a new velocity.
+ */
 function randomCommand(sim: ReturnType<typeof createBallPhysics>, rnd: () => number): void {
   const c = Math.floor(rnd() * 6)
   const balls = sim.balls()
