@@ -3,10 +3,11 @@
 // normal, shared by inverse mass (each ball taking at least MIN_PROJECTION_SHARE), and keep balls inside the
 // closed walls, until no overlap is deeper than PROJECTION_SLOP. Full sweeps while the overlaps are spread
 // through the pairs, then sweeps over the pairs of the balls still moving (src/contacts/fixedPairs.ts); at
-// most PROJECTION_BUDGET × pairs pair visits a tick. Only positions change: no kinetic energy is added.
+// most PROJECTION_BUDGET × pairs pair visits and PROJECTION_QUEUE_BUDGET × pairs pairs queued again a tick.
+// Only positions change: no kinetic energy is added.
 // The part of a push that a closed wall keeps a ball from taking goes to the other ball of the pair, so a
 // heavy ball cannot drive a light one through the wall.
-import { MAX_LISTED_SWEEPS, MIN_PROJECTION_SHARE, PROJECTION_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
+import { MAX_LISTED_SWEEPS, MIN_PROJECTION_SHARE, PROJECTION_BUDGET, PROJECTION_QUEUE_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'
@@ -68,12 +69,15 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
   // Gauss-Seidel sweeps over the pairs whose balls moved since the pair was last met: in pair order (a
   // heap), a pair ahead of the sweep joins it when one of its balls moves, a pair behind joins the next
   // sweep; so each sweep does what a full sweep would, less the pairs whose gap cannot have changed
-  for (let sweep = it + 1; sweep < MAX_LISTED_SWEEPS && F.activeCount > 0 && budget > 0; sweep++) {
+  // (a push queues again every pair of the balls it moved: in a crowd where each ball touches many, that
+  // reading, not the visits, is the work, so it has a budget of its own)
+  let queue = PROJECTION_QUEUE_BUDGET * pairs
+  for (let sweep = it + 1; sweep < MAX_LISTED_SWEEPS && F.activeCount > 0 && budget > 0 && queue > 0; sweep++) {
     const back = (sweep & 1) === 1
     const stamp = nextStamp(F)
     let size = startSweep(F, back, stamp)
     let worst = 0
-    while (size > 0 && budget > 0) {
+    while (size > 0 && budget > 0 && queue > 0) {
       const key = F.heap[0]!
       size = heapPop(F.heap, size)
       const p = back ? pairs - 1 - key : key
@@ -83,8 +87,16 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
       if (!(gap < 0)) continue
       pushApart(w, F, p, gap)
       if (-gap > worst) worst = -gap
-      if (movedA) size = activate(F, F.pairA[p]!, key, back, stamp, size)
-      if (movedB) size = activate(F, F.pairB[p]!, key, back, stamp, size)
+      if (movedA) {
+        const a = F.pairA[p]!
+        queue -= F.adjStart[a + 1]! - F.adjStart[a]!
+        size = activate(F, a, key, back, stamp, size)
+      }
+      if (movedB) {
+        const b = F.pairB[p]!
+        queue -= F.adjStart[b + 1]! - F.adjStart[b]!
+        size = activate(F, b, key, back, stamp, size)
+      }
     }
     // done when a whole sweep left no overlap over the slop (a sweep the budget cut short is not whole:
     // the pairs it did not reach may still overlap, and the tick counts as capped)
