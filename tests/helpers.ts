@@ -97,9 +97,9 @@ export function machineSlowdown(): number {
 
 // The development machine ran the reference workload in 33 ms a run when vitest's module runner executed the
 // sources; they now run as plain ES modules (vitest.config.ts), which on one machine took 15 ms against 117:
-// 33 × 15 / 117. Measured there since: 13.7–14.4 ms (best of seven, five times) in an hour when the same
-// machine ran a round of the contacts benchmark 3.0× slower than its committed run (61 ns a ball-step
-// without contacts against 20), that is about 4.6 ms at the committed runs' speed.
+// 33 × 15 / 117. Measured since: 13.7–14.4 ms (best of seven, five times) on a machine that ran a round of
+// the contacts benchmark 3.0× slower than its committed run (61 ns a ball-step without contacts against 20),
+// that is about 4.6 ms at that run's speed.
 const REF_BASE_MS = 4.2
 let slowdown: number | undefined
 
