@@ -66,9 +66,9 @@ export const MAX_RESTING_CELLS = 4
  * still moving (src/contacts/fixedPairs.ts). A tick's projection visits at most PROJECTION_BUDGET × pairs
  * pairs, in at most MAX_LISTED_SWEEPS sweeps, and queues again at most PROJECTION_QUEUE_BUDGET × pairs pairs
  * of the balls its pushes moved (each push reads every pair of both its balls: in a crowd where every ball
- * touches eighty others, that was 160 pairs a visit, 5,378 × pairs a tick and 0.2 s a tick; the piles
- * pressed by a stream, 2,500 and 10,000 balls with e = 0 and e = 1, and a jammed 17 × 17 box queue at most
- * 218 × pairs a tick, so they never reach it).
+ * touches eighty others, that was 160 pairs a visit, 5,378 × pairs a tick and 0.2 s a tick on a machine 3.5×
+ * slower than the development machine; the piles pressed by a stream, 2,500 and 10,000 balls with e = 0 and
+ * e = 1, and a jammed 17 × 17 box queue at most 218 × pairs a tick, so they never reach it).
  */
 export const PROJECTION_BUDGET = 64
 export const PROJECTION_QUEUE_BUDGET = 1024
