@@ -82,18 +82,19 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
       size = heapPop(F.heap, size)
       const p = back ? pairs - 1 - key : key
       budget--
-      normal(F, F.pairA[p]!, F.pairB[p]!)
+      const a = F.pairA[p]!
+      const b = F.pairB[p]!
+      normal(F, a, b)
       const gap = nrm.gap
       if (!(gap < 0)) continue
       pushApart(w, F, p, gap)
       if (-gap > worst) worst = -gap
+      // activate reads every pair of its ball, F.adjStart[i + 1] − F.adjStart[i] of them
       if (movedA) {
-        const a = F.pairA[p]!
         queue -= F.adjStart[a + 1]! - F.adjStart[a]!
         size = activate(F, a, key, back, stamp, size)
       }
       if (movedB) {
-        const b = F.pairB[p]!
         queue -= F.adjStart[b + 1]! - F.adjStart[b]!
         size = activate(F, b, key, back, stamp, size)
       }
