@@ -103,6 +103,15 @@ export const TICK_SNAP = 8 * Number.EPSILON
 export const MAX_WIDEN_ROUNDS = 4
 export const MAX_PASS_ROUNDS = 256
 /**
+ * ... and past MAX_PASS_ROUNDS, up to MAX_CHAIN_ROUNDS, while the tick has at most CHAIN_PAIRS_PER_BALL
+ * pairs a candidate: a push running along a row of balls with gaps (each ball paired with the next one
+ * its capsule meets, src/contacts/fixedCapsule.ts), not a crowd, whose rounds each cost its many pairs. A
+ * row of 2,000 radius-0.5 balls 1 px apart struck end on at 1e5 px/s needs about 830 rounds in its first
+ * tick; at 256 the ball at index 258 went through its neighbour.
+ */
+export const MAX_CHAIN_ROUNDS = 4096
+export const CHAIN_PAIRS_PER_BALL = 4
+/**
  * The rounds after MAX_WIDEN_ROUNDS stop once the tick has PASS_PAIRS_PER_BALL pairs a candidate, or the
  * last round paired each ball it widened with more than PASS_PAIRS_PER_WIDENED balls. A ball widened by
  * its whole travel in every direction is paired with every ball within it: rows of tiny balls side by

@@ -6,7 +6,9 @@
 // pairs a ball and a round, and the rounds' bounds stop the push halfway along a row. So a ball that would
 // move more than CAPSULE_TRAVEL radii in the tick, with a circle wider than CAPSULE_CELLS of the tick's
 // cells (among balls about as fast a capsule saves nothing), is widened to that capsule (once a tick; a
-// second widening in a new direction widens its circle as before). What a candidate covers is then its
+// second widening in a new direction widens its circle as before). A new capsule is cut at the first ball
+// it meets (src/contacts/fixedCut.ts) and lengthened to the whole path in a later round if the ball goes
+// on past the cut along it (extendAlong). What a candidate covers is then its
 // reach circle and, this tick, its capsule; a pair is listed once, when the two covers first meet,
 // whichever way round they are found: a widened ball with a capsule looks up the candidates where they
 // can be (the grids' cells of its cover, the big ones, those the widening added, the list of balls with
@@ -16,10 +18,17 @@ import { CAPSULE_CELLS, CAPSULE_TRAVEL, PROJECTION_SLOP, TOUCH_GAP } from '../co
 import { grown } from '../world/contactState.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
-/** Per candidate: its capsule's sweep (velocity × tick) and the round that made it; the tick's balls with one. */
-let capX = new Float64Array(64)
-let capY = new Float64Array(64)
+/**
+ * Per candidate: its path's sweep (velocity × tick) when its capsule was made, the share of it the capsule
+ * covers now (cut at the first ball it can meet) and before the round that last lengthened it, the round
+ * that made it and the round that last lengthened it; the tick's balls with one.
+ */
+let fullX = new Float64Array(64)
+let fullY = new Float64Array(64)
+let capS = new Float64Array(64)
+let preS = new Float64Array(64)
 let capAt = new Float64Array(64)
+let extAt = new Float64Array(64)
 let holders = new Int32Array(64)
 let holderCount = 0
 /** widening rounds counted over all ticks (so no stamp needs clearing); the tick's first */
@@ -55,9 +64,12 @@ export function renumberCapsules(moved: Int32Array, old: number, total: number):
   for (let i = old - 1; i >= 0; i--) {
     const o = moved[i]!
     for (let k = o + 1; k < next; k++) capAt[k] = 0
-    capX[o] = capX[i]!
-    capY[o] = capY[i]!
+    fullX[o] = fullX[i]!
+    fullY[o] = fullY[i]!
+    capS[o] = capS[i]!
+    preS[o] = preS[i]!
     capAt[o] = capAt[i]!
+    extAt[o] = extAt[i]!
     next = o
   }
   for (let k = 0; k < next; k++) capAt[k] = 0
@@ -68,9 +80,12 @@ function reserve(n: number): void {
   if (capAt.length < n) {
     let len = capAt.length
     while (len < n) len *= 2
-    capX = grown(capX, len)
-    capY = grown(capY, len)
+    fullX = grown(fullX, len)
+    fullY = grown(fullY, len)
+    capS = grown(capS, len)
+    preS = grown(preS, len)
     capAt = grown(capAt, len)
+    extAt = grown(extAt, len)
     holders = grown(holders, len)
   }
 }
@@ -93,13 +108,81 @@ export function holdersNow(): number {
   return holderCount
 }
 
+/** The share of its path candidate i's capsule covers (now, or as it was before this round). */
+function shareOf(i: number, now: boolean): number {
+  return !now && extAt[i] === round ? preS[i]! : capS[i]!
+}
+
 /**
  * Whether candidate i's sweep at its present velocity lies within its capsule (to the projection's slop),
  * if it has one: the same start and radius, so it does when the sweep's end does.
  */
 export function withinCapsule(F: FixedContactState, i: number): boolean {
   if (!hasCapsule(i)) return false
-  return axisFrom2(i, F.vx[i]! * F.tick, F.vy[i]! * F.tick) <= PROJECTION_SLOP * PROJECTION_SLOP
+  return axisFrom2(i, capS[i]!, F.vx[i]! * F.tick, F.vy[i]! * F.tick) <= PROJECTION_SLOP * PROJECTION_SLOP
+}
+
+/**
+ * Lengthens candidate i's capsule to its whole path if it was cut (src/contacts/fixedCut.ts) short of
+ * where the ball goes now: its sweep's end beyond the capsule but on the path (to the projection's slop).
+ */
+export function extendAlong(F: FixedContactState, i: number): boolean {
+  if (!hasCapsule(i) || extAt[i] === round || !cutShort(F, i)) return false
+  preS[i] = capS[i]!
+  capS[i] = 1
+  extAt[i] = round
+  return true
+}
+
+/** Whether candidate i's capsule was cut short of where the ball goes now, along its path (extendAlong would lengthen it). */
+export function cutShort(F: FixedContactState, i: number): boolean {
+  if (!(capS[i]! < 1)) return false
+  const sx = F.vx[i]! * F.tick
+  const sy = F.vy[i]! * F.tick
+  const slop2 = PROJECTION_SLOP * PROJECTION_SLOP
+  return axisFrom2(i, capS[i]!, sx, sy) > slop2 && axisFrom2(i, 1, sx, sy) <= slop2
+}
+
+/** Whether candidate i's capsule was made this round (whole, until it is cut). */
+export function madeNow(i: number): boolean {
+  return hasCapsule(i) && capAt[i] === round
+}
+
+/**
+ * Where along candidate i's path (a share of its sweep, 0 at its centre, 1 at the sweep's end) the point
+ * (px, py) lies, projected on it (for the cut).
+ */
+export function shareAlong(F: FixedContactState, i: number, px: number, py: number): number {
+  const ux = fullX[i]!
+  const uy = fullY[i]!
+  const uu = ux * ux + uy * uy
+  return uu > 0 ? ((px - F.x[i]!) * ux + (py - F.y[i]!) * uy) / uu : 0
+}
+
+/** The length of candidate i's path (its sweep when the capsule was made). */
+export function pathLength(i: number): number {
+  return Math.sqrt(fullX[i]! * fullX[i]! + fullY[i]! * fullY[i]!)
+}
+
+/**
+ * The box of shares a to b of candidate i's path with the capsule's radius, grown by `extra` on every
+ * side, into bounds (as coverBounds).
+ */
+export function segmentBounds(F: FixedContactState, i: number, a: number, b: number, extra: number): void {
+  const c = F.r[i]! + TOUCH_GAP + extra
+  const x0 = F.x[i]! + fullX[i]! * a
+  const y0 = F.y[i]! + fullY[i]! * a
+  const x1 = F.x[i]! + fullX[i]! * b
+  const y1 = F.y[i]! + fullY[i]! * b
+  bounds[0] = Math.min(x0, x1) - c
+  bounds[1] = Math.max(x0, x1) + c
+  bounds[2] = Math.min(y0, y1) - c
+  bounds[3] = Math.max(y0, y1) + c
+}
+
+/** Cuts candidate i's capsule at share s of its path. */
+export function cutAt(i: number, s: number): void {
+  capS[i] = s
 }
 
 /**
@@ -113,22 +196,25 @@ export function widenAlong(F: FixedContactState, i: number): boolean {
   const vy = F.vy[i]!
   const travel = Math.sqrt(vx * vx + vy * vy) * F.tick
   if (!(travel > CAPSULE_TRAVEL * (F.r[i]! + TOUCH_GAP)) || !(F.r[i]! + travel > CAPSULE_CELLS * F.cell)) return false
-  capX[i] = vx * F.tick
-  capY[i] = vy * F.tick
+  fullX[i] = vx * F.tick
+  fullY[i] = vy * F.tick
+  capS[i] = 1
+  preS[i] = 0
   capAt[i] = round
+  extAt[i] = 0
   holders[holderCount++] = i
   return true
 }
 
-/** Squared distance from (px, py) to the capsule axis of candidate i. */
-function toAxis2(F: FixedContactState, i: number, px: number, py: number): number {
-  return axisFrom2(i, px - F.x[i]!, py - F.y[i]!)
+/** Squared distance from (px, py) to the capsule axis of candidate i (now, or before this round). */
+function toAxis2(F: FixedContactState, i: number, now: boolean, px: number, py: number): number {
+  return axisFrom2(i, shareOf(i, now), px - F.x[i]!, py - F.y[i]!)
 }
 
-/** Squared distance from the point (dx, dy) from candidate i's centre to its capsule axis. */
-function axisFrom2(i: number, dx: number, dy: number): number {
-  const ux = capX[i]!
-  const uy = capY[i]!
+/** Squared distance from the point (dx, dy) from candidate i's centre to the share s of its path. */
+function axisFrom2(i: number, s0: number, dx: number, dy: number): number {
+  const ux = fullX[i]! * s0
+  const uy = fullY[i]! * s0
   const uu = ux * ux + uy * uy
   const s = clamp01(uu > 0 ? (dx * ux + dy * uy) / uu : 0)
   const ex = dx - s * ux
@@ -150,7 +236,7 @@ export function meetsCircle(F: FixedContactState, i: number, isNew: boolean): bo
   if (dx * dx + dy * dy < s * s) return true
   if (!(isNew ? hasCapsule(i) : hadCapsule(i))) return false
   const c = F.r[i]! + TOUCH_GAP + R
-  return toAxis2(F, i, cx, cy) < c * c
+  return toAxis2(F, i, isNew, cx, cy) < c * c
 }
 
 /** Whether what candidates a and b cover meets (each new or as before this round, as meetsCircle). */
@@ -163,18 +249,18 @@ export function covers(F: FixedContactState, a: number, aNew: boolean, b: number
   // b's capsule against a's circle, then against a's capsule
   const ra = aNew ? F.wide[a]! : F.reach[a]!
   const c = F.r[b]! + TOUCH_GAP + ra
-  if (toAxis2(F, b, F.x[a]!, F.y[a]!) < c * c) return true
+  if (toAxis2(F, b, bNew, F.x[a]!, F.y[a]!) < c * c) return true
   if (!(aNew ? hasCapsule(a) : hadCapsule(a))) return false
   const s = F.r[a]! + F.r[b]! + 2 * TOUCH_GAP
-  return axes2(F, a, b) < s * s
+  return axes2(F, a, shareOf(a, aNew), b, shareOf(b, bNew)) < s * s
 }
 
-/** Squared distance between the capsule axes of candidates a and b (closest points of two segments). */
-function axes2(F: FixedContactState, a: number, b: number): number {
-  const ux = capX[a]!
-  const uy = capY[a]!
-  const vx = capX[b]!
-  const vy = capY[b]!
+/** Squared distance between the capsule axes of candidates a and b, shares sa and sb of their paths (closest points of two segments). */
+function axes2(F: FixedContactState, a: number, sa: number, b: number, sb: number): number {
+  const ux = fullX[a]! * sa
+  const uy = fullY[a]! * sa
+  const vx = fullX[b]! * sb
+  const vy = fullY[b]! * sb
   const rx = F.x[a]! - F.x[b]!
   const ry = F.y[a]! - F.y[b]!
   const A = ux * ux + uy * uy
@@ -228,19 +314,25 @@ export function coverBounds(F: FixedContactState, i: number, extra: number): voi
   bounds[3] = y + R
   if (!hasCapsule(i)) return
   const c = F.r[i]! + TOUCH_GAP + extra
-  const ex = x + capX[i]!
-  const ey = y + capY[i]!
+  const ex = x + fullX[i]! * capS[i]!
+  const ey = y + fullY[i]! * capS[i]!
   bounds[0] = Math.min(bounds[0]!, Math.min(x, ex) - c)
   bounds[1] = Math.max(bounds[1]!, Math.max(x, ex) + c)
   bounds[2] = Math.min(bounds[2]!, Math.min(y, ey) - c)
   bounds[3] = Math.max(bounds[3]!, Math.max(y, ey) + c)
 }
 
+/** Candidate i's whole path (its sweep when the capsule was made) into bounds[0], bounds[1]. */
+export function readPath(i: number): void {
+  bounds[0] = fullX[i]!
+  bounds[1] = fullY[i]!
+}
+
 /** Candidate i's capsule sweep (velocity × tick) into bounds[0], bounds[1] (none: zero). */
 export function readSweep(i: number): void {
   const has = hasCapsule(i)
-  bounds[0] = has ? capX[i]! : 0
-  bounds[1] = has ? capY[i]! : 0
+  bounds[0] = has ? fullX[i]! * capS[i]! : 0
+  bounds[1] = has ? fullY[i]! * capS[i]! : 0
 }
 
 /** The round now (for a cache kept within one). */
@@ -260,7 +352,7 @@ export function beyondBox(F: FixedContactState, j: number): boolean {
   const R = Math.max(F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!, F.r[j]! + TOUCH_GAP)
   const x = F.x[j]!
   const y = F.y[j]!
-  const ex = x + capX[j]!
-  const ey = y + capY[j]!
+  const ex = x + fullX[j]! * capS[j]!
+  const ey = y + fullY[j]! * capS[j]!
   return Math.max(x, ex) + R < target[0]! || Math.min(x, ex) - R > target[1]! || Math.max(y, ey) + R < target[2]! || Math.min(y, ey) - R > target[3]!
 }

@@ -15,7 +15,8 @@ import { box, boxRange, gridBox } from './fixedDense.js'
 import { listNearWall, markWall, walls } from './fixedGrid.js'
 import { seed, seedAlong, seedResting } from './fixedSeed.js'
 import { sortIdRange } from '../world/idLists.js'
-import { beyondBox, bounds, circle, coverBounds, covers, hasCapsule, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
+import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
+import { boundsBox, cutCapsule } from './fixedCut.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
@@ -27,6 +28,10 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
   const smallReach = Math.max(F.cell / 2, widest)
   const restFrom = F.n
   if (F.dense === 1) {
+    for (let k = 0; k < F.widenedCount; k++) {
+      const g = F.widened[k]!
+      if (madeNow(g)) cutCapsule(w, F, g, 0, 0, restFrom, smallReach)
+    }
     for (let k = 0; k < F.widenedCount; k++) {
       const g = F.widened[k]!
       if (hasCapsule(g)) {
@@ -183,12 +188,22 @@ function widenHits(F: FixedContactState): number {
     // wider by no more than the projection's slop: at worst it moves that far into a neighbour, which the
     // next tick's projection takes out
     if (!(wide > F.reach[i]! + PROJECTION_SLOP) || withinCapsule(F, i)) continue
-    // far beyond its size: along its path only (src/contacts/fixedCapsule.ts)
-    if (widenAlong(F, i)) wide = F.reach[i]!
+    // far beyond its size: along its path only (src/contacts/fixedCapsule.ts); on along a capsule cut
+    // short, lengthened
+    if (extendAlong(F, i) || widenAlong(F, i)) wide = F.reach[i]!
     F.wide[i] = wide
     F.grown[i] = 1
     F.widened[F.widenedCount++] = i
     if (wide > widest) widest = wide
+  }
+  // a ball with a capsule cut short of its path that the solve did not turn: lengthened (cutCapsule)
+  const list = holderList()
+  for (let h = 0, count = holdersNow(); h < count; h++) {
+    const i = list[h]!
+    if (F.grown[i] === 1 || !extendAlong(F, i)) continue
+    F.wide[i] = F.reach[i]!
+    F.grown[i] = 1
+    F.widened[F.widenedCount++] = i
   }
   return widest
 }
@@ -203,6 +218,13 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
   gridPartners(w, F, smallReach)
   reserveSort(F, F.peCount)
   const restFrom = F.n
+  // every capsule cut before any is paired (pairNear tests the capsules of the others)
+  for (let k = 0, t = 0; k < F.widenedCount; k++) {
+    const from = t
+    for (; t < F.peCount && F.pe1[t] === k; t++);
+    const g = F.widened[k]!
+    if (madeNow(g)) cutCapsule(w, F, g, from, t, restFrom, smallReach)
+  }
   for (let k = 0, t = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
     const holder = hasCapsule(g)
@@ -316,17 +338,6 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
     }
   }
   if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
-}
-
-/** The ordering grid's cells of the box in bounds (columns box[0]..box[1], rows box[2]..box[3]); false if none. */
-function boundsBox(F: FixedContactState): boolean {
-  if (F.cols === 0) return false
-  const cell = F.gridCell
-  box[0] = Math.max(0, Math.floor((bounds[0]! - F.minX) / cell))
-  box[1] = Math.min(F.cols - 1, Math.floor((bounds[1]! - F.minX) / cell))
-  box[2] = Math.max(0, Math.floor((bounds[2]! - F.minY) / cell))
-  box[3] = Math.min(F.rows - 1, Math.floor((bounds[3]! - F.minY) / cell))
-  return box[0]! <= box[1]! && box[2]! <= box[3]!
 }
 
 /**

@@ -8,7 +8,7 @@ import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushCandidate, type FixedContactState } from '../world/fixedState.js'
 import { CR, X1, X2, Y1, Y2, capsuleCellsOver, capsuleCells, query } from './sweepGrid.js'
-import { bounds, circle, meetsCircle, readSweep } from './fixedCapsule.js'
+import { bounds, circle, meetsCircle, readPath, readSweep, shareAlong } from './fixedCapsule.js'
 
 /** Adds the resting balls moving ball eid can reach within the tick (its radius plus a tick's travel). */
 export function seedAround(w: BallWorld, F: FixedContactState, eid: number): void {
@@ -84,6 +84,7 @@ function walkResting(w: BallWorld, F: FixedContactState, g: number): void {
 
 function offer(w: BallWorld, F: FixedContactState, g: number, e: number): void {
   if (g < 0) addResting(w, F, e)
+  else if (probing) probeCovered(w, F, g, e)
   else addCovered(w, F, g, e)
 }
 
@@ -104,6 +105,46 @@ function addResting(w: BallWorld, F: FixedContactState, e: number): void {
  * src/contacts/fixedCapsule.ts), once each, to F.id.
  */
 export function seedAlong(w: BallWorld, F: FixedContactState, g: number): void {
+  alongQuery(F, g)
+  walkResting(w, F, g)
+}
+
+/**
+ * The nearest resting ball not yet a candidate that what widened candidate g covers now meets, among those
+ * whose centres lie ahead of g's and whose cells the stretch from share a to b of its path reaches: its
+ * share of the path, by its centre (src/contacts/fixedCut.ts); 1 if none. Adds none.
+ */
+export function probeAlong(w: BallWorld, F: FixedContactState, g: number, a: number, b: number): number {
+  readPath(g)
+  const ux = bounds[0]!
+  const uy = bounds[1]!
+  query[X1] = F.x[g]! + ux * a
+  query[Y1] = F.y[g]! + uy * a
+  query[X2] = F.x[g]! + ux * b
+  query[Y2] = F.y[g]! + uy * b
+  query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + F.rest.maxRadius + 2 * TOUCH_GAP
+  probing = true
+  nearest = 1
+  walkResting(w, F, g)
+  probing = false
+  return nearest
+}
+
+let probing = false
+let nearest = 1
+
+function probeCovered(w: BallWorld, F: FixedContactState, g: number, e: number): void {
+  if (F.rest.seen[e] === F.rest.seenStamp) return
+  const B = w.Ball
+  circle[0] = B.x[e]!
+  circle[1] = B.y[e]!
+  circle[2] = B.radius[e]! + TOUCH_GAP
+  if (!meetsCircle(F, g, true)) return
+  const s = shareAlong(F, g, circle[0]!, circle[1]!)
+  if (s > 0 && s < nearest) nearest = s
+}
+
+function alongQuery(F: FixedContactState, g: number): void {
   // the capsule query of the sweep, as wide as the wider of the circle and the capsule, and a resting ball
   readSweep(g)
   query[X1] = F.x[g]!
@@ -111,7 +152,6 @@ export function seedAlong(w: BallWorld, F: FixedContactState, g: number): void {
   query[X2] = F.x[g]! + bounds[0]!
   query[Y2] = F.y[g]! + bounds[1]!
   query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + F.rest.maxRadius + 2 * TOUCH_GAP
-  walkResting(w, F, g)
 }
 
 function addCovered(w: BallWorld, F: FixedContactState, g: number, e: number): void {

@@ -3,31 +3,39 @@
 // ball at rest is paired only with the balls it touches). The rounds stopped at MAX_WIDEN_ROUNDS, and the
 // ball the push had reached then moved through the next one within the tick, unpaired: from a row of six,
 // balls swapped places, and at 1e5 px/s one ball left through five others at rest. The rounds now go on
-// while a ball could pass another (MAX_PASS_ROUNDS).
+// while a ball could pass another (MAX_PASS_ROUNDS; MAX_CHAIN_ROUNDS along a row, where each sped-up ball
+// is paired with the next ball its path meets: src/contacts/fixedCut.ts).
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
-import { MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
+import { MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 
 function row(radius: number, gap: number, speed: number, n: number) {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
   const ids = [sim.addBall({ x: 0, y: 0, vx: speed, vy: 0 })]
   for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 4 * radius + i * (2 * radius + gap), y: 0, vx: 0, vy: 0 }))
+  const F = sim.world.fixed!
   let swapped = false
   let collisions = 0
+  let pairs = 0
   // long enough for the push to leave the row's end
   const frames = Math.ceil(((4 * radius + n * (2 * radius + gap)) / speed) * 60) + 2
   for (let f = 0; f < frames; f++) {
-    sim.step(1 / 60)
+    // steps of half a contact tick: each tick's pairs are seen before the next tick gathers
+    for (let s = 0; s < 4; s++) {
+      sim.step(1 / 240)
+      pairs = Math.max(pairs, F.pairCount)
+    }
     for (const e of sim.drainEvents()) if (e.type === 'collision') collisions++
     const xs = ids.map((i) => sim.ballState(i).x)
     for (let k = 1; k < xs.length; k++) if (!(xs[k]! > xs[k - 1]!)) swapped = true
   }
-  return { swapped, collisions, vx: ids.map((i) => sim.ballState(i).vx) }
+  return { swapped, collisions, pairs, vx: ids.map((i) => sim.ballState(i).vx) }
 }
 
 describe('fixed tick: a push along a row with gaps', () => {
   it('the tolerances leave room beyond the widening rounds', () => {
     expect(MAX_PASS_ROUNDS).toBeGreaterThan(MAX_WIDEN_ROUNDS)
+    expect(MAX_CHAIN_ROUNDS).toBeGreaterThan(MAX_PASS_ROUNDS)
   })
 
   const cases: Array<[radius: number, gap: number, speed: number, n: number]> = [
@@ -42,6 +50,11 @@ describe('fixed tick: a push along a row with gaps', () => {
     [0.5, 1, 2e4, 250],
     [0.5, 1, 5e4, 250],
     [3, 1, 2e5, 250],
+    // longer than MAX_PASS_ROUNDS: at 256 rounds a tick the ball at index 258 went through its neighbour
+    // (the push crosses about 830 gaps of 1 px in a 1/120 s tick at 1e5 px/s); and the radius-0.5 row
+    // stopped earlier still at the pair bounds, every sped-up ball paired with all 416 balls along its path
+    [0.5, 1, 1e5, 1000],
+    [11, 1, 1e5, 1000],
   ]
   for (const [radius, gap, speed, n] of cases) {
     it(`radius ${radius}, gap ${gap} px, ${speed} px/s into ${n} balls: no ball passes another, the last one leaves with the striker's speed`, () => {
@@ -51,6 +64,9 @@ describe('fixed tick: a push along a row with gaps', () => {
       expect(r.collisions).toBe(n)
       expect(r.vx[n]).toBeCloseTo(speed, 6)
       for (let k = 0; k < n; k++) expect(Math.abs(r.vx[k]!)).toBeLessThan(1e-9 * speed)
+      // each sped-up ball is paired with the next ball its path meets, not with all along it (n²/2 pairs:
+      // 31,000 in a tick for the 250-ball rows)
+      expect(r.pairs).toBeLessThan(4 * n + 8)
     })
   }
 })
@@ -109,8 +125,10 @@ describe('fixed tick: a row along a wall struck at 1e5 px/s', () => {
     const n = 60
     const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
     sim.setWalls({ minX: 0, minY: 0, maxX: 5 + 2 * n, maxY: 40, restitution: 1 })
-    for (let c = 0; c < n; c++) sim.addBall({ x: 4 + 2 * c, y: 0.6, vx: 0, vy: 0 })
-    sim.addBall({ x: 1, y: 0.6, vx: 1e5, vy: 0 })
+    // lying on the floor (within the touch gap): listed at the gather and again at each widening
+    const y = 0.5 + 1e-7
+    for (let c = 0; c < n; c++) sim.addBall({ x: 4 + 2 * c, y, vx: 0, vy: 0 })
+    sim.addBall({ x: 1, y, vx: 1e5, vy: 0 })
     const F = sim.world.fixed!
     let listed = 0
     for (let i = 0; i < 12; i++) {
