@@ -18,7 +18,7 @@ import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
-import { beginWidening, cutShort, holderList, holdersNow, withinCapsule } from '../src/contacts/fixedCapsule.js'
+import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { CHAIN_PAIRS_PER_BALL, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -108,8 +108,5 @@ function mayPass(F: FixedContactState): boolean {
     const travel = Math.sqrt(vx * vx + vy * vy) * F.tick
     if (travel > F.r[i]! + rMin && F.r[i]! + travel > F.reach[i]! + PROJECTION_SLOP && !withinCapsule(F, i)) return true
   }
-  // a ball going on past where its capsule was cut (src/contacts/fixedReach.ts, cutCapsule)
-  const list = holderList()
-  for (let h = 0, count = holdersNow(); h < count; h++) if (cutShort(F, list[h]!)) return true
   return false
 }

@@ -127,20 +127,15 @@ export function withinCapsule(F: FixedContactState, i: number): boolean {
  * where the ball goes now: its sweep's end beyond the capsule but on the path (to the projection's slop).
  */
 export function extendAlong(F: FixedContactState, i: number): boolean {
-  if (!hasCapsule(i) || extAt[i] === round || !cutShort(F, i)) return false
+  if (!hasCapsule(i) || !(capS[i]! < 1)) return false
+  const sx = F.vx[i]! * F.tick
+  const sy = F.vy[i]! * F.tick
+  const slop2 = PROJECTION_SLOP * PROJECTION_SLOP
+  if (axisFrom2(i, capS[i]!, sx, sy) <= slop2 || axisFrom2(i, 1, sx, sy) > slop2) return false
   preS[i] = capS[i]!
   capS[i] = 1
   extAt[i] = round
   return true
-}
-
-/** Whether candidate i's capsule was cut short of where the ball goes now, along its path (extendAlong would lengthen it). */
-export function cutShort(F: FixedContactState, i: number): boolean {
-  if (!(capS[i]! < 1)) return false
-  const sx = F.vx[i]! * F.tick
-  const sy = F.vy[i]! * F.tick
-  const slop2 = PROJECTION_SLOP * PROJECTION_SLOP
-  return axisFrom2(i, capS[i]!, sx, sy) > slop2 && axisFrom2(i, 1, sx, sy) <= slop2
 }
 
 /** Whether candidate i's capsule was made this round (whole, until it is cut). */

@@ -6,8 +6,9 @@
 // new capsule is cut instead where its path comes closest to the first ball it newly meets: a struck ball
 // that stops there needs no more, and the push runs on through that ball, paired with the next one, about
 // n pairs in all. A ball that goes on past the cut (heavier than the ball it struck, or it missed it) has
-// its capsule lengthened to its whole path in the next round (extendAlong, src/contacts/fixedReach.ts,
-// widenHits), paired with every ball along it as before.
+// its capsule lengthened to its whole path in the next round and is paired with every ball along it, as
+// before (src/contacts/fixedCapsule.ts, extendAlong: src/contacts/fixedReach.ts, widenHits, looks each
+// round at every ball the tick's solves have changed).
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { box } from './fixedDense.js'

@@ -196,15 +196,6 @@ function widenHits(F: FixedContactState): number {
     F.widened[F.widenedCount++] = i
     if (wide > widest) widest = wide
   }
-  // a ball with a capsule cut short of its path that the solve did not turn: lengthened (cutCapsule)
-  const list = holderList()
-  for (let h = 0, count = holdersNow(); h < count; h++) {
-    const i = list[h]!
-    if (F.grown[i] === 1 || !extendAlong(F, i)) continue
-    F.wide[i] = F.reach[i]!
-    F.grown[i] = 1
-    F.widened[F.widenedCount++] = i
-  }
   return widest
 }
 

@@ -71,6 +71,30 @@ describe('fixed tick: a push along a row with gaps', () => {
   }
 })
 
+describe('fixed tick: a heavy striker through a row (its capsule cut at the first ball, then lengthened)', () => {
+  it('a ball of mass 1,000 at 1e5 px/s into 300 radius-3 balls 1 px apart: goes on past each cut, no ball passes another, momentum kept, energy never rises, every ball pushed ahead', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 3 })
+    const ids = [sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0, mass: 1000 })]
+    for (let i = 0; i < 300; i++) ids.push(sim.addBall({ x: 12 + i * 7, y: 0, vx: 0, vy: 0 }))
+    const mass = ids.map((_, k) => (k === 0 ? 1000 : 1))
+    const p0 = 1000 * 1e5
+    const e0 = 0.5 * 1000 * 1e10
+    let swapped = false
+    for (let f = 0; f < 6; f++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      const st = ids.map((i) => sim.ballState(i))
+      for (let k = 1; k < st.length; k++) if (!(st[k]!.x > st[k - 1]!.x)) swapped = true
+      const p = st.reduce((acc, b, k) => acc + mass[k]! * b.vx, 0)
+      const e = st.reduce((acc, b, k) => acc + 0.5 * mass[k]! * (b.vx * b.vx + b.vy * b.vy), 0)
+      expect(Math.abs(p - p0)).toBeLessThan(1e-9 * p0)
+      expect(e).toBeLessThanOrEqual(e0 * (1 + 1e-12))
+    }
+    expect(swapped).toBe(false)
+    for (const i of ids) expect(sim.ballState(i).vx).toBeGreaterThan(0)
+  })
+})
+
 /**
  * Rows side by side, each struck end on: a ball widened by its whole travel in every direction was paired
  * with every ball of every row within 833 px, the rounds' pair bounds stopped the push after about five
