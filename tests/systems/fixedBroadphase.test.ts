@@ -123,6 +123,20 @@ describe('fixed-tick broadphases', () => {
 })
 
 describe('fixed-tick broadphases, random scenes', () => {
+  it('rows of tiny balls struck end on at 1e5 px/s, square and slanting, a heavy striker, walls (capsules cut at the first ball met, src/contacts/fixedCut.ts, and lengthened): the same bits', () => {
+    const make = () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+      sim.setWalls({ minX: -20, minY: -20, maxX: 420, maxY: 60, restitution: 1 })
+      for (let row = 0; row < 6; row++) for (let c = 0; c < 60; c++) sim.addBall({ x: 10 + c * (2 + (row % 3)), y: row * 7, vx: 0, vy: 0 })
+      for (let row = 0; row < 6; row++) {
+        const slant = row % 2 === 0 ? 0 : 0.3
+        sim.addBall({ x: 8 - 2 * slant, y: row * 7 + slant, vx: 1e5, vy: slant * 5e3, mass: row === 5 ? 100 : 1 })
+      }
+      return sim
+    }
+    expect(same(make, () => {}, 30, 1 / 120, 'rows')).toBeGreaterThan(300)
+  })
+
   it('60 seeded scenes (radii 2–200 px, masses 1e-3…1e3, speeds to 6,000 px/s, holes, walls open or closed, balls put down on others, removed, set moving): the same bits', () => {
     let contacts = 0
     for (let seed = 1; seed <= 60; seed++) {
