@@ -54,7 +54,8 @@ export function fixedContactsSystem(w: BallWorld): void {
   beginWidening()
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
-  // (src/config/tolerances.ts); those rounds start from the new pairs when the last round converged
+  // (src/config/tolerances.ts), and past MAX_PASS_ROUNDS only while the tick has CHAIN_PAIRS_PER_BALL pairs a
+  // candidate or fewer (a push along a row); those rounds start from the new pairs when the last round converged
   let added = 0
   let widened = 1
   for (let round = 0; round < MAX_CHAIN_ROUNDS; round++) {

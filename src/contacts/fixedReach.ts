@@ -7,7 +7,8 @@
 // far faster than its size only along its path (src/contacts/fixedCapsule.ts). The solve then runs again
 // over all pairs. At most MAX_WIDEN_ROUNDS rounds a tick (src/config/tolerances.ts):
 // a chain longer than that is caught at the next tick, by the projection; up to MAX_PASS_ROUNDS while a
-// sped-up ball could pass through a ball within the tick (systems/fixedContacts.ts).
+// sped-up ball could pass through a ball within the tick, and MAX_CHAIN_ROUNDS along a row
+// (systems/fixedContacts.ts).
 import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
@@ -188,8 +189,8 @@ function widenHits(F: FixedContactState): number {
     // wider by no more than the projection's slop: at worst it moves that far into a neighbour, which the
     // next tick's projection takes out
     if (!(wide > F.reach[i]! + PROJECTION_SLOP) || withinCapsule(F, i)) continue
-    // far beyond its size: along its path only (src/contacts/fixedCapsule.ts); on along a capsule cut
-    // short, lengthened
+    // far beyond its size: along its path only (src/contacts/fixedCapsule.ts); going on past where its
+    // capsule was cut (src/contacts/fixedCut.ts): along the rest of its path
     if (extendAlong(F, i) || widenAlong(F, i)) wide = F.reach[i]!
     F.wide[i] = wide
     F.grown[i] = 1

@@ -105,7 +105,8 @@ function addResting(w: BallWorld, F: FixedContactState, e: number): void {
  * src/contacts/fixedCapsule.ts), once each, to F.id.
  */
 export function seedAlong(w: BallWorld, F: FixedContactState, g: number): void {
-  alongQuery(F, g)
+  readSweep(g)
+  stretchQuery(F, g, 0, 1)
   walkResting(w, F, g)
 }
 
@@ -116,13 +117,7 @@ export function seedAlong(w: BallWorld, F: FixedContactState, g: number): void {
  */
 export function probeAlong(w: BallWorld, F: FixedContactState, g: number, a: number, b: number): number {
   readPath(g)
-  const ux = bounds[0]!
-  const uy = bounds[1]!
-  query[X1] = F.x[g]! + ux * a
-  query[Y1] = F.y[g]! + uy * a
-  query[X2] = F.x[g]! + ux * b
-  query[Y2] = F.y[g]! + uy * b
-  query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + F.rest.maxRadius + 2 * TOUCH_GAP
+  stretchQuery(F, g, a, b)
   probing = true
   nearest = 1
   walkResting(w, F, g)
@@ -144,13 +139,17 @@ function probeCovered(w: BallWorld, F: FixedContactState, g: number, e: number):
   if (s > 0 && s < nearest) nearest = s
 }
 
-function alongQuery(F: FixedContactState, g: number): void {
-  // the capsule query of the sweep, as wide as the wider of the circle and the capsule, and a resting ball
-  readSweep(g)
-  query[X1] = F.x[g]!
-  query[Y1] = F.y[g]!
-  query[X2] = F.x[g]! + bounds[0]!
-  query[Y2] = F.y[g]! + bounds[1]!
+/**
+ * The capsule query of shares a to b of the sweep in bounds[0], bounds[1] from g's centre, as wide as the
+ * wider of g's circle and its capsule, and a resting ball.
+ */
+function stretchQuery(F: FixedContactState, g: number, a: number, b: number): void {
+  const ux = bounds[0]!
+  const uy = bounds[1]!
+  query[X1] = F.x[g]! + ux * a
+  query[Y1] = F.y[g]! + uy * a
+  query[X2] = F.x[g]! + ux * b
+  query[Y2] = F.y[g]! + uy * b
   query[CR] = Math.max(F.wide[g]!, F.r[g]! + TOUCH_GAP) + F.rest.maxRadius + 2 * TOUCH_GAP
 }
 
