@@ -11,7 +11,7 @@
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
 import { gatherCandidates } from '../src/contacts/fixedGrid.js'
-import { findPairs } from '../src/contacts/fixedOrder.js'
+import { findPairs, packings } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
@@ -19,6 +19,7 @@ import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
+import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { CHAIN_PAIRS_PER_BALL, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -52,6 +53,8 @@ export function fixedContactsSystem(w: BallWorld): void {
   F.overlap = false
   let converged = solveVelocities(w, F, t, iterations)
   beginWidening()
+  minUpTo = 0
+  rMin = Infinity
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts), and past MAX_PASS_ROUNDS only while the tick has CHAIN_PAIRS_PER_BALL pairs a
@@ -94,16 +97,30 @@ function chooseBroadphase(F: FixedContactState): void {
   else if (F.dense === 0 && (crowd > 0.3 || share > 0.3)) F.denseNext = 1
 }
 
+/** mayPass's smallest candidate radius so far in the tick (of the candidates below minUpTo, numbered as at renumbering minPacking; reset each tick) */
+let minUpTo = 0
+let minPacking = -1
+let rMin = Infinity
+
 /**
  * Whether a ball the solve sped up beyond its reach (one the next widening round would pair again) moves
  * more in a tick than its radius and the smallest candidate's: the distance at which, unpaired, it could
  * pass through a ball instead of ending inside it.
  */
 function mayPass(F: FixedContactState): boolean {
-  let rMin = Infinity
-  for (let k = 0; k < F.n; k++) if (F.r[k]! < rMin) rMin = F.r[k]!
-  for (let h = 0; h < F.hitCount; h++) {
-    const i = F.hit[h]!
+  // the smallest radius: candidates only join within a tick, last unless they are renumbered
+  if (minPacking !== packings()) {
+    minPacking = packings()
+    minUpTo = 0
+  }
+  for (; minUpTo < F.n; minUpTo++) if (F.r[minUpTo]! < rMin) rMin = F.r[minUpTo]!
+  // a candidate neither the last solve nor the last cut touched was looked at by the last round's widening
+  // (src/contacts/fixedRounds.ts), and gives no to this
+  const listed = roundCandidates(F, false)
+  const list = listed < 0 ? F.hit : roundList()
+  const count = listed < 0 ? F.hitCount : listed
+  for (let h = 0; h < count; h++) {
+    const i = list[h]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
     const travel = Math.sqrt(vx * vx + vy * vy) * F.tick

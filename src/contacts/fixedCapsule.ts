@@ -45,6 +45,7 @@ export const circle = new Float64Array(3)
 export function beginWidening(): void {
   tickFrom = round + 1
   holderCount = 0
+  cutCount = 0
 }
 
 /** A new widening round (room for n candidates). */
@@ -175,9 +176,31 @@ export function segmentBounds(F: FixedContactState, i: number, a: number, b: num
   bounds[3] = Math.max(y0, y1) + c
 }
 
-/** Cuts candidate i's capsule at share s of its path. */
+/** Cuts candidate i's capsule at share s of its path (listed for the next round: src/contacts/fixedRounds.ts). */
 export function cutAt(i: number, s: number): void {
   capS[i] = s
+  if (cutCount === cuts.length) cuts = grown(cuts, 2 * cutCount)
+  cuts[cutCount++] = i
+}
+
+/** The candidates whose capsules were cut since the list was last taken (takeCuts), in the order they were. */
+let cuts = new Int32Array(64)
+let cutCount = 0
+
+/** The cut list and its count; the list is emptied (its contents stay readable until the next cut). */
+export function takeCuts(): number {
+  const n = cutCount
+  cutCount = 0
+  return n
+}
+
+export function cutList(): Int32Array {
+  return cuts
+}
+
+/** The number of cuts listed and not yet taken. */
+export function cutsNow(): number {
+  return cutCount
 }
 
 /**

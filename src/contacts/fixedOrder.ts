@@ -194,6 +194,7 @@ function orderPairs(F: FixedContactState): void {
  */
 export function unpackedJoin(w: BallWorld, F: FixedContactState, list: Uint32Array, count: number): void {
   const B = w.Ball
+  packingCount++
   const old = F.n
   const total = old + count
   reserveCandidates(F, total)
@@ -235,6 +236,12 @@ export function unpackedJoin(w: BallWorld, F: FixedContactState, list: Uint32Arr
   for (let k = 0; k < F.widenedCount; k++) F.widened[k] = moved[F.widened[k]!]!
   for (let k = 0; k < F.bigCount; k++) F.big[k] = moved[F.big[k]!]!
   renumberCapsules(moved, old, total)
+}
+
+/** Renumberings of the candidates (unpackedJoin) over all ticks: the solve keeps its stamps only between two calls without one. */
+let packingCount = 0
+export function packings(): number {
+  return packingCount
 }
 
 /** A packed ball's place in the order: moving by id, then resting by id. */

@@ -18,6 +18,7 @@ import { seed, seedAlong, seedResting } from './fixedSeed.js'
 import { sortIdRange } from '../world/idLists.js'
 import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { boundsBox, cutCapsule } from './fixedCut.js'
+import { roundCandidates, roundList } from './fixedRounds.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
@@ -181,8 +182,12 @@ function widenHits(F: FixedContactState): number {
   const tick = F.tick
   F.widenedCount = 0
   let widest = 0
-  for (let h = 0; h < F.hitCount; h++) {
-    const i = F.hit[h]!
+  // those that may have changed since the last round (src/contacts/fixedRounds.ts), else every one changed
+  const listed = roundCandidates(F, true)
+  const list = listed < 0 ? F.hit : roundList()
+  const count = listed < 0 ? F.hitCount : listed
+  for (let h = 0; h < count; h++) {
+    const i = list[h]!
     const vx = F.vx[i]!
     const vy = F.vy[i]!
     let wide = F.r[i]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP

@@ -23,10 +23,11 @@ import { EventType, appendCollision, appendEvent } from '../events.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { touchBall, type FixedContactState } from '../world/fixedState.js'
+import { grownTo, touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { walls } from './fixedGrid.js'
+import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { normal, nrm } from './fixedPairs.js'
 import { strikeLeavesRim } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
@@ -46,6 +47,8 @@ const WALL_REPORTED = 4
 let testedAt = new Float64Array(256)
 let changedAt = new Float64Array(256)
 let clock = 0
+/** the clock when the last call began (src/contacts/fixedCalls.ts: what one call keeps for the next) */
+let callFrom = 0
 
 /**
  * The solve's numbers, in slots rather than arguments: the tick's time, the restitution, the settle speed
@@ -71,28 +74,44 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   S[S_T] = t
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
-  if (testedAt.length < F.pairCount) testedAt = new Float64Array(2 * F.pairCount)
-  if (changedAt.length < F.n) changedAt = new Float64Array(2 * F.n)
-  // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last call),
-  // but for those a converged call met at these velocities: tested at clock 0, before any change
-  testedAt.fill(0, 0, fresh)
-  testedAt.fill(-1, fresh, F.pairCount)
-  changedAt.fill(0, 0, F.n)
-  clock = 0
+  if (testedAt.length < F.pairCount) testedAt = grownTo(testedAt, 2 * F.pairCount)
+  if (changedAt.length < F.n) changedAt = grownTo(changedAt, 2 * F.n)
+  const fromN = lastCallN()
+  if (beginCall(F, fresh)) {
+    // the old pairs and candidates keep their stamps; the new pairs are tested in the first sweep, and the
+    // candidates that joined have not changed
+    testedAt.fill(-1, fresh, F.pairCount)
+    changedAt.fill(0, fromN, F.n)
+  } else {
+    // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last
+    // call), but for those a converged call met at these velocities: tested at clock 0, before any change
+    testedAt.fill(0, 0, fresh)
+    testedAt.fill(-1, fresh, F.pairCount)
+    changedAt.fill(0, 0, F.n)
+    clock = 0
+  }
+  callFrom = clock
   let moved = false
   for (let it = 0; it < iterations; it++) {
     moved = false
     // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
     // Gauss-Seidel): a push runs through a row against a wall either way within a sweep
-    if (wallVelocities(w, F)) moved = true
     const back = (it & 1) === 1
-    for (let k = 0; k < F.pairCount; k++) {
-      if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
-    }
+    // every pair, or only those that can be met again, in the same order (src/contacts/fixedCalls.ts)
+    const listed = beginSweep(F, back, it === 0, fresh)
+    if (wallVelocities(w, F)) moved = true
+    if (listed) {
+      for (let p = nextPair(); p >= 0; p = nextPair()) if (impulse(w, F, p)) moved = true
+    } else for (let k = 0; k < F.pairCount; k++) if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
     if (wallVelocities(w, F)) moved = true
     if (!moved) return true
   }
   return false
+}
+
+/** Candidate i's velocity changes now (before its stamp): listed (src/contacts/fixedCalls.ts). */
+function noteChange(F: FixedContactState, i: number): void {
+  listChange(F, i, changedAt[i]! <= callFrom)
 }
 
 /**
@@ -173,10 +192,10 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     F.vx[b] = F.vx[b]! + j * imb * nx
     F.vy[b] = F.vy[b]! + j * imb * ny
   }
+  noteChange(F, a)
+  noteChange(F, b)
   changedAt[a] = ++clock
   changedAt[b] = clock
-  if ((F.changed[a]! & 1) === 0) F.hit[F.hitCount++] = a
-  if ((F.changed[b]! & 1) === 0) F.hit[F.hitCount++] = b
   F.changed[a]! |= 1
   F.changed[b]! |= 1
   if ((hit & REPORTED) === 0 && approach >= settle) {
@@ -351,8 +370,8 @@ function wallVelocity(w: BallWorld, F: FixedContactState, i: number): boolean {
   }
   F.vx[i] = vx
   F.vy[i] = vy
+  noteChange(F, i)
   changedAt[i] = ++clock
-  if ((F.changed[i]! & 1) === 0) F.hit[F.hitCount++] = i
   F.changed[i]! |= 1
   return true
 }

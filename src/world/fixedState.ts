@@ -390,7 +390,7 @@ function doubled(len: number, n: number): number {
   return len
 }
 
-function grownTo<T extends Float64Array | Int32Array | Uint8Array | Uint32Array>(a: T, n: number): T {
+export function grownTo<T extends Float64Array | Int32Array | Uint8Array | Uint32Array>(a: T, n: number): T {
   const next = new (a.constructor as new (n: number) => T)(n)
   next.set(a)
   return next

@@ -8,6 +8,7 @@
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
 import { MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
+import { callsKept, keepAcrossCalls } from '../../src/contacts/fixedCalls'
 
 function row(radius: number, gap: number, speed: number, n: number) {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
@@ -203,4 +204,64 @@ describe('fixed tick: a resting ball an earlier widening round added', () => {
     expect(times.get('10-11')).toBe(4 / 120)
     expect(times.get('9-10')).toBe(times.get('10-11'))
   })
+})
+
+describe('fixed tick: what a solve call keeps for the next within a tick (src/contacts/fixedCalls.ts)', () => {
+  // each widening round solves again; a call after one that converged looks only at its new pairs and the
+  // balls it changes (sweeps from a heap of pairs, rounds that look at the balls changed or cut), where a
+  // whole sweep walked every pair and every round every ball the tick changed
+  type Sim = ReturnType<typeof createBallPhysics>
+  function run(radius: number, setup: (sim: Sim) => void, keep: boolean): { hash: string; kept: number } {
+    keepAcrossCalls(keep)
+    const before = callsKept()
+    try {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
+      setup(sim)
+      let h = ''
+      for (let f = 0; f < 12; f++) {
+        sim.step(1 / 60)
+        for (const e of sim.drainEvents()) h += `${e.type}${e.ball}:${e.time};`
+      }
+      const B = sim.world.Ball
+      for (const b of sim.balls()) h += `${B.x[b]},${B.y[b]},${B.vx[b]},${B.vy[b]};`
+      return { hash: h, kept: callsKept() - before }
+    } finally {
+      keepAcrossCalls(true)
+    }
+  }
+  const scenes: Array<[name: string, radius: number, least: number, setup: (sim: Sim) => void]> = [
+    ['a row of 300 radius-0.5 balls 1 px apart', 0.5, 250, (sim) => {
+      sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0 })
+      for (let i = 0; i < 300; i++) sim.addBall({ x: 2 + i * 2, y: 0, vx: 0, vy: 0 })
+    }],
+    ['the same row in walls it lies along', 0.5, 250, (sim) => {
+      sim.setWalls({ minX: -5, minY: -0.5, maxX: 700, maxY: 50, restitution: 1 })
+      sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0 })
+      for (let i = 0; i < 300; i++) sim.addBall({ x: 2 + i * 2, y: 0, vx: 0, vy: 0 })
+    }],
+    ['a row of 200 radius-11 balls', 11, 150, (sim) => {
+      sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0 })
+      for (let i = 0; i < 200; i++) sim.addBall({ x: 44 + i * 23, y: 0, vx: 0, vy: 0 })
+    }],
+    ['8 rows of 60 side by side', 0.5, 40, (sim) => {
+      for (let r = 0; r < 8; r++) {
+        sim.addBall({ x: 0, y: r * 4, vx: 1e5, vy: 0 })
+        for (let i = 0; i < 60; i++) sim.addBall({ x: 2 + i * 4, y: r * 4, vx: 0, vy: 0 })
+      }
+    }],
+    ['a mass-100 striker through 300', 0.5, 1, (sim) => {
+      sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0, mass: 100 })
+      for (let i = 0; i < 300; i++) sim.addBall({ x: 2 + i * 2, y: 0, vx: 0, vy: 0 })
+    }],
+  ]
+  for (const [name, radius, least, setup] of scenes) {
+    it(`${name}, struck at 1e5 px/s: calls keep, and give the same events and states as calls that keep nothing`, () => {
+      const a = run(radius, setup, true)
+      const b = run(radius, setup, false)
+      expect(b.kept).toBe(0)
+      expect(a.kept).toBeGreaterThanOrEqual(least)
+      expect(a.hash.length).toBeGreaterThan(1000)
+      expect(a.hash === b.hash).toBe(true)
+    })
+  }
 })
