@@ -39,6 +39,13 @@ export interface EventBuffer {
   /** the normal impulse of a collision (0 otherwise) */
   impulse: Float64Array
   /**
+   * 1 for an event recorded by a fixed-tick solve at a window's start (after a launch or a command at that
+   * instant), 0 otherwise; phaseNow, what an event gets now. At one instant those come after the tick's own
+   * solve, which ends the window before, whichever drain each falls in (see before()).
+   */
+  phase: Uint8Array
+  phaseNow: number
+  /**
    * Entities removed since the last drain: `cutIds[k]` was removed when `cutAt[k]` events were buffered.
    * Buffered events that name one of them (as ball, other or hole) are dropped at the drain, so no event
    * ever names a new entity that reuses a removed one's id.
@@ -97,6 +104,8 @@ export function createEventBuffer(capacity = 1024): EventBuffer {
     via: new Uint8Array(capacity),
     other: new Uint32Array(capacity),
     impulse: new Float64Array(capacity),
+    phase: new Uint8Array(capacity),
+    phaseNow: 0,
     cutCount: 0,
     cutIds: new Uint32Array(16),
     cutAt: new Uint32Array(16),
@@ -107,29 +116,18 @@ export function createEventBuffer(capacity = 1024): EventBuffer {
   }
 }
 
+/** The per-event arrays (grown and shifted together). */
+const PER_EVENT = ['type', 'ball', 'hole', 'time', 'delta', 'speed', 'hasDV', 'via', 'other', 'impulse', 'phase'] as const
+
 function grow(buf: EventBuffer): void {
-  const cap = buf.type.length * 2
-  const next = createEventBuffer(cap)
-  next.type.set(buf.type)
-  next.ball.set(buf.ball)
-  next.hole.set(buf.hole)
-  next.time.set(buf.time)
-  next.delta.set(buf.delta)
-  next.speed.set(buf.speed)
-  next.hasDV.set(buf.hasDV)
-  next.via.set(buf.via)
-  next.other.set(buf.other)
-  next.impulse.set(buf.impulse)
-  buf.type = next.type
-  buf.ball = next.ball
-  buf.hole = next.hole
-  buf.time = next.time
-  buf.delta = next.delta
-  buf.speed = next.speed
-  buf.hasDV = next.hasDV
-  buf.via = next.via
-  buf.other = next.other
-  buf.impulse = next.impulse
+  const next = createEventBuffer(buf.type.length * 2)
+  const from = buf as unknown as Record<string, Float64Array>
+  const to = next as unknown as Record<string, Float64Array>
+  for (let f = 0; f < PER_EVENT.length; f++) {
+    const k = PER_EVENT[f]!
+    to[k]!.set(from[k]!)
+    from[k] = to[k]!
+  }
   buf.order = next.order
   buf.scratch = next.scratch
 }
@@ -152,6 +150,7 @@ export function appendEvent(buf: EventBuffer, type: EventTypeCode, ball: number,
   buf.via[i] = via
   buf.other[i] = 0
   buf.impulse[i] = 0
+  buf.phase[i] = buf.phaseNow
   return i
 }
 
@@ -218,7 +217,7 @@ function cutMarkFor(buf: EventBuffer, id: number): Uint32Array {
 }
 
 /**
- * Puts the indices of the buffered events to report into buf.order, sorted by time (ties: by ball id, then
+ * Puts the indices of the buffered events to report into buf.order, sorted by time (ties: by phase, ball id, then
  * by the order they were recorded, so the order is deterministic); returns how many. Events that name an
  * entity removed after they were buffered are left out. Allocates nothing once the arrays have grown.
  */
@@ -250,11 +249,19 @@ function orderEvents(buf: EventBuffer): number {
   return n
 }
 
-/** a before b in the drain order: time, then ball id, then record order */
+/**
+ * a before b in the drain order: time, then phase (at one instant, the fixed tick's solve after a launch or
+ * a command after the tick's own solve: the two fall in one drain or in two, as the steps end, and a tie
+ * broken by ball id across them would give another order at another frame rate), then ball id, then record
+ * order
+ */
 function before(buf: EventBuffer, a: number, b: number): boolean {
   const ta = buf.time[a]!
   const tb = buf.time[b]!
   if (ta !== tb) return ta < tb
+  const pa = buf.phase[a]!
+  const pb = buf.phase[b]!
+  if (pa !== pb) return pa < pb
   const ba = buf.ball[a]!
   const bb = buf.ball[b]!
   return ba !== bb ? ba < bb : a < b
@@ -299,7 +306,7 @@ function sortOrder(buf: EventBuffer, n: number): void {
 }
 
 /**
- * Returns the buffered events as objects sorted by time (ties: by ball id, then by the order they were
+ * Returns the buffered events as objects sorted by time (ties: by phase, ball id, then the order they were
  * recorded, so the order is deterministic) and empties the buffer.
  */
 export function drainEventBuffer(buf: EventBuffer): BallEvent[] {
@@ -399,16 +406,8 @@ export function drainEventBufferWith(buf: EventBuffer, visit: (e: EventView) => 
 function dropFirst(buf: EventBuffer, k: number): void {
   const rest = buf.count - k
   if (rest > 0) {
-    buf.type.copyWithin(0, k, buf.count)
-    buf.ball.copyWithin(0, k, buf.count)
-    buf.hole.copyWithin(0, k, buf.count)
-    buf.time.copyWithin(0, k, buf.count)
-    buf.delta.copyWithin(0, k, buf.count)
-    buf.speed.copyWithin(0, k, buf.count)
-    buf.hasDV.copyWithin(0, k, buf.count)
-    buf.via.copyWithin(0, k, buf.count)
-    buf.other.copyWithin(0, k, buf.count)
-    buf.impulse.copyWithin(0, k, buf.count)
+    const arrays = buf as unknown as Record<string, Float64Array>
+    for (let f = 0; f < PER_EVENT.length; f++) arrays[PER_EVENT[f]!]!.copyWithin(0, k, buf.count)
   }
   buf.count = rest
   for (let c = 0; c < buf.cutCount; c++) buf.cutAt[c] = Math.max(0, buf.cutAt[c]! - k)

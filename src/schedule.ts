@@ -7,7 +7,7 @@ import { bounceSystem } from '../systems/bounce.js'
 import { captureSystem } from '../systems/capture.js'
 import { collisionsSystem } from '../systems/collisions.js'
 import { cogGateSystem } from '../systems/cogGate.js'
-import { fixedContactsSystem } from '../systems/fixedContacts.js'
+import { fixedContactsSystem, solvingTickEnd } from '../systems/fixedContacts.js'
 import { tabulatedRimSystem } from '../systems/tabulatedRim.js'
 import { heroReferenceSystem } from '../systems/heroReference.js'
 import { integrationSystem, setLipBatching } from '../systems/integration.js'
@@ -137,7 +137,12 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       F.nextTick++
       F.due = true
       world.pass = 0
-      for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
+      solvingTickEnd(true)
+      try {
+        for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
+      } finally {
+        solvingTickEnd(false)
+      }
       F.due = false
     }
     // the step's end, or the tick it ends on (a window that a halving took to a tick within TICK_SNAP past

@@ -27,6 +27,22 @@ import type { FixedContactState } from '../src/world/fixedState.js'
 export function fixedContactsSystem(w: BallWorld): void {
   const F = w.fixed
   if (F === null || !F.due || w.pass !== 0) return
+  // a solve at a window's start comes after the tick's own solve at the same instant (src/events.ts, phase)
+  w.events.phaseNow = atTickEnd ? 0 : 1
+  try {
+    solveTick(w, F)
+  } finally {
+    w.events.phaseNow = 0
+  }
+}
+
+/** Whether the solve called now is the tick's own, at the end of the window that reaches it (src/schedule.ts). */
+let atTickEnd = false
+export function solvingTickEnd(on: boolean): void {
+  atTickEnd = on
+}
+
+function solveTick(w: BallWorld, F: FixedContactState): void {
   F.due = false
   const t = w.time
   F.ticks++

@@ -860,3 +860,39 @@ describe('a launcher firing many balls from one point', () => {
     expect([sim.ballState(a).mode, sim.ballState(b).mode]).toEqual(['rolling', 'rolling'])
   })
 })
+
+describe('the fixed tick: events at one instant in the same order at every frame rate', () => {
+  // A held ball leaves at a tick T and meets a ball there, in a solve after the tick's own (which met two
+  // other balls at T). At 30 and 60 Hz both solves fell in one step, and the drain put the equal times in
+  // ball-id order; at 120 and 240 Hz a step ends on T, so the tick's own solve was drained first: the
+  // ordered events parted at the 1,783rd (T = 6175/120 s), though the states stayed the same. An event now
+  // carries its phase at the instant (src/events.ts), and the drain orders by it before the ball id.
+  it('a launcher thrown at 8 balls a second for 52 s, captured and gutter balls removed: the same ordered events at 30, 60, 120 and 240 Hz', () => {
+    const run = (hz: number): string[] => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed' })
+      addPanel(sim)
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5, open: { bottom: true } })
+      const rnd = mulberry32(3)
+      const out: string[] = []
+      for (let k = 0; k < 52 * hz; k++) {
+        if (k % hz === 0) for (let i = 0; i < 8; i++) sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.25 + 0.7 * rnd(), angle: 0.7 * rnd() - 0.35 })
+        sim.step(1 / hz)
+        for (const e of sim.drainEvents()) {
+          out.push(`${e.type} ${e.ball} ${e.type === 'collision' ? e.other : ''} ${e.time}`)
+          if (e.type === 'capture' || e.type === 'gutter') sim.removeBall(e.ball)
+        }
+      }
+      return out
+    }
+    const at30 = run(30)
+    const T = 6175 / 120
+    // the instant where they parted: two collisions there
+    expect(at30.filter((e) => e.startsWith('collision') && e.endsWith(` ${T}`)).length).toBeGreaterThanOrEqual(2)
+    expect(at30.length).toBeGreaterThan(1783)
+    for (const hz of [60, 120, 240]) {
+      const other = run(hz)
+      const first = other.findIndex((e, i) => e !== at30[i])
+      expect({ hz, first, count: other.length }).toEqual({ hz, first: -1, count: at30.length })
+    }
+  })
+})
