@@ -20,6 +20,7 @@ import { widenReach } from '../src/contacts/fixedReach.js'
 import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
+import { beginNear } from '../src/contacts/fixedNear.js'
 import { CHAIN_PAIRS_PER_BALL, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -27,22 +28,6 @@ import type { FixedContactState } from '../src/world/fixedState.js'
 export function fixedContactsSystem(w: BallWorld): void {
   const F = w.fixed
   if (F === null || !F.due || w.pass !== 0) return
-  // a solve at a window's start comes after the tick's own solve at the same instant (src/events.ts, phase)
-  w.events.phaseNow = atTickEnd ? 0 : 1
-  try {
-    solveTick(w, F)
-  } finally {
-    w.events.phaseNow = 0
-  }
-}
-
-/** Whether the solve called now is the tick's own, at the end of the window that reaches it (src/schedule.ts). */
-let atTickEnd = false
-export function solvingTickEnd(on: boolean): void {
-  atTickEnd = on
-}
-
-function solveTick(w: BallWorld, F: FixedContactState): void {
   F.due = false
   const t = w.time
   F.ticks++
@@ -69,6 +54,7 @@ function solveTick(w: BallWorld, F: FixedContactState): void {
   F.overlap = false
   let converged = solveVelocities(w, F, t, iterations)
   beginWidening()
+  beginNear(F)
   minUpTo = 0
   rMin = Infinity
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball

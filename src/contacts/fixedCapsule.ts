@@ -365,6 +365,20 @@ export function setTarget(F: FixedContactState, g: number): void {
   target.set(bounds)
 }
 
+/** The box beyondBox tests for candidate j (with a capsule) into nearBox: minX, maxX, minY, maxY (src/contacts/fixedNear.ts). */
+export const nearBox = new Float64Array(4)
+export function holderBox(F: FixedContactState, j: number): void {
+  const R = Math.max(F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!, F.r[j]! + TOUCH_GAP)
+  const x = F.x[j]!
+  const y = F.y[j]!
+  const ex = x + fullX[j]! * capS[j]!
+  const ey = y + fullY[j]! * capS[j]!
+  nearBox[0] = Math.min(x, ex) - R
+  nearBox[1] = Math.max(x, ex) + R
+  nearBox[2] = Math.min(y, ey) - R
+  nearBox[3] = Math.max(y, ey) + R
+}
+
 /** Whether the box of what candidate j (with a capsule) covers misses the target box: then so do the two covers. */
 export function beyondBox(F: FixedContactState, j: number): boolean {
   const R = Math.max(F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!, F.r[j]! + TOUCH_GAP)

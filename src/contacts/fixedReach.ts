@@ -19,6 +19,7 @@ import { sortIdRange } from '../world/idLists.js'
 import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { boundsBox, cutCapsule } from './fixedCut.js'
 import { roundCandidates, roundList } from './fixedRounds.js'
+import { enterWidened, foundList, holdersIn, joinedFree, joinedList } from './fixedNear.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
@@ -57,6 +58,7 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
     if (hasCapsule(g)) markSwept(F, g)
     else markWall(F, g)
   }
+  enterWidened(F)
   return true
 }
 
@@ -96,10 +98,14 @@ function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number,
     for (let t = peFrom; t < peTo; t++) offer(F, g, F.packAt[F.pe2[t]!]!)
   }
   for (let m = 0; m < F.bigCount; m++) offer(F, g, F.big[m]!)
-  for (let j = F.gathered; j < upTo; j++) offer(F, g, j)
+  // the resting balls the rounds added and those with a capsule, where they can be (fixedNear.ts)
+  const free = joinedFree(F, upTo)
+  if (free < 0) for (let j = F.gathered; j < upTo; j++) offer(F, g, j)
+  else for (let k = 0, jl = joinedList(); k < free; k++) offer(F, g, jl[k]!)
   setTarget(F, g)
-  const list = holderList()
-  for (let h = 0, count = holdersNow(); h < count; h++) {
+  const near = holdersIn(F, bounds[0]!, bounds[1]!, bounds[2]!, bounds[3]!)
+  const list = near < 0 ? holderList() : foundList()
+  for (let h = 0, count = near < 0 ? holdersNow() : near; h < count; h++) {
     const j = list[h]!
     if (j === g || j >= upTo || beyondBox(F, j)) continue
     const grownJ = F.grown[j] === 1
@@ -337,13 +343,11 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
   if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
 }
 
-/**
- * Widened candidate g against the resting balls an earlier round's widening added (from F.gathered to
- * `upTo`): in neither grid, and passed over by the resting seeds (seen), they were paired only with the
- * balls widened in the round that added them.
- */
+/** Widened g against the resting balls earlier rounds added (F.gathered to `upTo`; in neither grid), in index order (src/contacts/fixedNear.ts). */
 function pairJoined(F: FixedContactState, g: number, upTo: number): void {
-  for (let j = F.gathered; j < upTo; j++) consider(F, g, j)
+  const free = joinedFree(F, upTo)
+  if (free < 0) for (let j = F.gathered; j < upTo; j++) consider(F, g, j)
+  else for (let k = 0, jl = joinedList(); k < free; k++) consider(F, g, jl[k]!)
 }
 
 /** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within boxRange[0] of it. */

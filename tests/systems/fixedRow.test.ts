@@ -9,6 +9,7 @@ import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
 import { MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 import { callsKept, keepAcrossCalls } from '../../src/contacts/fixedCalls'
+import { useNearLists } from '../../src/contacts/fixedNear'
 
 function row(radius: number, gap: number, speed: number, n: number) {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
@@ -209,10 +210,13 @@ describe('fixed tick: a resting ball an earlier widening round added', () => {
 describe('fixed tick: what a solve call keeps for the next within a tick (src/contacts/fixedCalls.ts)', () => {
   // each widening round solves again; a call after one that converged looks only at its new pairs and the
   // balls it changes (sweeps from a heap of pairs, rounds that look at the balls changed or cut), where a
-  // whole sweep walked every pair and every round every ball the tick changed
+  // whole sweep walked every pair and every round every ball the tick changed; and a round finds the
+  // resting balls the rounds added and the balls with a capsule through lists and a hash
+  // (src/contacts/fixedNear.ts), where it walked them all
   type Sim = ReturnType<typeof createBallPhysics>
   function run(radius: number, setup: (sim: Sim) => void, keep: boolean): { hash: string; kept: number } {
     keepAcrossCalls(keep)
+    useNearLists(keep)
     const before = callsKept()
     try {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
@@ -227,6 +231,7 @@ describe('fixed tick: what a solve call keeps for the next within a tick (src/co
       return { hash: h, kept: callsKept() - before }
     } finally {
       keepAcrossCalls(true)
+      useNearLists(true)
     }
   }
   const scenes: Array<[name: string, radius: number, least: number, setup: (sim: Sim) => void]> = [
