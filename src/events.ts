@@ -39,12 +39,12 @@ export interface EventBuffer {
   /** the normal impulse of a collision (0 otherwise) */
   impulse: Float64Array
   /**
-   * 1 for an event recorded by a fixed-tick solve at a window's start (after a launch or a command at that
-   * instant), 0 otherwise; phaseNow, what an event gets now. At one instant those come after the tick's own
-   * solve, which ends the window before, whichever drain each falls in (see before()).
+   * The world's time when the window that recorded the event began (src/schedule.ts sets windowFrom at each
+   * window's start): an event at that instant (a solve or a launch there, and what follows from them) comes
+   * after the events at that instant of the windows that end there, whichever drain each falls in (before()).
    */
-  phase: Uint8Array
-  phaseNow: number
+  from: Float64Array
+  windowFrom: number
   /**
    * Entities removed since the last drain: `cutIds[k]` was removed when `cutAt[k]` events were buffered.
    * Buffered events that name one of them (as ball, other or hole) are dropped at the drain, so no event
@@ -104,8 +104,8 @@ export function createEventBuffer(capacity = 1024): EventBuffer {
     via: new Uint8Array(capacity),
     other: new Uint32Array(capacity),
     impulse: new Float64Array(capacity),
-    phase: new Uint8Array(capacity),
-    phaseNow: 0,
+    from: new Float64Array(capacity),
+    windowFrom: 0,
     cutCount: 0,
     cutIds: new Uint32Array(16),
     cutAt: new Uint32Array(16),
@@ -117,7 +117,7 @@ export function createEventBuffer(capacity = 1024): EventBuffer {
 }
 
 /** The per-event arrays (grown and shifted together). */
-const PER_EVENT = ['type', 'ball', 'hole', 'time', 'delta', 'speed', 'hasDV', 'via', 'other', 'impulse', 'phase'] as const
+const PER_EVENT = ['type', 'ball', 'hole', 'time', 'delta', 'speed', 'hasDV', 'via', 'other', 'impulse', 'from'] as const
 
 function grow(buf: EventBuffer): void {
   const next = createEventBuffer(buf.type.length * 2)
@@ -150,7 +150,7 @@ export function appendEvent(buf: EventBuffer, type: EventTypeCode, ball: number,
   buf.via[i] = via
   buf.other[i] = 0
   buf.impulse[i] = 0
-  buf.phase[i] = buf.phaseNow
+  buf.from[i] = buf.windowFrom
   return i
 }
 
@@ -217,7 +217,7 @@ function cutMarkFor(buf: EventBuffer, id: number): Uint32Array {
 }
 
 /**
- * Puts the indices of the buffered events to report into buf.order, sorted by time (ties: by phase, ball id, then
+ * Puts the indices of the buffered events to report into buf.order, sorted by time (ties: by window, ball id, then
  * by the order they were recorded, so the order is deterministic); returns how many. Events that name an
  * entity removed after they were buffered are left out. Allocates nothing once the arrays have grown.
  */
@@ -250,18 +250,18 @@ function orderEvents(buf: EventBuffer): number {
 }
 
 /**
- * a before b in the drain order: time, then phase (at one instant, the fixed tick's solve after a launch or
- * a command after the tick's own solve: the two fall in one drain or in two, as the steps end, and a tie
- * broken by ball id across them would give another order at another frame rate), then ball id, then record
- * order
+ * a before b in the drain order: time, then whether the window that recorded it began at that instant (a
+ * window starting on an instant where another ended comes after it: the two fall in one drain or in two,
+ * as the steps end, and a tie broken by ball id across them gave another order at another frame rate),
+ * then ball id, then record order
  */
 function before(buf: EventBuffer, a: number, b: number): boolean {
   const ta = buf.time[a]!
   const tb = buf.time[b]!
   if (ta !== tb) return ta < tb
-  const pa = buf.phase[a]!
-  const pb = buf.phase[b]!
-  if (pa !== pb) return pa < pb
+  const pa = buf.from[a] === ta
+  const pb = buf.from[b] === tb
+  if (pa !== pb) return pb
   const ba = buf.ball[a]!
   const bb = buf.ball[b]!
   return ba !== bb ? ba < bb : a < b
@@ -306,7 +306,7 @@ function sortOrder(buf: EventBuffer, n: number): void {
 }
 
 /**
- * Returns the buffered events as objects sorted by time (ties: by phase, ball id, then the order they were
+ * Returns the buffered events as objects sorted by time (ties: by window, ball id, then the order they were
  * recorded, so the order is deterministic) and empties the buffer.
  */
 export function drainEventBuffer(buf: EventBuffer): BallEvent[] {

@@ -7,7 +7,7 @@ import { bounceSystem } from '../systems/bounce.js'
 import { captureSystem } from '../systems/capture.js'
 import { collisionsSystem } from '../systems/collisions.js'
 import { cogGateSystem } from '../systems/cogGate.js'
-import { fixedContactsSystem, solvingTickEnd } from '../systems/fixedContacts.js'
+import { fixedContactsSystem } from '../systems/fixedContacts.js'
 import { tabulatedRimSystem } from '../systems/tabulatedRim.js'
 import { heroReferenceSystem } from '../systems/heroReference.js'
 import { integrationSystem, setLipBatching } from '../systems/integration.js'
@@ -137,12 +137,7 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
       F.nextTick++
       F.due = true
       world.pass = 0
-      solvingTickEnd(true)
-      try {
-        for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
-      } finally {
-        solvingTickEnd(false)
-      }
+      for (let i = 0; i < schedule.length; i++) if (schedule[i]!.run === fixedContactsSystem) schedule[i]!.run(world)
       F.due = false
     }
     // the step's end, or the tick it ends on (a window that a halving took to a tick within TICK_SNAP past
@@ -213,6 +208,8 @@ function launchInstant(world: BallWorld): number {
 /** Runs the passes from the world's time to tEnd. */
 function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {
   world.tickEnd = tEnd
+  // events at this instant from here on come after those of the window that ended here (src/events.ts)
+  world.events.windowFrom = world.time
   // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball
   const maxPasses = world.collide === null ? world.config.MAX_EVENT_PASSES : world.config.MAX_EVENT_PASSES * (world.moving.count + 1)
   setLipBatching(world.collide !== null && world.config.RIM_MODEL !== 'tabulated' && isDefault(schedule))

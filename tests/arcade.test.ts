@@ -866,7 +866,8 @@ describe('the fixed tick: events at one instant in the same order at every frame
   // other balls at T). At 30 and 60 Hz both solves fell in one step, and the drain put the equal times in
   // ball-id order; at 120 and 240 Hz a step ends on T, so the tick's own solve was drained first: the
   // ordered events parted at the 1,783rd (T = 6175/120 s), though the states stayed the same. An event now
-  // carries its phase at the instant (src/events.ts), and the drain orders by it before the ball id.
+  // keeps the start of the window that recorded it (src/events.ts), and at one instant the drain puts what a
+  // window starting there recorded after the rest, before the ball id.
   it('a launcher thrown at 8 balls a second for 52 s, captured and gutter balls removed: the same ordered events at 30, 60, 120 and 240 Hz', () => {
     const run = (hz: number): string[] => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed' })

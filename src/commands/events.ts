@@ -4,8 +4,8 @@ import type { BallWorld } from '../world/createWorld.js'
 import { checkWorld } from './validate.js'
 
 /**
- * The events since the last drain, in time order (ties: with the fixed tick, a solve after a launch or a
- * command at an instant after the tick's own solve there; then by ball id, then in the order they were recorded),
+ * The events since the last drain, in time order (ties: what a window starting on an instant recorded
+ * there after what the window ending there recorded, then by ball id, then in the order they were recorded),
  * as new objects; the buffer is emptied. Events naming a ball or hole removed after they were recorded are
  * dropped (the id may already belong to a new entity).
  */
