@@ -21,7 +21,8 @@ import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
-import { CHAIN_PAIRS_PER_BALL, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
+import { lastCallChanges } from '../src/contacts/fixedCalls.js'
+import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 
@@ -60,10 +61,13 @@ export function fixedContactsSystem(w: BallWorld): void {
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts), and past MAX_PASS_ROUNDS only while the tick has CHAIN_PAIRS_PER_BALL pairs a
-  // candidate or fewer (a push along a row); those rounds start from the new pairs when the last round converged
+  // candidate or fewer (a push along a row), and past MAX_CHAIN_ROUNDS only while each call keeps its stamps (a
+  // round then costs the balls it changes), up to CHAIN_ROUNDS_PER_CANDIDATE rounds a candidate; those rounds
+  // start from the new pairs when the last round converged
   let added = 0
   let widened = 1
-  for (let round = 0; round < MAX_CHAIN_ROUNDS; round++) {
+  for (let round = 0; ; round++) {
+    if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) break
     const extra = round >= MAX_WIDEN_ROUNDS
     if (extra && (!mayPass(F) || F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened)) break
     if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) break

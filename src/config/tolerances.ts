@@ -112,6 +112,13 @@ export const MAX_PASS_ROUNDS = 256
 export const MAX_CHAIN_ROUNDS = 4096
 export const CHAIN_PAIRS_PER_BALL = 4
 /**
+ * ... and past MAX_CHAIN_ROUNDS, up to CHAIN_ROUNDS_PER_CANDIDATE rounds a candidate, while each solve
+ * call keeps the stamps of the one before (src/contacts/fixedCalls.ts): a round then costs the few balls
+ * it changes and the cells it looks up, not the tick's candidates. A row of 5,000 radius-0.5 balls 1 px
+ * apart struck at 1e5 px/s let the ball at index 4,098 through its neighbour at MAX_CHAIN_ROUNDS.
+ */
+export const CHAIN_ROUNDS_PER_CANDIDATE = 2
+/**
  * The rounds after MAX_WIDEN_ROUNDS stop once the tick has PASS_PAIRS_PER_BALL pairs a candidate, or the
  * last round paired each ball it widened with more than PASS_PAIRS_PER_WIDENED balls. A ball widened by
  * its whole travel in every direction is paired with every ball within it: rows of tiny balls side by

@@ -8,7 +8,7 @@
 //   - in a call that keeps the stamps, sweeps that visit only the pairs that can be met again: those of the
 //     balls changed since their last test, taken from a heap in the order a whole sweep visits them (by
 //     index, forward or backward), so they take the same impulses in the same order as the whole sweep.
-//     A sweep whose pairs to look at would be more than a quarter of the tick's walks them all instead.
+//     A sweep whose pairs to look at would be more than a sixteenth of the tick's walks them all instead.
 import type { FixedContactState } from '../world/fixedState.js'
 import { grownTo } from '../world/fixedState.js'
 import { packings } from './fixedOrder.js'
@@ -42,6 +42,7 @@ export function beginCall(F: FixedContactState, fresh: number): boolean {
   callHitCount = 0
   pendingCount = 0
   pendingPairs = 0
+  overflow = false
   sweepNo++
   if (keep) linkPairs(F)
   return keep
@@ -73,12 +74,14 @@ export function listChange(F: FixedContactState, i: number, first: boolean): voi
     callHits[callHitCount++] = i
   }
   if (!kept) return
-  // the pairs to look at again: this ball's, in the next sweep, and those still ahead in this one
-  if (pendMark[i] !== sweepNo) {
+  // the pairs to look at again: this ball's, in the next sweep (until they are too many to list: the next
+  // sweep walks every pair), and those still ahead in this one
+  if (pendMark[i] !== sweepNo && !overflow) {
     pendMark[i] = sweepNo
     if (pendingCount === pending.length) pending = grownTo(pending, 2 * pendingCount)
     pending[pendingCount++] = i
     pendingPairs += degree[i]!
+    if (LIST_SHARE * pendingPairs > F.pairCount) overflow = true
   }
   if (!listing) return
   for (let p = head[i]!; p >= 0; p = F.pairA[p] === i ? linkA[p]! : linkB[p]!) {
@@ -155,6 +158,11 @@ let pending = new Int32Array(64)
 let pendingCount = 0
 let pendingPairs = 0
 let pendMark = new Float64Array(256)
+/** the pairs listed for the next sweep passed 1/LIST_SHARE of the tick's (a heap costs more than a walk then) */
+let overflow = false
+const LIST_SHARE = 16
+/** a listing sweep that outgrew its list, walking every pair from where it was */
+let walking = false
 let sweepNo = 0
 let listing = false
 let back = false
@@ -170,6 +178,8 @@ export function beginSweep(F: FixedContactState, backward: boolean, first: boole
   const from = pending
   const fromCount = pendingCount
   const fromPairs = pendingPairs
+  const over = overflow
+  overflow = false
   // this sweep's changes are listed anew
   pending = spare
   spare = from
@@ -177,9 +187,10 @@ export function beginSweep(F: FixedContactState, backward: boolean, first: boole
   pendingPairs = 0
   sweepNo++
   listing = false
+  walking = false
   if (!kept) return false
   const todo = first ? F.pairCount - fresh : fromPairs
-  if (4 * todo > F.pairCount) return false
+  if (over || LIST_SHARE * todo > F.pairCount) return false
   listing = true
   back = backward
   pairTotal = F.pairCount
@@ -198,6 +209,18 @@ let spare = new Int32Array(64)
 
 /** The next pair of a listing sweep, in the sweep's order; -1 at its end (the walls after it push nothing). */
 export function nextPair(): number {
+  // too many listed: the rest of the sweep walks every pair (those listed are among them, in the same order)
+  if (walking || heapCount > pairTotal / LIST_SHARE) {
+    walking = true
+    listing = false
+    heapCount = 0
+    if (atKey + 1 >= pairTotal) {
+      atKey = pairTotal
+      return -1
+    }
+    atKey++
+    return back ? pairTotal - 1 - atKey : atKey
+  }
   if (heapCount === 0) {
     atKey = pairTotal
     return -1

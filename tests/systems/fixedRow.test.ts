@@ -7,7 +7,7 @@
 // is paired with the next ball its path meets: src/contacts/fixedCut.ts).
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
-import { MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
+import { CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 import { callsKept, keepAcrossCalls } from '../../src/contacts/fixedCalls'
 import { useNearLists } from '../../src/contacts/fixedNear'
 
@@ -38,6 +38,7 @@ describe('fixed tick: a push along a row with gaps', () => {
   it('the tolerances leave room beyond the widening rounds', () => {
     expect(MAX_PASS_ROUNDS).toBeGreaterThan(MAX_WIDEN_ROUNDS)
     expect(MAX_CHAIN_ROUNDS).toBeGreaterThan(MAX_PASS_ROUNDS)
+    expect(CHAIN_ROUNDS_PER_CANDIDATE).toBeGreaterThanOrEqual(1)
   })
 
   const cases: Array<[radius: number, gap: number, speed: number, n: number]> = [
@@ -57,6 +58,8 @@ describe('fixed tick: a push along a row with gaps', () => {
     // stopped earlier still at the pair bounds, every sped-up ball paired with all 416 balls along its path
     [0.5, 1, 1e5, 1000],
     [11, 1, 1e5, 1000],
+    // longer than MAX_CHAIN_ROUNDS: at 4,096 rounds a tick the ball at index 4,098 went through its neighbour
+    [0.5, 1, 1e5, 5000],
   ]
   for (const [radius, gap, speed, n] of cases) {
     it(`radius ${radius}, gap ${gap} px, ${speed} px/s into ${n} balls: no ball passes another, the last one leaves with the striker's speed`, () => {
