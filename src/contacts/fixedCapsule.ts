@@ -381,10 +381,6 @@ export function holderBox(F: FixedContactState, j: number): void {
 
 /** Whether the box of what candidate j (with a capsule) covers misses the target box: then so do the two covers. */
 export function beyondBox(F: FixedContactState, j: number): boolean {
-  const R = Math.max(F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!, F.r[j]! + TOUCH_GAP)
-  const x = F.x[j]!
-  const y = F.y[j]!
-  const ex = x + fullX[j]! * capS[j]!
-  const ey = y + fullY[j]! * capS[j]!
-  return Math.max(x, ex) + R < target[0]! || Math.min(x, ex) - R > target[1]! || Math.max(y, ey) + R < target[2]! || Math.min(y, ey) - R > target[3]!
+  holderBox(F, j)
+  return nearBox[1]! < target[0]! || nearBox[0]! > target[1]! || nearBox[3]! < target[2]! || nearBox[2]! > target[3]!
 }

@@ -39,25 +39,24 @@ let joinedUpTo = 0
 
 /** A new contact tick (after its gather): nothing listed yet. */
 export function beginNear(F: FixedContactState): void {
+  size = NEAR_CELLS * Math.max(F.gridCell, F.cell, TOUCH_GAP)
+  clear(F)
+}
+
+/** Empties the list and the hash (numbered as the candidates are now). */
+function clear(F: FixedContactState): void {
   packing = packings()
   joinedCount = 0
   joinedUpTo = F.gathered
   entryCount = 0
   longCount = 0
   bucketsFor++
-  size = NEAR_CELLS * Math.max(F.gridCell, F.cell, TOUCH_GAP)
   enteredHolders = 0
 }
 
 function renumbered(F: FixedContactState): void {
   if (packing === packings()) return
-  packing = packings()
-  joinedCount = 0
-  joinedUpTo = F.gathered
-  entryCount = 0
-  longCount = 0
-  bucketsFor++
-  enteredHolders = 0
+  clear(F)
   // the holders entered before, by their boxes now
   const list = holderList()
   for (let h = 0, n = holdersNow(); h < n; h++) enter(F, list[h]!)
