@@ -36,9 +36,7 @@ export function cutCapsule(w: BallWorld, F: FixedContactState, g: number, peFrom
   nearest = 1
   for (let t = peFrom; t < peTo; t++) probe(F, g, F.packAt[F.pe2[t]!]!)
   for (let m = 0; m < F.bigCount; m++) probe(F, g, F.big[m]!)
-  const free = joinedFree(F, upTo)
-  if (free < 0) for (let j = F.gathered; j < upTo; j++) probe(F, g, j)
-  else for (let k = 0, jl = joinedList(); k < free; k++) probe(F, g, jl[k]!)
+  for (let k = 0, free = joinedFree(F, upTo), jl = joinedList(); k < free; k++) probe(F, g, jl[k]!)
   const step = Math.max((CUT_STRETCH * F.gridCell) / pathLength(g), 1 / MAX_CUT_STRETCHES)
   for (let a = 0; a < nearest; a += step) {
     const b = a + step < 1 ? a + step : 1

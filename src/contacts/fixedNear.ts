@@ -64,10 +64,17 @@ function renumbered(F: FixedContactState): void {
 
 /**
  * The resting balls the rounds added, below `upTo`, without a capsule, in index order, into joinedList()
- * (their count); -1: walk F.gathered to upTo.
+ * (their count; with the lists off, every one of F.gathered to upTo).
  */
 export function joinedFree(F: FixedContactState, upTo: number): number {
-  if (!using) return -1
+  if (!using) {
+    let n = 0
+    for (let j = F.gathered; j < upTo; j++) {
+      if (n === joined.length) joined = grownTo(joined, 2 * n)
+      joined[n++] = j
+    }
+    return n
+  }
   renumbered(F)
   let n = 0
   for (let k = 0; k < joinedCount; k++) {
@@ -103,6 +110,8 @@ let entryNext = new Int32Array(256)
 let entryCount = 0
 let long = new Int32Array(64)
 let longCount = 0
+/** the bucket stamp at which each candidate went into `long` */
+let longAt = new Float64Array(256)
 let enteredHolders = 0
 
 /** Enters the candidates with a capsule the round widened (its end: their boxes as they are now), and those made since. */
@@ -117,19 +126,26 @@ export function enterWidened(F: FixedContactState): void {
 }
 
 function enter(F: FixedContactState, j: number): void {
+  if (2 * (entryCount + NEAR_MAX_CELLS) > buckets) rehash(F, entryCount + NEAR_MAX_CELLS)
+  place(F, j)
+}
+
+/** Candidate j by its box now: in the cells it spans, or in `long` (once a tick) if they are too many. */
+function place(F: FixedContactState, j: number): void {
   holderBox(F, j)
   const x0 = Math.floor(nearBox[0]! / size)
   const x1 = Math.floor(nearBox[1]! / size)
   const y0 = Math.floor(nearBox[2]! / size)
   const y1 = Math.floor(nearBox[3]! / size)
-  const cells = (x1 - x0 + 1) * (y1 - y0 + 1)
-  if (!(cells <= NEAR_MAX_CELLS)) {
-    if (longCount === long.length) long = grownTo(long, 2 * longCount)
-    long[longCount++] = j
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) <= NEAR_MAX_CELLS) {
+    for (let cy = y0; cy <= y1; cy++) for (let cx = x0; cx <= x1; cx++) link(j, bucketOf(cx, cy))
     return
   }
-  if (2 * (entryCount + cells) > buckets) rehash(F, entryCount + cells)
-  for (let cy = y0; cy <= y1; cy++) for (let cx = x0; cx <= x1; cx++) link(j, bucketOf(cx, cy))
+  if (longAt.length < F.n) longAt = grownTo(longAt, 2 * F.n)
+  if (longAt[j] === bucketsFor) return
+  longAt[j] = bucketsFor
+  if (longCount === long.length) long = grownTo(long, 2 * longCount)
+  long[longCount++] = j
 }
 
 function link(j: number, b: number): void {
@@ -152,22 +168,11 @@ function rehash(F: FixedContactState, entries: number): void {
   while (buckets < 4 * entries) buckets *= 2
   bucketHead = new Int32Array(buckets)
   bucketAt = new Float64Array(buckets)
-  bucketsFor = 1
+  bucketsFor++
   entryCount = 0
   longCount = 0
   const list = holderList()
-  for (let h = 0, n = holdersNow(); h < n; h++) {
-    const j = list[h]!
-    holderBox(F, j)
-    const x0 = Math.floor(nearBox[0]! / size)
-    const x1 = Math.floor(nearBox[1]! / size)
-    const y0 = Math.floor(nearBox[2]! / size)
-    const y1 = Math.floor(nearBox[3]! / size)
-    if (!((x1 - x0 + 1) * (y1 - y0 + 1) <= NEAR_MAX_CELLS)) {
-      if (longCount === long.length) long = grownTo(long, 2 * longCount)
-      long[longCount++] = j
-    } else for (let cy = y0; cy <= y1; cy++) for (let cx = x0; cx <= x1; cx++) link(j, bucketOf(cx, cy))
-  }
+  for (let h = 0, n = holdersNow(); h < n; h++) place(F, list[h]!)
 }
 
 function bucketOf(cx: number, cy: number): number {

@@ -99,9 +99,7 @@ function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number,
   }
   for (let m = 0; m < F.bigCount; m++) offer(F, g, F.big[m]!)
   // the resting balls the rounds added and those with a capsule, where they can be (fixedNear.ts)
-  const free = joinedFree(F, upTo)
-  if (free < 0) for (let j = F.gathered; j < upTo; j++) offer(F, g, j)
-  else for (let k = 0, jl = joinedList(); k < free; k++) offer(F, g, jl[k]!)
+  for (let k = 0, free = joinedFree(F, upTo), jl = joinedList(); k < free; k++) offer(F, g, jl[k]!)
   setTarget(F, g)
   const near = holdersIn(F, bounds[0]!, bounds[1]!, bounds[2]!, bounds[3]!)
   const list = near < 0 ? holderList() : foundList()
@@ -345,9 +343,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
 
 /** Widened g against the resting balls earlier rounds added (F.gathered to `upTo`; in neither grid), in index order (src/contacts/fixedNear.ts). */
 function pairJoined(F: FixedContactState, g: number, upTo: number): void {
-  const free = joinedFree(F, upTo)
-  if (free < 0) for (let j = F.gathered; j < upTo; j++) consider(F, g, j)
-  else for (let k = 0, jl = joinedList(); k < free; k++) consider(F, g, jl[k]!)
+  for (let k = 0, free = joinedFree(F, upTo), jl = joinedList(); k < free; k++) consider(F, g, jl[k]!)
 }
 
 /** Dense ticks (src/contacts/fixedDense.ts): pairs widened candidate g with the small candidates of the grid cells within boxRange[0] of it. */
