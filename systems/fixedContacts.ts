@@ -18,6 +18,7 @@ import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
+import { redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
@@ -39,17 +40,48 @@ export function fixedContactsSystem(w: BallWorld): void {
     if (F.dense === 0) F.sweepNext = F.sweepCell
   }
   coarsenTick(w, F)
+  // a try that stopped with a ball that may pass through another is dropped, and the tick solved again at a
+  // finer spacing (src/contacts/fixedRedo.ts)
+  saveTick(w, F)
+  let tries = 0
+  let atLeast = 0
+  for (;;) {
+    const h = solveTick(w, F, t, atLeast)
+    if (h === NO_PAIRS) return
+    if (h === SOLVED) break
+    atLeast = redoHalvings(++tries, h)
+    if (atLeast === 0) break
+    restoreTick(w, F)
+  }
+  const capped = F.capped
+  solvePositions(w, F)
+  // a ball the projection pushed into a ball the tick did not pair it with: paired, projected again
+  for (let round = 0; round < MAX_WIDEN_ROUNDS && F.overlap && F.capped === capped && joinPushed(w, F); round++) solvePositions(w, F)
+  applyChanges(w, F, t)
+}
+
+/** solveTick's answers besides the halvings of a try that stopped with a ball that may pass */
+const NO_PAIRS = -2
+const SOLVED = -1
+
+/**
+ * One try at the tick: gathers and pairs the candidates, halves the tick (at least `atLeast` times), solves
+ * the velocities and widens the reach of the balls the solve sped up, round after round. Returns NO_PAIRS
+ * when there is nothing to solve, SOLVED when the rounds ended with no ball that could pass through another,
+ * else the halvings this try took (the rounds stopped at a budget with such a ball).
+ */
+function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: number): number {
   if (F.dense === 1) gatherDense(w, F)
   else gatherCandidates(w, F)
   if (F.full < 2) {
     F.tickPairs = 0
-    return
+    return NO_PAIRS
   }
   if (F.dense === 1) findPairsDense(F)
   else findPairs(w, F)
-  halveTick(w, F)
+  const h = halveTick(w, F, atLeast)
   chooseBroadphase(F)
-  if (F.pairCount === 0) return
+  if (F.pairCount === 0) return NO_PAIRS
   const iterations = w.config.CONTACT_ITERATIONS
   F.hitCount = 0
   F.overlap = false
@@ -67,21 +99,19 @@ export function fixedContactsSystem(w: BallWorld): void {
   let added = 0
   let widened = 1
   for (let round = 0; ; round++) {
-    if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) break
+    if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) return SOLVED
     const extra = round >= MAX_WIDEN_ROUNDS
-    if (extra && (!mayPass(F) || F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened)) break
-    if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) break
+    if (extra) {
+      if (!mayPass(F)) return SOLVED
+      if (F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened) return h
+    }
+    if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) return SOLVED
     const pairs = F.pairCount
-    if (!widenReach(w, F) || (extra && F.pairCount === pairs)) break
+    if (!widenReach(w, F) || (extra && F.pairCount === pairs)) return SOLVED
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
     converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0)
   }
-  const capped = F.capped
-  solvePositions(w, F)
-  // a ball the projection pushed into a ball the tick did not pair it with: paired, projected again
-  for (let round = 0; round < MAX_WIDEN_ROUNDS && F.overlap && F.capped === capped && joinPushed(w, F); round++) solvePositions(w, F)
-  applyChanges(w, F, t)
 }
 
 /**

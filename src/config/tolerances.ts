@@ -129,6 +129,15 @@ export const CHAIN_ROUNDS_PER_CANDIDATE = 2
  */
 export const PASS_PAIRS_PER_BALL = 256
 /**
+ * ... and when they stop there (or at PASS_PAIRS_PER_WIDENED) with a ball that could still pass another,
+ * the tick's solve is dropped and the tick solved again, halved once more than the try before, then 3, 7
+ * and 15 times more (src/contacts/fixedRedo.ts), at most MAX_TICK_REDOS times and never past
+ * MAX_TICK_HALVINGS: a ball 100 times heavier than a row of radius-0.5 balls 1 px apart, striking it at
+ * 1e5 px/s, sends each light ball ahead at nearly twice its speed, every light ball then reaches every
+ * other within the tick, and balls went through others from index 501 of 520 (604 of 1,000).
+ */
+export const MAX_TICK_REDOS = 4
+/**
  * Fixed-tick contacts: a ball the solve sped up so that it would move more than CAPSULE_TRAVEL times its
  * radius in a tick is widened along its path only, to the capsule it sweeps (src/contacts/fixedCapsule.ts).
  */

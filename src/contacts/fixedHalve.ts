@@ -61,12 +61,14 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
  * whose pairs a finer one would not thin), and backs coarsening off when the coarser tick it just tried is
  * halved again at once.
  */
-export function halveTick(w: BallWorld, F: FixedContactState): void {
+export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): number {
   const levels = MAX_TICK_HALVINGS - F.halvings
   let h = 0
   let saturated = false
-  if (F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full) {
+  if (F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full || atLeast > 0) {
     h = levels > 0 ? bestHalvings(w, F, levels) : 0
+    // a tick solved again at a finer spacing (src/contacts/fixedRedo.ts): at least that many
+    if (h < atLeast) h = Math.min(atLeast, levels)
     if (h > 0) halve(w, F, h)
     // a halved tick whose pairs a finer one would not thin (half of them or more kept: balls sped up beyond
     // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser
@@ -81,6 +83,41 @@ export function halveTick(w: BallWorld, F: FixedContactState): void {
   }
   F.tickPairs = saturated ? 0 : F.pairCount
   F.tickFull = F.full
+  return h
+}
+
+/** Halvings still open to a tick from the spacing it started at (saveSpacing). */
+export function halvingsLeft(): number {
+  return MAX_TICK_HALVINGS - spacing[0]!
+}
+
+/** The spacing's state at a tick's start, after coarsenTick: halvings, tick, next tick, the window's end, coarsening's counts and flag. */
+const spacing = new Float64Array(9)
+
+/** Keeps the spacing's state at a tick's start (after coarsenTick), for a tick solved again (restoreSpacing). */
+export function saveSpacing(w: BallWorld, F: FixedContactState): void {
+  spacing[0] = F.halvings
+  spacing[1] = F.tick
+  spacing[2] = F.nextTick
+  spacing[3] = w.tickEnd
+  spacing[4] = F.tickPairs
+  spacing[5] = F.tickFull
+  spacing[6] = F.coarsenWait
+  spacing[7] = F.coarsenBackoff
+  spacing[8] = coarsened ? 1 : 0
+}
+
+/** Puts back the spacing's state saveSpacing kept: the tick is gathered and halved again from there. */
+export function restoreSpacing(w: BallWorld, F: FixedContactState): void {
+  F.halvings = spacing[0]!
+  F.tick = spacing[1]!
+  F.nextTick = spacing[2]!
+  w.tickEnd = spacing[3]!
+  F.tickPairs = spacing[4]!
+  F.tickFull = spacing[5]!
+  F.coarsenWait = spacing[6]!
+  F.coarsenBackoff = spacing[7]!
+  coarsened = spacing[8] === 1
 }
 
 /** Most ticks coarsening waits after tries that were halved again at once (doubling from 2). */

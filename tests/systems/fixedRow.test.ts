@@ -10,6 +10,7 @@ import { createBallPhysics } from '../../src/index'
 import { CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 import { callsKept, keepAcrossCalls } from '../../src/contacts/fixedCalls'
 import { useNearLists } from '../../src/contacts/fixedNear'
+import { ticksRedone } from '../../src/contacts/fixedRedo'
 
 function row(radius: number, gap: number, speed: number, n: number) {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
@@ -97,6 +98,49 @@ describe('fixed tick: a heavy striker through a row (its capsule cut at the firs
     }
     expect(swapped).toBe(false)
     for (const i of ids) expect(sim.ballState(i).vx).toBeGreaterThan(0)
+  })
+})
+
+/**
+ * A ball 100 times heavier than the balls of a row sends each ahead at nearly twice its speed, and, their
+ * positions frozen at the tick's start, every light ball then reaches every other within the tick: the
+ * widening rounds stopped at PASS_PAIRS_PER_BALL with a ball that could still pass, and balls passed through
+ * others (from index 501 of 520; 604 of 1,000). The tick is now solved again at a finer spacing
+ * (src/contacts/fixedRedo.ts).
+ */
+describe('fixed tick: a tick whose widening rounds stop with a ball that may pass is solved again, halved', () => {
+  function strike(hz: number) {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+    const ids = [sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0, mass: 100 })]
+    for (let i = 0; i < 520; i++) ids.push(sim.addBall({ x: 2 + i * 2, y: 0, vx: 0, vy: 0 }))
+    const mass = ids.map((_, k) => (k === 0 ? 100 : 1))
+    const p0 = 100 * 1e5
+    const e0 = 0.5 * 100 * 1e10
+    const redone = ticksRedone()
+    let swapped = -1
+    let collisions = 0
+    for (let f = 0; f < hz / 20; f++) {
+      sim.step(1 / hz)
+      for (const e of sim.drainEvents()) if (e.type === 'collision') collisions++
+      const st = ids.map((i) => sim.ballState(i))
+      for (let k = 1; k < st.length && swapped < 0; k++) if (!(st[k]!.x > st[k - 1]!.x)) swapped = k
+      const p = st.reduce((acc, b, k) => acc + mass[k]! * b.vx, 0)
+      const e = st.reduce((acc, b, k) => acc + 0.5 * mass[k]! * (b.vx * b.vx + b.vy * b.vy), 0)
+      expect(Math.abs(p - p0)).toBeLessThan(1e-9 * p0)
+      expect(e).toBeLessThanOrEqual(e0 * (1 + 1e-12))
+    }
+    const bits = ids.map((i) => { const b = sim.ballState(i); return `${b.x},${b.y},${b.vx},${b.vy}` }).join(';')
+    return { swapped, collisions, redone: ticksRedone() - redone, last: sim.ballState(ids[520]!).vx, bits }
+  }
+  it('a ball of mass 100 at 1e5 px/s into 520 radius-0.5 balls 1 px apart: no ball passes another, the last leaves as the two-body law says, the same bits at 60 and 240 Hz', () => {
+    const a = strike(60)
+    expect(a.swapped).toBe(-1)
+    // the last ball of the row, struck by the heavy one through a chain of equal balls: 2·100/101 · 1e5
+    expect(a.last).toBeCloseTo((2 * 100 * 1e5) / 101, 1)
+    expect(a.redone).toBeGreaterThan(0)
+    const b = strike(240)
+    expect(b.collisions).toBe(a.collisions)
+    expect(b.bits).toBe(a.bits)
   })
 })
 
