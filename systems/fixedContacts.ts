@@ -6,7 +6,9 @@
 // sweep of src/contacts/fixedGrid.ts, fixedSweep.ts and fixedOrder.ts: the same pairs in the same order),
 // solves their velocities (src/contacts/fixedSolve.ts)
 // and separates overlaps (src/contacts/fixedProject.ts), pairing again the balls the solve sped up
-// (src/contacts/fixedReach.ts) and those the projection pushed into balls they were not paired with (fixedJoin.ts). Between ticks the balls follow their closed-form paths through the holes
+// (src/contacts/fixedReach.ts; a tick whose rounds stop at their pair bounds with a ball that could still pass
+// another is solved again, halved: fixedRedo.ts) and those the projection pushed into balls they were not
+// paired with (fixedJoin.ts). Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
@@ -67,8 +69,9 @@ const SOLVED = -1
 /**
  * One try at the tick: gathers and pairs the candidates, halves the tick (at least `atLeast` times), solves
  * the velocities and widens the reach of the balls the solve sped up, round after round. Returns NO_PAIRS
- * when there is nothing to solve, SOLVED when the rounds ended with no ball that could pass through another,
- * else the halvings this try took (the rounds stopped at a budget with such a ball).
+ * when there is nothing to solve; the halvings this try took when the rounds stopped at a bound on their
+ * pairs with a ball that could still pass through another (the tick is solved again); else SOLVED (the
+ * rounds ended, or stopped at a bound on their number, which solving again along a row only makes dearer).
  */
 function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: number): number {
   if (F.dense === 1) gatherDense(w, F)
