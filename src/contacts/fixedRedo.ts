@@ -6,8 +6,8 @@
 // row of light ones sends each ahead at up to twice its speed, and, frozen at the tick's start, every light
 // ball reaches every other within a tick; at a finer spacing each reaches a few. The solve writes only the
 // packed candidates until the projection, so dropping it is putting back what it wrote outside them: the
-// events and contacts it recorded, the balls the last tick touched (the gather consumes them) and the
-// spacing's state. At most MAX_TICK_REDOS times a tick (src/config/tolerances.ts), each halved 1, 3, 7, 15
+// events and contacts it recorded, the count of the balls the last tick touched (the gather empties the
+// list; nothing in a try writes to it: applyChanges does, after the last try) and the spacing's state. At most MAX_TICK_REDOS times a tick (src/config/tolerances.ts), each halved 1, 3, 7, 15
 // times more than the first try, and never past MAX_TICK_HALVINGS.
 import { MAX_TICK_REDOS } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
@@ -16,7 +16,6 @@ import { halvingsLeft, restoreSpacing, saveSpacing } from './fixedHalve.js'
 
 let events = 0
 let contacts = 0
-let touched = new Uint32Array(16)
 let touchedCount = 0
 /** Ticks solved again, over the process's life (for tests and benchmarks). */
 let redone = 0
@@ -26,14 +25,12 @@ export function saveTick(w: BallWorld, F: FixedContactState): void {
   events = w.events.count
   contacts = F.contacts
   touchedCount = F.touchedCount
-  if (touched.length < touchedCount) touched = new Uint32Array(2 * touchedCount)
-  for (let k = 0; k < touchedCount; k++) touched[k] = F.touched[k]!
   saveSpacing(w, F)
 }
 
 /**
  * The halvings the next try of this tick asks for, more than the spacing it started at, when the last try,
- * which took `last` of them, stopped with a ball that may pass (try: the tries so far); 0 when none is left.
+ * which took `last` of them, stopped with a ball that may pass (tries: the tries so far); 0 when none is left.
  */
 export function redoHalvings(tries: number, last: number): number {
   if (tries > MAX_TICK_REDOS) return 0
@@ -46,8 +43,6 @@ export function redoHalvings(tries: number, last: number): number {
 export function restoreTick(w: BallWorld, F: FixedContactState): void {
   w.events.count = events
   F.contacts = contacts
-  if (F.touched.length < touchedCount) F.touched = new Uint32Array(touched.length)
-  for (let k = 0; k < touchedCount; k++) F.touched[k] = touched[k]!
   F.touchedCount = touchedCount
   restoreSpacing(w, F)
   redone++
