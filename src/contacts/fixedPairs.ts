@@ -1,9 +1,9 @@
-// The fixed-tick solve's pairs (src/contacts/fixedSolve.ts, fixedProject.ts): a pair's normal and gap,
-// and sweeps over listed pairs. After the full sweeps, a sweep need only meet the pairs with a ball whose
-// velocity or position changed since the pair was last met (the others cannot take an impulse or a push):
-// each candidate's pairs are indexed (CSR), and a sweep takes its pairs in pair order from a heap, so that
-// a pair ahead of the sweep joins it when one of its balls changes and a pair behind joins the next sweep,
-// as in a full Gauss-Seidel sweep.
+// The fixed-tick solve's pairs (src/contacts/fixedSolve.ts, fixedProject.ts): a pair's normal and gap, its
+// swept test, and sweeps over listed pairs. After the full sweeps, a sweep need only meet the pairs with a
+// ball whose velocity or position changed since the pair was last met (the others cannot take an impulse or
+// a push): each candidate's pairs are indexed (CSR), and a sweep takes its pairs in pair order from a heap,
+// so that a pair ahead of the sweep joins it when one of its balls changes and a pair behind joins the next
+// sweep, as in a full Gauss-Seidel sweep.
 import type { FixedContactState } from '../world/fixedState.js'
 
 /**
@@ -27,6 +27,34 @@ export function normal(F: FixedContactState, a: number, b: number): void {
     nrm.y = s > 0 ? ry / s : 0
   }
   nrm.gap = d - F.r[a]! - F.r[b]!
+}
+
+/**
+ * True when candidates a and b touch now or will within the tick on straight lines at their present
+ * velocities (the swept test); the contact normal, a→b at that first touch, is left in nrm.
+ */
+export function meetsWithinTick(F: FixedContactState, a: number, b: number): boolean {
+  const dx = F.x[b]! - F.x[a]!
+  const dy = F.y[b]! - F.y[a]!
+  const S = F.r[a]! + F.r[b]!
+  const c = dx * dx + dy * dy - S * S
+  if (c <= 0) {
+    if (c < 0) F.overlap = true
+    normal(F, a, b)
+    return true
+  }
+  const ux = F.vx[b]! - F.vx[a]!
+  const uy = F.vy[b]! - F.vy[a]!
+  const half = dx * ux + dy * uy
+  if (half >= 0) return false
+  const disc = half * half - (ux * ux + uy * uy) * c
+  if (disc < 0) return false
+  // first root of |d + u·τ| = S, in the form that keeps its digits when the pair barely approaches
+  const tau = c / (-half + Math.sqrt(disc))
+  if (tau > F.tick) return false
+  nrm.x = (dx + ux * tau) / S
+  nrm.y = (dy + uy * tau) / S
+  return true
 }
 
 /** Each candidate's pairs (CSR: F.adjStart, F.adjPairs). */

@@ -28,7 +28,7 @@ import { holeAt } from '../world/holeTable.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
-import { normal, nrm } from './fixedPairs.js'
+import { meetsWithinTick, nrm } from './fixedPairs.js'
 import { strikeLeavesRim } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
@@ -305,34 +305,6 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
     w.events.time[ev] = S[S_T]!
     F.changed[q]! |= WALL_REPORTED
   }
-  return true
-}
-
-/**
- * True when candidates a and b touch now or will within the tick on straight lines at their present
- * velocities (the swept test); the contact normal, a→b at that first touch, is left in nrm.
- */
-function meetsWithinTick(F: FixedContactState, a: number, b: number): boolean {
-  const dx = F.x[b]! - F.x[a]!
-  const dy = F.y[b]! - F.y[a]!
-  const S = F.r[a]! + F.r[b]!
-  const c = dx * dx + dy * dy - S * S
-  if (c <= 0) {
-    if (c < 0) F.overlap = true
-    normal(F, a, b)
-    return true
-  }
-  const ux = F.vx[b]! - F.vx[a]!
-  const uy = F.vy[b]! - F.vy[a]!
-  const half = dx * ux + dy * uy
-  if (half >= 0) return false
-  const disc = half * half - (ux * ux + uy * uy) * c
-  if (disc < 0) return false
-  // first root of |d + u·τ| = S, in the form that keeps its digits when the pair barely approaches
-  const tau = c / (-half + Math.sqrt(disc))
-  if (tau > F.tick) return false
-  nrm.x = (dx + ux * tau) / S
-  nrm.y = (dy + uy * tau) / S
   return true
 }
 
