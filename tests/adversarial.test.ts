@@ -894,4 +894,26 @@ describe('shrunk counterexamples of the long run', () => {
     // the jam is the one the long run found: its ticks spend the projection's budget
     expect(capped).toBeGreaterThan(30)
   })
+
+  // the contact normal from the swept test was d + u·τ over the radii's sum: a difference of two lengths of a
+  // tick's travel (250 px) taken to 0.14 px, unit only to 1e-10, so the elastic impulse of equal balls
+  // left the pair 0.64 of 4.5e8 (1.4e-9) richer; it is now divided by its own length
+  it('fixed-tick contacts: a radius-0.07 ball at 3e4 px/s striking an equal one at rest keeps the energy (the swept normal is a unit vector)', () => {
+    const ops = [
+      ...PANEL_HOLES.map((h) => ({ t: 'addHole', ...h })),
+      { t: 'burst', n: 2, x: -20, y: -20, spread: 0, speed: 30000, radius: 0.06982324040771715, mass: 1, seed: 0, aim: { p: 'aim', k: 0, d: 76.3468, off: 0.38568400000000014, a: 5.3765586 } },
+      { t: 'step', dt: 10 },
+      { t: 'setVel', k: 0, vx: -1.2246468e-316, vy: 1e-300 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0 }, ops, ['finite', 'events', 'energy'])
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: 0.06982324040771715 })
+    const b = sim.addBall({ x: 139.25, y: -207.63, vx: -16710.100389570063, vy: 24915.307442824993, radius: 0.06982324040771715 })
+    const B = sim.world.Ball
+    const ke = () => 0.5 * (B.vx[a]! ** 2 + B.vy[a]! ** 2 + B.vx[b]! ** 2 + B.vy[b]! ** 2)
+    const before = ke()
+    sim.step(1 / 60)
+    expect(sim.drainEvents().filter((e) => e.type === 'collision')).toHaveLength(1)
+    expect(ke()).toBeLessThanOrEqual(before * (1 + 4 * Number.EPSILON))
+  })
 })

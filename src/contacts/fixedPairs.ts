@@ -52,8 +52,18 @@ export function meetsWithinTick(F: FixedContactState, a: number, b: number): boo
   // first root of |d + u·τ| = S, in the form that keeps its digits when the pair barely approaches
   const tau = c / (-half + Math.sqrt(disc))
   if (tau > F.tick) return false
-  nrm.x = (dx + ux * tau) / S
-  nrm.y = (dy + uy * tau) / S
+  // by its own length, not S: d + u·τ is the difference of two lengths of up to a tick's travel, and over S
+  // it is a unit vector only to about travel / S ulps (a ball of radius 0.07 at 3e4 px/s striking one at
+  // rest left the pair 1.4e-9 of its kinetic energy richer)
+  const mx = dx + ux * tau
+  const my = dy + uy * tau
+  const m = Math.sqrt(mx * mx + my * my)
+  if (!(m > 0)) {
+    normal(F, a, b)
+    return true
+  }
+  nrm.x = mx / m
+  nrm.y = my / m
   return true
 }
 

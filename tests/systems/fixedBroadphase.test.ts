@@ -56,7 +56,7 @@ describe('fixed-tick broadphases', () => {
   })
 
   it('light balls at rest and heavy ones at 1,000 px/s in closed walls of restitution 0: the projection pushes balls into moving ones it was not paired with, paired in the same tick', () => {
-    for (const seed of [6, 26, 35]) {
+    for (const seed of [11, 26, 29]) {
       let joins = 0
       const make = () => {
         const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 0 }, { capacity: 128 })
