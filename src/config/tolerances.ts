@@ -159,6 +159,18 @@ export const PASS_PAIRS_PER_WIDENED = 1024
 export const RESTITUTION_VISITS = 4
 
 /**
+ * Fixed-tick contacts: the fewest balls of a jam the velocity sweeps leave closing that moves on as one body
+ * (src/contacts/fixedJam.ts): a chain of this many balls or more, joined by pairs still closing after half
+ * the sweeps, none closing on more than two others or able to reach a closed wall, closing by more than
+ * PROJECTION_SLOP in all. Gauss-Seidel sweeps even out a chain's velocities in about the square of its
+ * length; shorter chains are left to them. At 2 and 8 the benchmark's pressed piles and mass-mix crowd
+ * changed too; at 16 they do not, and a striker of mass 10 into 300 balls 0.01 px apart (e = 0) ends with
+ * the whole row at its centre-of-mass speed, as the inelastic law has it (at 64: the same, with twice the
+ * overlap on the way).
+ */
+export const JAM_MIN_BALLS = 16
+
+/**
  * Fixed-tick contacts: how many times lighter than its partner a ball must be for the pair to be solved
  * together with the closed wall the ball is driven into (src/contacts/fixedSolve.ts, pairWithWall). Against a partner less
  * than this much heavier, the push runs down by m/(M + m) a sweep between the wall and the pair, and the

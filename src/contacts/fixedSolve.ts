@@ -29,6 +29,7 @@ import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { meetsWithinTick, nrm } from './fixedPairs.js'
+import { jammed, settleJams } from './fixedJam.js'
 import { strikeLeavesRim } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
@@ -92,7 +93,11 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   }
   callFrom = clock
   let moved = false
+  const mid = iterations >> 1
   for (let it = 0; it < iterations; it++) {
+    // half the sweeps done without converging: a long chain left closing moves on as one body
+    // (src/contacts/fixedJam.ts), and the other half take its new velocities to the balls around it
+    if (it === mid && it > 0) settle(F)
     moved = false
     // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
     // Gauss-Seidel): a push runs through a row against a wall either way within a sweep
@@ -107,6 +112,17 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     if (!moved) return true
   }
   return false
+}
+
+/** The solve's account of the velocities settleJams changed. */
+function settle(F: FixedContactState): void {
+  const list = jammed()
+  for (let k = 0, n = settleJams(F); k < n; k++) {
+    const i = list[k]!
+    noteChange(F, i)
+    changedAt[i] = ++clock
+    F.changed[i]! |= 1
+  }
 }
 
 /** Candidate i's velocity changes now (before its stamp): listed (src/contacts/fixedCalls.ts). */

@@ -9,6 +9,7 @@ import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
 import { CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 import { callsKept, keepAcrossCalls } from '../../src/contacts/fixedCalls'
+import { jamsSettled } from '../../src/contacts/fixedJam'
 import { useNearLists } from '../../src/contacts/fixedNear'
 import { ticksRedone } from '../../src/contacts/fixedRedo'
 
@@ -83,27 +84,31 @@ describe('fixed tick: a push along a row with gaps', () => {
  * the first index whose ball is not ahead of the one before (-1: none), the collisions, the balls' states
  * as bits and the ids.
  */
-function strikeRow(radius: number, n: number, mass: number, hz: number, frames: number) {
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: radius })
-  const ids = [sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0, mass })]
-  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 4 * radius + i * (2 * radius + 1), y: 0, vx: 0, vy: 0 }))
+/** A striker of `mass` at `speed` px/s, `lead` px behind the first of a row of n balls `gap` px apart. */
+function strikeRow(radius: number, n: number, mass: number, hz: number, frames: number, { speed = 1e5, gap = 1, e = 1, lead = 4 * radius } = {}) {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: radius })
+  const ids = [sim.addBall({ x: 0, y: 0, vx: speed, vy: 0, mass })]
+  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: lead + i * (2 * radius + gap), y: 0, vx: 0, vy: 0 }))
   const masses = ids.map((_, k) => (k === 0 ? mass : 1))
-  const p0 = mass * 1e5
-  const e0 = 0.5 * mass * 1e10
+  const p0 = mass * speed
+  const e0 = 0.5 * mass * speed * speed
   let swapped = -1
   let collisions = 0
+  // the deepest overlap of neighbours on the row after any frame
+  let deepest = 0
   for (let f = 0; f < frames; f++) {
     sim.step(1 / hz)
     for (const e of sim.drainEvents()) if (e.type === 'collision') collisions++
     const st = ids.map((i) => sim.ballState(i))
     for (let k = 1; k < st.length && swapped < 0; k++) if (!(st[k]!.x > st[k - 1]!.x)) swapped = k
+    for (let k = 1; k < st.length; k++) deepest = Math.max(deepest, 2 * radius - (st[k]!.x - st[k - 1]!.x))
     const p = st.reduce((acc, b, k) => acc + masses[k]! * b.vx, 0)
     const e = st.reduce((acc, b, k) => acc + 0.5 * masses[k]! * (b.vx * b.vx + b.vy * b.vy), 0)
     expect(Math.abs(p - p0)).toBeLessThan(1e-9 * p0)
     expect(e).toBeLessThanOrEqual(e0 * (1 + 1e-12))
   }
   const bits = ids.map((i) => { const b = sim.ballState(i); return `${b.x},${b.y},${b.vx},${b.vy}` }).join(';')
-  return { sim, ids, swapped, collisions, bits }
+  return { sim, ids, swapped, collisions, bits, deepest }
 }
 
 describe('fixed tick: a heavy striker through a row (its capsule cut at the first ball, then lengthened)', () => {
@@ -121,6 +126,27 @@ describe('fixed tick: a heavy striker through a row (its capsule cut at the firs
  * others (from index 501 of 520; 604 of 1,000). The tick is now solved again at a finer spacing
  * (src/contacts/fixedRedo.ts).
  */
+/**
+ * Velocity sweeps even out a chain of touching balls in about the square of its length: a striker pressing
+ * hundreds of them left the back of the chain faster than its front after every tick's sweeps, the chain
+ * closed a little more each tick, and the projection could not open it again (0.25 px deep here, half a
+ * radius; in a row of 1,000 struck by a mass-150 ball, until two balls passed). A chain the sweeps leave
+ * closing now moves on as one body (src/contacts/fixedJam.ts).
+ */
+describe('fixed tick: a long chain the sweeps leave closing moves on as one body', () => {
+  it('a ball of mass 10 at 1e4 px/s into 300 radius-0.5 balls 0.01 px apart, e = 0: the row leaves at the centre-of-mass speed, no overlap over 0.05 px, the same bits at 60 and 240 Hz', () => {
+    const jams = jamsSettled()
+    const a = strikeRow(0.5, 300, 10, 60, 6, { speed: 1e4, gap: 0.01, e: 0, lead: 1.01 })
+    expect(jamsSettled()).toBeGreaterThan(jams)
+    expect(a.swapped).toBe(-1)
+    expect(a.deepest).toBeLessThan(0.05)
+    // fully inelastic: all 301 balls at 10 · 1e4 / 310 (before, the striker at 557 px/s and the last ball at 101)
+    for (const i of a.ids) expect(Math.abs(a.sim.ballState(i).vx - 1e5 / 310)).toBeLessThan(0.1)
+    const b = strikeRow(0.5, 300, 10, 240, 24, { speed: 1e4, gap: 0.01, e: 0, lead: 1.01 })
+    expect(b.bits).toBe(a.bits)
+  })
+})
+
 describe('fixed tick: a tick whose widening rounds stop with a ball that may pass is solved again, halved', () => {
   it('a ball of mass 100 at 1e5 px/s into 520 radius-0.5 balls 1 px apart: no ball passes another, the last leaves as the two-body law says, the same bits at 60 and 240 Hz', () => {
     const redone = ticksRedone()

@@ -1,0 +1,156 @@
+// Fixed-tick contacts: a long chain the velocity sweeps leave closing moves on as one body. Gauss-Seidel
+// sweeps (src/contacts/fixedSolve.ts) carry a push one pair further each, both ways in turn, and even out the
+// velocities along a chain of touching balls in about the square of its length. A heavy ball ploughing into
+// a row of light ones gathers hundreds in front of it, all touching; the sweeps leave the back of that chain
+// faster than its front, each tick closes it a little more, the projection (its budget also in sweeps)
+// cannot open it again, and the balls sink into each other until two pass.
+// So when half the sweeps are done without converging, the pairs still closing within the tick join their
+// balls into groups. A group moves on at its centre-of-mass velocity when it is a chain (no ball closing on
+// more than two others) of at least JAM_MIN_BALLS balls, none of them able to reach a closed wall within
+// the tick (a wall is no body to average with), and its pairs close by more than PROJECTION_SLOP in all.
+// That is the fully inelastic end of the pairs still closing: momentum is kept, kinetic energy does not rise
+// (a mass-weighted mean), the chain no longer closes, and the other half of the sweeps take its new
+// velocities to the balls around it. Pairs with a resting candidate (it holds like a wall) join nothing. The
+// sums run over the balls in the order of their first pair, which both broadphases give alike (their
+// numbering of the candidates differs), so the bits do not depend on the broadphase.
+import { JAM_MIN_BALLS, PROJECTION_SLOP } from '../config/tolerances.js'
+import { grownTo, type FixedContactState } from '../world/fixedState.js'
+import { meetsWithinTick, nrm } from './fixedPairs.js'
+
+/**
+ * Union-find over the candidates; by root: the mass, momentum and members summed, and whether the group is
+ * left alone (a member near a closed wall, or closing on more than two others: `degree`)
+ */
+let parent = new Int32Array(256)
+let mass = new Float64Array(256)
+let px = new Float64Array(256)
+let py = new Float64Array(256)
+let members = new Int32Array(256)
+let excluded = new Uint8Array(256)
+let degree = new Int32Array(256)
+/** each pair's closing within the tick (px; 0: not closing), and each group's sum of them */
+let closing = new Float64Array(256)
+let closes = new Float64Array(256)
+/** when each candidate was last summed, and last set (marks from `mark`) */
+let seen = new Float64Array(256)
+let mark = 0
+/** the candidates whose velocities the last settleJams changed */
+let list = new Int32Array(256)
+/** solve calls that settled a jam, over the process's life (for tests and benchmarks) */
+let settled = 0
+
+function root(i: number): number {
+  while (parent[i] !== i) {
+    const g = parent[parent[i]!]!
+    parent[i] = g
+    i = g
+  }
+  return i
+}
+
+/**
+ * Settles the jams of a solve that did not converge (see the top of this file); returns how many candidates'
+ * velocities changed, listed in jammed().
+ */
+export function settleJams(F: FixedContactState): number {
+  const n = F.n
+  if (parent.length < n) {
+    parent = new Int32Array(2 * n)
+    mass = grownTo(mass, 2 * n)
+    px = grownTo(px, 2 * n)
+    py = grownTo(py, 2 * n)
+    members = new Int32Array(2 * n)
+    excluded = new Uint8Array(2 * n)
+    degree = new Int32Array(2 * n)
+    seen = grownTo(seen, 2 * n)
+    list = new Int32Array(2 * n)
+    closes = grownTo(closes, 2 * n)
+  }
+  if (closing.length < F.pairCount) closing = grownTo(closing, 2 * F.pairCount)
+  for (let i = 0; i < n; i++) {
+    parent[i] = i
+    degree[i] = 0
+  }
+  let joined = 0
+  const pairs = F.pairCount
+  for (let p = 0; p < pairs; p++) {
+    const a = F.pairA[p]!
+    const b = F.pairB[p]!
+    closing[p] = 0
+    if (a >= F.restFrom || b >= F.restFrom || !meetsWithinTick(F, a, b)) continue
+    const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
+    if (!(approach > 0)) continue
+    closing[p] = approach * F.tick
+    degree[a]!++
+    degree[b]!++
+    const ra = root(a)
+    const rb = root(b)
+    if (ra === rb) continue
+    if (ra < rb) parent[rb] = ra
+    else parent[ra] = rb
+    joined++
+  }
+  if (joined === 0) return 0
+  for (let i = 0; i < n; i++) {
+    mass[i] = 0
+    px[i] = 0
+    py[i] = 0
+    members[i] = 0
+    excluded[i] = 0
+    closes[i] = 0
+  }
+  for (let p = 0; p < pairs; p++) {
+    if (closing[p] === 0) continue
+    const r = root(F.pairA[p]!)
+    closes[r] = closes[r]! + closing[p]!
+  }
+  for (let k = 0; k < F.nearWallCount; k++) excluded[F.nearWall[k]!] = 1
+  // the sums, each ball at its first pair
+  const summed = ++mark
+  for (let p = 0; p < pairs; p++) {
+    sum(F, F.pairA[p]!, summed)
+    sum(F, F.pairB[p]!, summed)
+  }
+  const set = ++mark
+  let count = 0
+  for (let p = 0; p < pairs; p++) {
+    count = settle(F, F.pairA[p]!, set, count)
+    count = settle(F, F.pairB[p]!, set, count)
+  }
+  if (count > 0) settled++
+  return count
+}
+
+function sum(F: FixedContactState, i: number, summed: number): void {
+  if (seen[i] === summed || i >= F.restFrom) return
+  seen[i] = summed
+  const r = root(i)
+  const m = F.mass[F.id[i]!]!
+  mass[r] = mass[r]! + m
+  px[r] = px[r]! + m * F.vx[i]!
+  py[r] = py[r]! + m * F.vy[i]!
+  members[r]!++
+  if (excluded[i] === 1 || degree[i]! > 2) excluded[r] = 1
+}
+
+function settle(F: FixedContactState, i: number, set: number, count: number): number {
+  if (seen[i] === set || i >= F.restFrom) return count
+  seen[i] = set
+  const r = root(i)
+  if (members[r]! < JAM_MIN_BALLS || excluded[r] !== 0 || !(closes[r]! > PROJECTION_SLOP)) return count
+  const vx = px[r]! / mass[r]!
+  const vy = py[r]! / mass[r]!
+  if (vx === F.vx[i] && vy === F.vy[i]) return count
+  F.vx[i] = vx
+  F.vy[i] = vy
+  list[count] = i
+  return count + 1
+}
+
+export function jammed(): Int32Array {
+  return list
+}
+
+export function jamsSettled(): number {
+  return settled
+}
