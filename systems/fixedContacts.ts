@@ -12,7 +12,7 @@
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
-import { gatherCandidates } from '../src/contacts/fixedGrid.js'
+import { gatherCandidates, wallsPending } from '../src/contacts/fixedGrid.js'
 import { findPairs, packings } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
@@ -105,12 +105,16 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
     if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) return SOLVED
     const extra = round >= MAX_WIDEN_ROUNDS
     if (extra) {
-      if (!mayPass(F)) return SOLVED
+      if (!mayPass(F) && !(added > 0 && F.pairCount <= CHAIN_PAIRS_PER_BALL * F.n)) return SOLVED
       if (F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened) return h
     }
     if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) return SOLVED
     const pairs = F.pairCount
-    if (!widenReach(w, F) || (extra && F.pairCount === pairs)) return SOLVED
+    const walled = F.nearWallCount
+    // a round that found no new pair but widened a ball into a closed wall it is moving into solves again
+    // in a tick along rows: the wall sends it back at the tick (else it turns between ticks, back through the
+    // balls behind it)
+    if (!widenReach(w, F) || (extra && F.pairCount === pairs && !(F.pairCount <= CHAIN_PAIRS_PER_BALL * F.n && wallsPending(F, walled)))) return SOLVED
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
     converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0)

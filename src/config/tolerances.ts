@@ -98,7 +98,12 @@ export const TICK_SNAP = 8 * Number.EPSILON
  * each carries a push one ball further along a row with gaps. After MAX_WIDEN_ROUNDS the rounds go on, up
  * to MAX_PASS_ROUNDS, only while a ball sped up beyond its reach moves more in a tick than its radius and
  * the smallest candidate's together, the distance at which it could pass a ball it was not paired with
- * instead of ending inside it, where the next tick's projection would take it out.
+ * instead of ending inside it, where the next tick's projection would take it out; or while the last round
+ * added pairs and the tick has at most CHAIN_PAIRS_PER_BALL pairs a candidate (a push along a row: left
+ * unpaired at the row's end, the last ball was pushed into by the projection, and passed, at 300 px/s); or
+ * when a round added no pair but widened a ball moving into a closed wall within the tick, in a tick of at
+ * most CHAIN_PAIRS_PER_BALL pairs a candidate (solved once more, so the wall sends it back at the tick, not
+ * between ticks back through the row).
  */
 export const MAX_WIDEN_ROUNDS = 4
 export const MAX_PASS_ROUNDS = 256

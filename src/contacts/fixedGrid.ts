@@ -372,3 +372,22 @@ export function listNearWall(F: FixedContactState, i: number): void {
   if (F.nearWallCount === F.nearWall.length) reserveCandidates(F, 2 * F.nearWall.length)
   F.nearWall[F.nearWallCount++] = i
 }
+
+/**
+ * Whether a candidate listed near a wall from F.nearWall[from] on moves into a closed wall within the tick:
+ * one the solve's wall step (src/contacts/fixedSolve.ts, wallVelocity) would send back.
+ */
+export function wallsPending(F: FixedContactState, from: number): boolean {
+  const tick = F.tick
+  for (let k = from; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    const x = F.x[i]!
+    const y = F.y[i]!
+    const r = F.r[i]!
+    const vx = F.vx[i]!
+    const vy = F.vy[i]!
+    if ((vx < 0 && x - r - walls.minX <= -vx * tick) || (vx > 0 && walls.maxX - x - r <= vx * tick)) return true
+    if ((vy < 0 && y - r - walls.minY <= -vy * tick) || (vy > 0 && walls.maxY - y - r <= vy * tick)) return true
+  }
+  return false
+}
