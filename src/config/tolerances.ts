@@ -168,10 +168,10 @@ export const RESTITUTION_VISITS = 4
  * (src/contacts/fixedJam.ts): a chain of this many balls or more, joined by pairs still closing after half
  * the sweeps, none closing on more than two others or able to reach a closed wall, closing by more than
  * PROJECTION_SLOP in all. Gauss-Seidel sweeps even out a chain's velocities in about the square of its
- * length; shorter chains are left to them. At 2 and 8 the benchmark's pressed piles and mass-mix crowd
- * changed too; at 16 they do not, and a striker of mass 10 into 300 balls 0.01 px apart (e = 0) ends with
- * the whole row at its centre-of-mass speed, as the inelastic law has it (at 64: the same, with twice the
- * overlap on the way).
+ * length; shorter chains are left to them. At 2 and 8 both of the benchmark's pressed piles and its
+ * mass-mix crowd changed; at 16 only the pile with e = 0 does (its deepest overlaps no deeper), and a
+ * striker of mass 10 into 300 balls 0.01 px apart (e = 0) ends with the whole row at its centre-of-mass
+ * speed, as the inelastic law has it (at 64: the same, with twice the overlap on the way).
  */
 export const JAM_MIN_BALLS = 16
 
