@@ -101,6 +101,7 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
   // start from the new pairs when the last round converged
   let added = 0
   let widened = 1
+  let wallAgain = false
   for (let round = 0; ; round++) {
     if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) return SOLVED
     const extra = round >= MAX_WIDEN_ROUNDS
@@ -111,10 +112,15 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
     if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) return SOLVED
     const pairs = F.pairCount
     const walled = F.nearWallCount
-    // a round that found no new pair but widened a ball into a closed wall it is moving into solves again
-    // in a tick along rows: the wall sends it back at the tick (else it turns between ticks, back through the
-    // balls behind it)
-    if (!widenReach(w, F) || (extra && F.pairCount === pairs && !(F.pairCount <= CHAIN_PAIRS_PER_BALL * F.n && wallsPending(F, walled)))) return SOLVED
+    if (!widenReach(w, F)) return SOLVED
+    // a round that found no new pair but widened a ball into a closed wall it is moving into solves again,
+    // once a tick, in a tick along rows: the wall sends it back at the tick (else it turns between ticks,
+    // back through the balls behind it; a ball the wall cannot send back, one wider than its box, kept the
+    // rounds going to their bound)
+    if (extra && F.pairCount === pairs) {
+      if (wallAgain || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || !wallsPending(F, walled)) return SOLVED
+      wallAgain = true
+    }
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
     converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0)

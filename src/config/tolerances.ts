@@ -101,8 +101,8 @@ export const TICK_SNAP = 8 * Number.EPSILON
  * instead of ending inside it, where the next tick's projection would take it out; or while the last round
  * added pairs and the tick has at most CHAIN_PAIRS_PER_BALL pairs a candidate (a push along a row: left
  * unpaired at the row's end, the last ball was pushed into by the projection, and passed, at 300 px/s); or
- * when a round added no pair but widened a ball moving into a closed wall within the tick, in a tick of at
- * most CHAIN_PAIRS_PER_BALL pairs a candidate (solved once more, so the wall sends it back at the tick, not
+ * when a round added no pair but widened a ball moving into a closed wall within the tick, once a tick, in a
+ * tick of at most CHAIN_PAIRS_PER_BALL pairs a candidate (solved once more, so the wall sends it back at the tick, not
  * between ticks back through the row).
  */
 export const MAX_WIDEN_ROUNDS = 4
