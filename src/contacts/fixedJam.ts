@@ -99,17 +99,16 @@ export function settleJams(F: FixedContactState): number {
     excluded[i] = 0
     closes[i] = 0
   }
-  for (let p = 0; p < pairs; p++) {
-    if (closing[p] === 0) continue
-    const r = root(F.pairA[p]!)
-    closes[r] = closes[r]! + closing[p]!
-  }
   for (let k = 0; k < F.nearWallCount; k++) excluded[F.nearWall[k]!] = 1
-  // the sums, each ball at its first pair
+  // the sums, each ball at its first pair, and each group's closing
   const summed = ++mark
   for (let p = 0; p < pairs; p++) {
-    sum(F, F.pairA[p]!, summed)
+    const a = F.pairA[p]!
+    sum(F, a, summed)
     sum(F, F.pairB[p]!, summed)
+    if (closing[p] === 0) continue
+    const r = root(a)
+    closes[r] = closes[r]! + closing[p]!
   }
   const set = ++mark
   let count = 0

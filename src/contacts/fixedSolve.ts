@@ -26,7 +26,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { grownTo, touchBall, type FixedContactState } from '../world/fixedState.js'
 import { holeAt } from '../world/holeTable.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
-import { walls } from './fixedGrid.js'
+import { intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { meetsWithinTick, nrm } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
@@ -333,24 +333,13 @@ function wallVelocities(w: BallWorld, F: FixedContactState): boolean {
 
 /** Candidate i's velocity reflected by the closed walls it would reach within the tick; returns whether it was. */
 function wallVelocity(w: BallWorld, F: FixedContactState, i: number): boolean {
+  const into = intoWalls(F, i)
+  if (into === 0) return false
   const settle = S[S_SETTLE]!
-  const tick = F.tick
-  const x = F.x[i]!
-  const y = F.y[i]!
-  const r = F.r[i]!
   let vx = F.vx[i]!
   let vy = F.vy[i]!
-  let hit = false
-  // an open edge's face is at ±Infinity: never within a tick
-  if ((vx < 0 && x - r - walls.minX <= -vx * tick) || (vx > 0 && walls.maxX - x - r <= vx * tick)) {
-    vx = Math.abs(vx) < settle ? 0 : -walls.e * vx
-    hit = true
-  }
-  if ((vy < 0 && y - r - walls.minY <= -vy * tick) || (vy > 0 && walls.maxY - y - r <= vy * tick)) {
-    vy = Math.abs(vy) < settle ? 0 : -walls.e * vy
-    hit = true
-  }
-  if (!hit) return false
+  if ((into & 1) !== 0) vx = Math.abs(vx) < settle ? 0 : -walls.e * vx
+  if ((into & 2) !== 0) vy = Math.abs(vy) < settle ? 0 : -walls.e * vy
   if ((F.changed[i]! & WALL_REPORTED) === 0 && Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) {
     const ev = appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)
     w.events.time[ev] = S[S_T]!
