@@ -40,6 +40,12 @@ const SEED_SHIFT = SCALE === 1 ? 0 : 7919 * SCALE
 const REPORT = process.env.ADVERSARIAL_REPORT
 /** a whole run's stepping (every step under the budget, but a world that grinds at the pass cap every step) */
 const RUN_BUDGET_MS = 5000 * SLOWDOWN
+/**
+ * Shrinking a counterexample stops this long after it was found. A sequence that fails 'time' takes its
+ * whole run budget to fail again, and each candidate the shrinker tries is such a run: at scale 41 the
+ * long run's pumped crowd (tests below) shrank for more than 11 minutes without an end in sight.
+ */
+const SHRINK_BUDGET_MS = 120_000 * SLOWDOWN
 const SETTLE_STEPS = 40 // 0.67 s at 60 Hz after the last call: past the 0.5 s the overlap check waits for
 const SEED = 20_240_517
 
@@ -573,9 +579,13 @@ function property(
   body: (cfg: Cfg, ops: Op[]) => void = (cfg, ops) => void runScenario(name, cfg, ops, checks),
 ): void {
   let failure: string | null = null
+  // when the first counterexample was found: shrinking stops SHRINK_BUDGET_MS later (every later candidate is
+  // discarded, and fast-check reports the smallest counterexample so far)
+  let failedAt = -1
   try {
     fc.assert(
       fc.property(arb, ([cfg, ops]) => {
+        if (failedAt >= 0 && performance.now() - failedAt > SHRINK_BUDGET_MS) fc.pre(false)
         try {
           body(cfg, ops)
         } catch (err) {
@@ -583,6 +593,7 @@ function property(
             seen[name]!.discarded++
             fc.pre(false)
           }
+          if (failedAt < 0) failedAt = performance.now()
           throw err
         }
       }),
