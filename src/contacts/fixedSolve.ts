@@ -30,6 +30,7 @@ import { intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { meetsWithinTick, nrm } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
+import { heldBalls, holdChains } from './fixedShock.js'
 import { strikeLeavesRim } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
@@ -96,8 +97,9 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   const mid = iterations >> 1
   for (let it = 0; it < iterations; it++) {
     // half the sweeps done without converging: a long chain left closing moves on as one body
-    // (src/contacts/fixedJam.ts), and the other half take its new velocities to the balls around it
-    if (it === mid && it > 0) settle(F)
+    // (src/contacts/fixedJam.ts), a chain pressed into a wall by a heavier ball is held by the wall
+    // (fixedShock.ts), and the other half take their new velocities to the balls around them
+    if (it === mid && it > 0) settle(w, F)
     moved = false
     // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
     // Gauss-Seidel): a push runs through a row against a wall either way within a sweep
@@ -114,11 +116,18 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   return false
 }
 
-/** The solve's account of the velocities settleJams changed. */
-function settle(F: FixedContactState): void {
+/** The solve's account of the velocities settleJams and holdChains changed. */
+function settle(w: BallWorld, F: FixedContactState): void {
   const list = jammed()
   for (let k = 0, n = settleJams(F); k < n; k++) {
     const i = list[k]!
+    noteChange(F, i)
+    changedAt[i] = ++clock
+    F.changed[i]! |= 1
+  }
+  const held = heldBalls()
+  for (let k = 0, n = holdChains(w, F, S[S_T]!, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
+    const i = held[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
     F.changed[i]! |= 1

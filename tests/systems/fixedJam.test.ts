@@ -95,9 +95,11 @@ describe('fixed tick: long chains the sweeps leave closing', () => {
           walls: fc.boolean(),
           settle: fc.constantFrom(0, 1),
         })
-        // known failures (docs/known-failures.md): a row pressed into a closed wall by a heavier ball is
-        // crushed; a row struck at 1e4 px/s toward a wall a tick's travel away can send a ball back between
-        // ticks; a touching row struck by a ball of mass 1e4 at 1e4 px/s compresses until balls pass
+        // known failures (docs/known-failures.md): a ball that moves more than its diameter in a tick can
+        // turn at a wall between ticks and pass its neighbour (rows struck toward a wall by heavier balls:
+        // rows pressed into walls are in tests/systems/fixedShock.test.ts, with balls of radius 11); a row
+        // struck at 1e4 px/s toward a wall a tick's travel away can send a ball back between ticks; a
+        // touching row struck by a ball of mass 1e4 at 1e4 px/s compresses until balls pass
         .filter((row) => (!row.walls || (row.mass === 1 && row.speed <= 3e3)) && row.mass * row.speed < 1e8),
         (row) => {
           expect(run(row, 240)).toBe(run(row, 60))
