@@ -165,15 +165,24 @@ export const RESTITUTION_VISITS = 4
 
 /**
  * Fixed-tick contacts: the fewest balls of a jam the velocity sweeps leave closing that moves on as one body
- * (src/contacts/fixedJam.ts): a chain of this many balls or more, joined by pairs still closing after half
- * the sweeps, none closing on more than two others or able to reach a closed wall, closing by more than
- * PROJECTION_SLOP in all. Gauss-Seidel sweeps even out a chain's velocities in about the square of its
+ * (src/contacts/fixedJam.ts): a row of this many balls or more, joined by pairs still closing after half
+ * the sweeps or met this tick, their normals along one line (ROW_LINE_COS), none able to reach a closed
+ * wall, closing by more than PROJECTION_SLOP in all. Gauss-Seidel sweeps even out a chain's velocities in about the square of its
  * length; shorter chains are left to them. At 2 and 8 both of the benchmark's pressed piles and its
  * mass-mix crowd changed; at 16 only the pile with e = 0 does (its deepest overlaps no deeper), and a
  * striker of mass 10 into 300 balls 0.01 px apart (e = 0) ends with the whole row at its centre-of-mass
  * speed, as the inelastic law has it (at 64: the same, with twice the overlap on the way).
  */
 export const JAM_MIN_BALLS = 16
+
+/**
+ * Fixed-tick contacts: how far the normals of a group's pairs may turn from the line of its first pair for
+ * the group to count as a row, cos 30° (src/contacts/fixedJam.ts, fixedShock.ts). A row struck end on has
+ * all its normals on one line, the pairs a tick's swept test finds between balls that are not neighbours
+ * too (a fast striker meets a dozen balls ahead of it on straight lines); a pile has normals 60° or 90°
+ * apart, and is left to the sweeps.
+ */
+export const ROW_LINE_COS = Math.sqrt(3) / 2
 
 /**
  * Fixed-tick contacts: how many times lighter than its partner a ball must be for the pair to be solved

@@ -1,25 +1,31 @@
-// Fixed-tick contacts: a long chain the velocity sweeps leave closing moves on as one body. Gauss-Seidel
+// Fixed-tick contacts: a long row the velocity sweeps leave closing moves on as one body. Gauss-Seidel
 // sweeps (src/contacts/fixedSolve.ts) carry a push one pair further each, both ways in turn, and even out the
-// velocities along a chain of touching balls in about the square of its length. A heavy ball ploughing into
-// a row of light ones gathers hundreds in front of it, all touching; the sweeps leave the back of that chain
+// velocities along a row of touching balls in about the square of its length. A heavy ball ploughing into
+// a row of light ones gathers hundreds in front of it, all touching; the sweeps leave the back of that row
 // faster than its front, each tick closes it a little more, the projection (its budget also in sweeps)
 // cannot open it again, and the balls sink into each other until two pass.
 // So when half the sweeps are done without converging, the pairs still closing within the tick join their
-// balls into groups. A group moves on at its centre-of-mass velocity when it is a chain (no ball closing on
-// more than two others) of at least JAM_MIN_BALLS balls, none of them able to reach a closed wall within
-// the tick (a wall is no body to average with), and its pairs close by more than PROJECTION_SLOP in all.
-// That is the fully inelastic end of the pairs still closing: momentum is kept, kinetic energy does not rise
-// (a mass-weighted mean), the chain no longer closes, and the other half of the sweeps take its new
-// velocities to the balls around it. Pairs with a resting candidate (it holds like a wall) join nothing. The
-// sums run over the balls in the order of their first pair, which both broadphases give alike (their
-// numbering of the candidates differs), so the bits do not depend on the broadphase.
-import { JAM_MIN_BALLS, PROJECTION_SLOP } from '../config/tolerances.js'
+// balls into groups, and so do the pairs met RESTITUTION_VISITS times this tick (half way through, the
+// sweeps can leave a heavy striker for the moment slower than the ball ahead of it, though it is pushing
+// the whole row; the pairs of an elastic row, met once or twice as its pulse runs through, stay apart). A
+// group moves on at its centre-of-mass velocity when it is a row (the normals of those pairs within 30° of
+// its first pair's line, ROW_LINE_COS: a striker's swept test meets many balls ahead of it on that line, a
+// pile's normals turn by 60° or 90°) of at least JAM_MIN_BALLS balls, none of them able to reach a closed
+// wall within the tick (a wall is no body to average with: src/contacts/fixedShock.ts holds those rows),
+// and its pairs close by more than PROJECTION_SLOP in all. That is the fully inelastic end of the pairs
+// still closing: momentum is kept, kinetic energy does not rise (a mass-weighted mean), the row no longer
+// closes, and the other half of the sweeps take its new velocities to the balls around it. Pairs with a
+// resting candidate (it holds like a wall) join nothing. The sums run over the balls in the order of their
+// first pair, which both broadphases give alike (their numbering of the candidates differs), so the bits do
+// not depend on the broadphase.
+import { JAM_MIN_BALLS, PROJECTION_SLOP, RESTITUTION_VISITS, ROW_LINE_COS } from '../config/tolerances.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
-import { meetsWithinTick, nrm } from './fixedPairs.js'
+import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
+import { rootOf, unite } from './fixedUnion.js'
 
 /**
- * Union-find over the candidates; by root: the mass, momentum and members summed, and whether the group is
- * left alone (a member near a closed wall, or closing on more than two others: `degree`)
+ * Union-find over the candidates; by root: the mass, momentum and members summed, whether the group is
+ * left alone (a member near a closed wall, or its pairs off its line), and its line
  */
 let parent = new Int32Array(256)
 let mass = new Float64Array(256)
@@ -27,9 +33,12 @@ let px = new Float64Array(256)
 let py = new Float64Array(256)
 let members = new Int32Array(256)
 let excluded = new Uint8Array(256)
-let degree = new Int32Array(256)
-/** each pair's closing within the tick (px; 0: not closing), and each group's sum of them */
+let lineX = new Float64Array(256)
+let lineY = new Float64Array(256)
+/** each pair's closing within the tick (px; 0: not closing; −1: not closing, met RESTITUTION_VISITS times), its normal, and each group's sum of closings */
 let closing = new Float64Array(256)
+let normalX = new Float64Array(256)
+let normalY = new Float64Array(256)
 let closes = new Float64Array(256)
 /** when each candidate was last summed, and last set (marks from `mark`) */
 let seen = new Float64Array(256)
@@ -40,12 +49,7 @@ let list = new Int32Array(256)
 let settled = 0
 
 function root(i: number): number {
-  while (parent[i] !== i) {
-    const g = parent[parent[i]!]!
-    parent[i] = g
-    i = g
-  }
-  return i
+  return rootOf(parent, i)
 }
 
 /**
@@ -61,34 +65,37 @@ export function settleJams(F: FixedContactState): number {
     py = grownTo(py, 2 * n)
     members = new Int32Array(2 * n)
     excluded = new Uint8Array(2 * n)
-    degree = new Int32Array(2 * n)
+    lineX = grownTo(lineX, 2 * n)
+    lineY = grownTo(lineY, 2 * n)
     seen = grownTo(seen, 2 * n)
     list = new Int32Array(2 * n)
     closes = grownTo(closes, 2 * n)
   }
-  if (closing.length < F.pairCount) closing = grownTo(closing, 2 * F.pairCount)
-  for (let i = 0; i < n; i++) {
-    parent[i] = i
-    degree[i] = 0
+  if (closing.length < F.pairCount) {
+    closing = grownTo(closing, 2 * F.pairCount)
+    normalX = grownTo(normalX, 2 * F.pairCount)
+    normalY = grownTo(normalY, 2 * F.pairCount)
   }
+  for (let i = 0; i < n; i++) parent[i] = i
   let joined = 0
   const pairs = F.pairCount
   for (let p = 0; p < pairs; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
     closing[p] = 0
-    if (a >= F.restFrom || b >= F.restFrom || !meetsWithinTick(F, a, b)) continue
-    const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
-    if (!(approach > 0)) continue
-    closing[p] = approach * F.tick
-    degree[a]!++
-    degree[b]!++
-    const ra = root(a)
-    const rb = root(b)
-    if (ra === rb) continue
-    if (ra < rb) parent[rb] = ra
-    else parent[ra] = rb
-    joined++
+    if (a >= F.restFrom || b >= F.restFrom) continue
+    const approach = meetsWithinTick(F, a, b) ? -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y) : 0
+    if (approach > 0) closing[p] = approach * F.tick
+    else {
+      // not closing now, but met RESTITUTION_VISITS times this tick (pressed together, not bounced apart):
+      // joined along the line of its centres
+      if (F.pairHit[p]! >> 1 < RESTITUTION_VISITS) continue
+      normal(F, a, b)
+      closing[p] = -1
+    }
+    normalX[p] = nrm.x
+    normalY[p] = nrm.y
+    if (unite(parent, a, b)) joined++
   }
   if (joined === 0) return 0
   for (let i = 0; i < n; i++) {
@@ -98,6 +105,8 @@ export function settleJams(F: FixedContactState): number {
     members[i] = 0
     excluded[i] = 0
     closes[i] = 0
+    lineX[i] = 0
+    lineY[i] = 0
   }
   for (let k = 0; k < F.nearWallCount; k++) excluded[F.nearWall[k]!] = 1
   // the sums, each ball at its first pair, and each group's closing
@@ -108,7 +117,11 @@ export function settleJams(F: FixedContactState): number {
     sum(F, F.pairB[p]!, summed)
     if (closing[p] === 0) continue
     const r = root(a)
-    closes[r] = closes[r]! + closing[p]!
+    if (closing[p]! > 0) closes[r] = closes[r]! + closing[p]!
+    if (lineX[r] === 0 && lineY[r] === 0) {
+      lineX[r] = normalX[p]!
+      lineY[r] = normalY[p]!
+    } else if (Math.abs(lineX[r]! * normalX[p]! + lineY[r]! * normalY[p]!) < ROW_LINE_COS) excluded[r] = 1
   }
   const set = ++mark
   let count = 0
@@ -129,7 +142,7 @@ function sum(F: FixedContactState, i: number, summed: number): void {
   px[r] = px[r]! + m * F.vx[i]!
   py[r] = py[r]! + m * F.vy[i]!
   members[r]!++
-  if (excluded[i] === 1 || degree[i]! > 2) excluded[r] = 1
+  if (excluded[i] === 1) excluded[r] = 1
 }
 
 function settle(F: FixedContactState, i: number, set: number, count: number): number {

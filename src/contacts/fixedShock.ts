@@ -16,12 +16,13 @@
 // closing in one pass over its pairs, whatever its length. The other half of the sweeps then take the new
 // velocities to the balls around. Everything runs in the order of the pairs, which both broadphases give
 // alike.
-import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import { PROJECTION_SLOP, ROW_LINE_COS, TOUCH_GAP } from '../config/tolerances.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { appendCollision } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { walls } from './fixedGrid.js'
 import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
+import { rootOf, unite } from './fixedUnion.js'
 
 /** Union-find over the candidates; by root: the group's closing, whether it has an anchor, whether it bends, and its line */
 let parent = new Int32Array(256)
@@ -49,12 +50,7 @@ let list = new Int32Array(256)
 let held = 0
 
 function root(i: number): number {
-  while (parent[i] !== i) {
-    const g = parent[parent[i]!]!
-    parent[i] = g
-    i = g
-  }
-  return i
+  return rootOf(parent, i)
 }
 
 function reserve(n: number, pairs: number): void {
@@ -124,12 +120,7 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     }
     normalX[p] = nrm.x
     normalY[p] = nrm.y
-    const ra = root(a)
-    const rb = root(b)
-    if (ra === rb) continue
-    if (ra < rb) parent[rb] = ra
-    else parent[ra] = rb
-    joined++
+    if (unite(parent, a, b)) joined++
   }
   if (joined === 0) return 0
   // no ball pushed into a wall: nothing to hold
@@ -145,7 +136,7 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     reached[i] = 0
   }
   // each group's closing, and its line: the normal of its first closing pair, which every other must keep
-  // to within LINE_COS
+  // to within ROW_LINE_COS
   for (let p = 0; p < pairs; p++) {
     if (!(approachOf[p]! > 0)) continue
     const r = root(F.pairA[p]!)
@@ -153,7 +144,7 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     if (lineX[r] === 0 && lineY[r] === 0) {
       lineX[r] = normalX[p]!
       lineY[r] = normalY[p]!
-    } else if (Math.abs(lineX[r]! * normalX[p]! + lineY[r]! * normalY[p]!) < LINE_COS) bent[r] = 1
+    } else if (Math.abs(lineX[r]! * normalX[p]! + lineY[r]! * normalY[p]!) < ROW_LINE_COS) bent[r] = 1
   }
   for (let p = 0; p < pairs; p++) {
     if (approachOf[p]! < 0) continue
@@ -212,9 +203,6 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
 /** pairHit's bit 0: the pair's contact was reported this tick (src/contacts/fixedSolve.ts) */
 const REPORTED = 1
 
-/** How far a held group's closing normals may turn from its line: cos 30° (a row, not a pile) */
-const LINE_COS = Math.sqrt(3) / 2
-
 /** Whether the group rooted at r is held (see the top of this file). */
 function holds(r: number): boolean {
   return anchored[r] === 1 && bent[r] === 0 && closes[r]! > PROJECTION_SLOP
@@ -222,7 +210,7 @@ function holds(r: number): boolean {
 
 /**
  * Whether candidate i's closing pairs push it into a closed wall it touches within its reach, along the
- * wall's normal (to within LINE_COS: a ball pushed along a wall is not held by it).
+ * wall's normal (to within ROW_LINE_COS: a ball pushed along a wall is not held by it).
  */
 function pressedIntoWall(F: FixedContactState, i: number): boolean {
   const gap = F.reach[i]! - F.r[i]!
@@ -231,7 +219,7 @@ function pressedIntoWall(F: FixedContactState, i: number): boolean {
   const r = F.r[i]!
   const px = pushX[i]!
   const py = pushY[i]!
-  const along = LINE_COS * Math.sqrt(px * px + py * py)
+  const along = ROW_LINE_COS * Math.sqrt(px * px + py * py)
   if (!(along > 0)) return false
   return (
     (px >= along && walls.maxX - x - r <= gap) ||
