@@ -7,7 +7,7 @@
 // So when half the sweeps are done without converging, the pairs that meet within the tick, touch, or took
 // an impulse this tick join their balls into groups (resting candidates too: a ball lying at the wall is
 // where a row is held). A group is held when its closing pairs close by more than PROJECTION_SLOP in all,
-// their normals keep within 30° of one line (a row, not a pile), and one of its balls is pushed by its
+// the normals of all its pairs keep within 30° of one line (a row, not a pile), and one of its balls is pushed by its
 // closing pairs into a closed wall within its reach, along the wall's normal (its anchor). From the
 // anchors, breadth first, each ball that meets one already reached meets it as if that one could not move:
 // the wall first sends the anchor back with its restitution (the solve's own wall step), then each next ball
@@ -135,10 +135,10 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     lineY[i] = 0
     reached[i] = 0
   }
-  // each group's closing, and its line: the normal of its first closing pair, which every other must keep
-  // to within ROW_LINE_COS
+  // each group's closing, and its line: the normal of its first pair, which every other must keep to within
+  // ROW_LINE_COS (a ball touching the row from the side, not closing, would be taken as held along the wall)
   for (let p = 0; p < pairs; p++) {
-    if (!(approachOf[p]! > 0)) continue
+    if (approachOf[p]! < 0) continue
     const r = root(F.pairA[p]!)
     closes[r] = closes[r]! + approachOf[p]! * F.tick
     if (lineX[r] === 0 && lineY[r] === 0) {
