@@ -18,10 +18,10 @@
 // resting candidate (it holds like a wall) join nothing. The sums run over the balls in the order of their
 // first pair, which both broadphases give alike (their numbering of the candidates differs), so the bits do
 // not depend on the broadphase.
-import { JAM_MIN_BALLS, PROJECTION_SLOP, RESTITUTION_VISITS, ROW_LINE_COS } from '../config/tolerances.js'
+import { JAM_MIN_BALLS, PROJECTION_SLOP, RESTITUTION_VISITS } from '../config/tolerances.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
-import { rootOf, unite } from './fixedUnion.js'
+import { keepsLine, rootOf, unite } from './fixedUnion.js'
 
 /**
  * Union-find over the candidates; by root: the mass, momentum and members summed, whether the group is
@@ -118,10 +118,7 @@ export function settleJams(F: FixedContactState): number {
     if (closing[p] === 0) continue
     const r = root(a)
     if (closing[p]! > 0) closes[r] = closes[r]! + closing[p]!
-    if (lineX[r] === 0 && lineY[r] === 0) {
-      lineX[r] = normalX[p]!
-      lineY[r] = normalY[p]!
-    } else if (Math.abs(lineX[r]! * normalX[p]! + lineY[r]! * normalY[p]!) < ROW_LINE_COS) excluded[r] = 1
+    if (!keepsLine(lineX, lineY, r, normalX, normalY, p)) excluded[r] = 1
   }
   const set = ++mark
   let count = 0

@@ -22,7 +22,7 @@ import { appendCollision } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { walls } from './fixedGrid.js'
 import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
-import { rootOf, unite } from './fixedUnion.js'
+import { keepsLine, rootOf, unite } from './fixedUnion.js'
 
 /** Union-find over the candidates; by root: the group's closing, whether it has an anchor, whether it bends, and its line */
 let parent = new Int32Array(256)
@@ -38,13 +38,16 @@ let pushY = new Float64Array(256)
 let approachOf = new Float64Array(256)
 let normalX = new Float64Array(256)
 let normalY = new Float64Array(256)
+/** the anchors of the current call: candidates whose anchorAt is anchorMark */
+let anchorAt = new Uint32Array(256)
+let anchorMark = 0
 /** the linked pairs of the held groups by candidate (CSR), the breadth-first queue, and the candidates reached */
 let start = new Int32Array(257)
 let fill = new Int32Array(256)
 let adj = new Int32Array(512)
 let queue = new Int32Array(256)
 let reached = new Uint8Array(256)
-/** the candidates whose velocities the last holdChains changed */
+/** the candidates whose velocities the last holdRows changed */
 let list = new Int32Array(256)
 /** solve calls that held a row at a wall, over the process's life (for tests and benchmarks) */
 let held = 0
@@ -68,6 +71,8 @@ function reserve(n: number, pairs: number): void {
     fill = new Int32Array(m)
     queue = new Int32Array(m)
     reached = new Uint8Array(m)
+    anchorAt = new Uint32Array(m)
+    anchorMark = 0
     list = new Int32Array(m)
   }
   if (approachOf.length < pairs) {
@@ -84,7 +89,7 @@ function reserve(n: number, pairs: number): void {
  * walls it moves into within the tick (the solve's own wall step, which keeps its account). Returns how many
  * other candidates' velocities changed, listed in heldBalls().
  */
-export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: number, settle: number, wallBack: (w: BallWorld, F: FixedContactState, i: number) => boolean): number {
+export function holdRows(w: BallWorld, F: FixedContactState, t: number, e: number, settle: number, wallBack: (w: BallWorld, F: FixedContactState, i: number) => boolean): number {
   const n = F.n
   const pairs = F.pairCount
   // no candidate within reach of a closed wall: nothing to hold
@@ -123,9 +128,15 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     if (unite(parent, a, b)) joined++
   }
   if (joined === 0) return 0
-  // no ball pushed into a wall: nothing to hold
+  // the anchors (only a ball near a closed wall can be one), marked for this call; none: nothing to hold
+  const mark = ++anchorMark
   let anchors = false
-  for (let k = 0; k < F.nearWallCount && !anchors; k++) anchors = pressedIntoWall(F, F.nearWall[k]!)
+  for (let k = 0; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    if (!pressedIntoWall(F, i)) continue
+    anchorAt[i] = mark
+    anchors = true
+  }
   if (!anchors) return 0
   for (let i = 0; i < n; i++) {
     closes[i] = 0
@@ -141,18 +152,11 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     if (approachOf[p]! < 0) continue
     const r = root(F.pairA[p]!)
     closes[r] = closes[r]! + approachOf[p]! * F.tick
-    if (lineX[r] === 0 && lineY[r] === 0) {
-      lineX[r] = normalX[p]!
-      lineY[r] = normalY[p]!
-    } else if (Math.abs(lineX[r]! * normalX[p]! + lineY[r]! * normalY[p]!) < ROW_LINE_COS) bent[r] = 1
+    if (!keepsLine(lineX, lineY, r, normalX, normalY, p)) bent[r] = 1
   }
-  for (let p = 0; p < pairs; p++) {
-    if (approachOf[p]! < 0) continue
-    for (let s = 0; s < 2; s++) {
-      const i = s === 0 ? F.pairA[p]! : F.pairB[p]!
-      const r = root(i)
-      if (anchored[r] === 0 && pressedIntoWall(F, i)) anchored[r] = 1
-    }
+  for (let k = 0; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    if (anchorAt[i] === mark) anchored[root(i)] = 1
   }
   // the linked pairs of the groups held, by candidate, in pair order
   start.fill(0, 0, n + 1)
@@ -178,7 +182,7 @@ export function holdChains(w: BallWorld, F: FixedContactState, t: number, e: num
     if (approachOf[p]! < 0 || !holds(root(F.pairA[p]!))) continue
     for (let s = 0; s < 2; s++) {
       const i = s === 0 ? F.pairA[p]! : F.pairB[p]!
-      if (reached[i] === 1 || !pressedIntoWall(F, i)) continue
+      if (reached[i] === 1 || anchorAt[i] !== mark) continue
       reached[i] = 1
       queue[tail++] = i
       wallBack(w, F, i)
@@ -269,6 +273,6 @@ export function heldBalls(): Int32Array {
   return list
 }
 
-export function chainsHeld(): number {
+export function rowsHeld(): number {
   return held
 }

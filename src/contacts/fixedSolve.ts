@@ -30,7 +30,7 @@ import { intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { meetsWithinTick, nrm } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
-import { heldBalls, holdChains } from './fixedShock.js'
+import { heldBalls, holdRows } from './fixedShock.js'
 import { strikeLeavesRim } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
@@ -96,9 +96,9 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   let moved = false
   const mid = iterations >> 1
   for (let it = 0; it < iterations; it++) {
-    // half the sweeps done without converging: a long chain left closing moves on as one body
-    // (src/contacts/fixedJam.ts), a chain pressed into a wall by a heavier ball is held by the wall
-    // (fixedShock.ts), and the other half take their new velocities to the balls around them
+    // half the sweeps done without converging: a long row left closing moves on as one body
+    // (src/contacts/fixedJam.ts), a row pressed into a closed wall is held by the wall (fixedShock.ts),
+    // and the other half take their new velocities to the balls around them
     if (it === mid && it > 0) settle(w, F)
     moved = false
     // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
@@ -116,7 +116,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   return false
 }
 
-/** The solve's account of the velocities settleJams and holdChains changed. */
+/** The solve's account of the velocities settleJams and holdRows changed. */
 function settle(w: BallWorld, F: FixedContactState): void {
   const list = jammed()
   for (let k = 0, n = settleJams(F); k < n; k++) {
@@ -126,7 +126,7 @@ function settle(w: BallWorld, F: FixedContactState): void {
     F.changed[i]! |= 1
   }
   const held = heldBalls()
-  for (let k = 0, n = holdChains(w, F, S[S_T]!, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
+  for (let k = 0, n = holdRows(w, F, S[S_T]!, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
     const i = held[k]!
     noteChange(F, i)
     changedAt[i] = ++clock

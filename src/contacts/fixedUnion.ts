@@ -1,6 +1,8 @@
-// Union-find over a tick's packed candidates, for the rules that move or hold groups of balls together
+// Union-find over a tick's packed candidates, for the rules that move or hold rows of balls together
 // (src/contacts/fixedJam.ts, fixedShock.ts). A join hangs the higher root under the lower, so a group's
-// root is its lowest candidate whatever the order of the joins; lookups halve the path as they go.
+// root is its lowest candidate whatever the order of the joins; lookups halve the path as they go. And the
+// test both rules make of a group being a row: its pairs' normals on one line.
+import { ROW_LINE_COS } from '../config/tolerances.js'
 
 /** The root of candidate i's group. */
 export function rootOf(parent: Int32Array, i: number): number {
@@ -20,4 +22,18 @@ export function unite(parent: Int32Array, a: number, b: number): boolean {
   if (ra < rb) parent[rb] = ra
   else parent[ra] = rb
   return true
+}
+
+/**
+ * Whether pair p's normal (normalX/normalY[p]) keeps to the line of the group rooted at r, to within
+ * ROW_LINE_COS; the group's first pair sets its line (lineX/lineY[r], 0 and 0 until then). Indices in: no
+ * double crosses the call.
+ */
+export function keepsLine(lineX: Float64Array, lineY: Float64Array, r: number, normalX: Float64Array, normalY: Float64Array, p: number): boolean {
+  if (lineX[r] === 0 && lineY[r] === 0) {
+    lineX[r] = normalX[p]!
+    lineY[r] = normalY[p]!
+    return true
+  }
+  return Math.abs(lineX[r]! * normalX[p]! + lineY[r]! * normalY[p]!) >= ROW_LINE_COS
 }

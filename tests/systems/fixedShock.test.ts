@@ -7,7 +7,7 @@
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
-import { chainsHeld } from '../../src/contacts/fixedShock'
+import { rowsHeld } from '../../src/contacts/fixedShock'
 
 interface Row {
   /** balls in the row, touching or `gap` px apart, the last `dist` px from the closed right wall */
@@ -77,7 +77,7 @@ describe('fixed tick: a row pressed into a closed wall is held by it', () => {
   })
 
   it('random rows struck toward a closed wall by balls up to 1e4 times heavier: energy never rises, no ball through its neighbour, stores finite, the same bits at 60 and 240 Hz; rows are held in some', () => {
-    const before = chainsHeld()
+    const before = rowsHeld()
     fc.assert(
       fc.property(
         fc.record({
@@ -95,6 +95,6 @@ describe('fixed tick: a row pressed into a closed wall is held by it', () => {
       ),
       { seed: 5, numRuns: 40 },
     )
-    expect(chainsHeld()).toBeGreaterThan(before)
+    expect(rowsHeld()).toBeGreaterThan(before)
   })
 })
