@@ -228,3 +228,20 @@ function add(j: number, n: number): number {
 export function foundList(): Int32Array {
   return found
 }
+
+/**
+ * Whether widened candidate g and candidate j, within each other's reach before this widening, were paired
+ * then (src/contacts/fixedReach.ts pairs only those its new reach meets and its old one did not). Not when
+ * both are at rest, never widened, and one of them joined in a round: addResting pairs a joining ball with
+ * the balls widened that round only (two balls at rest cannot meet until one is struck). A ball struck in a
+ * row of touching balls that joined one by one was then not paired with the next ball, and the push went
+ * on to the one after, through it.
+ */
+export function pairedBefore(F: FixedContactState, g: number, j: number): boolean {
+  return !(restingReach(F, g) && restingReach(F, j) && (g >= F.gathered || j >= F.gathered))
+}
+
+/** Whether candidate i has the reach of a ball at rest (never widened this tick). */
+export function restingReach(F: FixedContactState, i: number): boolean {
+  return F.reach[i] === F.r[i]! + TOUCH_GAP
+}

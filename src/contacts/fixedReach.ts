@@ -19,7 +19,7 @@ import { sortIdRange } from '../world/idLists.js'
 import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { boundsBox, cutCapsule } from './fixedCut.js'
 import { roundCandidates, roundList } from './fixedRounds.js'
-import { enterWidened, foundList, holdersIn, joinedFree, joinedList } from './fixedNear.js'
+import { enterWidened, foundList, holdersIn, joinedFree, joinedList, pairedBefore, restingReach } from './fixedNear.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
@@ -108,7 +108,7 @@ function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number,
     if (j === g || j >= upTo || beyondBox(F, j)) continue
     const grownJ = F.grown[j] === 1
     if (grownJ && F.id[j]! < F.id[g]!) continue
-    if (!covers(F, g, false, j, false) && covers(F, g, true, j, grownJ)) partners = pushListed(partners, partnerCount++, j)
+    if ((!covers(F, g, false, j, false) || !pairedBefore(F, g, j)) && covers(F, g, true, j, grownJ)) partners = pushListed(partners, partnerCount++, j)
   }
 }
 
@@ -117,7 +117,7 @@ function offer(F: FixedContactState, g: number, j: number): void {
   if (j === g || hasCapsule(j)) return
   const grownJ = F.grown[j] === 1
   // listed already (most of those near it: a circle test) first
-  if (!covers(F, g, false, j, false) && covers(F, g, true, j, grownJ)) partners = pushListed(partners, partnerCount++, j)
+  if ((!covers(F, g, false, j, false) || !pairedBefore(F, g, j)) && covers(F, g, true, j, grownJ)) partners = pushListed(partners, partnerCount++, j)
 }
 
 /** Pairs g with its partners in the order of their ball ids (the same whichever broadphase found them). */
@@ -316,7 +316,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
           circle[0] = ex
           circle[1] = ey
           circle[2] = F.reachOf[e]!
-          reached = meetsCircle(F, g, true) && !meetsCircle(F, g, false)
+          reached = meetsCircle(F, g, true) && (!meetsCircle(F, g, false) || (restingReach(F, g) && g >= F.gathered && F.reachOf[e] === B.radius[e]! + TOUCH_GAP))
         }
       } else {
         if (packed && (j === g || (F.grown[j] === 1 && j < g) || hasCapsule(j))) continue
@@ -326,7 +326,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
         const rj = packed ? F.reach[j]! : F.reachOf[e]!
         const now = F.wide[g]! + (packed && F.grown[j] === 1 ? F.wide[j]! : rj)
         const before = F.reach[g]! + rj
-        reached = d2 < now * now && d2 >= before * before
+        reached = d2 < now * now && (d2 >= before * before || (packed ? !pairedBefore(F, g, j) : restingReach(F, g) && g >= F.gathered && rj === B.radius[e]! + TOUCH_GAP))
       }
       if (!reached) continue
       F.pe1 = pushListed(F.pe1, F.peCount, k)
@@ -366,7 +366,7 @@ function consider(F: FixedContactState, g: number, j: number): void {
   const d2 = dx * dx + dy * dy
   const now = F.wide[g]! + (F.grown[j] === 1 ? F.wide[j]! : F.reach[j]!)
   const before = F.reach[g]! + F.reach[j]!
-  if (d2 >= now * now || d2 < before * before) return
+  if (d2 >= now * now || (d2 < before * before && pairedBefore(F, g, j))) return
   pushPair(F, g < j ? g : j, g < j ? j : g)
 }
 

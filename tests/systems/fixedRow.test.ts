@@ -285,6 +285,31 @@ describe('fixed tick: a resting ball an earlier widening round added', () => {
   })
 })
 
+describe('fixed tick: resting balls the rounds added one by one, touching each other', () => {
+  // a push along a row of touching balls at rest adds them to the tick's candidates a round at a time; two of
+  // them were never paired (each joined paired with the ball widened that round only), so a ball struck
+  // in the row went on to the ball after the next, through the next: the push skipped every other ball and
+  // the last one struck went through the row's last ball
+  for (const hz of [60, 120]) {
+    it(`20 touching radius-0.5 balls struck end on by an equal ball at 300 px/s, e = 1, a wall 5 px past the row, ${hz} Hz: every neighbour struck, no ball passes another for 1 s`, () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+      sim.setWalls({ minX: -50, minY: -20, maxX: 25, maxY: 20, restitution: 1 })
+      const ids = [sim.addBall({ x: -1, y: 0, vx: 300, vy: 0 })]
+      for (let i = 0; i < 20; i++) ids.push(sim.addBall({ x: i, y: 0, vx: 0, vy: 0 }))
+      const met = new Set<string>()
+      let passed = -1
+      for (let f = 0; f < hz; f++) {
+        sim.step(1 / hz)
+        for (const e of sim.drainEvents()) if (e.type === 'collision') met.add(`${e.ball}-${e.other}`)
+        const xs = ids.map((i) => sim.ballState(i).x)
+        for (let k = 1; k < xs.length && passed < 0; k++) if (!(xs[k]! > xs[k - 1]!)) passed = f
+      }
+      expect(passed).toBe(-1)
+      for (let k = 1; k < ids.length; k++) expect(met.has(`${ids[k - 1]}-${ids[k]}`), `${ids[k - 1]}-${ids[k]}`).toBe(true)
+    })
+  }
+})
+
 describe('fixed tick: what a solve call keeps for the next within a tick (src/contacts/fixedCalls.ts)', () => {
   // each widening round solves again; a call after one that converged looks only at its new pairs and the
   // balls it changes (sweeps from a heap of pairs, rounds that look at the balls changed or cut), where a
