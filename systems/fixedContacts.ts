@@ -7,7 +7,8 @@
 // solves their velocities (src/contacts/fixedSolve.ts)
 // and separates overlaps (src/contacts/fixedProject.ts), pairing again the balls the solve sped up
 // (src/contacts/fixedReach.ts; a tick whose rounds stop at their pair bounds with a ball that could still pass
-// another is solved again, halved: fixedRedo.ts) and those the projection pushed into balls they were not
+// another, or that ends with a pair closing deep into itself that a finer tick would not, is solved again,
+// halved: fixedRedo.ts, fixedDeep.ts) and those the projection pushed into balls they were not
 // paired with (fixedJoin.ts). Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
@@ -16,6 +17,7 @@ import { gatherCandidates, wallsPending } from '../src/contacts/fixedGrid.js'
 import { findPairs, packings } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { applyChanges, solveVelocities } from '../src/contacts/fixedSolve.js'
+import { deepFiner } from '../src/contacts/fixedDeep.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
@@ -25,7 +27,7 @@ import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
-import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
+import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 
@@ -48,9 +50,14 @@ export function fixedContactsSystem(w: BallWorld): void {
   let tries = 0
   let atLeast = 0
   for (;;) {
-    const h = solveTick(w, F, t, atLeast)
+    let h = solveTick(w, F, t, atLeast)
     if (h === NO_PAIRS) return
-    if (h === SOLVED) break
+    if (h === SOLVED) {
+      // a try that leaves a pair closing deep into itself (or a ball moving into a wall) that a finer
+      // spacing would not, on a tick of few pairs a candidate (src/contacts/fixedDeep.ts): solved again too
+      if (F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || !deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS))) break
+      h = tryHalvings
+    }
     atLeast = redoHalvings(++tries, h)
     if (atLeast === 0) break
     restoreTick(w, F)
@@ -61,6 +68,9 @@ export function fixedContactsSystem(w: BallWorld): void {
   for (let round = 0; round < MAX_WIDEN_ROUNDS && F.overlap && F.capped === capped && joinPushed(w, F); round++) solvePositions(w, F)
   applyChanges(w, F, t)
 }
+
+/** the halvings the last try took (halveTick): the next try takes more */
+let tryHalvings = 0
 
 /** solveTick's answers besides the halvings of a try that stopped with a ball that may pass */
 const NO_PAIRS = -2
@@ -83,6 +93,7 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
   if (F.dense === 1) findPairsDense(F)
   else findPairs(w, F)
   const h = halveTick(w, F, atLeast)
+  tryHalvings = h
   chooseBroadphase(F)
   if (F.pairCount === 0) return NO_PAIRS
   const iterations = w.config.CONTACT_ITERATIONS

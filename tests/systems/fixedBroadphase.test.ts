@@ -57,7 +57,8 @@ describe('fixed-tick broadphases', () => {
 
   it('light balls at rest and heavy ones at 1,000 px/s in closed walls of restitution 0: the projection pushes balls into moving ones it was not paired with, paired in the same tick', () => {
     for (const seed of [11, 26, 29]) {
-      let joins = 0
+      // by broadphase: the sweep's (0), the dense one's (1)
+      const joins = [0, 0]
       const make = () => {
         const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 0 }, { capacity: 128 })
         sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0 })
@@ -74,11 +75,12 @@ describe('fixed-tick broadphases', () => {
         return sim
       }
       const scene: Scene = (sim, step) => {
-        if (step === 59) joins += sim.world.fixed!.movingJoins
+        if (step === 59) joins[sim.world.fixed!.broadphase]! += sim.world.fixed!.movingJoins
       }
       same(make, scene, 60, 1 / 60, `seed ${seed}`)
-      // the same-tick pairing with moving balls ran, on both broadphases
-      expect(joins, `seed ${seed}`).toBe(2)
+      // the same-tick pairing with moving balls ran, as often on both broadphases
+      expect(joins[0], `seed ${seed}`).toBeGreaterThan(0)
+      expect(joins[1], `seed ${seed}`).toBe(joins[0])
     }
   })
 

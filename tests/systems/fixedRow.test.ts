@@ -310,6 +310,35 @@ describe('fixed tick: resting balls the rounds added one by one, touching each o
   }
 })
 
+describe('fixed tick: a tick that leaves a pair closing deep into itself is solved again, halved', () => {
+  // struck at 1e4 px/s, a push runs the length of the row, off the wall and back within one tick of
+  // 1/120 s: the sweeps end with a pair still closing through itself, or the row's last ball still moving
+  // into the wall (it turned there between ticks and went back through the row); a finer tick resolves it
+  for (const gap of [0, 0.3]) {
+    it(`20 radius-0.5 balls ${gap} px apart struck end on by an equal ball at 1e4 px/s, e = 1, a wall 5 px past the row: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
+      const run = (hz: number) => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+        sim.setWalls({ minX: -50, minY: -20, maxX: 20 * (1 + gap) + 5, maxY: 20, restitution: 1 })
+        const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: 1e4, vy: 0 })]
+        for (let i = 0; i < 20; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
+        let passed = -1
+        for (let f = 0; f < hz; f++) {
+          sim.step(1 / hz)
+          sim.drainEvents()
+          const xs = ids.map((i) => sim.ballState(i).x)
+          for (let k = 1; k < xs.length && passed < 0; k++) if (!(xs[k]! > xs[k - 1]!)) passed = f
+        }
+        return { passed, state: ids.map((i) => sim.ballState(i)) }
+      }
+      const before = ticksRedone()
+      const a = run(60)
+      expect(a.passed).toBe(-1)
+      expect(ticksRedone()).toBeGreaterThan(before)
+      expect(run(120)).toEqual(a)
+    })
+  }
+})
+
 describe('fixed tick: what a solve call keeps for the next within a tick (src/contacts/fixedCalls.ts)', () => {
   // each widening round solves again; a call after one that converged looks only at its new pairs and the
   // balls it changes (sweeps from a heap of pairs, rounds that look at the balls changed or cut), where a

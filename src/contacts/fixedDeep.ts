@@ -1,0 +1,71 @@
+// Fixed-tick contacts: what a tick's velocity solve leaves for a finer tick. The sweeps
+// (src/contacts/fixedSolve.ts) stop at CONTACT_ITERATIONS, and the widening rounds at their bounds, with some
+// pairs still approaching; most close by a fraction of a px and the projection (fixedProject.ts) parts them
+// at the next tick. But where balls cover many of their radii a tick (a row of radius-0.5 balls struck at
+// 1e4 px/s, a push that runs the length of a row and back off a wall within one tick), a pair left closing
+// goes through itself before the next tick, and the projection then parts it on the far side. A pair closes
+// deep when, on straight lines at its present velocities, it closes within the tick by more than its gap
+// (none when it overlaps) and half the sum of its radii; a ball near a closed wall that still moves into it
+// within the tick turns there between ticks, back into whatever is behind it. A try of a tick of at most
+// CHAIN_PAIRS_PER_BALL pairs a candidate that leaves either, where the finest spacing
+// (MAX_TICK_HALVINGS) would not, is solved again halved (systems/fixedContacts.ts, fixedRedo.ts): at a
+// finer tick each push runs through fewer balls. Crowds of more pairs a candidate are left to the
+// projection: there every ball covers its neighbours' spacing, and each try costs the whole crowd (a crowd
+// of 261 balls pumped to 5e7 px/s took 9 times as long).
+import type { FixedContactState } from '../world/fixedState.js'
+import { walls } from './fixedGrid.js'
+
+/**
+ * How much more than its gap (none when overlapping) and half its radii pair (a, b) closes within `tick` on
+ * straight lines at the present velocities (≤ 0: not that much).
+ */
+function closing(F: FixedContactState, a: number, b: number, tick: number): number {
+  const dx = F.x[b]! - F.x[a]!
+  const dy = F.y[b]! - F.y[a]!
+  const ux = F.vx[b]! - F.vx[a]!
+  const uy = F.vy[b]! - F.vy[a]!
+  const half = dx * ux + dy * uy
+  if (!(half < 0)) return 0
+  // the closest approach within the tick
+  let tau = -half / (ux * ux + uy * uy)
+  if (tau > tick) tau = tick
+  const mx = dx + ux * tau
+  const my = dy + uy * tau
+  const d = Math.sqrt(dx * dx + dy * dy)
+  const s = F.r[a]! + F.r[b]!
+  const allow = (d > s ? d - s : 0) + 0.5 * s
+  return d - Math.sqrt(mx * mx + my * my) - allow
+}
+
+/** Whether candidate i moves into a closed wall within `tick` (fixedGrid.ts's intoWalls, for any tick). */
+function intoWallWithin(F: FixedContactState, i: number, tick: number): boolean {
+  const x = F.x[i]!
+  const y = F.y[i]!
+  const r = F.r[i]!
+  const vx = F.vx[i]!
+  const vy = F.vy[i]!
+  return (
+    (vx < 0 && x - r - walls.minX <= -vx * tick) ||
+    (vx > 0 && walls.maxX - x - r <= vx * tick) ||
+    (vy < 0 && y - r - walls.minY <= -vy * tick) ||
+    (vy > 0 && walls.maxY - y - r <= vy * tick)
+  )
+}
+
+/**
+ * Whether the tick leaves a ball near a wall moving into it, or a pair closing deep, that would not do so
+ * within a tick as short as `finest` (a finer spacing can solve it: not a ball that covers its neighbours'
+ * spacing even then, as one pumped to 1e7 px/s, nor one wider than its box).
+ */
+export function deepFiner(F: FixedContactState, finest: number): boolean {
+  for (let k = 0; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    if (intoWallWithin(F, i, F.tick) && !intoWallWithin(F, i, finest)) return true
+  }
+  for (let p = 0; p < F.pairCount; p++) {
+    const a = F.pairA[p]!
+    const b = F.pairB[p]!
+    if (closing(F, a, b, F.tick) > 0 && !(closing(F, a, b, finest) > 0)) return true
+  }
+  return false
+}
