@@ -602,7 +602,11 @@ function property(
       { seed: seed + SEED_SHIFT, numRuns: numRuns * SCALE, interruptAfterTimeLimit: 120_000 * SCALE, markInterruptAsFailure: true, includeErrorInReport: true },
     )
   } catch (err) {
+    // without the stack frames fast-check copies into its message (they name this machine's paths)
     failure = String(err instanceof Error ? err.message : err)
+      .split('\n')
+      .filter((line) => !/^\s+at /.test(line))
+      .join('\n')
     throw err
   } finally {
     console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
