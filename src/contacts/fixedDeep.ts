@@ -13,19 +13,19 @@
 // projection: there every ball covers its neighbours' spacing, and each try costs the whole crowd (a crowd
 // of 261 balls pumped to 5e7 px/s took 9 times as long).
 import type { FixedContactState } from '../world/fixedState.js'
-import { walls } from './fixedGrid.js'
+import { intoWalls } from './fixedGrid.js'
 
 /**
- * How much more than its gap (none when overlapping) and half its radii pair (a, b) closes within `tick` on
- * straight lines at the present velocities (≤ 0: not that much).
+ * Whether pair (a, b) closes within `tick`, on straight lines at the present velocities, by more than its gap
+ * (none when overlapping) and half its radii (a boolean, not the amount: a returned double is boxed).
  */
-function closing(F: FixedContactState, a: number, b: number, tick: number): number {
+function closesDeep(F: FixedContactState, a: number, b: number, tick: number): boolean {
   const dx = F.x[b]! - F.x[a]!
   const dy = F.y[b]! - F.y[a]!
   const ux = F.vx[b]! - F.vx[a]!
   const uy = F.vy[b]! - F.vy[a]!
   const half = dx * ux + dy * uy
-  if (!(half < 0)) return 0
+  if (!(half < 0)) return false
   // the closest approach within the tick
   let tau = -half / (ux * ux + uy * uy)
   if (tau > tick) tau = tick
@@ -34,22 +34,7 @@ function closing(F: FixedContactState, a: number, b: number, tick: number): numb
   const d = Math.sqrt(dx * dx + dy * dy)
   const s = F.r[a]! + F.r[b]!
   const allow = (d > s ? d - s : 0) + 0.5 * s
-  return d - Math.sqrt(mx * mx + my * my) - allow
-}
-
-/** Whether candidate i moves into a closed wall within `tick` (fixedGrid.ts's intoWalls, for any tick). */
-function intoWallWithin(F: FixedContactState, i: number, tick: number): boolean {
-  const x = F.x[i]!
-  const y = F.y[i]!
-  const r = F.r[i]!
-  const vx = F.vx[i]!
-  const vy = F.vy[i]!
-  return (
-    (vx < 0 && x - r - walls.minX <= -vx * tick) ||
-    (vx > 0 && walls.maxX - x - r <= vx * tick) ||
-    (vy < 0 && y - r - walls.minY <= -vy * tick) ||
-    (vy > 0 && walls.maxY - y - r <= vy * tick)
-  )
+  return d - Math.sqrt(mx * mx + my * my) > allow
 }
 
 /**
@@ -60,12 +45,12 @@ function intoWallWithin(F: FixedContactState, i: number, tick: number): boolean 
 export function deepFiner(F: FixedContactState, finest: number): boolean {
   for (let k = 0; k < F.nearWallCount; k++) {
     const i = F.nearWall[k]!
-    if (intoWallWithin(F, i, F.tick) && !intoWallWithin(F, i, finest)) return true
+    if (intoWalls(F, i) !== 0 && intoWalls(F, i, finest) === 0) return true
   }
   for (let p = 0; p < F.pairCount; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
-    if (closing(F, a, b, F.tick) > 0 && !(closing(F, a, b, finest) > 0)) return true
+    if (closesDeep(F, a, b, F.tick) && !closesDeep(F, a, b, finest)) return true
   }
   return false
 }

@@ -374,12 +374,11 @@ export function listNearWall(F: FixedContactState, i: number): void {
 }
 
 /**
- * Which closed walls candidate i moves into within the tick at its present velocity: bit 1 on x, bit 2 on y
+ * Which closed walls candidate i moves into within the tick (or `tick`) at its present velocity: bit 1 on x, bit 2 on y
  * (an open edge's face is at ±Infinity: never within a tick). Indices in, an integer out: no double crosses
  * the call.
  */
-export function intoWalls(F: FixedContactState, i: number): number {
-  const tick = F.tick
+export function intoWalls(F: FixedContactState, i: number, tick = F.tick): number {
   const x = F.x[i]!
   const y = F.y[i]!
   const r = F.r[i]!

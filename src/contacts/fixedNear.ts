@@ -241,6 +241,15 @@ export function pairedBefore(F: FixedContactState, g: number, j: number): boolea
   return !(restingReach(F, g) && restingReach(F, j) && (g >= F.gathered || j >= F.gathered))
 }
 
+/**
+ * pairedBefore for widened candidate g and a ball of the sweep's order not packed as a candidate (gathered,
+ * with reach `reach` and radius `radius`): it touched nothing at the gather, so only a g that joined in a
+ * round, at rest, can have had it within reach unpaired.
+ */
+export function pairedBeforeUnpacked(F: FixedContactState, g: number, reach: number, radius: number): boolean {
+  return !(restingReach(F, g) && g >= F.gathered && reach === radius + TOUCH_GAP)
+}
+
 /** Whether candidate i has the reach of a ball at rest (never widened this tick). */
 export function restingReach(F: FixedContactState, i: number): boolean {
   return F.reach[i] === F.r[i]! + TOUCH_GAP

@@ -19,7 +19,7 @@ import { sortIdRange } from '../world/idLists.js'
 import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { boundsBox, cutCapsule } from './fixedCut.js'
 import { roundCandidates, roundList } from './fixedRounds.js'
-import { enterWidened, foundList, holdersIn, joinedFree, joinedList, pairedBefore, restingReach } from './fixedNear.js'
+import { enterWidened, foundList, holdersIn, joinedFree, joinedList, pairedBefore, pairedBeforeUnpacked } from './fixedNear.js'
 import { orderCol, orderRow, unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 
@@ -316,7 +316,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
           circle[0] = ex
           circle[1] = ey
           circle[2] = F.reachOf[e]!
-          reached = meetsCircle(F, g, true) && (!meetsCircle(F, g, false) || (restingReach(F, g) && g >= F.gathered && F.reachOf[e] === B.radius[e]! + TOUCH_GAP))
+          reached = meetsCircle(F, g, true) && (!meetsCircle(F, g, false) || !pairedBeforeUnpacked(F, g, F.reachOf[e]!, B.radius[e]!))
         }
       } else {
         if (packed && (j === g || (F.grown[j] === 1 && j < g) || hasCapsule(j))) continue
@@ -326,7 +326,7 @@ function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): v
         const rj = packed ? F.reach[j]! : F.reachOf[e]!
         const now = F.wide[g]! + (packed && F.grown[j] === 1 ? F.wide[j]! : rj)
         const before = F.reach[g]! + rj
-        reached = d2 < now * now && (d2 >= before * before || (packed ? !pairedBefore(F, g, j) : restingReach(F, g) && g >= F.gathered && rj === B.radius[e]! + TOUCH_GAP))
+        reached = d2 < now * now && (d2 >= before * before || !(packed ? pairedBefore(F, g, j) : pairedBeforeUnpacked(F, g, rj, B.radius[e]!)))
       }
       if (!reached) continue
       F.pe1 = pushListed(F.pe1, F.peCount, k)
