@@ -27,7 +27,7 @@ import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
-import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
+import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 
@@ -54,8 +54,10 @@ export function fixedContactsSystem(w: BallWorld): void {
     if (h === NO_PAIRS) return
     if (h === SOLVED) {
       // a try that leaves a pair closing deep into itself (or a ball moving into a wall) that a finer
-      // spacing would not, on a tick of few pairs a candidate (src/contacts/fixedDeep.ts): solved again too
-      if (F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || !deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS))) break
+      // spacing would not: on a tick of few pairs a candidate, or of more when it leaves at most DEEP_FRONTS
+      // of them, a push's front along a row, not a crowd's many (src/contacts/fixedDeep.ts): solved again too
+      const most = F.pairCount > CHAIN_PAIRS_PER_BALL * F.n ? DEEP_FRONTS : Infinity
+      if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), most)) break
       h = tryHalvings
     }
     atLeast = redoHalvings(++tries, h)

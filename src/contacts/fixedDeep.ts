@@ -9,9 +9,11 @@
 // within the tick turns there between ticks, back into whatever is behind it. A try of a tick of at most
 // CHAIN_PAIRS_PER_BALL pairs a candidate that leaves either, where the finest spacing
 // (MAX_TICK_HALVINGS) would not, is solved again halved (systems/fixedContacts.ts, fixedRedo.ts): at a
-// finer tick each push runs through fewer balls. Crowds of more pairs a candidate are left to the
-// projection: there every ball covers its neighbours' spacing, and each try costs the whole crowd (a crowd
-// of 261 balls pumped to 5e7 px/s took 9 times as long).
+// finer tick each push runs through fewer balls. A tick of more pairs a candidate is solved again only
+// when it leaves at most DEEP_FRONTS of them (src/config/tolerances.ts: a push's front along a row struck
+// fast, and the wall ahead); a crowd that leaves more is left to the projection: there every ball covers
+// its neighbours' spacing, and each try costs the whole crowd (a crowd of 261 balls pumped to 5e7 px/s
+// took 9 times as long).
 import type { FixedContactState } from '../world/fixedState.js'
 import { intoWalls } from './fixedGrid.js'
 
@@ -40,17 +42,19 @@ function closesDeep(F: FixedContactState, a: number, b: number, tick: number): b
 /**
  * Whether the tick leaves a ball near a wall moving into it, or a pair closing deep, that would not do so
  * within a tick as short as `finest` (a finer spacing can solve it: not a ball that covers its neighbours'
- * spacing even then, as one pumped to 1e7 px/s, nor one wider than its box).
+ * spacing even then, as one pumped to 1e7 px/s, nor one wider than its box), and no more than `most` of
+ * them (counted together).
  */
-export function deepFiner(F: FixedContactState, finest: number): boolean {
+export function deepFiner(F: FixedContactState, finest: number, most: number): boolean {
+  let count = 0
   for (let k = 0; k < F.nearWallCount; k++) {
     const i = F.nearWall[k]!
-    if (intoWalls(F, i) !== 0 && intoWalls(F, i, finest) === 0) return true
+    if (intoWalls(F, i) !== 0 && intoWalls(F, i, finest) === 0 && ++count > most) return false
   }
   for (let p = 0; p < F.pairCount; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
-    if (closesDeep(F, a, b, F.tick) && !closesDeep(F, a, b, finest)) return true
+    if (closesDeep(F, a, b, F.tick) && !closesDeep(F, a, b, finest) && ++count > most) return false
   }
-  return false
+  return count > 0
 }
