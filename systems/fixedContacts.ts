@@ -50,17 +50,19 @@ export function fixedContactsSystem(w: BallWorld): void {
   let tries = 0
   let atLeast = 0
   for (;;) {
-    let h = solveTick(w, F, t, atLeast)
+    const h = solveTick(w, F, t, atLeast)
     if (h === NO_PAIRS) return
+    // a try that leaves a pair closing deep into itself (or a ball moving into a wall) that a finer
+    // spacing would not (src/contacts/fixedDeep.ts): solved again too, on a tick of few pairs a candidate;
+    // on a tick of more, when it leaves at most DEEP_FRONTS of them (a push's front along a row, not a
+    // crowd's many) and it had few pairs a candidate before its widening rounds (as a tick the spacing
+    // coarsens back from: a crowd whose pairs are its radii would keep the finer spacing)
     if (h === SOLVED) {
-      // a try that leaves a pair closing deep into itself (or a ball moving into a wall) that a finer
-      // spacing would not: on a tick of few pairs a candidate, or of more when it leaves at most DEEP_FRONTS
-      // of them, a push's front along a row, not a crowd's many (src/contacts/fixedDeep.ts): solved again too
-      const most = F.pairCount > CHAIN_PAIRS_PER_BALL * F.n ? DEEP_FRONTS : Infinity
-      if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), most)) break
-      h = tryHalvings
+      const dense = F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
+      if (dense && F.tickPairs > CHAIN_PAIRS_PER_BALL * F.tickFull) break
+      if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? DEEP_FRONTS : Infinity)) break
     }
-    atLeast = redoHalvings(++tries, h)
+    atLeast = redoHalvings(++tries, h === SOLVED ? tryHalvings : h)
     if (atLeast === 0) break
     restoreTick(w, F)
   }

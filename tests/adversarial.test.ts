@@ -910,6 +910,59 @@ describe('shrunk counterexamples of the long run', () => {
     expect(capped).toBeGreaterThan(30)
   })
 
+  // the long run at 43×, after a tick of many pairs a candidate was first solved again for a push's front
+  // (DEEP_FRONTS): a crowd of 106 balls at 1e5 px/s among light ones, squeezed by a box 5 × 1e-6 px, has
+  // 4–5 pairs a candidate from its radii; solved again at a finer spacing for two balls moving into the
+  // walls, it stayed there tick after tick (too many pairs to coarsen back, too few to halve), 17.3 s of
+  // stepping against a 12.0 s run budget (0.5 s before that rule). Such a tick is now solved again only when
+  // its pairs before the widening rounds are few, and a halved tick whose pairs a finer one would not thin
+  // coarsens back
+  it('fixed-tick contacts: a crowd squeezed by a box narrower than a ball, its ticks solved again for a ball moving into a wall, coarsens back to the full tick', () => {
+    const ops = [
+      ...PANEL_HOLES.map((h) => ({ t: 'addHole', ...h })),
+      { t: 'burst', n: 12, x: -20, y: -20, spread: 0, speed: 300, radius: undefined, mass: 1.0092528860766834e-06, seed: 0, aim: { p: 'aim', k: 7, d: 0.0022, off: -1.3, a: 0.2997036 } },
+      { t: 'addBall', x: 341.10138, y: 39.35592, radius: 1.309181922999407, mass: 121898.95989248673, place: { p: 'aim', k: 38, d: 92.8152, off: 0.65450436, a: 2.9963556, lip: 479.94886 }, vx: -0.054101332267423564, vy: -0.09888774898325502 },
+      { t: 'burst', n: 106, x: -8.132970715568789e-118, y: 68.34487999999999, spread: 0, speed: 100000, radius: undefined, mass: undefined, seed: 191, aim: { p: 'aim', k: 38, d: 14.8484, off: 0.6677112000000001, a: 0.3796947 } },
+      { t: 'setVel', k: 7, vx: 0, vy: 0.7227698036021704 },
+      { t: 'removeBall', k: 10 },
+      { t: 'addBall', x: 126.75564, y: 475.72952, radius: undefined, mass: 1.7741894808901643e-06, place: { p: 'free' }, vx: 0.15958791472367326, vy: 0 },
+      { t: 'removeHole', k: 46 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'throw', x: 160.3545, y: -6.105196726911953e-41, power: 1, angle: 5.678152261210034, radius: undefined, mass: 159.220872705117, place: { p: 'free' } },
+      { t: 'setVel', k: 28, vx: -0.009243645392322801, vy: -0.007252133915012735 },
+      { t: 'throw', x: 210, y: 450, power: 0.850401, angle: 5.961812945087965, radius: 0.11455129414455358, mass: 1.678804018122559e-06, place: { p: 'free' } },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 0, open: { top: false, right: false } },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'addBall', x: 279.11868, y: -1.8029142947010997e-231, radius: undefined, mass: 375837.4042884443, place: { p: 'free' }, vx: 5e-324, vy: 0 },
+      { t: 'step', dt: 1e-09 },
+      { t: 'addBall', x: 257.5893, y: 489.21416, radius: 0.03265878321723358, mass: 1.4125375446227555e-05, place: { p: 'inHole', k: 0, f: 0.677204, a: 5.3080461 }, vx: 7.005644052881236, vy: 252.25081375923435 },
+      { t: 'addHole', x: 210, y: 310, radius: 21.352345 },
+      { t: 'step', dt: 0.25 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'walls', minX: 125.26432, minY: 60, w: 5, h: 1e-06, e: 0.5, open: { left: false, top: false, right: false, bottom: false } },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'throw', x: 19.02042, y: 287.4032, power: 1, angle: -5.580875986284281, radius: 0.015346169827992941, mass: undefined, place: { p: 'free' } },
+      { t: 'step', dt: 1e-09 },
+      { t: 'addHole', x: 210, y: 190, radius: undefined },
+    ] as unknown as Op[]
+    let ticks = 0
+    let halvings = -1
+    let time = 0
+    runScenario('counterexample', { contacts: 'fixed', e: 0.5, decel: 0 }, ops, ['finite', 'events', 'time'], (sim) => {
+      ticks = sim.world.fixed!.ticks
+      halvings = sim.world.fixed!.halvings
+      time = sim.time
+    })
+    // 1.02 s of simulated time: 122 ticks at the full spacing, 290 before the rule (the burst's own halvings),
+    // 298 now; 355 without the bound on the pairs before the widening, 362 (and still halved at the end)
+    // without coarsening such a tick back, and both left out, 12 s of stepping
+    expect(time).toBeGreaterThan(1)
+    expect(halvings).toBe(0)
+    expect(ticks).toBeLessThan(330)
+  })
+
   // the long run at 41×: a round that widened a ball into a closed wall without new pairs solved once more
   // (so a ball sent to the wall turns at the tick), but a ball the wall cannot send back (one of radius
   // 6,109, wider than its box) kept it going round after round to the rounds' bound: 15.5 s for one step,

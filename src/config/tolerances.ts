@@ -146,12 +146,15 @@ export const MAX_TICK_REDOS = 4
  * A try that leaves a pair closing deep into itself, or a ball near a closed wall still moving into it, that
  * a finer spacing would solve (src/contacts/fixedDeep.ts) is solved again halved on a tick of at most
  * CHAIN_PAIRS_PER_BALL pairs a candidate, and on a tick of more only when it leaves at most DEEP_FRONTS of
- * them (counted together). A push along a row leaves its front and the wall ahead: the first tick of a
- * mass-3 ball striking 55 radius-0.5 balls 2 px apart at 3,000–1e4 px/s has 10–20 pairs a candidate and
- * one or two of them, and was not solved again, so a ball passed its neighbour before the next tick. A crowd
- * whose balls cover their spacing in a tick leaves many: of the 248 such ticks of a burst of heavy balls at
- * 1e5 px/s in a closed elastic box (the long adversarial run's), 241 left five or more, and every try there
- * costs the whole crowd.
+ * them (counted together) and had at most CHAIN_PAIRS_PER_BALL pairs a candidate before its widening rounds.
+ * A push along a row leaves its front and the wall ahead: the first tick of a mass-3 ball striking 55
+ * radius-0.5 balls 2 px apart at 3,000–1e4 px/s has 10–20 pairs a candidate after its rounds and one or two
+ * of them, and was not solved again, so a ball passed its neighbour before the next tick. A crowd whose balls
+ * cover their spacing in a tick leaves many: of the 248 such ticks of a burst of heavy balls at 1e5 px/s in
+ * a closed elastic box (the long adversarial run's), 241 left five or more, and every try there costs the
+ * whole crowd. A crowd squeezed in a box narrower than a ball has its pairs from its radii before any round:
+ * solved again at a finer spacing, it kept that spacing (too many pairs to coarsen back), 17 s of stepping
+ * for a sequence of 0.5 s (a named test in tests/adversarial.test.ts).
  */
 export const DEEP_FRONTS = 2
 /**

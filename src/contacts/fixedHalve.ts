@@ -74,6 +74,11 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
     // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser
     // ticks, as when its pairs are few
     else saturated = F.halvings > 0 && (levels === 0 || 2 * keptAt[1]! >= F.pairCount)
+  } else if (F.halvings > 0 && 4 * F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full) {
+    // a halved tick of too many pairs to coarsen back but too few to halve: its pairs are the balls' radii
+    // (a crowd squeezed together) when a finer tick would keep half of them or more; it gains nothing from
+    // its spacing either
+    saturated = levels === 0 || 2 * keptOnce(w, F) >= F.pairCount
   }
   if (coarsened) {
     // a coarser tick that had to be halved again: try again only after twice as many ticks as last time
@@ -168,6 +173,21 @@ function work(n: number, pairs: number, h: number): number {
   return (1 << h) * (n + pairs * (1 + pairs / (PAIR_DEGREE * n)))
 }
 const PAIR_DEGREE = 32
+
+/** The tick's pairs whose reaches still meet at a tick halved once more. */
+function keptOnce(w: BallWorld, F: FixedContactState): number {
+  const n = F.n
+  if (reachAt.length < 2 * n) reachAt = new Float64Array(4 * n)
+  const tick = tickOf(w, F.halvings + 1)
+  for (let k = 0; k < n; k++) {
+    const vx = F.vx[k]!
+    const vy = F.vy[k]!
+    reachAt[n + k] = F.r[k]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
+  }
+  let kept = 0
+  for (let p = 0; p < F.pairCount; p++) if (meetsAt(F, F.pairA[p]!, F.pairB[p]!, n)) kept++
+  return kept
+}
 
 /** Halves the tick h times: the pairs and reaches of the finer tick, the clock's next tick at its spacing. */
 function halve(w: BallWorld, F: FixedContactState, h: number): void {
