@@ -310,61 +310,55 @@ describe('fixed tick: resting balls the rounds added one by one, touching each o
   }
 })
 
+/**
+ * A row of n radius-0.5 balls `gap` px apart struck end on by a ball of mass `mass` at `speed` px/s, e = 1, a
+ * closed wall 5 px past the row, stepped 1 s at `hz`: the first step at which a ball is not ahead of the
+ * one before it (-1: none), and every ball's state at the end.
+ */
+function strikeRowAtWall(n: number, gap: number, mass: number, speed: number, hz: number) {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+  sim.setWalls({ minX: -50, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: 1 })
+  const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: speed, vy: 0, mass })]
+  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
+  let passed = -1
+  for (let f = 0; f < hz; f++) {
+    sim.step(1 / hz)
+    sim.drainEvents()
+    const xs = ids.map((i) => sim.ballState(i).x)
+    for (let k = 1; k < xs.length && passed < 0; k++) if (!(xs[k]! > xs[k - 1]!)) passed = f
+  }
+  return { passed, state: ids.map((i) => sim.ballState(i)) }
+}
+
+/** The row above passes no ball at 60 Hz, has a tick solved again, and ends with the same bits at 120 Hz. */
+function holdsWithRedo(n: number, gap: number, mass: number, speed: number): void {
+  const before = ticksRedone()
+  const a = strikeRowAtWall(n, gap, mass, speed, 60)
+  expect(a.passed).toBe(-1)
+  expect(ticksRedone()).toBeGreaterThan(before)
+  expect(strikeRowAtWall(n, gap, mass, speed, 120)).toEqual(a)
+}
+
 describe('fixed tick: a tick that leaves a pair closing deep into itself is solved again, halved', () => {
   // struck at 1e4 px/s, a push runs the length of the row, off the wall and back within one tick of
   // 1/120 s: the sweeps end with a pair still closing through itself, or the row's last ball still moving
   // into the wall (it turned there between ticks and went back through the row); a finer tick resolves it
   for (const gap of [0, 0.3]) {
     it(`20 radius-0.5 balls ${gap} px apart struck end on by an equal ball at 1e4 px/s, e = 1, a wall 5 px past the row: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
-      const run = (hz: number) => {
-        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
-        sim.setWalls({ minX: -50, minY: -20, maxX: 20 * (1 + gap) + 5, maxY: 20, restitution: 1 })
-        const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: 1e4, vy: 0 })]
-        for (let i = 0; i < 20; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
-        let passed = -1
-        for (let f = 0; f < hz; f++) {
-          sim.step(1 / hz)
-          sim.drainEvents()
-          const xs = ids.map((i) => sim.ballState(i).x)
-          for (let k = 1; k < xs.length && passed < 0; k++) if (!(xs[k]! > xs[k - 1]!)) passed = f
-        }
-        return { passed, state: ids.map((i) => sim.ballState(i)) }
-      }
-      const before = ticksRedone()
-      const a = run(60)
-      expect(a.passed).toBe(-1)
-      expect(ticksRedone()).toBeGreaterThan(before)
-      expect(run(120)).toEqual(a)
+      holdsWithRedo(20, gap, 1, 1e4)
     })
   }
 })
 
 describe('fixed tick: a tick of many pairs a candidate that leaves a push front closing deep is solved again (DEEP_FRONTS)', () => {
-  // a ball of mass 3 striking a row of radius-0.5 balls at 3,000–1e4 px/s: the first tick pairs 5–20 balls
-  // a candidate, more than CHAIN_PAIRS_PER_BALL, and its sweeps leave one or two pairs closing deep (the
-  // push's front, the wall ahead); left to the projection, a ball passed its neighbour before the next tick
+  // a ball of mass 3 striking a row of radius-0.5 balls at 3,000–1e4 px/s: the first tick has 5–20 pairs a
+  // candidate after its widening rounds, more than CHAIN_PAIRS_PER_BALL, and its sweeps leave one or two
+  // pairs closing deep (the push's front, the wall ahead); left to the projection, a ball passed its
+  // neighbour before the next tick
   const cases: Array<[n: number, gap: number, speed: number]> = [[55, 2, 3000], [55, 2, 1e4], [55, 0.05, 1e4], [120, 2, 3000]]
   for (const [n, gap, speed] of cases) {
     it(`${n} radius-0.5 balls ${gap} px apart struck end on by a mass-3 ball at ${speed} px/s, e = 1, a wall 5 px past the row: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
-      const run = (hz: number) => {
-        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
-        sim.setWalls({ minX: -50, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: 1 })
-        const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: speed, vy: 0, mass: 3 })]
-        for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
-        let passed = -1
-        for (let f = 0; f < hz; f++) {
-          sim.step(1 / hz)
-          sim.drainEvents()
-          const xs = ids.map((i) => sim.ballState(i).x)
-          for (let k = 1; k < xs.length && passed < 0; k++) if (!(xs[k]! > xs[k - 1]!)) passed = f
-        }
-        return { passed, state: ids.map((i) => sim.ballState(i)) }
-      }
-      const before = ticksRedone()
-      const a = run(60)
-      expect(a.passed).toBe(-1)
-      expect(ticksRedone()).toBeGreaterThan(before)
-      expect(run(120)).toEqual(a)
+      holdsWithRedo(n, gap, 3, speed)
     })
   }
 })
