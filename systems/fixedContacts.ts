@@ -21,7 +21,7 @@ import { deepFiner } from '../src/contacts/fixedDeep.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
-import { coarsenTick, halveTick } from '../src/contacts/fixedHalve.js'
+import { coarsenTick, fewPairs, halveTick } from '../src/contacts/fixedHalve.js'
 import { redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
@@ -59,7 +59,7 @@ export function fixedContactsSystem(w: BallWorld): void {
     // coarsens back from: a crowd whose pairs are its radii would keep the finer spacing)
     if (h === SOLVED) {
       const dense = F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
-      if (dense && F.tickPairs > CHAIN_PAIRS_PER_BALL * F.tickFull) break
+      if (dense && !fewPairs(F)) break
       if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? DEEP_FRONTS : Infinity)) break
     }
     atLeast = redoHalvings(++tries, h === SOLVED ? tryHalvings : h)

@@ -42,7 +42,7 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
   // asked for at a window's start, whose window ends at the tick of this spacing)
   const k = F.nextTick - 1
   if (w.time !== w.tickEnd || k % 2 !== 0 || w.time !== k * F.tick) return
-  if (4 * F.tickPairs > TICK_PAIRS_PER_CANDIDATE * F.tickFull) return
+  if (!fewPairs(F)) return
   if (F.coarsenWait > 0) {
     F.coarsenWait--
     return
@@ -51,6 +51,15 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
   F.halvings--
   F.tick = tickOf(w, F.halvings)
   F.nextTick = k / 2 + 1
+}
+
+/**
+ * Whether the last tick's pairs (before its widening rounds; none when a finer tick would not have thinned
+ * them) were within a quarter of the halving bound, at most TICK_PAIRS_PER_CANDIDATE / 4 a candidate: few
+ * enough for the spacing to coarsen back.
+ */
+export function fewPairs(F: FixedContactState): boolean {
+  return 4 * F.tickPairs <= TICK_PAIRS_PER_CANDIDATE * F.tickFull
 }
 
 /**
@@ -78,7 +87,8 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
     // a halved tick of too many pairs to coarsen back but too few to halve: its pairs are the balls' radii
     // (a crowd squeezed together) when a finer tick would keep half of them or more; it gains nothing from
     // its spacing either
-    saturated = levels === 0 || 2 * keptOnce(w, F) >= F.pairCount
+    if (levels > 0) countKept(w, F, 1)
+    saturated = levels === 0 || 2 * keptAt[1]! >= F.pairCount
   }
   if (coarsened) {
     // a coarser tick that had to be halved again: try again only after twice as many ticks as last time
@@ -130,6 +140,24 @@ const MAX_COARSEN_WAIT = 1024
 
 /** The halvings, up to `levels`, that make the least work (see halveTick), from the pairs each keeps. */
 function bestHalvings(w: BallWorld, F: FixedContactState, levels: number): number {
+  countKept(w, F, levels)
+  let best = 0
+  let least = work(F.full, F.pairCount, 0)
+  for (let h = 1; h <= levels; h++) {
+    const at = work(F.full, keptAt[h]!, h)
+    if (at < least) {
+      least = at
+      best = h
+    }
+  }
+  return best
+}
+
+/**
+ * The tick's pairs whose reaches still meet at each further halving up to `levels`, in keptAt[h], with each
+ * candidate's reach at halving h in reachAt[h·n + k] (halve takes them from there).
+ */
+function countKept(w: BallWorld, F: FixedContactState, levels: number): void {
   const n = F.n
   if (speed.length < n) speed = new Float64Array(2 * n)
   if (reachAt.length < (levels + 1) * n) reachAt = new Float64Array(2 * (levels + 1) * n)
@@ -150,16 +178,6 @@ function bestHalvings(w: BallWorld, F: FixedContactState, levels: number): numbe
     let h = 1
     while (h <= levels && meetsAt(F, a, b, h * n)) keptAt[h++]!++
   }
-  let best = 0
-  let least = work(F.full, F.pairCount, 0)
-  for (let h = 1; h <= levels; h++) {
-    const at = work(F.full, keptAt[h]!, h)
-    if (at < least) {
-      least = at
-      best = h
-    }
-  }
-  return best
 }
 
 /**
@@ -173,21 +191,6 @@ function work(n: number, pairs: number, h: number): number {
   return (1 << h) * (n + pairs * (1 + pairs / (PAIR_DEGREE * n)))
 }
 const PAIR_DEGREE = 32
-
-/** The tick's pairs whose reaches still meet at a tick halved once more. */
-function keptOnce(w: BallWorld, F: FixedContactState): number {
-  const n = F.n
-  if (reachAt.length < 2 * n) reachAt = new Float64Array(4 * n)
-  const tick = tickOf(w, F.halvings + 1)
-  for (let k = 0; k < n; k++) {
-    const vx = F.vx[k]!
-    const vy = F.vy[k]!
-    reachAt[n + k] = F.r[k]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
-  }
-  let kept = 0
-  for (let p = 0; p < F.pairCount; p++) if (meetsAt(F, F.pairA[p]!, F.pairB[p]!, n)) kept++
-  return kept
-}
 
 /** Halves the tick h times: the pairs and reaches of the finer tick, the clock's next tick at its spacing. */
 function halve(w: BallWorld, F: FixedContactState, h: number): void {

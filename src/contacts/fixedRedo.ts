@@ -1,8 +1,8 @@
 // Fixed-tick contacts: a tick solved again at a finer spacing. The widening rounds (src/contacts/fixedReach.ts)
 // stop at bounds on their pairs (src/config/tolerances.ts: PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED);
 // when they stop there with a ball the last round sped up that could still pass through another within
-// the tick, or end on a tick of at most CHAIN_PAIRS_PER_BALL pairs a candidate with a pair closing deep into
-// itself, or a ball moving into a wall, that a finer spacing would solve (src/contacts/fixedDeep.ts), the
+// the tick, or end with a pair closing deep into itself, or a ball moving into a wall, that a finer spacing
+// would solve (on a tick of many pairs a candidate, only a push's front: src/contacts/fixedDeep.ts), the
 // tick's solve so far is dropped and the tick is gathered, paired and solved
 // again from the same state, halved at least once more (src/contacts/fixedHalve.ts): a heavy ball striking a
 // row of light ones sends each ahead at up to twice its speed, and, frozen at the tick's start, every light
