@@ -4,7 +4,7 @@
 // with the row sunk into itself. Named rows that were crushed before, and random rows struck toward a wall
 // by balls up to 1e4 times heavier: kinetic energy never rising, no ball through its neighbour, every store
 // finite, the same bits at 60 and 240 Hz. And rows of tiny balls pressed into a wall end at rest against
-// it, parted (the projection's pass out from the walls, src/contacts/fixedProject.ts).
+// it, parted (the projection's pass out from the walls, src/contacts/fixedLayered.ts).
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics } from '../../src/index'
@@ -104,7 +104,7 @@ describe('fixed tick: a row pressed into a closed wall is parted out from the wa
   // the projection's sweeps carry a push a ball or two along a row held by a wall, and ran out each tick:
   // rows of 120 radius-0.5 balls stayed sunk into themselves, 0.054 px deep and 119 pairs over 1e-3 px after
   // 1 s (struck at 3,000 px/s, 0.05 px apart); now the balls are moved out from the wall, each out of those
-  // nearer it (src/contacts/fixedProject.ts, layered)
+  // nearer it (src/contacts/fixedLayered.ts)
   for (const [n, gap, mass, speed] of [[120, 0.05, 100, 3000], [120, 0.3, 1, 3000], [120, 2, 100, 1e4], [55, 0.05, 100, 3000]] as const) {
     it(`${n} radius-0.5 balls ${gap} px apart struck by a ball of mass ${mass} at ${speed} px/s, e = 0, a wall 5 px past the row: after 1 s at rest against the wall, no two more than 1e-3 px deep, none passed another, the same bits at 60 and 120 Hz`, () => {
       const end = (hz: number) => {

@@ -1,0 +1,62 @@
+// The fixed-tick projection's move of one overlapping pair apart (config.BALL_COLLISIONS = 'fixed'), shared by
+// the projection's sweeps (src/contacts/fixedProject.ts) and its pass out from the walls
+// (src/contacts/fixedLayered.ts): along the normal, by inverse mass with each ball taking at least
+// MIN_PROJECTION_SHARE, never through a closed wall. Positions only.
+import { MIN_PROJECTION_SHARE } from '../config/tolerances.js'
+import type { BallWorld } from '../world/createWorld.js'
+import type { FixedContactState } from '../world/fixedState.js'
+import { walls } from './fixedGrid.js'
+import { nrm } from './fixedPairs.js'
+
+/** whether the last pushApart() moved ball a, ball b of its pair */
+export let movedA = false
+export let movedB = false
+
+/** Moves the balls of pair p, overlapping by −gap along nrm (normal() just set it), apart; sets movedA, movedB. */
+export function pushApart(w: BallWorld, F: FixedContactState, p: number, gap: number): void {
+  const a = F.pairA[p]!
+  const b = F.pairB[p]!
+  const nx = nrm.x
+  const ny = nrm.y
+  // shared by inverse mass, each ball taking at least MIN_PROJECTION_SHARE (a light ball squeezed between
+  // heavy ones would otherwise take every push and pass it to and fro); what a wall keeps one ball from
+  // taking, the other takes (a ball against a wall is held by it)
+  const want = -gap
+  const share = Math.min(1 - MIN_PROJECTION_SHARE, Math.max(MIN_PROJECTION_SHARE, F.im[a]! / (F.im[a]! + F.im[b]!)))
+  const ax = F.x[a]!
+  const ay = F.y[a]!
+  F.x[a] = ax - want * share * nx
+  F.y[a] = ay - want * share * ny
+  keepInside(w, F, a)
+  const took = (ax - F.x[a]!) * nx + (ay - F.y[a]!) * ny
+  const bx = F.x[b]!
+  const by = F.y[b]!
+  F.x[b] = bx + (want - took) * nx
+  F.y[b] = by + (want - took) * ny
+  keepInside(w, F, b)
+  // and what a wall keeps b from taking goes back to a
+  const left = want - took - ((F.x[b]! - bx) * nx + (F.y[b]! - by) * ny)
+  if (left > 0) {
+    F.x[a] = F.x[a]! - left * nx
+    F.y[a] = F.y[a]! - left * ny
+    keepInside(w, F, a)
+  }
+  F.changed[a]! |= 2
+  F.changed[b]! |= 2
+  movedA = F.x[a] !== ax || F.y[a] !== ay
+  movedB = F.x[b] !== bx || F.y[b] !== by
+}
+
+/**
+ * Keeps a moved candidate from being pushed through a closed wall: never further past a wall's inner face
+ * than it was when the tick began (a ball outside the box stays outside; an open edge's face is at
+ * ±Infinity, so it never holds).
+ */
+export function keepInside(w: BallWorld, F: FixedContactState, i: number): void {
+  const eid = F.id[i]!
+  const r = F.r[i]!
+  const x0 = w.Ball.x[eid]!
+  const y0 = w.Ball.y[eid]!
+  F.x[i] = Math.min(Math.max(F.x[i]!, Math.min(x0, walls.minX + r)), Math.max(x0, walls.maxX - r))
+  F.y[i] = Math.min(Math.max(F.y[i]!, Math.min(y0, walls.minY + r)), Math.max(y0, walls.maxY - r))
+}
