@@ -4,9 +4,9 @@
 // closed walls, until no overlap is deeper than PROJECTION_SLOP. Full sweeps while the overlaps are spread
 // through the pairs, then sweeps over the pairs of the balls still moving (src/contacts/fixedPairs.ts); at
 // most PROJECTION_BUDGET × pairs pair visits and PROJECTION_QUEUE_BUDGET × pairs pairs queued again a tick.
-// Sweeps that run out with overlaps left (a row or a pile pressed into a wall: each sweep carries a push a
-// ball or two) are followed by one pass out from the walls, each ball moved out of those nearer the wall
-// (src/contacts/fixedLayered.ts). Only positions change: no kinetic energy is added.
+// Sweeps that run out with overlaps left (a row or a pile pressed into a wall, a long row pressed within
+// itself: each sweep carries a push a ball or two) are followed by one pass out from the walls and from the
+// groups' anchors (src/contacts/fixedLayered.ts). Only positions change: no kinetic energy is added.
 // The part of a push that a closed wall keeps a ball from taking goes to the other ball of the pair, so a
 // heavy ball cannot drive a light one through the wall (src/contacts/fixedPush.ts).
 import { MAX_LISTED_SWEEPS, PROJECTION_BUDGET, PROJECTION_QUEUE_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
