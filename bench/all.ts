@@ -1,5 +1,5 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
-// contact-accuracy, piles, the adversarial suite's long version, resting, recycling, dense, solver, then
+// contact-accuracy, piles, rows, the adversarial suite's long version, resting, recycling, dense, solver, then
 // the physical reference's fidelity against cost, the independent model's map and the tick-sampled methods'
 // accuracy), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
@@ -26,6 +26,7 @@ const benches: [string, string[]][] = [
   ['bench/contacts.ts', []],
   ['bench/contactAccuracy.ts', quick ? ['--seeds', '8'] : []],
   ['bench/piles.ts', quick ? ['--balls', '2500'] : []],
+  ['bench/rows.ts', []],
   ['bench/adversarial.ts', quick ? ['--scale', '2'] : []],
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
@@ -77,6 +78,7 @@ const resting = read<{ rows: RestingRow[] }>('resting')
 const contacts = read<{ rows: ContactRow[] }>('contacts')
 const accuracy = read<{ points: AccuracyPoint[] }>('contact-accuracy')
 const piles = read<{ balls: number; rows: PileRow[] }>('piles')
+const rowsBench = read<{ struck: { settings: number; passes: number; deeperThan1e3From05s: number; deepestFrom05s: number }; pressed: { rows: number; deeperThan1e3From05s: number; deepestFrom05s: number } }>('rows')
 const dense = read<{ rows: { balls: number; ordered: number; scattered: number }[]; growth100kOver10k: { ordered: number; scattered: number } }>('dense')
 const adversarial = read<{ scale: number; seconds: number; vitestExit: number | null; properties: Record<string, { passed: boolean; runs: number; steps: number; slowestStepMs: number }> }>('adversarial')
 
@@ -142,6 +144,13 @@ if (piles) {
   for (const r of piles.rows) {
     console.log(`${r.scene.padEnd(12)} ${r.method.padEnd(6)} worst ${f(r.worstStepMs).padStart(7)}  mean ${f(r.meanStepMs).padStart(7)}  steps ${r.steps}${r.stoppedEarly ? ' (stopped: a step over 5 s)' : ''}  deepest overlap at the end ${r.deepestOverlapPx.toExponential(1)} px`)
   }
+}
+
+if (rowsBench) {
+  const { struck, pressed } = rowsBench
+  console.log('\nrows struck end on, fixed tick (settings failing; deepest overlap from 0.5 s)')
+  console.log(`struck, radius 0.5   ${struck.settings} settings: a ball passes another in ${struck.passes}, over 1e-3 px in ${struck.deeperThan1e3From05s} (deepest ${struck.deepestFrom05s.toExponential(1)} px)`)
+  console.log(`pressed, radius 11   ${pressed.rows} rows: over 1e-3 px in ${pressed.deeperThan1e3From05s} (deepest ${pressed.deepestFrom05s.toExponential(1)} px)`)
 }
 
 if (adversarial) {

@@ -1,0 +1,152 @@
+// Rows struck end on under the fixed-tick method (BALL_COLLISIONS = 'fixed'): the scenes where Gauss-Seidel
+// sweeps are weakest (a push must run the length of a chain) and where balls move many diameters a tick.
+// Two sets, every setting run to its end, counted, not timed:
+//   struck: 768 rows of radius-0.5 balls, 5, 20, 55 or 120 of them, 0, 0.05, 0.3 or 2 px apart, struck by a
+//           ball of mass 1, 3 or 100 at 100, 300, 3,000 or 1e4 px/s, restitution 0 or 1 (balls and walls), a
+//           closed wall 5 px past the row, 1 s at 60 and at 120 Hz: the settings in which a ball passes its
+//           neighbour (its x not ahead of the one before it at a step's end), and those with two balls more
+//           than 1e-3 px deep in each other at a step from 0.5 s on;
+//   pressed: 200 random rows of radius-11 balls (2–64 balls, touching or 0.01 or 1 px apart, 0, 5 or 30 px
+//           from the far wall, strikers of mass 1–1e4 at 100–1,000 px/s, e from 0 to 1, on the row's line or
+//           2 px off it), 1 s at 60 Hz: the rows more than 1e-3 px deep between neighbours at a step from
+//           0.5 s on (and from 0.25 s), the deepest.
+// Writes docs/results/rows.json.
+//
+//   npm run bench:rows
+import { createBallPhysics } from '../src/index'
+import { writeResult } from './lib'
+
+interface Struck {
+  n: number
+  gap: number
+  mass: number
+  speed: number
+  e: number
+  hz: number
+}
+
+/** The first step at which a ball is not ahead of the one before it (−1: none) and the deepest overlap from 0.5 s. */
+function strike({ n, gap, mass, speed, e, hz }: Struck): { passed: number; deepest: number } {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+  sim.setWalls({ minX: -50, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: e })
+  const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: speed, vy: 0, mass })]
+  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
+  const X = () => sim.world.Ball.x
+  const Y = () => sim.world.Ball.y
+  let passed = -1
+  let deepest = 0
+  for (let f = 0; f < hz; f++) {
+    sim.step(1 / hz)
+    sim.drainEventsWith(() => {})
+    const x = X()
+    const y = Y()
+    for (let k = 1; k < ids.length && passed < 0; k++) if (!(x[ids[k]!]! > x[ids[k - 1]!]!)) passed = f
+    if (f + 1 < hz / 2) continue
+    for (let i = 0; i < ids.length; i++) {
+      for (let j = i + 1; j < ids.length; j++) {
+        const a = ids[i]!
+        const b = ids[j]!
+        const d = 1 - Math.hypot(x[a]! - x[b]!, y[a]! - y[b]!)
+        if (d > deepest) deepest = d
+      }
+    }
+  }
+  return { passed, deepest }
+}
+
+interface Pressed {
+  n: number
+  gap: number
+  mass: number
+  speed: number
+  e: number
+  off: number
+  dist: number
+}
+
+/** The deepest overlap between neighbours from 0.5 s and from 0.25 s. */
+function press({ n, gap, mass, speed, e, off, dist }: Pressed): { deepest: number; deepestFromQuarter: number } {
+  const r = 11
+  const hz = 60
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 })
+  sim.setWalls({ minX: -200, minY: -100, maxX: 2 * r + (n - 1) * (2 * r + gap) + r + dist, maxY: 100, restitution: e })
+  const ids = [sim.addBall({ x: 0, y: off, vx: speed, vy: 0, mass })]
+  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 2 * r + gap + i * (2 * r + gap), y: 0, vx: 0, vy: 0 }))
+  let deepest = 0
+  let deepestFromQuarter = 0
+  for (let f = 0; f < hz; f++) {
+    sim.step(1 / hz)
+    sim.drainEventsWith(() => {})
+    if (f + 1 < hz / 4) continue
+    const x = sim.world.Ball.x
+    const y = sim.world.Ball.y
+    for (let k = 1; k < ids.length; k++) {
+      const d = 2 * r - Math.hypot(x[ids[k]!]! - x[ids[k - 1]!]!, y[ids[k]!]! - y[ids[k - 1]!]!)
+      if (d > deepestFromQuarter) deepestFromQuarter = d
+      if (f + 1 >= hz / 2 && d > deepest) deepest = d
+    }
+  }
+  return { deepest, deepestFromQuarter }
+}
+
+const t0 = performance.now()
+const struck: (Struck & { passed: number; deepest: number })[] = []
+for (const n of [5, 20, 55, 120])
+  for (const gap of [0, 0.05, 0.3, 2])
+    for (const mass of [1, 3, 100])
+      for (const speed of [100, 300, 3000, 1e4])
+        for (const e of [0, 1])
+          for (const hz of [60, 120]) {
+            const s = { n, gap, mass, speed, e, hz }
+            struck.push({ ...s, ...strike(s) })
+          }
+const passes = struck.filter((s) => s.passed >= 0)
+const deep = struck.filter((s) => s.deepest > 1e-3)
+console.log(`struck rows: ${struck.length}; a ball passes another in ${passes.length}; over 1e-3 px deep from 0.5 s in ${deep.length} (deepest ${Math.max(...struck.map((s) => s.deepest)).toExponential(2)} px)`)
+for (const s of [...passes, ...deep]) console.log(`  ${JSON.stringify(s)}`)
+
+// the pressed rows: a fixed draw (Park–Miller, seed 1) from the ranges above
+let seed = 1
+const rand = () => (seed = (seed * 16807) % 2147483647) / 2147483647
+const pick = <T>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)]!
+const pressed: (Pressed & { deepest: number; deepestFromQuarter: number })[] = []
+for (let k = 0; k < 200; k++) {
+  const p: Pressed = {
+    n: 2 + Math.floor(rand() * 63),
+    gap: pick([0, 0.01, 1]),
+    mass: pick([1, 3, 10, 100, 1e4]),
+    speed: pick([100, 300, 1000]),
+    e: pick([0, 0.5, 0.95, 1]),
+    off: pick([0, 0, 2]),
+    dist: pick([0, 5, 30]),
+  }
+  pressed.push({ ...p, ...press(p) })
+}
+const pressedDeep = pressed.filter((p) => p.deepest > 1e-3)
+const pressedDeepQuarter = pressed.filter((p) => p.deepestFromQuarter > 1e-3)
+console.log(
+  `pressed rows: ${pressed.length}; over 1e-3 px deep from 0.5 s in ${pressedDeep.length}, from 0.25 s in ${pressedDeepQuarter.length} (deepest from 0.5 s ${Math.max(...pressed.map((p) => p.deepest)).toExponential(2)} px, from 0.25 s ${Math.max(...pressed.map((p) => p.deepestFromQuarter)).toExponential(2)} px)`,
+)
+for (const p of pressedDeepQuarter) console.log(`  ${JSON.stringify(p)}`)
+console.log(`(${((performance.now() - t0) / 1000).toFixed(0)} s)`)
+
+const file = writeResult('rows', {
+  struck: {
+    scenes: 'radius-0.5 balls, n in {5, 20, 55, 120}, gap in {0, 0.05, 0.3, 2} px, striker mass in {1, 3, 100} at {100, 300, 3000, 1e4} px/s, e in {0, 1}, a closed wall 5 px past the row, 1 s at 60 and 120 Hz',
+    settings: struck.length,
+    passes: passes.length,
+    deeperThan1e3From05s: deep.length,
+    deepestFrom05s: Math.max(...struck.map((s) => s.deepest)),
+    failing: [...passes, ...deep],
+  },
+  pressed: {
+    scenes: 'radius-11 balls, n 2–64, gap in {0, 0.01, 1} px, striker mass in {1, 3, 10, 100, 1e4} at {100, 300, 1000} px/s, e in {0, 0.5, 0.95, 1}, 0 or 2 px off the line, the far wall 0, 5 or 30 px past the row; 200 rows drawn with Park–Miller from seed 1; 1 s at 60 Hz',
+    rows: pressed.length,
+    deeperThan1e3From05s: pressedDeep.length,
+    deeperThan1e3From025s: pressedDeepQuarter.length,
+    deepestFrom05s: Math.max(...pressed.map((p) => p.deepest)),
+    deepestFrom025s: Math.max(...pressed.map((p) => p.deepestFromQuarter)),
+    failing: pressedDeepQuarter,
+  },
+})
+console.log(`wrote ${file}`)
