@@ -63,10 +63,7 @@ export function layered(w: BallWorld, F: FixedContactState): boolean {
     normal(F, a, b)
     if (!(nrm.gap < -PROJECTION_SLOP)) continue
     const v = anchorOfGroup(w, F, a)
-    if (!groupIsRow) {
-      markGroup(F, v)
-      continue
-    }
+    if (!groupIsRow) continue
     if (anchorAtWall) {
       nearestWall(F, v)
       key[v] = lay[L_GAP]!
@@ -165,7 +162,8 @@ let wallFace = 0
  * through the tick's pairs): its ball nearest a closed wall when that one can reach the wall within the tick
  * (a push toward the wall would be held there: anchorAtWall), else its heaviest (the one the sweeps move
  * least), on a tie the one nearer a wall, then the lower index. Sets groupIsRow: at least JAM_MIN_BALLS
- * balls, every pair's normal within ROW_LINE_COS of the first one's. A row of 55 balls of radius 11 struck
+ * balls, every pair's normal within ROW_LINE_COS of the first one's; a group that is not a row is marked
+ * taken (the sweeps' work, not this pass's). A row of 55 balls of radius 11 struck
  * by a ball 1e4 times heavier and pressed within itself, clear of the walls, was taken out by the sweeps at
  * about half its depth a tick: 0.36 px deep, more than 1e-3 px for 0.2 s.
  */
@@ -212,8 +210,10 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
       stack[top++] = u
     }
   }
-  for (let k = 0; k < count; k++) state[group[k]!] = 0
+  // a row is taken next; any other group is left where it is, as taken
   groupIsRow = row && count >= JAM_MIN_BALLS
+  const mark = groupIsRow ? 0 : 2
+  for (let k = 0; k < count; k++) state[group[k]!] = mark
   anchorAtWall = nearGap <= F.reach[near]! - F.r[near]! + PROJECTION_SLOP
   return anchorAtWall ? near : heavy
 }
@@ -221,23 +221,6 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
 /** whether the last anchorOfGroup took the group from its wall; whether that group was a row */
 let anchorAtWall = false
 let groupIsRow = false
-
-/** Marks the group of ball s (the balls not yet taken linked to it through the tick's pairs) taken, where they are. */
-function markGroup(F: FixedContactState, s: number): void {
-  let top = 0
-  stack[top++] = s
-  state[s] = 2
-  while (top > 0) {
-    const v = stack[--top]!
-    for (let q = F.adjStart[v]!, e = F.adjStart[v + 1]!; q < e; q++) {
-      const p = F.adjPairs[q]!
-      const u = F.pairA[p] === v ? F.pairB[p]! : F.pairA[p]!
-      if (state[u] !== 0) continue
-      state[u] = 2
-      stack[top++] = u
-    }
-  }
-}
 
 /** layered's mark of a ball taken from a group's anchor, not from a wall (faces 0–3) */
 const FROM_BALL = 4
