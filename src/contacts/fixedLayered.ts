@@ -17,7 +17,8 @@ import { keepInside, pushApart } from './fixedPush.js'
  * nearest that ball's wall first (by where the balls were before this), each moved out of every ball already
  * taken that it overlaps (those are where they end), along the pair's normal before any moved (along). Then
  * each long row no wall holds with an overlap deeper than the slop left in it, from one of its balls
- * (anchorOfGroup): every ball the tick paired with one already taken, nearest that ball (or its wall) first.
+ * (anchorOfGroup), or from the balls taken from a wall that the tick paired it with (seedFromTaken): every
+ * ball the tick paired with one already taken, nearest that ball (or its wall) first.
  * Then one more full sweep. Positions only. True when no overlap deeper than PROJECTION_SLOP is left.
  */
 export function layered(w: BallWorld, F: FixedContactState): boolean {
@@ -64,19 +65,13 @@ export function layered(w: BallWorld, F: FixedContactState): boolean {
     if (!(nrm.gap < -PROJECTION_SLOP)) continue
     const v = anchorOfGroup(w, F, a)
     if (!groupIsRow) continue
-    if (anchorAtWall) {
-      nearestWall(F, v)
-      key[v] = lay[L_GAP]!
-      face[v] = wallFace
-    } else {
-      face[v] = FROM_BALL
-      anchorOf[v] = v
-      key[v] = 0
-    }
-    state[v] = 1
+    // a row paired with balls already taken from a wall goes on from those, as if it touched them; else
+    // from its anchor
+    let from = seedFromTaken(F)
+    if (from === 0) from = seedAnchor(w, F, v)
     seeded = true
     anchoredRuns++
-    spread(w, F, push(v, 0), true)
+    spread(w, F, from, true)
   }
   if (!seeded) return false
   // one full sweep for what that leaves (a ball held by a wall, a push across the order)
@@ -213,7 +208,11 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
   // a row is taken next; any other group is left where it is, as taken
   groupIsRow = row && count >= JAM_MIN_BALLS
   const mark = groupIsRow ? 0 : 2
-  for (let k = 0; k < count; k++) state[group[k]!] = mark
+  for (let k = 0; k < count; k++) {
+    state[group[k]!] = mark
+    face[group[k]!] = NO_FACE
+  }
+  groupCount = count
   anchorAtWall = nearGap <= F.reach[near]! - F.r[near]! + PROJECTION_SLOP
   return anchorAtWall ? near : heavy
 }
@@ -221,9 +220,48 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
 /** whether the last anchorOfGroup took the group from its wall; whether that group was a row */
 let anchorAtWall = false
 let groupIsRow = false
+let groupCount = 0
 
-/** layered's mark of a ball taken from a group's anchor, not from a wall (faces 0–3) */
+/**
+ * Puts into the heap each ball of the row anchorOfGroup gathered that the tick paired with a ball taken from
+ * a wall, by its distance before the pass to that wall; returns how many.
+ */
+function seedFromTaken(F: FixedContactState): number {
+  let size = 0
+  for (let k = 0; k < groupCount; k++) {
+    const i = group[k]!
+    for (let q = F.adjStart[i]!, e = F.adjStart[i + 1]!; q < e && state[i] === 0; q++) {
+      const p = F.adjPairs[q]!
+      const u = F.pairA[p] === i ? F.pairB[p]! : F.pairA[p]!
+      if (state[u] !== 2 || face[u]! >= FROM_BALL) continue
+      face[i] = face[u]!
+      toFace(F, i, face[i]!, true)
+      key[i] = lay[L_GAP]!
+      state[i] = 1
+      size = push(i, size)
+    }
+  }
+  return size
+}
+
+/** Puts the row's anchor v into the heap, from its wall (anchorAtWall) or as its own anchor; returns 1. */
+function seedAnchor(w: BallWorld, F: FixedContactState, v: number): number {
+  if (anchorAtWall) {
+    nearestWall(F, v)
+    key[v] = lay[L_GAP]!
+    face[v] = wallFace
+  } else {
+    face[v] = FROM_BALL
+    anchorOf[v] = v
+    key[v] = 0
+  }
+  state[v] = 1
+  return push(v, 0)
+}
+
+/** layered's mark of a ball taken from a group's anchor, not from a wall (faces 0–3); of one left where it is */
 const FROM_BALL = 4
+const NO_FACE = 5
 
 /**
  * Candidate i's gap to closed wall face k (0 left, 1 right, 2 top, 3 bottom; an open one is infinitely far),

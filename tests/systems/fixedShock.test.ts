@@ -174,4 +174,28 @@ describe('fixed tick: a long row pressed within itself, clear of the walls, is t
       expect(run(240).st).toEqual(a.st)
     })
   }
+
+  // its last ball put down 1 px into the far wall, the wall holds it and the pass out from the walls takes
+  // it alone (the next ball is 1 px away); the row behind, pressed within itself by the striker, goes on from
+  // that ball as if it touched it: taken from its heaviest ball instead it was pressed into that one, 0.87 px
+  // deep at 1/30 s (0.32 px, and over 1e-3 px until 0.13 s, with the sweeps alone)
+  it('47 radius-11 balls 1 px apart, the last held by the far wall, struck by a ball of mass 1e4 at 1,000 px/s, e = 0.5: no two balls more than 1e-3 px deep at any step of 1 s', () => {
+    const r = 11
+    const n = 47
+    const gap = 1
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0.5, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: -200, minY: -100, maxX: 2 * r + (n - 1) * (2 * r + gap) + r, maxY: 100, restitution: 0.5 })
+    const ids = [sim.addBall({ x: 0, y: 0, vx: 1000, vy: 0, mass: 1e4 })]
+    for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 2 * r + gap + i * (2 * r + gap), y: 0, vx: 0, vy: 0 }))
+    const before = anchoredCount()
+    let deepest = 0
+    for (let f = 0; f < 60; f++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      const st = ids.map((i) => sim.ballState(i))
+      for (let k = 1; k < st.length; k++) deepest = Math.max(deepest, 2 * r - Math.hypot(st[k]!.x - st[k - 1]!.x, st[k]!.y - st[k - 1]!.y))
+    }
+    expect(anchoredCount()).toBeGreaterThan(before)
+    expect(deepest).toBeLessThan(1e-3)
+  })
 })
