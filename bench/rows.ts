@@ -31,15 +31,13 @@ function strike({ n, gap, mass, speed, e, hz }: Struck): { passed: number; deepe
   sim.setWalls({ minX: -50, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: e })
   const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: speed, vy: 0, mass })]
   for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
-  const X = () => sim.world.Ball.x
-  const Y = () => sim.world.Ball.y
   let passed = -1
   let deepest = 0
   for (let f = 0; f < hz; f++) {
     sim.step(1 / hz)
     sim.drainEventsWith(() => {})
-    const x = X()
-    const y = Y()
+    const x = sim.world.Ball.x
+    const y = sim.world.Ball.y
     for (let k = 1; k < ids.length && passed < 0; k++) if (!(x[ids[k]!]! > x[ids[k - 1]!]!)) passed = f
     if (f + 1 < hz / 2) continue
     for (let i = 0; i < ids.length; i++) {

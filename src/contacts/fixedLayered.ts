@@ -32,7 +32,6 @@ export function layered(w: BallWorld, F: FixedContactState): boolean {
     y0 = new Float64Array(2 * n)
     state = new Uint8Array(2 * n)
     face = new Uint8Array(2 * n)
-    anchorOf = new Int32Array(2 * n)
     stack = new Int32Array(2 * n)
     group = new Int32Array(2 * n)
   }
@@ -120,10 +119,8 @@ function spread(w: BallWorld, F: FixedContactState, size: number, anyPair: boole
       }
       face[u] = face[v]!
       if (face[u] === FROM_BALL) {
-        const c = anchorOf[v]!
-        anchorOf[u] = c
-        const dx = x0[u]! - x0[c]!
-        const dy = y0[u]! - y0[c]!
+        const dx = x0[u]! - x0[anchorBall]!
+        const dy = y0[u]! - y0[anchorBall]!
         key[u] = Math.sqrt(dx * dx + dy * dy)
       } else {
         toFace(F, u, face[u]!, true)
@@ -177,6 +174,17 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
   while (top > 0) {
     const v = stack[--top]!
     group[count++] = v
+    // not a row: the rest of the walk only gathers the group
+    if (!row) {
+      for (let q = F.adjStart[v]!, e = F.adjStart[v + 1]!; q < e; q++) {
+        const p = F.adjPairs[q]!
+        const u = F.pairA[p] === v ? F.pairB[p]! : F.pairA[p]!
+        if (state[u] !== 0) continue
+        state[u] = 3
+        stack[top++] = u
+      }
+      continue
+    }
     let d = Infinity
     if (w.walls !== 0) {
       nearestWall(F, v)
@@ -252,7 +260,7 @@ function seedAnchor(w: BallWorld, F: FixedContactState, v: number): number {
     face[v] = wallFace
   } else {
     face[v] = FROM_BALL
-    anchorOf[v] = v
+    anchorBall = v
     key[v] = 0
   }
   state[v] = 1
@@ -262,6 +270,9 @@ function seedAnchor(w: BallWorld, F: FixedContactState, v: number): number {
 /** layered's mark of a ball taken from a group's anchor, not from a wall (faces 0–3); of one left where it is */
 const FROM_BALL = 4
 const NO_FACE = 5
+
+/** the ball the group spread is taking from its anchor (FROM_BALL) started from: one group a spread */
+let anchorBall = 0
 
 /**
  * Candidate i's gap to closed wall face k (0 left, 1 right, 2 top, 3 bottom; an open one is infinitely far),
@@ -338,8 +349,8 @@ function pop(size: number): number {
 
 /**
  * layered's scratch: a heap of candidates, each one's distance to its wall or anchor, positions before,
- * state (0 not reached, 1 in the heap, 2 taken, 3 gathered by anchorOfGroup), its wall (or FROM_BALL) and
- * anchor; anchorOfGroup's stack and group
+ * state (0 not reached, 1 in the heap, 2 taken, 3 gathered by anchorOfGroup), its wall (or FROM_BALL);
+ * anchorOfGroup's stack and group
  */
 let heap = new Int32Array(64)
 let key = new Float64Array(64)
@@ -347,7 +358,6 @@ let x0 = new Float64Array(64)
 let y0 = new Float64Array(64)
 let state = new Uint8Array(64)
 let face = new Uint8Array(64)
-let anchorOf = new Int32Array(64)
 let stack = new Int32Array(64)
 let group = new Int32Array(64)
 
