@@ -1,8 +1,9 @@
 // The fixed-tick projection's pass out from the walls (config.BALL_COLLISIONS = 'fixed'), after sweeps that
 // ran out with overlaps left (src/contacts/fixedProject.ts): shock propagation for positions. Balls touching a
-// closed wall are taken first, then each long row no wall holds from one of its balls; each ball is moved out
-// of those already taken, which stay where they are. Positions only: no kinetic energy is added.
-import { JAM_MIN_BALLS, PROJECTION_SLOP, ROW_LINE_COS } from '../config/tolerances.js'
+// closed wall are taken first, then each row (ROW_MIN_BALLS or more along one line) no wall holds from one
+// of its balls; each ball is moved out of those already taken, which stay where they are. Positions only: no
+// kinetic energy is added.
+import { PROJECTION_SLOP, ROW_LINE_COS, ROW_MIN_BALLS } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'
@@ -10,13 +11,13 @@ import { buildAdjacency, normal, nrm } from './fixedPairs.js'
 import { keepInside, pushApart } from './fixedPush.js'
 
 /**
- * The sweeps ran out with overlaps left: a row or a pile pressed into a closed wall, or a long row pressed
+ * The sweeps ran out with overlaps left: a row or a pile pressed into a closed wall, or a row pressed
  * within itself, where each sweep moves a push only a ball or two along (a ball held by the wall hands its
  * whole share on, the next splits it with the one behind). Out from the walls instead, as shock propagation
  * does: the balls touching a closed wall first, then each ball that overlaps or touches one already taken,
  * nearest that ball's wall first (by where the balls were before this), each moved out of every ball already
  * taken that it overlaps (those are where they end), along the pair's normal before any moved (along). Then
- * each long row no wall holds with an overlap deeper than the slop left in it, from one of its balls
+ * each row no wall holds with an overlap deeper than the slop left in it, from one of its balls
  * (anchorOfGroup), or from the balls taken from a wall that the tick paired it with (seedFromTaken): every
  * ball the tick paired with one already taken, nearest that ball (or its wall) first.
  * Then one more full sweep. Positions only. True when no overlap deeper than PROJECTION_SLOP is left.
@@ -53,9 +54,8 @@ export function layered(w: BallWorld, F: FixedContactState): boolean {
   }
   let seeded = size > 0
   spread(w, F, size, false)
-  // a long row no wall holds (pressed within itself, or just off the walls) is taken from one of its balls,
-  // which stays where it is, the others nearest it (or its wall) first; a pile, or a shorter row, is left to
-  // the sweeps, which even a chain out in about the square of its length
+  // a row no wall holds (pressed within itself, or just off the walls) is taken from one of its balls,
+  // which stays where it is, the others nearest it (or its wall) first; a pile is left to the sweeps
   for (let p = 0; p < pairs; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
@@ -153,7 +153,7 @@ let wallFace = 0
  * The ball a group no wall holds is taken from (the group of ball s: the balls not yet taken linked to it
  * through the tick's pairs): its ball nearest a closed wall when that one can reach the wall within the tick
  * (a push toward the wall would be held there: anchorAtWall), else its heaviest (the one the sweeps move
- * least), on a tie the one nearer a wall, then the lower index. Sets groupIsRow: at least JAM_MIN_BALLS
+ * least), on a tie the one nearer a wall, then the lower index. Sets groupIsRow: at least ROW_MIN_BALLS
  * balls, every pair's normal within ROW_LINE_COS of the first one's; a group that is not a row is marked
  * taken (the sweeps' work, not this pass's). A row of 55 balls of radius 11 struck
  * by a ball 1e4 times heavier and pressed within itself, clear of the walls, was taken out by the sweeps at
@@ -214,7 +214,7 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
     }
   }
   // a row is taken next; any other group is left where it is, as taken
-  groupIsRow = row && count >= JAM_MIN_BALLS
+  groupIsRow = row && count >= ROW_MIN_BALLS
   const mark = groupIsRow ? 0 : 2
   for (let k = 0; k < count; k++) {
     state[group[k]!] = mark

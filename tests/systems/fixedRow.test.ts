@@ -446,3 +446,27 @@ describe('fixed tick: what a solve call keeps for the next within a tick (src/co
     })
   }
 })
+
+describe('fixed tick: a push the projection carries along a row at rest', () => {
+  // 55 touching radius-0.5 balls struck by a ball of mass 100 at 100 px/s, e = 1, a closed wall 5 px past
+  // the row: by 0.5 s the row lies at rest against the wall and a slow push runs back along it. The
+  // projection pushed ball after ball of it into the next, each round pairing one more ball at rest that the
+  // tick had not gathered; the rounds stopped at MAX_WIDEN_ROUNDS with the fourth ball 1.7e-3 px deep in the
+  // fifth (at 0.533 s). They now go on while each round pairs one ball more (systems/fixedContacts.ts).
+  it('55 touching radius-0.5 balls struck by a ball of mass 100 at 100 px/s, e = 1, at 120 Hz: from 0.5 s no two balls more than 1e-3 px deep', () => {
+    const n = 55
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+    sim.setWalls({ minX: -50, minY: -20, maxX: n + 5, maxY: 20, restitution: 1 })
+    const ids = [sim.addBall({ x: -1, y: 0, vx: 100, vy: 0, mass: 100 })]
+    for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i, y: 0, vx: 0, vy: 0 }))
+    let deepest = 0
+    for (let f = 0; f < 120; f++) {
+      sim.step(1 / 120)
+      sim.drainEvents()
+      if (f + 1 < 60) continue
+      const st = ids.map((i) => sim.ballState(i))
+      for (let k = 1; k < st.length; k++) deepest = Math.max(deepest, 1 - Math.hypot(st[k]!.x - st[k - 1]!.x, st[k]!.y - st[k - 1]!.y))
+    }
+    expect(deepest).toBeLessThan(1e-3)
+  })
+})

@@ -198,4 +198,28 @@ describe('fixed tick: a long row pressed within itself, clear of the walls, is t
     expect(anchoredCount()).toBeGreaterThan(before)
     expect(deepest).toBeLessThan(1e-3)
   })
+
+  // a short train: a ball of mass 100 drives 12 touching balls of the row back from the near wall (e = 0.5),
+  // faster behind than ahead; the sweeps, which even a chain out in about the square of its length, left
+  // it 0.005 px deep after the 64 of a tick, and a row was taken from one of its balls only from 16 balls
+  // on: 2.8e-3 px deep at 0.917 s. Rows of ROW_MIN_BALLS (3) or more are taken so now
+  it('22 touching radius-11 balls pressed by a ball of mass 100 at 300 px/s, e = 0.5, the far wall 5 px past the row: from 0.5 s no two balls more than 1e-3 px deep', () => {
+    const r = 11
+    const n = 22
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0.5, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: -200, minY: -100, maxX: 2 * r + (n - 1) * 2 * r + r + 5, maxY: 100, restitution: 0.5 })
+    const ids = [sim.addBall({ x: 0, y: 0, vx: 300, vy: 0, mass: 100 })]
+    for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 2 * r + i * 2 * r, y: 0, vx: 0, vy: 0 }))
+    const before = anchoredCount()
+    let deepest = 0
+    for (let f = 0; f < 60; f++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      if (f + 1 < 30) continue
+      const st = ids.map((i) => sim.ballState(i))
+      for (let k = 1; k < st.length; k++) deepest = Math.max(deepest, 2 * r - Math.hypot(st[k]!.x - st[k - 1]!.x, st[k]!.y - st[k - 1]!.y))
+    }
+    expect(anchoredCount()).toBeGreaterThan(before)
+    expect(deepest).toBeLessThan(1e-3)
+  })
 })
