@@ -151,8 +151,9 @@ let wallFace = 0
 
 /**
  * The ball a group no wall holds is taken from (the group of ball s: the balls not yet taken linked to it
- * through the tick's pairs): its ball nearest a closed wall when that one can reach the wall within the tick
- * (a push toward the wall would be held there: anchorAtWall), else its heaviest (the one the sweeps move
+ * through the tick's pairs): its ball nearest a closed wall when that one can reach the wall within the tick,
+ * or is nearer it than the group's overlaps add up to (a push toward the wall would be held there:
+ * anchorAtWall), else its heaviest (the one the sweeps move
  * least), on a tie the one nearer a wall, then the lower index. Sets groupIsRow: at least ROW_MIN_BALLS
  * balls, every pair's normal within ROW_LINE_COS of the first one's; a group that is not a row is marked
  * taken (the sweeps' work, not this pass's). A row of 55 balls of radius 11 struck
@@ -164,6 +165,8 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
   let nearGap = Infinity
   let heavy = s
   let heavyGap = Infinity
+  // the overlaps of the group's pairs, each met from both its balls: twice the push the row needs
+  let depth2 = 0
   let lineX = 0
   let lineY = 0
   let row = true
@@ -208,6 +211,7 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
         lineX = nrm.x
         lineY = nrm.y
       } else if (Math.abs(lineX * nrm.x + lineY * nrm.y) < ROW_LINE_COS) row = false
+      if (nrm.gap < 0) depth2 -= nrm.gap
       if (state[u] !== 0) continue
       state[u] = 3
       stack[top++] = u
@@ -221,7 +225,9 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
     face[group[k]!] = NO_FACE
   }
   groupCount = count
-  anchorAtWall = nearGap <= F.reach[near]! - F.r[near]! + PROJECTION_SLOP
+  // from the wall when the ball nearest it can reach it within the tick, or when a push out from elsewhere
+  // would press that ball into it: the row's overlaps add up to more than its gap
+  anchorAtWall = nearGap <= F.reach[near]! - F.r[near]! + PROJECTION_SLOP || nearGap <= depth2 / 2
   return anchorAtWall ? near : heavy
 }
 

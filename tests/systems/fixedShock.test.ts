@@ -222,4 +222,27 @@ describe('fixed tick: a long row pressed within itself, clear of the walls, is t
     expect(anchoredCount()).toBeGreaterThan(before)
     expect(deepest).toBeLessThan(1e-3)
   })
+
+  // the row reaches the far wall and is pressed within itself, its last ball a few hundredths of a px from
+  // the wall and at rest: taken from its heaviest ball (the striker, at the other end), the push ran into the
+  // wall and left the last pairs 0.011 px deep (at 0.367 s). A row nearer a wall than its overlaps add up to
+  // is taken from the ball nearest that wall now
+  it('54 radius-11 balls 1 px apart struck by a ball of mass 10 at 1,000 px/s, e = 0.5, the far wall 30 px past the row: from 0.25 s no two balls more than 1e-3 px deep', () => {
+    const r = 11
+    const n = 54
+    const gap = 1
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0.5, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: -200, minY: -100, maxX: 2 * r + (n - 1) * (2 * r + gap) + r + 30, maxY: 100, restitution: 0.5 })
+    const ids = [sim.addBall({ x: 0, y: 0, vx: 1000, vy: 0, mass: 10 })]
+    for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 2 * r + gap + i * (2 * r + gap), y: 0, vx: 0, vy: 0 }))
+    let deepest = 0
+    for (let f = 0; f < 60; f++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      if (f + 1 < 15) continue
+      const st = ids.map((i) => sim.ballState(i))
+      for (let k = 1; k < st.length; k++) deepest = Math.max(deepest, 2 * r - Math.hypot(st[k]!.x - st[k - 1]!.x, st[k]!.y - st[k - 1]!.y))
+    }
+    expect(deepest).toBeLessThan(1e-3)
+  })
 })
