@@ -142,7 +142,7 @@ if (accuracy) {
 if (piles) {
   console.log(`\narcade abuse (${k(piles.balls)} balls; worst and mean step, ms)`)
   for (const r of piles.rows) {
-    console.log(`${r.scene.padEnd(12)} ${r.method.padEnd(6)} worst ${f(r.worstStepMs).padStart(7)}  mean ${f(r.meanStepMs).padStart(7)}  steps ${r.steps}${r.stoppedEarly ? ' (stopped: a step over 5 s)' : ''}  deepest overlap at the end ${r.deepestOverlapPx.toExponential(1)} px`)
+    console.log(`${r.scene.padEnd(12)} ${r.method.padEnd(6)} worst ${f(r.worstStepMs).padStart(7)}  mean ${f(r.meanStepMs).padStart(7)}  steps ${r.steps}${r.stoppedEarly ? ' (stopped: a step over 5 s)' : ''}  deepest overlap at the end ${r.deepestOverlapPx.toExponential(1)} px, at any step ${r.deepestAnyStepPx.toExponential(1)} px, a pair over 1e-3 px for ${r.longestOverS.toFixed(3)} s at most`)
   }
 }
 

@@ -208,5 +208,9 @@ export interface PileRow {
   meanStepMs: number
   worstStepMs: number
   deepestOverlapPx: number
+  /** the deepest overlap at any step's end, px */
+  deepestAnyStepPx: number
+  /** the longest any pair stayed more than 1e-3 px deep, s (steps' ends) */
+  longestOverS: number
   contactsPerStep: number
 }
