@@ -72,13 +72,15 @@ export function fixedContactsSystem(w: BallWorld): void {
   const anchored = anchoredCount()
   solvePositions(w, F)
   // a ball the projection pushed into a ball the tick did not pair it with: paired, projected again; past
-  // MAX_WIDEN_ROUNDS only while each round pairs one ball more (a push running along a row of balls at rest
-  // that the tick did not gather, a ball a round), up to MAX_PASS_ROUNDS
+  // MAX_WIDEN_ROUNDS only along a row (a push running along balls at rest that the tick did not gather, a
+  // ball a round): while each round pairs one ball more and the tick has CHAIN_PAIRS_PER_BALL pairs a
+  // candidate or fewer, up to MAX_PASS_ROUNDS
   for (let round = 0; F.overlap && F.capped === capped; round++) {
     const pairs = F.pairCount
     if (!joinPushed(w, F)) break
     solvePositions(w, F)
-    if (round + 1 >= MAX_WIDEN_ROUNDS && (F.pairCount - pairs > 1 || round + 1 >= MAX_PASS_ROUNDS)) break
+    if (round + 1 < MAX_WIDEN_ROUNDS) continue
+    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
   }
   // a long row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
   // push carried along it by more than the gaps between its balls: a ball moved up to one closing on it,
