@@ -94,3 +94,20 @@ export function plainStep(x: Float64Array, y: Float64Array, vx: Float64Array, vy
     vy[i] = w * k
   }
 }
+
+/** A grid cell's key for cellGrid (columns and rows within ±2¹⁹). */
+export function cellKey(cx: number, cy: number): number {
+  return cx * 1_048_576 + cy
+}
+
+/** Balls `ids` by the grid cell of side `cell` their centre (X, Y) lies in, keyed by cellKey: for the benches' neighbour scans. */
+export function cellGrid(ids: readonly number[], X: ArrayLike<number>, Y: ArrayLike<number>, cell: number): Map<number, number[]> {
+  const grid = new Map<number, number[]>()
+  for (const b of ids) {
+    const k = cellKey(Math.floor(X[b]! / cell), Math.floor(Y[b]! / cell))
+    const list = grid.get(k)
+    if (list) list.push(b)
+    else grid.set(k, [b])
+  }
+  return grid
+}

@@ -15,7 +15,7 @@
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
 import { BallMode } from '../components/Ball'
 import type { PileRow } from './charts'
-import { argValue, writeResult } from './lib'
+import { argValue, cellGrid, cellKey, writeResult } from './lib'
 
 const DT = 1 / 60
 const STEP_LIMIT_MS = 5_000
@@ -40,14 +40,7 @@ function deepestOverlap(sim: BallPhysics, over?: Set<number>): number {
   let rMax = 0
   for (const b of ids) rMax = Math.max(rMax, B.radius[b]!)
   const cell = 2 * rMax
-  const grid = new Map<number, number[]>()
-  const cellKey = (cx: number, cy: number) => cx * 1_048_576 + cy
-  for (const b of ids) {
-    const k = cellKey(Math.floor(B.x[b]! / cell), Math.floor(B.y[b]! / cell))
-    const list = grid.get(k)
-    if (list) list.push(b)
-    else grid.set(k, [b])
-  }
+  const grid = cellGrid(ids, B.x, B.y, cell)
   let worst = 0
   for (const b of ids) {
     const cx = Math.floor(B.x[b]! / cell)
