@@ -9,7 +9,7 @@
 // (src/contacts/fixedReach.ts; a tick whose rounds stop at their pair bounds with a ball that could still pass
 // another, or that ends with a pair closing deep into itself that a finer tick would not, is solved again,
 // halved: fixedRedo.ts, fixedDeep.ts) and those the projection pushed into balls they were not
-// paired with (fixedJoin.ts); a tick whose projection took a long row out from one of its balls
+// paired with (fixedJoin.ts); a tick whose projection took a row out from one of its balls
 // (fixedLayered.ts) has its velocities solved again. Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
@@ -82,10 +82,10 @@ export function fixedContactsSystem(w: BallWorld): void {
     if (round + 1 < MAX_WIDEN_ROUNDS) continue
     if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
   }
-  // a long row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
+  // a row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
   // push carried along it by more than the gaps between its balls: a ball moved up to one closing on it,
   // which the velocities solved at the old positions let through it within the tick; they are solved again
-  // where the balls now are (without it, 4 of the 768 struck rows of docs/decisions.md §12 let a ball pass)
+  // where the balls now are (without it, 4 of the 768 struck rows of npm run bench:rows let a ball pass)
   if (anchoredCount() !== anchored) solveVelocities(w, F, t, w.config.CONTACT_ITERATIONS)
   applyChanges(w, F, t)
 }
