@@ -66,9 +66,9 @@ export function panel(n: number): Scene {
   return { name: 'panel', width: cols * W, height: rows * H, open: true, restitution: 0.9, decel: 300, balls, holes }
 }
 
-/** This module's world for scene sc. */
-export function oursScene(sc: Scene, mode: 'off' | 'on' | 'fixed', tick: number): BallPhysics {
-  const sim: BallPhysics = createBallPhysics(
+/** This module's world for scene sc (`create`: another build's createBallPhysics, as bench/ab.ts passes). */
+export function oursScene(sc: Scene, mode: 'off' | 'on' | 'fixed', tick: number, create: typeof createBallPhysics = createBallPhysics): BallPhysics {
+  const sim: BallPhysics = create(
     { ROLLING_DECEL: sc.decel, BALL_COLLISIONS: mode, BALL_RESTITUTION: sc.restitution, CONTACT_TICK: tick },
     { capacity: sc.balls.length + sc.holes.length + 64 },
   )
