@@ -64,7 +64,7 @@ function stateHash(sim: BallPhysics, events: number): string {
     mix(s.y)
     mix(s.vx)
     mix(s.vy)
-    mix(s.mode.length)
+    for (let i = 0; i < s.mode.length; i++) mix(s.mode.charCodeAt(i))
   }
   mix(events)
   return h.toString(16)
