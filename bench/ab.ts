@@ -16,6 +16,7 @@ import { join, resolve } from 'node:path'
 import { pathToFileURL } from 'node:url'
 import { build } from 'esbuild'
 import type { BallPhysics, createBallPhysics } from '../src/index'
+import { checksum } from '../src/commands/snapshotCodec'
 import { DT, argValue, collectGarbage, median } from './lib'
 import { gas, oursScene, panel, type Scene } from './contactScenes'
 
@@ -48,26 +49,17 @@ function extract(commit: string, dir: string): void {
   execFileSync('tar', ['-x', '-C', dir], { input: tar })
 }
 
-/** Every ball's state and the events, hashed (FNV-1a over the doubles' bits). */
+/** Every ball's state and the events, hashed (the snapshot codec's checksum over the doubles' bytes). */
 function stateHash(sim: BallPhysics, events: number): string {
-  const f = new Float64Array(1)
-  const u = new Uint32Array(f.buffer)
-  let h = 0x811c9dc5
-  const mix = (x: number): void => {
-    f[0] = x
-    h = Math.imul(h ^ u[0]!, 16777619) >>> 0
-    h = Math.imul(h ^ u[1]!, 16777619) >>> 0
-  }
+  const values: number[] = []
   for (const b of sim.balls()) {
-    const s = sim.ballState(b)
-    mix(s.x)
-    mix(s.y)
-    mix(s.vx)
-    mix(s.vy)
-    for (let i = 0; i < s.mode.length; i++) mix(s.mode.charCodeAt(i))
+    const st = sim.ballState(b)
+    values.push(st.x, st.y, st.vx, st.vy)
+    for (let i = 0; i < st.mode.length; i++) values.push(st.mode.charCodeAt(i))
   }
-  mix(events)
-  return h.toString(16)
+  values.push(events)
+  const bytes = new Uint8Array(new Float64Array(values).buffer)
+  return checksum(bytes, bytes.length).toString(16)
 }
 
 /** One run of MEASURED_STEPS steps of a fresh scene: ms for the whole run, and the final state's hash. */
