@@ -95,6 +95,14 @@ export function machineSlowdown(): number {
   return timeBudget(1)
 }
 
+/**
+ * The same measured again now (not the figure timeBudget keeps): a run of minutes on a shared machine sees
+ * its speed drift. Never call it inside a step: it steps worlds of its own.
+ */
+export function slowdownNow(): number {
+  return Math.min(8, Math.max(1, refWorkMs() / REF_BASE_MS))
+}
+
 // The development machine ran the reference workload in 33 ms a run when vitest's module runner executed the
 // sources; they now run as plain ES modules (vitest.config.ts), which on one machine took 15 ms against 117:
 // 33 × 15 / 117. Measured since: 13.7–14.4 ms (best of seven, five times) on a machine that ran a round of
