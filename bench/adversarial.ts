@@ -27,7 +27,7 @@ try {
   throw new Error('the adversarial suite wrote no report')
 }
 for (const [name, r] of Object.entries(report)) {
-  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.budgetRechecks && r.budgetRechecks.over > 0 ? `  (${r.budgetRechecks.over} over budget at the start's scale, ${r.budgetRechecks.within} of them within at the scale measured then)` : ''}${r.failure ? `\n      ${r.failure.split('\n').filter((l, i) => i < 3 || l.startsWith('Got ')).join('\n      ')}` : ''}`)
+  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.budgetRechecks && r.budgetRechecks.over > 0 ? `  (${r.budgetRechecks.over} runs over a budget at the start's scale, ${r.budgetRechecks.within} of them within at the scale measured then)` : ''}${r.failure ? `\n      ${r.failure.split('\n').filter((l, i) => i < 3 || l.startsWith('Got ')).join('\n      ')}` : ''}`)
 }
 const failed = Object.entries(report).filter(([, r]) => !r.passed).map(([name]) => name)
 // a test of the file that is not a property (a named counterexample) fails the run too: say so, with vitest's
