@@ -9,7 +9,7 @@
 //   events   drained events never go back in time, and each lies in the window [time before, time after]
 //            of the call that reported it
 //   energy   contacts on or fixed: Σ ½·m·v² does not rise across a step that reports collisions and no wall event
-//   time     each step returns within STEP_BUDGET_MS (and a whole run within RUN_BUDGET_MS), budgets scaled
+//   time     each step returns within STEP_BUDGET_MS (and a whole run within RUN_DEV_MS), budgets scaled
 //            by the machine's slowness measured at the start, or measured again when one is exceeded
 //            (overBudget) if it is slower by then
 //   overlap  contacts on, 0.5 s after the last ball was put down: no two balls on the panel (rolling, rimRoll,
@@ -43,9 +43,8 @@ console.info(`adversarial: time budgets ×${SLOWDOWN.toFixed(2)} (this machine a
 const SCALE = Math.max(1, Number(process.env.ADVERSARIAL_SCALE ?? 1) || 1)
 const SEED_SHIFT = SCALE === 1 ? 0 : 7919 * SCALE
 const REPORT = process.env.ADVERSARIAL_REPORT
-/** a whole run's stepping (every step under the budget, but a world that grinds at the pass cap every step) */
+/** a whole run's stepping on the development machine (every step under the budget, but a world that grinds at the pass cap every step) */
 const RUN_DEV_MS = 5000
-const RUN_BUDGET_MS = RUN_DEV_MS * SLOWDOWN
 /**
  * Shrinking a counterexample stops this long after it was found. A sequence that fails 'time' takes its
  * whole run budget to fail again, and each candidate the shrinker tries is such a run: at scale 41 the
@@ -310,7 +309,7 @@ function worstOverlap(sim: BallPhysics): { depth: number; a: number; b: number }
 
 /** Applies `ops` (then SETTLE_STEPS steps of 1/60 s) and checks `checks` after every call; throws on a violation. */
 /** Runs the calls with the checks; returns the run's trace (every drained event and, at the end, every ball's state, as JSON). */
-function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonly Check[], inspect?: (sim: BallPhysics) => void, runBudgetMs = RUN_BUDGET_MS): string {
+function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonly Check[], inspect?: (sim: BallPhysics) => void, runDevMs = RUN_DEV_MS): string {
   const on = (c: Check) => checks.includes(c)
   const overrides = {
     METHOD: 'exact',
@@ -535,7 +534,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         stepping += ms
         worst[name] = Math.max(worst[name] ?? 0, ms)
         const slowStep = overBudget(name, budget, ms, STEP_DEV_MS)
-        if (slowStep || overBudget(name, budget, stepping, runBudgetMs / SLOWDOWN)) {
+        if (slowStep || overBudget(name, budget, stepping, runDevMs)) {
           const what = slowStep ? `step took ${ms.toFixed(0)} ms` : `steps took ${stepping.toFixed(0)} ms in all`
           if (on('time')) fail(`slow: ${what}`)
           throw new OverBudget(what)

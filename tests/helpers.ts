@@ -86,7 +86,7 @@ export function stepWorld(w: BallWorld, n = 1, dt = 1 / 120): BallEvent[] {
  * blow-ups of orders of magnitude; a slow CI machine is not taken for one.
  */
 export function timeBudget(ms: number): number {
-  slowdown ??= Math.min(8, Math.max(1, refWorkMs() / REF_BASE_MS))
+  slowdown ??= slowdownNow()
   return ms * slowdown
 }
 
