@@ -48,6 +48,12 @@ export function beginCall(F: FixedContactState, fresh: number): boolean {
   return keep
 }
 
+/** For tests: the velocity sweeps begun since the process started. */
+let sweepsBegun = 0
+export function sweepsRun(): number {
+  return sweepsBegun
+}
+
 /** For tests: whether a call may keep the stamps (off: every call fills them and walks every pair and hit), and the calls that did. */
 let keeping = true
 let keptCalls = 0
@@ -175,6 +181,7 @@ let pairTotal = 0
  * `fresh`: in the call's first sweep, the pairs from there on are new and are visited.
  */
 export function beginSweep(F: FixedContactState, backward: boolean, first: boolean, fresh: number): boolean {
+  sweepsBegun++
   const from = pending
   const fromCount = pendingCount
   const fromPairs = pendingPairs

@@ -389,6 +389,22 @@ export function intoWalls(F: FixedContactState, i: number, tick = F.tick): numbe
   return (onX ? 1 : 0) | (onY ? 2 : 0)
 }
 
+/**
+ * Whether candidate i could reach both walls of each axis of `into` (intoWalls' bits) within the tick,
+ * whichever way it moves (in a box wider than it): turned by one wall, the other turns it back.
+ */
+export function bouncesBetween(F: FixedContactState, i: number, into: number): boolean {
+  const r = F.r[i]!
+  const sx = Math.abs(F.vx[i]!) * F.tick
+  const sy = Math.abs(F.vy[i]!) * F.tick
+  const loX = F.x[i]! - r - walls.minX
+  const hiX = walls.maxX - F.x[i]! - r
+  const loY = F.y[i]! - r - walls.minY
+  const hiY = walls.maxY - F.y[i]! - r
+  if ((into & 1) !== 0 && !(loX <= sx && hiX <= sx && loX + hiX > 0)) return false
+  return (into & 2) === 0 || (loY <= sy && hiY <= sy && loY + hiY > 0)
+}
+
 /** Whether a candidate listed near a wall from F.nearWall[from] on moves into a closed wall within the tick. */
 export function wallsPending(F: FixedContactState, from: number): boolean {
   for (let k = from; k < F.nearWallCount; k++) if (intoWalls(F, F.nearWall[k]!) !== 0) return true

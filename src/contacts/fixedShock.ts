@@ -89,7 +89,7 @@ function reserve(n: number, pairs: number): void {
  * walls it moves into within the tick (the solve's own wall step, which keeps its account). Returns how many
  * other candidates' velocities changed, listed in heldBalls().
  */
-export function holdRows(w: BallWorld, F: FixedContactState, t: number, e: number, settle: number, wallBack: (w: BallWorld, F: FixedContactState, i: number) => boolean): number {
+export function holdRows(w: BallWorld, F: FixedContactState, t: number, e: number, settle: number, wallBack: (w: BallWorld, F: FixedContactState, i: number) => number): number {
   const n = F.n
   const pairs = F.pairCount
   // no candidate within reach of a closed wall: nothing to hold

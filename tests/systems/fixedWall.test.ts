@@ -4,6 +4,7 @@
 // bounced between the wall and its striker sweep by sweep, the pair closing inelastically from its second
 // visit, and the striker stopped dead, short of the ball it struck.
 import { describe, expect, it } from 'vitest'
+import { sweepsRun } from '../../src/contacts/fixedCalls'
 import { createBallPhysics } from '../../src/index'
 
 function strike(radius: number, speed: number, gap: number, e: number) {
@@ -46,4 +47,46 @@ describe('fixed-tick contacts at a closed wall', () => {
       })
     }
   }
+})
+
+describe('fixed-tick contacts: balls that reach both walls of their box within a tick', () => {
+  // Such a ball is turned by one wall at a sweep's start and back by the other at its end, sweep after
+  // sweep, so no call converged: each ran all CONTACT_ITERATIONS sweeps, and crowds of light balls pumped
+  // by heavy ones cost seconds a step (131 sweeps a tick here). A sweep whose only changes are such turns
+  // now ends the call (unconverged).
+  it('12 balls of mass 1e9 at 1e5 px/s and 12 of mass 1e-8 in a closed elastic box, 1 s: fewer sweeps a tick than one call may take, energy never rising, every state finite', () => {
+    let seed = 42
+    const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    const balls: Array<{ id: number; mass: number }> = []
+    for (const [mass, speed, radius] of [[1e9, 1e5, 11], [1e-8, 100, 3]] as const) {
+      for (let i = 0; i < 12; i++) {
+        const a = random() * 6.283
+        const id = sim.addBall({ x: 30 + 360 * random(), y: 30 + 420 * random(), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass, radius })
+        balls.push({ id, mass })
+      }
+    }
+    const energy = () => balls.reduce((k, b) => {
+      const s = sim.ballState(b.id)
+      return k + 0.5 * b.mass * (s.vx * s.vx + s.vy * s.vy)
+    }, 0)
+    const F = sim.world.fixed!
+    const sweeps = sweepsRun()
+    const ticks = F.ticks
+    let last = energy()
+    for (let step = 0; step < 60; step++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      const k = energy()
+      expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+      last = k
+      for (const b of balls) {
+        const s = sim.ballState(b.id)
+        expect(Number.isFinite(s.x) && Number.isFinite(s.y) && Number.isFinite(s.vx) && Number.isFinite(s.vy)).toBe(true)
+      }
+    }
+    expect(F.ticks - ticks).toBeGreaterThan(60)
+    expect((sweepsRun() - sweeps) / (F.ticks - ticks)).toBeLessThan(sim.world.config.CONTACT_ITERATIONS)
+  })
 })
