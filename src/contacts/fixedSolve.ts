@@ -101,21 +101,21 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // and the other half take their new velocities to the balls around them
     if (it === mid && it > 0) settle(w, F)
     moved = false
-    bounced = false
     // the walls first and last in each sweep, the pairs forward and backward in turn (symmetric
     // Gauss-Seidel): a push runs through a row against a wall either way within a sweep
     const back = (it & 1) === 1
     // every pair, or only those that can be met again, in the same order (src/contacts/fixedCalls.ts)
     const listed = beginSweep(F, back, it === 0, fresh)
-    if (wallVelocities(w, F)) moved = true
+    let turned = wallVelocities(w, F)
     if (listed) {
       for (let p = nextPair(); p >= 0; p = nextPair()) if (impulse(w, F, p)) moved = true
     } else for (let k = 0; k < F.pairCount; k++) if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
-    if (wallVelocities(w, F)) moved = true
+    turned |= wallVelocities(w, F)
+    if ((turned & 1) !== 0) moved = true
     // a sweep whose only changes were balls turned between two walls they both reach within the tick ends
     // the sweeps: the next would turn them back, and the one after that again, for ever (pumping light balls
     // among heavy ones: docs/known-failures.md). It ends unconverged (the next call tests every pair)
-    if (!moved) return !bounced
+    if (!moved) return turned === 0
   }
   return false
 }
@@ -337,19 +337,15 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
   return true
 }
 
-/** A closed wall reflects the normal velocity of a candidate near one that would reach it within the tick. */
-function wallVelocities(w: BallWorld, F: FixedContactState): boolean {
-  let moved = false
-  for (let k = 0; k < F.nearWallCount; k++) {
-    const turned = wallVelocity(w, F, F.nearWall[k]!)
-    if (turned === 2) bounced = true
-    else if (turned === 1) moved = true
-  }
-  return moved
+/**
+ * A closed wall reflects the normal velocity of a candidate near one that would reach it within the tick:
+ * wallVelocity's answers over the candidates, or'ed (bit 1: a ball turned, bit 2: one turned between two walls).
+ */
+function wallVelocities(w: BallWorld, F: FixedContactState): number {
+  let turned = 0
+  for (let k = 0; k < F.nearWallCount; k++) turned |= wallVelocity(w, F, F.nearWall[k]!)
+  return turned
 }
-
-/** The sweep's walls turned a ball that reaches both walls of an axis within the tick (bouncesBetween). */
-let bounced = false
 
 /**
  * Candidate i's velocity reflected by the closed walls it would reach within the tick: 0 when it was not,
