@@ -15,23 +15,17 @@
 //     a light ball squeezed or wedged against a wall by a heavy one would otherwise take a little of the
 //     push each sweep, and the sweeps run out with the pair still closing.
 //   positions: src/contacts/fixedProject.ts.
-// Then every ball the solve changed starts a fresh path from its new state at the tick (a ball on a rim or
-// in a hole's lock is in transit there, as after a contact in the exact method); a resting ball wakes only
-// if it leaves at BALL_SETTLE_SPEED or more.
-import { BallMode } from '../../components/Ball.js'
+// Then every ball the solve changed starts a fresh path from its new state at the tick:
+// src/contacts/fixedApply.ts.
 import { EventType, appendCollision, appendEvent } from '../events.js'
-import { launchBall, placeBall } from '../motion/ballFate.js'
-import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { grownTo, touchBall, type FixedContactState } from '../world/fixedState.js'
-import { holeAt } from '../world/holeTable.js'
-import { restingInsert, restingRemove } from '../world/restingGrid.js'
+import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { bouncesBetween, intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { meetsWithinTick, nrm } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
 import { heldBalls, holdRows } from './fixedShock.js'
-import { strikeLeavesRim } from './law.js'
+import { capImpulse, capped, capVelocity, overSpeed } from './law.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
 /** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */
@@ -216,10 +210,24 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   if (walled) {
     j = block.j
   } else {
-    F.vx[a] = F.vx[a]! - j * ima * nx
-    F.vy[a] = F.vy[a]! - j * ima * ny
-    F.vx[b] = F.vx[b]! + j * imb * nx
-    F.vy[b] = F.vy[b]! + j * imb * ny
+    const vax = F.vx[a]!
+    const vay = F.vy[a]!
+    const vbx = F.vx[b]!
+    const vby = F.vy[b]!
+    F.vx[a] = vax - j * ima * nx
+    F.vy[a] = vay - j * ima * ny
+    F.vx[b] = vbx + j * imb * nx
+    F.vy[b] = vby + j * imb * ny
+    // a light ball would leave faster than MAX_SPEED: less restitution (src/contacts/law.ts)
+    if (overSpeed(F.vx[a]!, F.vy[a]!) || overSpeed(F.vx[b]!, F.vy[b]!)) {
+      j = capImpulse(vax, vay, vbx, vby, nx, ny, ima, imb, approach, k / approach - 1)
+      F.vx[a] = vax - j * ima * nx
+      F.vy[a] = vay - j * ima * ny
+      F.vx[b] = vbx + j * imb * nx
+      F.vy[b] = vby + j * imb * ny
+      capBall(F, a)
+      capBall(F, b)
+    }
   }
   noteChange(F, a)
   noteChange(F, b)
@@ -239,6 +247,14 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     ev.impulse[i] = j
   }
   return true
+}
+
+/** Candidate i's velocity with no component beyond MAX_SPEED (capVelocity, src/contacts/law.ts). */
+function capBall(F: FixedContactState, i: number): void {
+  if (!overSpeed(F.vx[i]!, F.vy[i]!)) return
+  capVelocity(F.vx[i]!, F.vy[i]!)
+  F.vx[i] = capped[0]!
+  F.vy[i] = capped[1]!
 }
 
 /** wallAhead's other speed for the ball it looks at (px/s): what an impulse gives it if it stands still, else 0 (a slot: not a boxed double) */
@@ -327,6 +343,10 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
   F.vy[a] = vay
   F.vx[b] = vbx
   F.vy[b] = vby
+  // no component beyond MAX_SPEED (src/contacts/law.ts): the wall's push slows q, so only rounding or a
+  // pumped ball's motion along the wall can take one there
+  capBall(F, a)
+  capBall(F, b)
   block.j = j
   block.k = k
   if ((F.changed[q]! & WALL_REPORTED) === 0 && k * imq >= S[S_SETTLE]!) {
@@ -370,47 +390,4 @@ function wallVelocity(w: BallWorld, F: FixedContactState, i: number): number {
   changedAt[i] = ++clock
   F.changed[i]! |= 1
   return bouncesBetween(F, i, into) ? 2 : 1
-}
-
-/** Gives every changed ball a fresh path from its state at the tick t (see the top of this file). */
-export function applyChanges(w: BallWorld, F: FixedContactState, t: number): void {
-  const B = w.Ball
-  const settle = w.config.BALL_SETTLE_SPEED
-  for (let i = 0; i < F.n; i++) {
-    const c = F.changed[i]!
-    if (c === 0) continue
-    const eid = F.id[i]!
-    if ((c & 2) !== 0) touchBall(F, eid)
-    const vx = F.vx[i]!
-    const vy = F.vy[i]!
-    // pathStart written here, not through startAt: where V8 does not inline that call, its five doubles
-    // were boxed for every ball the solve changed (5 bytes a ball-step on the gas)
-    pathStart[PS_X] = F.x[i]!
-    pathStart[PS_Y] = F.y[i]!
-    pathStart[PS_VX] = vx
-    pathStart[PS_VY] = vy
-    pathStart[PS_T] = t
-    if (B.mode[eid] === BallMode.Resting) {
-      if (Math.sqrt(vx * vx + vy * vy) >= settle) launchBall(w, eid)
-      else if ((c & 2) !== 0) moveResting(w, eid)
-      continue
-    }
-    strikeLeavesRim(w, eid)
-    launchBall(w, eid)
-  }
-}
-
-/** A resting ball the projection moved (to pathStart's position): it stays at rest there. */
-function moveResting(w: BallWorld, eid: number): void {
-  const x = pathStart[PS_X]!
-  const y = pathStart[PS_Y]!
-  restingRemove(w, eid)
-  w.Ball.x[eid] = x
-  w.Ball.y[eid] = y
-  // pushed over a hole, it falls in (in transit there, it stops inside the lip circle)
-  if (holeAt(w, x, y, w.Ball.radius[eid]!) !== 0) {
-    placeBall(w, eid, x, y, 0, 0, pathStart[PS_T]!)
-    return
-  }
-  restingInsert(w, eid)
 }

@@ -1,5 +1,6 @@
 // The contact law of two smooth balls, and the rules a contact applies to the balls' state.
 import { RimMode } from '../../components/RimContact.js'
+import { MAX_SPEED } from '../config/limits.js'
 import type { BallWorld } from '../world/createWorld.js'
 
 /** Result of resolveContact: new velocities, the impulse along the normal and the approach speed. */
@@ -9,7 +10,8 @@ export const contactOut = { vax: 0, vay: 0, vbx: 0, vby: 0, impulse: 0, approach
  * Velocities after a contact of balls a and b (masses ma, mb, centres a→b along (nx, ny), unit), with
  * restitution e: the normal impulse j = (1 + e)·w / (1/ma + 1/mb), w the approach speed, changes a by −j·n/ma
  * and b by +j·n/mb; tangential velocities are kept (smooth balls). Momentum is conserved exactly in exact
- * arithmetic and kinetic energy falls by (1 − e²)·w²/(2(1/ma + 1/mb)) ≥ 0. (A settling contact instead
+ * arithmetic and kinetic energy falls by (1 − e²)·w²/(2(1/ma + 1/mb)) ≥ 0. A contact that would leave a ball
+ * with a velocity component beyond MAX_SPEED takes less restitution (capImpulse). (A settling contact instead
  * gives the touching cluster its centre-of-mass velocity: systems/collisions.ts.)
  */
 export function resolveContact(
@@ -36,12 +38,103 @@ export function resolveContact(
     o.impulse = 0
     return
   }
-  const j = ((1 + e) * approach) / (1 / ma + 1 / mb)
+  let j = ((1 + e) * approach) / (1 / ma + 1 / mb)
+  let ax = vax - (j / ma) * nx
+  let ay = vay - (j / ma) * ny
+  let bx = vbx + (j / mb) * nx
+  let by = vby + (j / mb) * ny
+  if (overSpeed(ax, ay) || overSpeed(bx, by)) {
+    // a light ball struck by a heavy one would leave faster than MAX_SPEED: less restitution (capImpulse)
+    j = capImpulse(vax, vay, vbx, vby, nx, ny, 1 / ma, 1 / mb, approach, e)
+    ax = vax - (j / ma) * nx
+    ay = vay - (j / ma) * ny
+    bx = vbx + (j / mb) * nx
+    by = vby + (j / mb) * ny
+    capVelocity(ax, ay)
+    ax = capped[0]!
+    ay = capped[1]!
+    capVelocity(bx, by)
+    bx = capped[0]!
+    by = capped[1]!
+  }
   o.impulse = j
-  o.vax = vax - (j / ma) * nx
-  o.vay = vay - (j / ma) * ny
-  o.vbx = vbx + (j / mb) * nx
-  o.vby = vby + (j / mb) * ny
+  o.vax = ax
+  o.vay = ay
+  o.vbx = bx
+  o.vby = by
+}
+
+/** Whether a velocity has a component beyond MAX_SPEED (the largest a command accepts). */
+export function overSpeed(vx: number, vy: number): boolean {
+  return vx > MAX_SPEED || vx < -MAX_SPEED || vy > MAX_SPEED || vy < -MAX_SPEED
+}
+
+/**
+ * The normal impulse of a contact (unit normal (nx, ny) from a to b, inverse masses ima and imb, approach
+ * speed `approach`, restitution e) lowered so that neither ball leaves with a velocity component beyond
+ * MAX_SPEED: its restitution is the largest in [0, e] that keeps every component within it. Momentum is
+ * kept, and kinetic energy falls further. Heavy balls drive light ones to any speed (Fermi acceleration:
+ * a light ball between a heavy one and a wall gains twice the heavy one's speed each round trip, up to the
+ * heavy balls' energy), and a state the commands would refuse (ballState read, given back to
+ * setBallVelocity) is no state to leave a ball in. When even an inelastic contact leaves a component beyond
+ * it (the ball's motion across the normal), the inelastic impulse; capVelocity then slows that ball.
+ */
+export function capImpulse(
+  vax: number,
+  vay: number,
+  vbx: number,
+  vby: number,
+  nx: number,
+  ny: number,
+  ima: number,
+  imb: number,
+  approach: number,
+  e: number,
+): number {
+  const unit = approach / (ima + imb)
+  // each component is c + f·s, f = 1 + restitution; the largest f in [1, 1 + e] that keeps it within
+  let f = 1 + e
+  f = within(vax, -unit * ima * nx, f)
+  f = within(vay, -unit * ima * ny, f)
+  f = within(vbx, unit * imb * nx, f)
+  f = within(vby, unit * imb * ny, f)
+  return f > 1 ? f * unit : unit
+}
+
+/** The largest f' ≤ f for which |c + f'·s| ≤ MAX_SPEED (f itself when c + f·s is within it). */
+function within(c: number, s: number, f: number): number {
+  const at = c + f * s
+  if (!(at > MAX_SPEED || at < -MAX_SPEED) || s === 0) return f
+  const g = ((s > 0 ? MAX_SPEED : -MAX_SPEED) - c) / s
+  return g < f ? g : f
+}
+
+/** capVelocity's answer: the capped velocity (slots, not a returned pair) */
+export const capped = new Float64Array(2)
+
+/**
+ * A velocity with no component beyond MAX_SPEED (into `capped`): scaled down along itself when it has one
+ * (its larger component then exactly ±MAX_SPEED), else as it is. Only a ball an inelastic contact still
+ * sends beyond MAX_SPEED (capImpulse), or that rounding leaves an ulp over it, is slowed this way, and only
+ * there is a contact's momentum not kept.
+ */
+export function capVelocity(vx: number, vy: number): void {
+  const ax = Math.abs(vx)
+  const ay = Math.abs(vy)
+  if (ax <= MAX_SPEED && ay <= MAX_SPEED) {
+    capped[0] = vx
+    capped[1] = vy
+    return
+  }
+  if (ax >= ay) {
+    const y = vy * (MAX_SPEED / ax)
+    capped[0] = vx > 0 ? MAX_SPEED : -MAX_SPEED
+    capped[1] = y > MAX_SPEED ? MAX_SPEED : y < -MAX_SPEED ? -MAX_SPEED : y
+  } else {
+    const x = vx * (MAX_SPEED / ay)
+    capped[0] = x > MAX_SPEED ? MAX_SPEED : x < -MAX_SPEED ? -MAX_SPEED : x
+    capped[1] = vy > 0 ? MAX_SPEED : -MAX_SPEED
+  }
 }
 
 /**

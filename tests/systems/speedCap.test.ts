@@ -1,0 +1,110 @@
+// No contact leaves a ball with a velocity component beyond MAX_SPEED, the largest a command accepts. Heavy
+// balls drive light ones to any speed (a light ball between a heavy one and a wall gains twice the heavy
+// one's speed each round trip), and before this a game that read such a ball's velocity (ballState) and
+// gave it back (setBallVelocity) got a RangeError. The contact takes less restitution instead (momentum
+// kept, kinetic energy lower); only a ball an inelastic contact still sends beyond it is slowed along its
+// own direction (src/contacts/law.ts).
+import { describe, expect, it } from 'vitest'
+import { capImpulse, capped, capVelocity } from '../../src/contacts/law'
+import { createBallPhysics, MAX_SPEED } from '../../src/index'
+
+type Method = 'on' | 'fixed'
+
+/** A ball of mass 1e3 at `speed` px/s strikes one of mass 1e-3 at rest 1 px ahead, head on. */
+function strike(method: Method, speed: number, e: number) {
+  const sim = createBallPhysics({ BALL_COLLISIONS: method, BALL_RESTITUTION: e, ROLLING_DECEL: 0 })
+  const heavy = sim.addBall({ x: 1000, y: 1000, vx: speed, vy: 0, mass: 1e3 })
+  const light = sim.addBall({ x: 1000 + 22 + 1, y: 1000, vx: 0, vy: 0, mass: 1e-3 })
+  const before = { p: 1e3 * speed, k: 0.5 * 1e3 * speed * speed }
+  sim.step(1e-6)
+  const events = sim.drainEvents().filter((ev) => ev.type === 'collision')
+  const h = sim.ballState(heavy)
+  const l = sim.ballState(light)
+  return { sim, heavy, light, h, l, before, events }
+}
+
+describe('contacts never leave a velocity beyond MAX_SPEED', () => {
+  for (const method of ['on', 'fixed'] as const) {
+    it(`${method}: an elastic strike that would send a light ball to 1.8e7 px/s sends it at MAX_SPEED, momentum kept, energy lower`, () => {
+      const { sim, light, h, l, before, events } = strike(method, 9e6, 1)
+      expect(events.length).toBe(1)
+      // the elastic answer is 2·9e6; capped at MAX_SPEED (its last ulps rounded down at most)
+      expect(l.vx).toBeLessThanOrEqual(MAX_SPEED)
+      expect(l.vx).toBeGreaterThan(MAX_SPEED * (1 - 1e-12))
+      expect(l.vy).toBe(0)
+      const p = 1e3 * h.vx + 1e-3 * l.vx
+      expect(Math.abs(p - before.p)).toBeLessThanOrEqual(1e-9 * before.p)
+      const k = 0.5 * 1e3 * h.vx * h.vx + 0.5 * 1e-3 * l.vx * l.vx
+      expect(k).toBeLessThanOrEqual(before.k)
+      // the heavy ball gave up the light ball's momentum (1e-3 · MAX_SPEED), no more: the elastic strike's
+      // would have taken 18 px/s from it
+      expect(9e6 - h.vx).toBeCloseTo(10, 6)
+      // what ballState reads, setBallVelocity takes back
+      expect(() => sim.setBallVelocity(light, l.vx, l.vy)).not.toThrow()
+    })
+
+    it(`${method}: below the cap the strike is the two-body law, unchanged`, () => {
+      const { l } = strike(method, 4e6, 1)
+      // 2·m_a/(m_a + m_b)·4e6, within rounding
+      expect(l.vx).toBeCloseTo(((2 * 1e3) / (1e3 + 1e-3)) * 4e6, 3)
+    })
+  }
+
+  it('capImpulse lowers the restitution only as far as the fastest component needs', () => {
+    // unit masses' inverse 1e9 (light, a) and 1e-9 (heavy, b), b approaching a along −x at 9e6
+    const j = capImpulse(0, 0, -9e6, 0, 1, 0, 1e9, 1e-9, 9e6, 1)
+    const f = (j * (1e9 + 1e-9)) / 9e6
+    // a leaves at −f·9e6·(1e9/(1e9 + 1e-9)) = −MAX_SPEED: f = 1.111...
+    expect(f).toBeCloseTo(MAX_SPEED / 9e6, 9)
+    // a strike that exceeds it even inelastic: a light ball at (−1e7, 1e7) struck along the diagonal by a
+    // heavy one at (−1e7, −1e7) keeps its motion across the normal, 1.41e7, and takes the heavy ball's
+    // along it: (−2e7, 0). The inelastic impulse; capVelocity then slows the ball along its own direction
+    const n = Math.SQRT1_2
+    const approach = -((-1e7 + 1e7) * n + (-1e7 - 1e7) * n)
+    const k = capImpulse(-1e7, 1e7, -1e7, -1e7, n, n, 1e9, 1e-9, approach, 1)
+    expect((k * (1e9 + 1e-9)) / approach).toBe(1)
+    capVelocity(-1e7 - k * 1e9 * n, 1e7 - k * 1e9 * n)
+    expect(capped[0]).toBe(-MAX_SPEED)
+    expect(Math.abs(capped[1]!)).toBeLessThan(1e-3)
+    capVelocity(-9e6, 2 * MAX_SPEED)
+    expect(capped[1]).toBe(MAX_SPEED)
+    expect(capped[0]).toBeCloseTo(-4.5e6, 3)
+    capVelocity(-3, 4)
+    expect([capped[0], capped[1]]).toEqual([-3, 4])
+  })
+
+  it('fixed: 12 balls of mass 1e9 at 1e5 px/s pumping 12 of mass 1e-8 in a closed elastic box, 1 s: every velocity read goes back through setBallVelocity', () => {
+    // this seed's light balls passed MAX_SPEED at the 57th step (2.5e7 px/s within 10 s) before the cap
+    let seed = 7
+    const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    const ids: number[] = []
+    const masses: number[] = []
+    for (const [mass, speed, radius] of [[1e9, 1e5, 11], [1e-8, 100, 3]] as const) {
+      for (let i = 0; i < 12; i++) {
+        const a = random() * 6.283
+        ids.push(sim.addBall({ x: 30 + 360 * random(), y: 30 + 420 * random(), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass, radius }))
+        masses.push(mass)
+      }
+    }
+    let fastest = 0
+    let last = Infinity
+    for (let step = 0; step < 60; step++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      let k = 0
+      ids.forEach((id, i) => {
+        const s = sim.ballState(id)
+        fastest = Math.max(fastest, Math.abs(s.vx), Math.abs(s.vy))
+        k += 0.5 * masses[i]! * (s.vx * s.vx + s.vy * s.vy)
+        sim.setBallVelocity(id, s.vx, s.vy)
+      })
+      expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+      last = k
+    }
+    expect(fastest).toBeLessThanOrEqual(MAX_SPEED)
+    // the scene does reach the cap: the test would pass without a scene that pumps
+    expect(fastest).toBeGreaterThan(0.5 * MAX_SPEED)
+  })
+})
