@@ -5,7 +5,8 @@
 // bursts of up to 30 balls at one point, holes added and removed, walls of every shape (the panel, 1e-6 px
 // across, narrower than a ball, open edges) set and cleared, velocities set, steps of 1e-9 s to 10 s. Each
 // sequence ends with 40 steps of 1/60 s. After every call the runner checks the property's invariants:
-//   finite   every element of every Ball and Path store of every live ball is finite; every mode is named
+//   finite   every element of every Ball and Path store of every live ball is finite; every mode is named;
+//            no velocity component beyond MAX_SPEED (what setBallVelocity accepts)
 //   events   drained events never go back in time, and each lies in the window [time before, time after]
 //            of the call that reported it
 //   energy   contacts on or fixed: Σ ½·m·v² does not rise across a step that reports collisions and no wall event
@@ -26,7 +27,7 @@
 import { writeFileSync } from 'node:fs'
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics, type BallEvent, type BallPhysics } from '../src/index'
+import { createBallPhysics, MAX_SPEED, type BallEvent, type BallPhysics } from '../src/index'
 import { BALL_MODE_NAMES, BallSchema, PathSchema } from '../src/ecs'
 import { machineSlowdown, slowdownNow } from './helpers'
 
@@ -572,6 +573,9 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         for (let k = 0; k < 8; k++) if (!Number.isFinite(w.pathHot[8 * b + k]!)) fail(`non-finite path row: pathHot[${8 * b + k}] = ${w.pathHot[8 * b + k]}`)
         const m = w.Ball.mode[b]!
         if (BALL_MODE_NAMES[m] === undefined) fail(`bad mode: Ball.mode[${b}] = ${m}`)
+        const vx = w.Ball.vx[b]!
+        const vy = w.Ball.vy[b]!
+        if (Math.abs(vx) > MAX_SPEED || Math.abs(vy) > MAX_SPEED) fail(`velocity beyond MAX_SPEED: Ball.vx/vy[${b}] = ${vx}, ${vy}`)
       }
     }
     // (a ball the launcher knocked off its spot takes the launcher's energy, as a throw does)
