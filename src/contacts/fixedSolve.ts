@@ -25,7 +25,8 @@ import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedC
 import { meetsWithinTick, nrm } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
 import { heldBalls, holdRows } from './fixedShock.js'
-import { capImpulse, capped, capVelocity, overSpeed } from './law.js'
+import { capImpulse } from './law.js'
+import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 
 /** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */

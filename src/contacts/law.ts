@@ -1,6 +1,7 @@
 // The contact law of two smooth balls, and the rules a contact applies to the balls' state.
 import { RimMode } from '../../components/RimContact.js'
 import { MAX_SPEED } from '../config/limits.js'
+import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import type { BallWorld } from '../world/createWorld.js'
 
 /** Result of resolveContact: new velocities, the impulse along the normal and the approach speed. */
@@ -64,11 +65,6 @@ export function resolveContact(
   o.vby = by
 }
 
-/** Whether a velocity has a component beyond MAX_SPEED (the largest a command accepts). */
-export function overSpeed(vx: number, vy: number): boolean {
-  return vx > MAX_SPEED || vx < -MAX_SPEED || vy > MAX_SPEED || vy < -MAX_SPEED
-}
-
 /**
  * The normal impulse of a contact (unit normal (nx, ny) from a to b, inverse masses ima and imb, approach
  * speed `approach`, restitution e) lowered so that neither ball leaves with a velocity component beyond
@@ -77,7 +73,8 @@ export function overSpeed(vx: number, vy: number): boolean {
  * a light ball between a heavy one and a wall gains twice the heavy one's speed each round trip, up to the
  * heavy balls' energy), and a state the commands would refuse (ballState read, given back to
  * setBallVelocity) is no state to leave a ball in. When even an inelastic contact leaves a component beyond
- * it (the ball's motion across the normal), the inelastic impulse; capVelocity then slows that ball.
+ * it (the ball's motion across the normal), the inelastic impulse; capVelocity (src/motion/speedLimit.ts)
+ * then slows that ball.
  */
 export function capImpulse(
   vax: number,
@@ -107,34 +104,6 @@ function within(c: number, s: number, f: number): number {
   if (!(at > MAX_SPEED || at < -MAX_SPEED) || s === 0) return f
   const g = ((s > 0 ? MAX_SPEED : -MAX_SPEED) - c) / s
   return g < f ? g : f
-}
-
-/** capVelocity's answer: the capped velocity (slots, not a returned pair) */
-export const capped = new Float64Array(2)
-
-/**
- * A velocity with no component beyond MAX_SPEED (into `capped`): scaled down along itself when it has one
- * (its larger component then exactly ±MAX_SPEED), else as it is. Only a ball an inelastic contact still
- * sends beyond MAX_SPEED (capImpulse), or that rounding leaves an ulp over it, is slowed this way, and only
- * there is a contact's momentum not kept.
- */
-export function capVelocity(vx: number, vy: number): void {
-  const ax = Math.abs(vx)
-  const ay = Math.abs(vy)
-  if (ax <= MAX_SPEED && ay <= MAX_SPEED) {
-    capped[0] = vx
-    capped[1] = vy
-    return
-  }
-  if (ax >= ay) {
-    const y = vy * (MAX_SPEED / ax)
-    capped[0] = vx > 0 ? MAX_SPEED : -MAX_SPEED
-    capped[1] = y > MAX_SPEED ? MAX_SPEED : y < -MAX_SPEED ? -MAX_SPEED : y
-  } else {
-    const x = vx * (MAX_SPEED / ay)
-    capped[0] = x > MAX_SPEED ? MAX_SPEED : x < -MAX_SPEED ? -MAX_SPEED : x
-    capped[1] = vy > 0 ? MAX_SPEED : -MAX_SPEED
-  }
 }
 
 /**

@@ -13,6 +13,7 @@ import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
+import { capped, capVelocity, overSpeed } from './speedLimit.js'
 
 /**
  * The start of the next path (startPath, launchBall): position, velocity and time, written by the caller
@@ -32,13 +33,23 @@ export function startPath(w: BallWorld, eid: number): void {
   const B = w.Ball
   const x = pathStart[PS_X]!
   const y = pathStart[PS_Y]!
-  const vx = pathStart[PS_VX]!
-  const vy = pathStart[PS_VY]!
+  let vx = pathStart[PS_VX]!
+  let vy = pathStart[PS_VY]!
   const t = pathStart[PS_T]!
+  // no component beyond MAX_SPEED (src/motion/speedLimit.ts: a rim's exit can turn a fast ball's velocity
+  // onto an axis)
+  if (overSpeed(vx, vy)) {
+    capVelocity(vx, vy)
+    vx = capped[0]!
+    vy = capped[1]!
+  }
   // hypot written out: a call V8 does not inline boxes its two arguments and its result
-  const speed = Math.sqrt(vx * vx + vy * vy)
+  let speed = Math.sqrt(vx * vx + vy * vy)
   const ux = speed > 0 ? vx / speed : 0
   const uy = speed > 0 ? vy / speed : 0
+  // nor the ulp or two beyond it that ux·speed can round to (each try takes an ulp or two off the speed);
+  // every later sample, ux·v with v ≤ speed, is then within it too (rounding is monotonic)
+  for (let k = 0; k < 8 && overSpeed(ux * speed, uy * speed); k++) speed *= 1 - Number.EPSILON
   // the path's row, written here (a call taking these six doubles boxed them wherever V8 did not inline it)
   const H = w.pathHot
   const h = eid * HOT

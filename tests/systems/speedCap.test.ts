@@ -5,8 +5,10 @@
 // kept, kinetic energy lower); only a ball an inelastic contact still sends beyond it is slowed along its
 // own direction (src/contacts/law.ts).
 import { describe, expect, it } from 'vitest'
-import { capImpulse, capped, capVelocity } from '../../src/contacts/law'
+import { capImpulse } from '../../src/contacts/law'
+import { capped, capVelocity } from '../../src/motion/speedLimit'
 import { createBallPhysics, MAX_SPEED } from '../../src/index'
+import { startPath } from '../../src/ecs'
 
 type Method = 'on' | 'fixed'
 
@@ -106,5 +108,23 @@ describe('contacts never leave a velocity beyond MAX_SPEED', () => {
     expect(fastest).toBeLessThanOrEqual(MAX_SPEED)
     // the scene does reach the cap: the test would pass without a scene that pumps
     expect(fastest).toBeGreaterThan(0.5 * MAX_SPEED)
+  })
+
+  it('every new path keeps to MAX_SPEED: a game system that starts one beyond it (or a rim exit that turns a fast ball onto an axis) gets it slowed along its direction', () => {
+    const sim = createBallPhysics({ ROLLING_DECEL: 0 })
+    const b = sim.addBall({ x: 100, y: 100, vx: 1e7, vy: 1e7 })
+    // what a rim's exit does to a ball of MAX_SPEED on both axes: the same speed, turned onto x
+    startPath(sim.world, b, 100, 100, Math.SQRT2 * 1e7, -3e5, 0)
+    const s1 = sim.ballState(b)
+    expect(s1.vx).toBe(MAX_SPEED)
+    expect(s1.vy / s1.vx).toBeCloseTo(-3e5 / (Math.SQRT2 * 1e7), 12)
+    expect(() => sim.setBallVelocity(b, s1.vx, s1.vy)).not.toThrow()
+    // and its samples along the path stay within it
+    sim.step(1e-6)
+    const s2 = sim.ballState(b)
+    expect(Math.abs(s2.vx)).toBeLessThanOrEqual(MAX_SPEED)
+    // within the ceiling, a path starts as given
+    startPath(sim.world, b, 100, 100, -9e6, 4e6, sim.time)
+    expect(sim.ballState(b).vx).toBeCloseTo(-9e6, 6)
   })
 })

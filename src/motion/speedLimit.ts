@@ -1,0 +1,39 @@
+// The largest velocity a ball may have: MAX_SPEED a component (src/config/limits.ts), the most a command
+// accepts, so that every velocity the world reports (ballState, the Ball store) can be given back
+// (setBallVelocity). Contacts keep to it by taking less restitution (src/contacts/law.ts); every new path
+// keeps to it too (startPath, src/motion/rolling.ts): a rim's exit turns a ball's velocity, and one of
+// MAX_SPEED on both axes (√2·MAX_SPEED long) turned onto one axis would have that axis beyond it.
+import { MAX_SPEED } from '../config/limits.js'
+
+/** Whether a velocity has a component beyond MAX_SPEED (the largest a command accepts). */
+export function overSpeed(vx: number, vy: number): boolean {
+  return vx > MAX_SPEED || vx < -MAX_SPEED || vy > MAX_SPEED || vy < -MAX_SPEED
+}
+
+/** capVelocity's answer: the capped velocity (slots, not a returned pair) */
+export const capped = new Float64Array(2)
+
+/**
+ * A velocity with no component beyond MAX_SPEED (into `capped`): scaled down along itself when it has one
+ * (its larger component then exactly ±MAX_SPEED), else as it is. A contact slows a ball this way only when
+ * even an inelastic impulse sends it beyond (capImpulse, src/contacts/law.ts), and only there does a
+ * contact not keep momentum.
+ */
+export function capVelocity(vx: number, vy: number): void {
+  const ax = Math.abs(vx)
+  const ay = Math.abs(vy)
+  if (ax <= MAX_SPEED && ay <= MAX_SPEED) {
+    capped[0] = vx
+    capped[1] = vy
+    return
+  }
+  if (ax >= ay) {
+    const y = vy * (MAX_SPEED / ax)
+    capped[0] = vx > 0 ? MAX_SPEED : -MAX_SPEED
+    capped[1] = y > MAX_SPEED ? MAX_SPEED : y < -MAX_SPEED ? -MAX_SPEED : y
+  } else {
+    const x = vx * (MAX_SPEED / ay)
+    capped[0] = x > MAX_SPEED ? MAX_SPEED : x < -MAX_SPEED ? -MAX_SPEED : x
+    capped[1] = vy > 0 ? MAX_SPEED : -MAX_SPEED
+  }
+}
