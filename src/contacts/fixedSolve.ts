@@ -250,7 +250,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   return true
 }
 
-/** Candidate i's velocity with no component beyond MAX_SPEED (capVelocity, src/contacts/law.ts). */
+/** Candidate i's velocity with no component beyond MAX_SPEED (capVelocity, src/motion/speedLimit.ts). */
 function capBall(F: FixedContactState, i: number): void {
   if (!overSpeed(F.vx[i]!, F.vy[i]!)) return
   capVelocity(F.vx[i]!, F.vy[i]!)
@@ -344,7 +344,7 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
   F.vy[a] = vay
   F.vx[b] = vbx
   F.vy[b] = vby
-  // no component beyond MAX_SPEED (src/contacts/law.ts): the wall's push slows q, so only rounding or a
+  // no component beyond MAX_SPEED (src/motion/speedLimit.ts): the wall's push slows q, so only rounding or a
   // pumped ball's motion along the wall can take one there
   capBall(F, a)
   capBall(F, b)
