@@ -3,7 +3,8 @@
 // one's speed each round trip), and before this a game that read such a ball's velocity (ballState) and
 // gave it back (setBallVelocity) got a RangeError. The contact takes less restitution instead (momentum
 // kept, kinetic energy lower); only a ball an inelastic contact still sends beyond it is slowed along its
-// own direction (src/contacts/law.ts).
+// own direction (src/contacts/law.ts, src/motion/speedLimit.ts). Every new path keeps to it too (startPath,
+// src/motion/rolling.ts): a rim's exit can turn a fast ball's velocity onto one axis.
 import { describe, expect, it } from 'vitest'
 import { capImpulse } from '../../src/contacts/law'
 import { capped, capVelocity } from '../../src/motion/speedLimit'
