@@ -340,6 +340,15 @@ function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, 
   // impulse and the sweeps take the pair (a fully inelastic fallback here drained elastic scenes). Rounding
   // aside: an elastic striker off a pinned ball keeps its energy exactly, in exact arithmetic
   if (after > before + 8 * Number.EPSILON * before) return false
+  // a squeeze near head on sends q along the wall at about its partner's speed over the sine of the angle
+  // from head on, without bound as that angle closes. A tick cannot follow a ball across its box (its swept
+  // tests are straight, and a wall turns it within the tick): a light ball squirted at 1e6 px/s and more
+  // crossed a 420 px box many times a tick, every ball there paired with it, each sweep turned it and tested
+  // those pairs again (seconds a step: docs/known-failures.md). So a squeeze that would send q along the wall
+  // further than the wall's length in a tick is left to the plain impulse and the sweeps, as above
+  const along = face.x !== 0 ? (q === a ? vay : vby) : q === a ? vax : vbx
+  const span = face.x !== 0 ? walls.maxY - walls.minY : walls.maxX - walls.minX
+  if (Math.abs(along) * F.tick > span) return false
   F.vx[a] = vax
   F.vy[a] = vay
   F.vx[b] = vbx
