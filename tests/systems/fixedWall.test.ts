@@ -47,6 +47,33 @@ describe('fixed-tick contacts at a closed wall', () => {
       })
     }
   }
+
+  it('a squeeze near head on sends the light ball along the wall no further than the wall is long in a tick: a finer tick takes the squirt', () => {
+    // a ball of mass 1e9 at 3,000 px/s strikes one of mass 1e-8 lying by the bottom wall, 0.5 px off
+    // centre: squeezed, the light ball leaves along the wall at 83,946 px/s, 700 px in a tick of 1/120 s,
+    // more than the 420 px wall, which a tick leaves to the sweeps; it is taken on the tick halved once
+    // (350 px in it), as before that rule (a crowd of such squirts: tests/adversarial.test.ts, 67 heavy balls)
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+    const light = sim.addBall({ x: 200, y: 476, vx: 0, vy: 0, radius: 3, mass: 1e-8 })
+    const heavy = sim.addBall({ x: 200.5, y: 440, vx: 0, vy: 3000, radius: 11, mass: 1e9 })
+    const ke0 = 0.5 * 1e9 * 3000 ** 2
+    sim.step(1 / 120)
+    const F = sim.world.fixed!
+    const s = sim.ballState(light)
+    expect(F.halvings).toBeGreaterThan(0)
+    expect(Math.abs(s.vx) * F.tick).toBeLessThanOrEqual(420)
+    expect(Math.abs(s.vx) / 120).toBeGreaterThan(420)
+    expect(Math.abs(s.vx)).toBeGreaterThan(8e4)
+    const h = sim.ballState(heavy)
+    expect(0.5 * 1e9 * (h.vx ** 2 + h.vy ** 2) + 0.5 * 1e-8 * (s.vx ** 2 + s.vy ** 2)).toBeLessThanOrEqual(ke0 * (1 + 1e-12))
+    for (let i = 0; i < 30; i++) {
+      sim.step(1 / 120)
+      const a = sim.ballState(light)
+      const b = sim.ballState(heavy)
+      expect(Math.hypot(a.x - b.x, a.y - b.y)).toBeGreaterThan(14 - 1e-3)
+    }
+  })
 })
 
 describe('fixed-tick contacts: balls that reach both walls of their box within a tick', () => {
