@@ -24,7 +24,7 @@ import { solvePositions } from '../src/contacts/fixedProject.js'
 import { anchoredCount } from '../src/contacts/fixedLayered.js'
 import { joinPushed } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
-import { coarsenTick, fewPairs, halveTick } from '../src/contacts/fixedHalve.js'
+import { coarsenTick, fewPairs, halveTick, recordGrowth } from '../src/contacts/fixedHalve.js'
 import { redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
@@ -54,7 +54,10 @@ export function fixedContactsSystem(w: BallWorld): void {
   let atLeast = 0
   for (;;) {
     const h = solveTick(w, F, t, atLeast)
-    if (h === NO_PAIRS) return
+    if (h === NO_PAIRS) {
+      recordGrowth(F, false)
+      return
+    }
     // a try that leaves a pair closing deep into itself (or a ball moving into a wall) that a finer
     // spacing would not (src/contacts/fixedDeep.ts): solved again too, on a tick of few pairs a candidate;
     // on a tick of more, when it leaves at most DEEP_FRONTS of them (a push's front along a row, not a
@@ -88,6 +91,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   // which the velocities solved at the old positions let through it within the tick; they are solved again
   // where the balls now are (without it, 4 of the 768 struck rows of npm run bench:rows let a ball pass)
   if (anchoredCount() !== anchored) solveVelocities(w, F, t, w.config.CONTACT_ITERATIONS)
+  recordGrowth(F, true)
   applyChanges(w, F, t)
 }
 

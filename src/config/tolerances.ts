@@ -88,6 +88,13 @@ export const MIN_PROJECTION_SHARE = 0.1
 export const TICK_PAIRS_PER_CANDIDATE = 16
 export const MAX_TICK_HALVINGS = 10
 /**
+ * Fixed-tick contacts: a tick's pairs are counted as they will be at its end when every one of the last
+ * GROWTH_TICKS ticks ended with more than it gathered, by the least of those growths (src/contacts/fixedHalve.ts):
+ * a crowd whose solve keeps speeding balls up past their reach. A push along a row grows its pairs at a tick or
+ * two, not at each of four.
+ */
+export const GROWTH_TICKS = 4
+/**
  * Fixed-tick contacts: relative gap below which a step's end and a contact tick are the same instant (a few
  * ulps: a clock summed from 1/120 s steps drifts from k·(1/120)); the step then ends at the tick, solved
  * (src/contacts/fixedHalve.ts, nearTick).

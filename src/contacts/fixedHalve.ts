@@ -6,7 +6,9 @@
 // visits bound on restitution (RESTITUTION_VISITS) drained an elastic gas of that kind. A tick whose pairs
 // outnumber TICK_PAIRS_PER_CANDIDATE a candidate is halved h times, h the one that makes the least modelled
 // work over the tick's span (work, below), up to MAX_TICK_HALVINGS; where the radii make the pairs (balls
-// around a big one), halving leaves them and is not done. The pairs of the finer tick are those of the tick
+// around a big one), halving leaves them and is not done. Where the last ticks' widening rounds kept
+// multiplying the pairs they gathered (a crowd whose solve keeps speeding balls past their reach), the pairs
+// are counted times that growth, here and for coarsening back (sustainedGrowth). The pairs of the finer tick are those of the tick
 // whose reaches at the finer tick still meet (reaches only shrink: a subset, taken from the list in its
 // order), every candidate takes its finer reach, and the ticks go on at that spacing. The spacing is
 // coarsened back, one halving at a time, at a tick of the coarser spacing once the last tick's pairs were
@@ -17,7 +19,7 @@
 // the ticks are the same at every frame rate and in both broadphases (which list the same pairs in the same
 // order), and a snapshot keeps them.
 import { BallMode } from '../../components/Ball.js'
-import { MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, TOUCH_GAP } from '../config/tolerances.js'
+import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
@@ -42,7 +44,7 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
   // asked for at a window's start, whose window ends at the tick of this spacing)
   const k = F.nextTick - 1
   if (w.time !== w.tickEnd || k % 2 !== 0 || w.time !== k * F.tick) return
-  if (!fewPairs(F)) return
+  if (!fewPairs(F, sustainedGrowth(F))) return
   if (F.coarsenWait > 0) {
     F.coarsenWait--
     return
@@ -56,10 +58,11 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
 /**
  * Whether the last tick's pairs (before its widening rounds; none when a finer tick would not have thinned
  * them) were within a quarter of the halving bound, at most TICK_PAIRS_PER_CANDIDATE / 4 a candidate: few
- * enough for the spacing to coarsen back.
+ * enough for the spacing to coarsen back. coarsenTick counts them times the last ticks' sustained growth, as
+ * halveTick does (else a tick halved for its growth coarsens back at once, and the spacing swings).
  */
-export function fewPairs(F: FixedContactState): boolean {
-  return 4 * F.tickPairs <= TICK_PAIRS_PER_CANDIDATE * F.tickFull
+export function fewPairs(F: FixedContactState, growth = 1): boolean {
+  return 4 * F.tickPairs * growth <= TICK_PAIRS_PER_CANDIDATE * F.tickFull
 }
 
 /**
@@ -74,8 +77,9 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   const levels = MAX_TICK_HALVINGS - F.halvings
   let h = 0
   let saturated = false
-  if (F.pairCount > TICK_PAIRS_PER_CANDIDATE * F.full || atLeast > 0) {
-    h = levels > 0 ? bestHalvings(w, F, levels) : 0
+  const growth = sustainedGrowth(F)
+  if (F.pairCount * growth > TICK_PAIRS_PER_CANDIDATE * F.full || atLeast > 0) {
+    h = levels > 0 ? bestHalvings(w, F, levels, growth) : 0
     // a tick solved again at a finer spacing (src/contacts/fixedRedo.ts): at least that many
     if (h < atLeast) h = Math.min(atLeast, levels)
     if (h > 0) halve(w, F, h)
@@ -98,7 +102,30 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   }
   F.tickPairs = saturated ? 0 : F.pairCount
   F.tickFull = F.full
+  F.tickGathered = F.pairCount
   return h
+}
+
+/**
+ * At a tick's end (its pairs all found, the widening rounds' too): how much they grew from the pairs it had
+ * at its spacing before those rounds (1 for a tick with none), kept for the last GROWTH_TICKS ticks.
+ */
+export function recordGrowth(F: FixedContactState, pairs: boolean): void {
+  F.tickGrowth[F.ticks % GROWTH_TICKS] = pairs && F.tickGathered > 0 ? F.pairCount / F.tickGathered : 1
+}
+
+/**
+ * The growth a tick's pairs are counted with (halveTick): the least over the last GROWTH_TICKS ticks. A crowd
+ * whose solve keeps speeding balls past their reach (light balls pumped by heavy ones) ends each tick with
+ * several times the pairs it gathered, and its sweeps do not converge there: counted as gathered, its pairs
+ * were within the bound and its tick was never halved. A push along a row grows them a hundredfold, but at
+ * a tick or two: the least is 1 there.
+ */
+function sustainedGrowth(F: FixedContactState): number {
+  const g = F.tickGrowth
+  let least = g[0]!
+  for (let i = 1; i < GROWTH_TICKS; i++) if (g[i]! < least) least = g[i]!
+  return least
 }
 
 /** Halvings still open to a tick from the spacing it started at (saveSpacing). */
@@ -138,13 +165,13 @@ export function restoreSpacing(w: BallWorld, F: FixedContactState): void {
 /** Most ticks coarsening waits after tries that were halved again at once (doubling from 2). */
 const MAX_COARSEN_WAIT = 1024
 
-/** The halvings, up to `levels`, that make the least work (see halveTick), from the pairs each keeps. */
-function bestHalvings(w: BallWorld, F: FixedContactState, levels: number): number {
+/** The halvings, up to `levels`, that make the least work (see halveTick), from the pairs each keeps, times their growth. */
+function bestHalvings(w: BallWorld, F: FixedContactState, levels: number, growth: number): number {
   countKept(w, F, levels)
   let best = 0
-  let least = work(F.full, F.pairCount, 0)
+  let least = work(F.full, F.pairCount * growth, 0)
   for (let h = 1; h <= levels; h++) {
-    const at = work(F.full, keptAt[h]!, h)
+    const at = work(F.full, keptAt[h]! * growth, h)
     if (at < least) {
       least = at
       best = h

@@ -5,14 +5,12 @@
 // once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
 import type { BallPhysicsConfig } from '../config/design.js'
 import { appendId, createCollisionState, type CollisionState } from './contactState.js'
+import { GROWTH_TICKS } from '../config/tolerances.js'
 
 export interface FixedContactState {
   /** mass of each ball (by entity id), in units of a default ball */
   mass: Float64Array
-  /**
-   * the resting grid (src/world/restingGrid.ts; only its resting-grid fields are used): resting balls are
-   * candidates of a tick only when a moving ball can reach them, so a pile at rest costs nothing
-   */
+  /** the resting grid (src/world/restingGrid.ts; its resting-grid fields): resting balls are candidates only when a moving ball can reach them */
   rest: CollisionState
   /** balls moved by the last tick's projection or come to rest since: next tick, they and the resting balls they touch are candidates */
   touched: Uint32Array
@@ -27,15 +25,15 @@ export interface FixedContactState {
   /** fixedHalve.ts: the last tick's pairs and candidates; ticks to wait before coarsening, and the wait after a try that fails */
   tickPairs: number
   tickFull: number
+  /** fixedHalve.ts: this tick's pairs at its spacing before its widening rounds; the growth of the last GROWTH_TICKS ticks' pairs */
+  tickGathered: number
+  tickGrowth: Float64Array
   coarsenWait: number
   coarsenBackoff: number
   /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
   due: boolean
-  /**
-   * The tick's candidates (moving balls, and resting ones that can be touched), kept sorted by sweep cell from
-   * tick to tick (src/contacts/fixedSweep.ts: a ball moves a few px a tick); only those that can touch another
-   * are then copied into the packed arrays below.
-   */
+  /** The tick's candidates (moving balls, and resting ones that can be touched), kept sorted by sweep cell from tick to tick
+   *  (src/contacts/fixedSweep.ts: a ball moves a few px a tick); only those that can touch another are copied into the packed arrays below. */
   ord: Uint32Array
   /** the keys of ord's balls, in its order (written by the gather at each ball's place of the last tick) */
   okey: Float64Array
@@ -176,6 +174,8 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     halvings: 0,
     tickPairs: 0,
     tickFull: 0,
+    tickGathered: 0,
+    tickGrowth: new Float64Array(GROWTH_TICKS).fill(1),
     coarsenWait: 0,
     coarsenBackoff: 1,
     due: false,
