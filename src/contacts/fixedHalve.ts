@@ -8,16 +8,16 @@
 // work over the tick's span (work, below), up to MAX_TICK_HALVINGS; where the radii make the pairs (balls
 // around a big one), halving leaves them and is not done. Where the last ticks' widening rounds kept
 // multiplying the pairs they gathered (a crowd whose solve keeps speeding balls past their reach), the pairs
-// are counted times that growth, here and for coarsening back (sustainedGrowth). The pairs of the finer tick are those of the tick
-// whose reaches at the finer tick still meet (reaches only shrink: a subset, taken from the list in its
-// order), every candidate takes its finer reach, and the ticks go on at that spacing. The spacing is
-// coarsened back, one halving at a time, at a tick of the coarser spacing once the last tick's pairs were
-// within a quarter of the bound, or a finer tick would not have thinned them; a try that is halved again at
-// once doubles the ticks before the next. Ticks stay k·tick of the world's clock (tick = CONTACT_TICK /
-// 2^halvings, so every tick of a coarser spacing is one of the finer), and every decision is taken from the
-// world's state at a solve (its balls, the last solve's pairs, the back-off), never from where a step ends:
-// the ticks are the same at every frame rate and in both broadphases (which list the same pairs in the same
-// order), and a snapshot keeps them.
+// are counted times that growth, here and for coarsening back (sustainedGrowth). The pairs of the finer tick
+// are those of the tick whose reaches at the finer tick still meet (reaches only shrink: a subset, taken from
+// the list in its order), every candidate takes its finer reach, and the ticks go on at that spacing. The
+// spacing is coarsened back, one halving at a time, at a tick of the coarser spacing once the last tick's
+// pairs were within a quarter of the bound, or a finer tick would not have thinned them; a try that is halved
+// again at once doubles the ticks before the next. Ticks stay k·tick of the world's clock (tick =
+// CONTACT_TICK / 2^halvings, so every tick of a coarser spacing is one of the finer), and every decision is
+// taken from the world's state at a solve (its balls, the last solve's pairs, the back-off, the last ticks'
+// growth), never from where a step ends: the ticks are the same at every frame rate and in both broadphases
+// (which list the same pairs in the same order), and a snapshot keeps them.
 import { BallMode } from '../../components/Ball.js'
 import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'

@@ -32,8 +32,7 @@ export interface FixedContactState {
   coarsenBackoff: number
   /** true while the window being run starts at a contact tick (the solve runs in its first pass) */
   due: boolean
-  /** The tick's candidates (moving balls, and resting ones that can be touched), kept sorted by sweep cell from tick to tick
-   *  (src/contacts/fixedSweep.ts: a ball moves a few px a tick); only those that can touch another are copied into the packed arrays below. */
+  /** the tick's candidates (moving, and resting ones that can be touched), kept sorted by sweep cell tick to tick (fixedSweep.ts); those that can touch are packed below */
   ord: Uint32Array
   /** the keys of ord's balls, in its order (written by the gather at each ball's place of the last tick) */
   okey: Float64Array
