@@ -102,7 +102,7 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   }
   F.tickPairs = saturated ? 0 : F.pairCount
   F.tickFull = F.full
-  F.tickGathered = F.pairCount
+  gathered = F.pairCount
   return h
 }
 
@@ -111,8 +111,10 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
  * at its spacing before those rounds (1 for a tick with none), kept for the last GROWTH_TICKS ticks.
  */
 export function recordGrowth(F: FixedContactState, pairs: boolean): void {
-  F.tickGrowth[F.ticks % GROWTH_TICKS] = pairs && F.tickGathered > 0 ? F.pairCount / F.tickGathered : 1
+  F.tickGrowth[F.ticks % GROWTH_TICKS] = pairs && gathered > 0 ? F.pairCount / gathered : 1
 }
+/** This tick's pairs at its spacing before its widening rounds (halveTick; recordGrowth reads it at the same tick's end). */
+let gathered = 0
 
 /**
  * The growth a tick's pairs are counted with (halveTick): the least over the last GROWTH_TICKS ticks. A crowd

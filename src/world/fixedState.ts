@@ -25,8 +25,7 @@ export interface FixedContactState {
   /** fixedHalve.ts: the last tick's pairs and candidates; ticks to wait before coarsening, and the wait after a try that fails */
   tickPairs: number
   tickFull: number
-  /** fixedHalve.ts: this tick's pairs at its spacing before its widening rounds; the growth of the last GROWTH_TICKS ticks' pairs */
-  tickGathered: number
+  /** fixedHalve.ts: how much the pairs of each of the last GROWTH_TICKS ticks grew in its widening rounds */
   tickGrowth: Float64Array
   coarsenWait: number
   coarsenBackoff: number
@@ -173,7 +172,6 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     halvings: 0,
     tickPairs: 0,
     tickFull: 0,
-    tickGathered: 0,
     tickGrowth: new Float64Array(GROWTH_TICKS).fill(1),
     coarsenWait: 0,
     coarsenBackoff: 1,
