@@ -34,6 +34,12 @@ const REPORTED = 1
 const VISIT_SHIFT = 1
 /** changed bit of a candidate whose wall hit this tick was reported */
 const WALL_REPORTED = 4
+/**
+ * A sweep's impulses: pairs met past RESTITUTION_VISITS whose one ball is SQUEEZE_MASS_RATIO times lighter
+ * than the other or more (or held like a wall: a ball at rest pinned), and all others
+ */
+let remet = 0
+let plain = 0
 
 /**
  * The sweeps' stamps within one call (scratch: one solve at a time): when each pair was last tested, and
@@ -102,6 +108,8 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // every pair, or only those that can be met again, in the same order (src/contacts/fixedCalls.ts)
     const listed = beginSweep(F, back, it === 0, fresh)
     let turned = wallVelocities(w, F)
+    remet = 0
+    plain = 0
     if (listed) {
       for (let p = nextPair(); p >= 0; p = nextPair()) if (impulse(w, F, p)) moved = true
     } else for (let k = 0; k < F.pairCount; k++) if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
@@ -111,6 +119,10 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // the sweeps: the next would turn them back, and the one after that again, for ever (pumping light balls
     // among heavy ones: docs/known-failures.md). It ends unconverged (the next call tests every pair)
     if (!moved) return turned === 0
+    // from half way on, a sweep whose only impulses met light balls again past their restitution with
+    // heavier ones ends the sweeps too: each turns a light ball between heavy ones it reaches within the
+    // tick, as between two walls, and the next sweep would turn it back (pumped crowds: docs/decisions.md §12)
+    if (it >= mid && remet > 0 && plain === 0) return false
   }
   return false
 }
@@ -185,6 +197,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   if (visits < RESTITUTION_VISITS) F.pairHit[p] = hit + (1 << VISIT_SHIFT)
+  if (visits >= RESTITUTION_VISITS && (ima >= SQUEEZE_MASS_RATIO * imb || imb >= SQUEEZE_MASS_RATIO * ima)) remet++
+  else plain++
   // a ball SQUEEZE_MASS_RATIO times lighter than its partner (or more) that the impulse drives into a closed
   // wall it can reach within the tick (at its speed; a ball standing still, at the speed the impulse gives
   // it): the pair and that wall solved together (below), so a squeeze or a wedge ends in one visit, not a

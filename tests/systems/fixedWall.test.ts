@@ -117,3 +117,41 @@ describe('fixed-tick contacts: balls that reach both walls of their box within a
     expect((sweepsRun() - sweeps) / (F.ticks - ticks)).toBeLessThan(sim.world.config.CONTACT_ITERATIONS)
   })
 })
+
+describe('fixed-tick contacts: a light ball turned between heavy ones', () => {
+  // A light ball pressed between two heavy ones closing on it is turned by one, then back by the other, sweep
+  // after sweep, each taking a 1e-9 share of the push: no call converged, and every call ran all its
+  // CONTACT_ITERATIONS sweeps (64 a tick here, two calls). From half way on, a sweep whose only impulses meet
+  // light balls again past their restitution with heavier ones now ends the call (unconverged), as a sweep
+  // of balls turned between two walls does. The impulses it ran are two-body ones: momentum kept, energy
+  // never rising.
+  for (const e of [1, 0]) {
+    it(`a ball of mass 1 touching two of mass 1e9 that close on it at 50 px/s each, restitution ${e}: at most half the sweeps (and one) a call, momentum kept, energy never rising, the order kept`, () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+      const masses = [1e9, 1, 1e9]
+      const ids = [sim.addBall({ x: 100, y: 200, vx: 50, vy: 0, mass: 1e9 }), sim.addBall({ x: 122, y: 200, vx: 0, vy: 0, mass: 1 }), sim.addBall({ x: 144, y: 200, vx: -50, vy: 0, mass: 1e9 })]
+      const states = () => ids.map((id) => sim.ballState(id))
+      const energy = () => states().reduce((k, s, i) => k + 0.5 * masses[i]! * (s.vx ** 2 + s.vy ** 2), 0)
+      const momentum = () => states().reduce((p, s, i) => p + masses[i]! * s.vx, 0)
+      const F = sim.world.fixed!
+      const iterations = sim.world.config.CONTACT_ITERATIONS
+      let last = energy()
+      for (let step = 0; step < 6; step++) {
+        const sweeps = sweepsRun()
+        const ticks = F.ticks
+        sim.step(1 / 60)
+        // two calls a tick (the solve and a widening round), each ended at half its sweeps and one: 34 a
+        // tick; 64 before
+        expect(sweepsRun() - sweeps).toBeLessThanOrEqual(2 * (iterations / 2 + 1) * (F.ticks - ticks))
+        expect(F.ticks - ticks).toBeGreaterThan(0)
+        const k = energy()
+        expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+        last = k
+        expect(Math.abs(momentum())).toBeLessThanOrEqual(1e-9 * 50 * 1e9)
+        const [a, l, b] = states()
+        expect(a!.x < l!.x && l!.x < b!.x).toBe(true)
+        for (const s of states()) expect(Number.isFinite(s.x) && Number.isFinite(s.vx) && Number.isFinite(s.vy)).toBe(true)
+      }
+    })
+  }
+})
