@@ -259,6 +259,25 @@ class OverBudget extends Error {}
 
 /** the slowest step seen per property, for the report */
 const worst: Record<string, number> = {}
+/**
+ * Per property, for the report: the SLOWEST_RUNS runs of most stepping, in development-machine ms (a run's
+ * stepping over the budget scale it was judged at), and how many runs stepped more than half the run budget.
+ * Runs a shrink tries are left out: they are the failing run over again.
+ */
+const heavy: Record<string, { slowestRunsDevMs: number[]; runsOverHalfBudget: number }> = {}
+const SLOWEST_RUNS = 5
+let shrinking = false
+function noteRun(name: string, ms: number, scale: number, runDevMs: number): void {
+  if (shrinking) return
+  const h = (heavy[name] ??= { slowestRunsDevMs: [], runsOverHalfBudget: 0 })
+  const dev = ms / scale
+  if (dev > runDevMs / 2) h.runsOverHalfBudget++
+  const list = h.slowestRunsDevMs
+  if (list.length === SLOWEST_RUNS && dev <= list[SLOWEST_RUNS - 1]!) return
+  list.push(Math.round(dev))
+  list.sort((a, b) => b - a)
+  list.length = Math.min(list.length, SLOWEST_RUNS)
+}
 /** what the runs of a property exercised: runs, steps, most balls at once, energy or overlap checks made, events by type */
 const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; halved: number; mostHalvings: number; events: Record<string, number> }> = {}
 
@@ -528,6 +547,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         try {
           sim.step(op.dt)
         } catch (err) {
+          if (err instanceof OverBudget) noteRun(name, stepping + performance.now() - stepStart, budget.scale, runDevMs)
           if (err instanceof OverBudget && on('time')) fail(`slow step: ${err.message}`)
           throw err
         }
@@ -536,6 +556,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         worst[name] = Math.max(worst[name] ?? 0, ms)
         const slowStep = overBudget(name, budget, ms, STEP_DEV_MS)
         if (slowStep || overBudget(name, budget, stepping, runDevMs)) {
+          noteRun(name, stepping, budget.scale, runDevMs)
           const what = slowStep ? `step took ${ms.toFixed(0)} ms` : `steps took ${stepping.toFixed(0)} ms in all`
           if (on('time')) fail(`slow: ${what}`)
           throw new OverBudget(what)
@@ -595,6 +616,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (o.depth > 1e-3) fail(`overlap: balls ${o.a} and ${o.b} overlap by ${o.depth} px at t = ${sim.time} (last spawn at ${lastSpawn})`)
     }
   }
+  noteRun(name, stepping, budget.scale, runDevMs)
   for (const b of sim.balls()) trace.push(JSON.stringify(sim.ballState(b)))
   inspect?.(sim)
   return trace.join('\n')
@@ -621,6 +643,7 @@ function property(
     fc.assert(
       fc.property(arb, ([cfg, ops]) => {
         if (failedAt >= 0 && performance.now() - failedAt > SHRINK_BUDGET_MS) fc.pre(false)
+        shrinking = failedAt >= 0
         try {
           body(cfg, ops)
         } catch (err) {
@@ -646,7 +669,7 @@ function property(
   } finally {
     console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
     if (REPORT) {
-      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], failure }
+      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: RUN_DEV_MS, ...heavy[name], budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], failure }
       writeFileSync(REPORT, JSON.stringify(report, null, 2) + '\n')
     }
   }
