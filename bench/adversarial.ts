@@ -20,7 +20,7 @@ const run = spawnSync(process.platform === 'win32' ? 'npx.cmd' : 'npx', ['vitest
   encoding: 'utf8',
 })
 const seconds = (Date.now() - t0) / 1000
-let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; runBudgetDevMs?: number; slowestRunsDevMs?: number[]; runsOverHalfBudget?: number; budgetRechecks?: { over: number; within: number }; failure: string | null }> = {}
+let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; firstFailure?: string | null; runBudgetDevMs?: number; slowestRunsDevMs?: number[]; runsOverHalfBudget?: number; budgetRechecks?: { over: number; within: number }; failure: string | null }> = {}
 try {
   report = JSON.parse(readFileSync(file, 'utf8'))
 } catch {
@@ -28,7 +28,7 @@ try {
   throw new Error('the adversarial suite wrote no report')
 }
 for (const [name, r] of Object.entries(report)) {
-  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.slowestRunsDevMs?.length ? `  slowest runs ${r.slowestRunsDevMs.join(', ')} ms dev. (budget ${r.runBudgetDevMs}; ${r.runsOverHalfBudget} runs over half)` : ''}${r.budgetRechecks && r.budgetRechecks.over > 0 ? `  (${r.budgetRechecks.over} runs over a budget at the start's scale, ${r.budgetRechecks.within} of them within at the scale measured then)` : ''}${r.failure ? `\n      ${r.failure.split('\n').filter((l, i) => i < 3 || l.startsWith('Got ')).join('\n      ')}` : ''}`)
+  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.slowestRunsDevMs?.length ? `  slowest runs ${r.slowestRunsDevMs.join(', ')} ms dev. (budget ${r.runBudgetDevMs}; ${r.runsOverHalfBudget} runs over half)` : ''}${r.budgetRechecks && r.budgetRechecks.over > 0 ? `  (${r.budgetRechecks.over} runs over a budget at the start's scale, ${r.budgetRechecks.within} of them within at the scale measured then)` : ''}${r.failure ? `\n      ${r.failure.split('\n').filter((l, i) => i < 3 || l.startsWith('Got ')).join('\n      ')}${r.firstFailure ? `\n      the first failing run, before shrinking: ${r.firstFailure}` : ''}` : ''}`)
 }
 const failed = Object.entries(report).filter(([, r]) => !r.passed).map(([name]) => name)
 // a test of the file that is not a property (a named counterexample) fails the run too: say so, with vitest's

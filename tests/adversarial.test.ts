@@ -261,8 +261,8 @@ class OverBudget extends Error {}
 const worst: Record<string, number> = {}
 /**
  * Per property, for the report: the SLOWEST_RUNS runs of most stepping, in development-machine ms (a run's
- * stepping over the budget scale it was judged at), and how many runs stepped more than half the run budget.
- * Runs a shrink tries are left out: they are the failing run over again.
+ * stepping over the budget scale it was judged at; one the watchdog stopped, what it had reached), and how
+ * many runs stepped more than half the run budget. Runs a shrink tries are left out.
  */
 const heavy: Record<string, { slowestRunsDevMs: number[]; runsOverHalfBudget: number }> = {}
 const SLOWEST_RUNS = 5
@@ -639,6 +639,7 @@ function property(
   // when the first counterexample was found: shrinking stops SHRINK_BUDGET_MS later (every later candidate is
   // discarded, and fast-check reports the smallest counterexample so far)
   let failedAt = -1
+  let firstFailure: string | null = null
   try {
     fc.assert(
       fc.property(arb, ([cfg, ops]) => {
@@ -651,7 +652,11 @@ function property(
             seen[name]!.discarded++
             fc.pre(false)
           }
-          if (failedAt < 0) failedAt = performance.now()
+          if (failedAt < 0) {
+            failedAt = performance.now()
+            // the run that failed first, before any shrink: its own error (the shrunk one's may differ)
+            firstFailure = String(err instanceof Error ? err.message : err).split('\n')[0]!
+          }
           throw err
         }
       }),
@@ -669,7 +674,7 @@ function property(
   } finally {
     console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
     if (REPORT) {
-      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: RUN_DEV_MS, ...heavy[name], budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], failure }
+      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: RUN_DEV_MS, ...heavy[name], firstFailure, budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], failure }
       writeFileSync(REPORT, JSON.stringify(report, null, 2) + '\n')
     }
   }
