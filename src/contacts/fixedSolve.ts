@@ -28,6 +28,7 @@ import { heldBalls, holdRows } from './fixedShock.js'
 import { capImpulse } from './law.js'
 import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
+import { aheadOf, face, pushed, wallAhead } from './fixedAhead.js'
 
 /** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */
 const REPORTED = 1
@@ -207,6 +208,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   // striker stopped dead; a moving ball keeps its own reach: pinned at the wall, it would lose the part of
   // its motion the wall sends back, and an elastic gas its energy)
   let q = -1
+  aheadOf(p)
   if (ima >= SQUEEZE_MASS_RATIO * imb) {
     pushed[0] = F.vx[a] === 0 && F.vy[a] === 0 ? j * ima : 0
     if (wallAhead(F, a, -1)) q = a
@@ -272,45 +274,8 @@ function capBall(F: FixedContactState, i: number): void {
   F.vy[i] = capped[1]!
 }
 
-/** wallAhead's other speed for the ball it looks at (px/s): what an impulse gives it if it stands still, else 0 (a slot: not a boxed double) */
-const pushed = new Float64Array(1)
-
-/** the closed wall found by wallAhead: its inward normal */
-const face = { x: 0, y: 0 }
 /** the impulses of the last pairWithWall: the pair's, the wall's */
 const block = { j: 0, k: 0 }
-
-/**
- * True when a push on candidate i along sign·nrm drives it into a closed wall it can reach within the tick
- * (its gap to the wall's face at most the distance it can cover in a tick, at its speed or at pushed[0]);
- * that wall's inward normal is left in `face` (of two, the one the push meets more squarely).
- */
-function wallAhead(F: FixedContactState, i: number, sign: number): boolean {
-  const dx = sign * nrm.x
-  const dy = sign * nrm.y
-  const x = F.x[i]!
-  const y = F.y[i]!
-  const r = F.r[i]!
-  const reach = F.reach[i]! - r
-  const after = pushed[0]! * F.tick
-  const travel = after > reach ? after : reach
-  // on each axis, −|d| when the push drives the ball into a face within `travel`, else 0
-  const lowX = x - r - walls.minX
-  const highX = walls.maxX - x - r
-  const cx = dx < 0 ? (lowX <= travel ? dx : 0) : dx > 0 ? (highX <= travel ? -dx : 0) : 0
-  const lowY = y - r - walls.minY
-  const highY = walls.maxY - y - r
-  const cy = dy < 0 ? (lowY <= travel ? dy : 0) : dy > 0 ? (highY <= travel ? -dy : 0) : 0
-  if (cx === 0 && cy === 0) return false
-  if (cx <= cy) {
-    face.x = dx < 0 ? 1 : -1
-    face.y = 0
-  } else {
-    face.x = 0
-    face.y = dy < 0 ? 1 : -1
-  }
-  return true
-}
 
 /**
  * Pair (a, b), approaching at S[S_APPROACH] along nrm (inverse masses S[S_IMA], S[S_IMB]), solved together

@@ -278,6 +278,7 @@ describe('fixed-tick contacts', () => {
         return k + 0.5 * (i === 0 ? 1 : 1374) * (s.vx ** 2 + s.vy ** 2)
       }, 0)
       let last = ke()
+      let turned = Infinity
       for (let i = 0; i < 20; i++) {
         sim.step(1 / 60)
         walls += sim.drainEvents().filter((ev) => ev.type === 'wall').length
@@ -285,9 +286,12 @@ describe('fixed-tick contacts', () => {
         const k = ke()
         expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
         last = k
+        turned = Math.min(turned, sim.ballState(heavy).vy)
       }
       expect(walls).toBeGreaterThan(0)
-      expect(sim.ballState(heavy).vy, `e = ${e}`).toBeLessThanOrEqual(0) // stopped or sent back by the wall through the light ball
+      // stopped or sent back by the wall, through the light ball or once it slipped aside (later it may
+      // reach the far wall and come back)
+      expect(turned, `e = ${e}`).toBeLessThanOrEqual(0)
     }
   })
 

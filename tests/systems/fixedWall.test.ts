@@ -76,6 +76,41 @@ describe('fixed-tick contacts at a closed wall', () => {
   })
 })
 
+describe('fixed-tick contacts: a fast light ball between a heavy ball and a wall', () => {
+  // a ball of mass 1e-6 crossing the 250 px between a wall and a ball of mass 1 within a tick was taken for
+  // one squeezed between them: past its restitution visits the pair was solved inelastically with the wall,
+  // and the heavy ball stopped dead 290 px from the wall (at 50 px/s and at 200 px/s). A moving ball is now
+  // solved with the wall only where its partner closes the room between it and the wall within the tick
+  for (const speed of [50, 200]) {
+    it(`a ball of mass 1 closing on the wall at ${speed} px/s keeps its speed until the light ball is wedged, then the wall sends it back`, () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 1 })
+      const light = sim.addBall({ x: 20, y: 200, vx: -3e4, vy: 0, radius: 2, mass: 1e-6 })
+      const heavy = sim.addBall({ x: 300, y: 200, vx: -speed, vy: 0, radius: 11, mass: 1 })
+      const ke = () => 1e-6 * (sim.ballState(light).vx ** 2 + sim.ballState(light).vy ** 2) + sim.ballState(heavy).vx ** 2
+      let last = ke()
+      let turned = -1
+      for (let i = 0; i < 120; i++) {
+        sim.step(1 / 60)
+        const h = sim.ballState(heavy)
+        const k = ke()
+        expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+        last = k
+        if (turned < 0 && h.vx > 0) turned = h.x
+        // on its way in: within 2 % of its speed (the light ball takes a little with each bounce)
+        else if (turned < 0) expect(h.vx, `step ${i}`).toBeLessThan(-0.98 * speed)
+        // the light ball (diameter 4) between it and the wall, none through the other
+        expect(h.x).toBeGreaterThan(sim.ballState(light).x)
+      }
+      if (speed === 200) {
+        // turned where the light ball lies wedged against the wall, elastically
+        expect(turned).toBeLessThan(11 + 4 + 25)
+        expect(sim.ballState(heavy).vx).toBeGreaterThan(0.99 * speed)
+      } else expect(sim.ballState(heavy).x).toBeLessThan(300 - 0.98 * 2 * speed)
+    })
+  }
+})
+
 describe('fixed-tick contacts: balls that reach both walls of their box within a tick', () => {
   // Such a ball is turned by one wall at a sweep's start and back by the other at its end, sweep after
   // sweep, so no call converged: each ran all CONTACT_ITERATIONS sweeps, and crowds of light balls pumped
