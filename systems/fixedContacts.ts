@@ -10,7 +10,9 @@
 // another, or that ends with a pair closing deep into itself that a finer tick would not, is solved again,
 // halved: fixedRedo.ts, fixedDeep.ts) and those the projection pushed into balls they were not
 // paired with (fixedJoin.ts); a tick whose projection took a row out from one of its balls
-// (fixedLayered.ts) has its velocities solved again. Between ticks the balls follow their closed-form paths through the holes
+// (fixedLayered.ts) has its velocities solved again; each ball's contacts are counted on the clock, a light
+// ball past MAX_TICK_CONTACTS in a contact tick of it meeting heavy ones without restitution (fixedCount.ts).
+// Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
@@ -19,6 +21,7 @@ import { findPairs, packings } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { solveVelocities } from '../src/contacts/fixedSolve.js'
 import { applyChanges } from '../src/contacts/fixedApply.js'
+import { countContacts } from '../src/contacts/fixedCount.js'
 import { deepFiner } from '../src/contacts/fixedDeep.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { anchoredCount } from '../src/contacts/fixedLayered.js'
@@ -92,6 +95,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   // where the balls now are (without it, 4 of the 768 struck rows of npm run bench:rows let a ball pass)
   if (anchoredCount() !== anchored) solveVelocities(w, F, t, w.config.CONTACT_ITERATIONS)
   recordGrowth(F, true)
+  countContacts(w, F, t)
   applyChanges(w, F, t)
 }
 

@@ -28,6 +28,7 @@ import { heldBalls, holdRows } from './fixedShock.js'
 import { capImpulse } from './law.js'
 import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
+import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, face, pushed, wallAhead } from './fixedAhead.js'
 
 /** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */
@@ -60,7 +61,7 @@ let callFrom = 0
  * applyImpulse and pairWithWall. A double passed to (or returned from) a call V8 does not inline is boxed,
  * and which of these calls it inlines changes with the process: up to 9 bytes a ball-step on the gas.
  */
-const S = new Float64Array(7)
+const S = new Float64Array(8)
 const S_T = 0
 const S_E = 1
 const S_SETTLE = 2
@@ -68,6 +69,7 @@ const S_APPROACH = 3
 const S_IMA = 4
 const S_IMB = 5
 const S_SEPARATE = 6
+const S_CLOCK = 7
 
 /**
  * The velocity sweeps over the tick's pairs; true when a sweep left every pair as it was (converged).
@@ -78,6 +80,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   S[S_T] = t
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
+  S[S_CLOCK] = clockTick(w, t)
   if (testedAt.length < F.pairCount) testedAt = grownTo(testedAt, 2 * F.pairCount)
   if (changedAt.length < F.n) changedAt = grownTo(changedAt, 2 * F.n)
   const fromN = lastCallN()
@@ -184,7 +187,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   // and fro without end within one tick
   const hit = F.pairHit[p]!
   const visits = hit >> VISIT_SHIFT
-  const k = (1 + (approach < settle || visits >= RESTITUTION_VISITS ? 0 : e)) * approach
+  const k = (1 + (approach < settle || visits >= RESTITUTION_VISITS || spent(F, a, b, S[S_CLOCK]!) ? 0 : e)) * approach
   let j = k / (ima + imb)
   // a ball at rest that this impulse would leave slower than BALL_SETTLE_SPEED stays at rest (applyChanges),
   // so it holds like a wall: the other ball takes the whole impulse (else it would go on into a ball that
