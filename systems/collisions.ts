@@ -25,7 +25,7 @@ import { appendCollision } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
 import { startAt } from '../src/motion/rolling.js'
 import { pushId } from '../src/world/idLists.js'
-import type { CollisionState } from '../src/world/contactState.js'
+import { contactTickKey, countContacts, type CollisionState } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
 import { HOT, H_NEXT_T } from '../src/world/pathHot.js'
@@ -67,7 +67,7 @@ export function collisionsSystem(w: BallWorld): void {
     const slow = approach < w.config.BALL_SETTLE_SPEED
     const repeat = isRepeatContact(w, a, b)
     // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate)
-    const tick = Math.floor(t / w.config.CONTACT_TICK) + 1
+    const tick = contactTickKey(t, w.config.CONTACT_TICK)
     const settle = slow || repeat || countContact(C, a, tick) > MAX_TICK_CONTACTS || countContact(C, b, tick) > MAX_TICK_CONTACTS
     C.contacts++
     let graze = false
@@ -112,11 +112,7 @@ export function collisionsSystem(w: BallWorld): void {
 
 /** Counts a contact of ball eid in contact tick `tick` (k + 1); returns its contacts in that tick so far. */
 function countContact(C: CollisionState, eid: number, tick: number): number {
-  if (C.tickContactsAt[eid] !== tick) {
-    C.tickContactsAt[eid] = tick
-    C.tickContacts[eid] = 0
-  }
-  return ++C.tickContacts[eid]!
+  return countContacts(C, eid, tick, 1)
 }
 
 /** The speed at which balls a and b slide past each other: their relative velocity across the normal (nx, ny). */

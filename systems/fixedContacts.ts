@@ -21,7 +21,7 @@ import { findPairs, packings } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { solveVelocities } from '../src/contacts/fixedSolve.js'
 import { applyChanges } from '../src/contacts/fixedApply.js'
-import { countContacts } from '../src/contacts/fixedCount.js'
+import { countTickContacts } from '../src/contacts/fixedCount.js'
 import { deepFiner } from '../src/contacts/fixedDeep.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
 import { anchoredCount } from '../src/contacts/fixedLayered.js'
@@ -95,7 +95,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   // where the balls now are (without it, 4 of the 768 struck rows of npm run bench:rows let a ball pass)
   if (anchoredCount() !== anchored) solveVelocities(w, F, t, w.config.CONTACT_ITERATIONS)
   recordGrowth(F, true)
-  countContacts(w, F, t)
+  countTickContacts(w, F, t)
   applyChanges(w, F, t)
 }
 

@@ -10,10 +10,11 @@
 import { MAX_TICK_CONTACTS, PUMP_MASS_RATIO } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
+import { contactTickKey, countContacts } from '../world/contactState.js'
 
 /** The key of the contact tick of the clock that time t falls in (k + 1: 0 is none). */
 export function clockTick(w: BallWorld, t: number): number {
-  return Math.floor(t / w.config.CONTACT_TICK) + 1
+  return contactTickKey(t, w.config.CONTACT_TICK)
 }
 
 /**
@@ -32,21 +33,13 @@ function over(F: FixedContactState, i: number, key: number): boolean {
 }
 
 /** Adds the impulses of each pair at the tick t (F.pairHit above its bit 0, up to RESTITUTION_VISITS) to its balls' counts. */
-export function countContacts(w: BallWorld, F: FixedContactState, t: number): void {
+export function countTickContacts(w: BallWorld, F: FixedContactState, t: number): void {
   const key = clockTick(w, t)
   const C = F.rest
   for (let p = 0; p < F.pairCount; p++) {
     const v = F.pairHit[p]! >> 1
     if (v === 0) continue
-    add(C, F.id[F.pairA[p]!]!, key, v)
-    add(C, F.id[F.pairB[p]!]!, key, v)
+    countContacts(C, F.id[F.pairA[p]!]!, key, v)
+    countContacts(C, F.id[F.pairB[p]!]!, key, v)
   }
-}
-
-function add(C: FixedContactState['rest'], eid: number, key: number, v: number): void {
-  if (C.tickContactsAt[eid] !== key) {
-    C.tickContactsAt[eid] = key
-    C.tickContacts[eid] = 0
-  }
-  C.tickContacts[eid] = C.tickContacts[eid]! + v
 }

@@ -230,6 +230,20 @@ export function grown<T extends Float64Array | Uint32Array | Int32Array | Uint8A
 }
 
 /** Grows the per-ball arrays to `capacity` entities. */
+/** The key of the contact tick of the world's clock that time t falls in, [k·tick, (k + 1)·tick): k + 1 (0 is none). */
+export function contactTickKey(t: number, contactTick: number): number {
+  return Math.floor(t / contactTick) + 1
+}
+
+/** Adds n contacts of ball eid in the contact tick `key` (contactTickKey); returns its contacts in that tick so far. */
+export function countContacts(C: CollisionState, eid: number, key: number, n: number): number {
+  if (C.tickContactsAt[eid] !== key) {
+    C.tickContactsAt[eid] = key
+    C.tickContacts[eid] = 0
+  }
+  return (C.tickContacts[eid] = C.tickContacts[eid]! + n)
+}
+
 export function growCollisionState(C: CollisionState, capacity: number): void {
   if (C.mass.length >= capacity) return
   C.mass = grown(C.mass, capacity)
