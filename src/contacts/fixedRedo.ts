@@ -18,6 +18,7 @@ import { halvingsLeft, restoreSpacing, saveSpacing } from './fixedHalve.js'
 
 let events = 0
 let contacts = 0
+let inelastic = 0
 let touchedCount = 0
 /** Ticks solved again, over the process's life (for tests and benchmarks). */
 let redone = 0
@@ -26,6 +27,7 @@ let redone = 0
 export function saveTick(w: BallWorld, F: FixedContactState): void {
   events = w.events.count
   contacts = F.contacts
+  inelastic = F.inelastic
   touchedCount = F.touchedCount
   saveSpacing(w, F)
 }
@@ -45,6 +47,7 @@ export function redoHalvings(tries: number, last: number): number {
 export function restoreTick(w: BallWorld, F: FixedContactState): void {
   w.events.count = events
   F.contacts = contacts
+  F.inelastic = inelastic
   F.touchedCount = touchedCount
   restoreSpacing(w, F)
   redone++

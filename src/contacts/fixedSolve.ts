@@ -188,7 +188,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   // and fro without end within one tick
   const hit = F.pairHit[p]!
   const visits = hit >> VISIT_SHIFT
-  const k = (1 + (approach < settle || visits >= RESTITUTION_VISITS || spent(F, a, b, S[S_CLOCK]!) ? 0 : e)) * approach
+  const bound = approach >= settle && (visits >= RESTITUTION_VISITS || spent(F, a, b, S[S_CLOCK]!))
+  const k = (1 + (approach < settle || bound ? 0 : e)) * approach
   let j = k / (ima + imb)
   // a ball at rest that this impulse would leave slower than BALL_SETTLE_SPEED stays at rest (applyChanges),
   // so it holds like a wall: the other ball takes the whole impulse (else it would go on into a ball that
@@ -202,6 +203,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   if (visits < RESTITUTION_VISITS) F.pairHit[p] = hit + (1 << VISIT_SHIFT)
+  if (bound && e > 0) F.inelastic++
   if (visits >= RESTITUTION_VISITS && (F.im[a]! >= SQUEEZE_MASS_RATIO * F.im[b]! || F.im[b]! >= SQUEEZE_MASS_RATIO * F.im[a]!)) remet++
   else plain++
   // a ball SQUEEZE_MASS_RATIO times lighter than its partner (or more) that the impulse drives into a closed

@@ -153,6 +153,8 @@ export interface FixedContactState {
   /** contacts reported (impulses with approach of at least BALL_SETTLE_SPEED), and ticks solved */
   contacts: number
   ticks: number
+  /** impulses closed inelastically past RESTITUTION_VISITS or MAX_TICK_CONTACTS though BALL_RESTITUTION > 0 (the world's life; README) */
+  inelastic: number
   /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
   capped: number
   /** pairs of a pushed ball and a moving ball listed after a projection (src/contacts/fixedJoin.ts), counted over the world's life */
@@ -227,6 +229,7 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     ballStamp: new Uint32Array(n),
     stamp: 0,
     contacts: 0,
+    inelastic: 0,
     ticks: 0,
     capped: 0,
     movingJoins: 0,
