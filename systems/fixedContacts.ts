@@ -137,7 +137,8 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts), and past MAX_PASS_ROUNDS only while the tick has CHAIN_PAIRS_PER_BALL pairs a
-  // candidate or fewer (a push along a row), and past MAX_CHAIN_ROUNDS only while each call keeps its stamps (a
+  // candidate or fewer (a push along a row; past it with a ball that may still pass another, the tick is
+  // solved again finer, as at the pair bounds), and past MAX_CHAIN_ROUNDS only while each call keeps its stamps (a
   // round then costs the balls it changes), up to CHAIN_ROUNDS_PER_CANDIDATE rounds a candidate; those rounds
   // start from the new pairs when the last round converged
   let added = 0
@@ -150,7 +151,7 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
       if (!mayPass(F) && !(added > 0 && F.pairCount <= CHAIN_PAIRS_PER_BALL * F.n)) return SOLVED
       if (F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened) return h
     }
-    if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) return SOLVED
+    if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) return mayPass(F) ? h : SOLVED
     const pairs = F.pairCount
     const walled = F.nearWallCount
     if (!widenReach(w, F)) return SOLVED
