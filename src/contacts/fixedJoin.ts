@@ -83,6 +83,20 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   return paired
 }
 
+/**
+ * Marks every candidate seen under a new stamp of the resting state's (F.rest.seen): joinPushed takes the
+ * stamps the gather left on the candidates, so a widening after it (systems/fixedContacts.ts) would add a
+ * resting candidate a second time, at its stored position.
+ */
+export function markCandidatesSeen(F: FixedContactState): void {
+  const C = F.rest
+  if (++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  for (let k = 0; k < F.n; k++) C.seen[F.id[k]!] = C.seenStamp
+}
+
 /** Marks the first n candidates packed, by id, with their indices (F.packMark, F.packAt); returns the mark. */
 function markPacked(F: FixedContactState, n: number): number {
   sweepStores(F)

@@ -90,15 +90,24 @@ describe('fixed tick: a push along a row with gaps', () => {
     expect(ticksRedone()).toBeGreaterThan(redone)
   })
 
-  // the same bound met on rows that stop the push (e = 0, the striker's mass given), at the default tick and
-  // at 1/240 s: each let a ball through its neighbour before (36 of 1,008 free rows of radii 0.5-11, gaps
-  // 0.05-5 px, 3,000-1e5 px/s, ticks 1/120-1/7,680 s let one through; 7 still do: docs/known-failures.md)
-  for (const [e, mass, radius, gap, tick] of [[0, 1, 0.5, 0.05, 1 / 120], [0, 100, 11, 1, 1 / 120], [0, 100, 11, 0.05, 1 / 240], [0, 100, 11, 1, 1 / 240]] as const) {
-    it(`e = ${e}, a striker of mass ${mass} at 1e5 px/s into 1,000 balls of radius ${radius} ${gap} px apart, tick 1/${Math.round(1 / tick)} s: no ball passes another`, () => {
+  // rows that stop the push (e = 0, the striker's mass given), at the default tick and at 1/240 s: the first
+  // four met the same bound; the last two, a re-solve after the projection took the row out from one of its
+  // balls that carried the push past the rounds' reach (systems/fixedContacts.ts). Each let a ball through its
+  // neighbour before: 36 of 1,008 free rows of radii 0.5-11, gaps 0.05-5 px, 3,000-1e5 px/s, ticks
+  // 1/120-1/7,680 s let one through, and none now (docs/known-failures.md)
+  for (const [e, mass, radius, gap, speed, n, tick] of [
+    [0, 1, 0.5, 0.05, 1e5, 1000, 1 / 120],
+    [0, 100, 11, 1, 1e5, 1000, 1 / 120],
+    [0, 100, 11, 0.05, 1e5, 1000, 1 / 240],
+    [0, 100, 11, 1, 1e5, 1000, 1 / 240],
+    [0, 100, 3, 1, 3000, 200, 1 / 120],
+    [0, 100, 11, 5, 1e5, 1000, 1 / 120],
+  ] as const) {
+    it(`e = ${e}, a striker of mass ${mass} at ${speed} px/s into ${n} balls of radius ${radius} ${gap} px apart, tick 1/${Math.round(1 / tick)} s: no ball passes another`, () => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: radius, CONTACT_TICK: tick })
-      const ids = [sim.addBall({ x: 0, y: 0, vx: 1e5, vy: 0, mass })]
-      for (let i = 0; i < 1000; i++) ids.push(sim.addBall({ x: 4 * radius + i * (2 * radius + gap), y: 0, vx: 0, vy: 0 }))
-      const frames = Math.ceil(((4 * radius + 1000 * (2 * radius + gap)) / 1e5) * 60) + 2
+      const ids = [sim.addBall({ x: 0, y: 0, vx: speed, vy: 0, mass })]
+      for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 4 * radius + i * (2 * radius + gap), y: 0, vx: 0, vy: 0 }))
+      const frames = Math.ceil(((4 * radius + n * (2 * radius + gap)) / speed) * 60) + 2
       let passed = -1
       for (let f = 0; f < frames * 4 && passed < 0; f++) {
         sim.step(1 / 240)
