@@ -9,7 +9,11 @@
 //   pressed: 200 random rows of radius-11 balls (2–64 balls, touching or 0.01 or 1 px apart, 0, 5 or 30 px
 //           from the far wall, strikers of mass 1–1e4 at 100–1,000 px/s, e from 0 to 1, on the row's line or
 //           2 px off it), 1 s at 60 Hz: the rows more than 1e-3 px deep between neighbours at a step from
-//           0.5 s on (and from 0.25 s), the deepest.
+//           0.5 s on (and from 0.25 s), the deepest;
+//   free:    1,008 rows with no walls struck end on: restitution 0 or 1, a striker of mass 1 or 100, radii 0.5,
+//           3 or 11, 0.05, 1 or 5 px apart, 200 balls at 3,000, 1e4 or 1e5 px/s and 1,000 at 1e5 px/s,
+//           CONTACT_TICK 1/120 to 1/7,680 s, stepped at 1/240 s until the push could leave the row: the settings
+//           in which a ball passes its neighbour at a step's end (about 4 minutes).
 // Writes docs/results/rows.json.
 //
 //   npm run bench:rows
@@ -126,6 +130,49 @@ console.log(
   `pressed rows: ${pressed.length}; over 1e-3 px deep from 0.5 s in ${pressedDeep.length}, from 0.25 s in ${pressedDeepQuarter.length} (deepest from 0.5 s ${Math.max(...pressed.map((p) => p.deepest)).toExponential(2)} px, from 0.25 s ${Math.max(...pressed.map((p) => p.deepestFromQuarter)).toExponential(2)} px)`,
 )
 for (const p of pressedDeepQuarter) console.log(`  ${JSON.stringify(p)}`)
+
+interface Free {
+  e: number
+  mass: number
+  radius: number
+  gap: number
+  speed: number
+  n: number
+  hz: number
+}
+
+/** The first step (of 1/240 s) at which a ball of a free row is not ahead of the one before it (−1: none). */
+function free({ e, mass, radius, gap, speed, n, hz }: Free): number {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: radius, CONTACT_TICK: 1 / hz })
+  const ids = [sim.addBall({ x: 0, y: 0, vx: speed, vy: 0, mass })]
+  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: 4 * radius + i * (2 * radius + gap), y: 0, vx: 0, vy: 0 }))
+  const steps = 4 * (Math.ceil(((4 * radius + n * (2 * radius + gap)) / speed) * 60) + 2)
+  for (let s = 0; s < steps; s++) {
+    sim.step(1 / 240)
+    let last = -Infinity
+    for (const id of ids) {
+      const x = sim.ballState(id).x
+      if (!(x > last)) return s
+      last = x
+    }
+  }
+  return -1
+}
+
+const freeRows: (Free & { passed: number })[] = []
+for (const e of [0, 1])
+  for (const mass of [1, 100])
+    for (const radius of [0.5, 3, 11])
+      for (const gap of [0.05, 1, 5])
+        for (const speed of [3000, 1e4, 1e5])
+          for (const n of speed === 1e5 ? [200, 1000] : [200])
+            for (const hz of [120, 240, 480, 960, 1920, 3840, 7680]) {
+              const row = { e, mass, radius, gap, speed, n, hz }
+              freeRows.push({ ...row, passed: free(row) })
+            }
+const freePasses = freeRows.filter((r) => r.passed >= 0)
+console.log(`free rows: ${freeRows.length}; a ball passes another in ${freePasses.length}`)
+for (const r of freePasses) console.log(`  ${JSON.stringify(r)}`)
 console.log(`(${((performance.now() - t0) / 1000).toFixed(0)} s)`)
 
 const file = writeResult('rows', {
@@ -145,6 +192,12 @@ const file = writeResult('rows', {
     deepestFrom05s: Math.max(...pressed.map((p) => p.deepest)),
     deepestFrom025s: Math.max(...pressed.map((p) => p.deepestFromQuarter)),
     failing: pressedDeepQuarter,
+  },
+  free: {
+    scenes: 'no walls; e in {0, 1}, striker mass in {1, 100}, radius in {0.5, 3, 11}, gap in {0.05, 1, 5} px, 200 balls at {3000, 1e4, 1e5} px/s and 1,000 at 1e5 px/s, CONTACT_TICK 1/{120, 240, 480, 960, 1920, 3840, 7680} s, steps of 1/240 s',
+    rows: freeRows.length,
+    passes: freePasses.length,
+    failing: freePasses,
   },
 })
 console.log(`wrote ${file}`)
