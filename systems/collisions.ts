@@ -25,7 +25,7 @@ import { appendCollision } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
 import { startAt } from '../src/motion/rolling.js'
 import { pushId } from '../src/world/idLists.js'
-import { contactTickKey, countContacts, type CollisionState } from '../src/world/contactState.js'
+import { contactTickKey, countContacts } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
 import { HOT, H_NEXT_T } from '../src/world/pathHot.js'
@@ -68,7 +68,7 @@ export function collisionsSystem(w: BallWorld): void {
     const repeat = isRepeatContact(w, a, b)
     // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate)
     const tick = contactTickKey(t, w.config.CONTACT_TICK)
-    const settle = slow || repeat || countContact(C, a, tick) > MAX_TICK_CONTACTS || countContact(C, b, tick) > MAX_TICK_CONTACTS
+    const settle = slow || repeat || countContacts(C, a, tick, 1) > MAX_TICK_CONTACTS || countContacts(C, b, tick, 1) > MAX_TICK_CONTACTS
     C.contacts++
     let graze = false
     if (settle) {
@@ -80,7 +80,7 @@ export function collisionsSystem(w: BallWorld): void {
       // graze each time, they once made a thousand contacts a second and a step that hung on the pass cap)
       graze =
         slow && !repeat && w.config.BALL_RESTITUTION > 0 && C.clusterCount === 2 && slides(B, a, b, nx, ny) >= GRAZE_SLIDE * w.config.BALL_SETTLE_SPEED &&
-        countContact(C, a, tick) <= MAX_TICK_CONTACTS && countContact(C, b, tick) <= MAX_TICK_CONTACTS
+        countContacts(C, a, tick, 1) <= MAX_TICK_CONTACTS && countContacts(C, b, tick, 1) <= MAX_TICK_CONTACTS
       if (!graze) {
         settleCluster(w, a, b, t)
         const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
@@ -108,11 +108,6 @@ export function collisionsSystem(w: BallWorld): void {
     C.partner[a] = b
     C.partner[b] = a
   }
-}
-
-/** Counts a contact of ball eid in contact tick `tick` (k + 1); returns its contacts in that tick so far. */
-function countContact(C: CollisionState, eid: number, tick: number): number {
-  return countContacts(C, eid, tick, 1)
 }
 
 /** The speed at which balls a and b slide past each other: their relative velocity across the normal (nx, ny). */

@@ -229,7 +229,6 @@ export function grown<T extends Float64Array | Uint32Array | Int32Array | Uint8A
   return next
 }
 
-/** Grows the per-ball arrays to `capacity` entities. */
 /** The key of the contact tick of the world's clock that time t falls in, [k·tick, (k + 1)·tick): k + 1 (0 is none). */
 export function contactTickKey(t: number, contactTick: number): number {
   return Math.floor(t / contactTick) + 1
@@ -244,6 +243,7 @@ export function countContacts(C: CollisionState, eid: number, key: number, n: nu
   return (C.tickContacts[eid] = C.tickContacts[eid]! + n)
 }
 
+/** Grows the per-ball arrays to `capacity` entities. */
 export function growCollisionState(C: CollisionState, capacity: number): void {
   if (C.mass.length >= capacity) return
   C.mass = grown(C.mass, capacity)
