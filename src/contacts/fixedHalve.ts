@@ -17,11 +17,14 @@
 // CONTACT_TICK / 2^halvings, so every tick of a coarser spacing is one of the finer), and every decision is
 // taken from the world's state at a solve (its balls, the last solve's pairs, the back-off, the last ticks'
 // growth), never from where a step ends: the ticks are the same at every frame rate and in both broadphases
-// (which list the same pairs in the same order), and a snapshot keeps them.
+// (which list the same pairs in the same order), and a snapshot keeps them. With restitution above 0, a tick
+// is also halved where its balls close on their nearest partner by more than a share of their size a tick,
+// and held from coarsening back while the coarser tick would have them do so (src/contacts/fixedTravel.ts).
 import { BallMode } from '../../components/Ball.js'
 import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
+import { countTravelHalving, holdsForTravel, travelApplies, travelHalvings } from './fixedTravel.js'
 
 /** Per packed candidate: its speed, and its reach at each further halving (level h at [h·n + k]; scratch). */
 let speed = new Float64Array(64)
@@ -78,10 +81,18 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   let h = 0
   let saturated = false
   const growth = sustainedGrowth(F)
+  // balls closing on their nearest partner by more than a share of their size a tick (src/contacts/fixedTravel.ts)
+  const travel = travelApplies(w) ? travelHalvings(F, Math.min(levels, w.config.CONTACT_TRAVEL_HALVINGS - F.halvings)) : 0
+  const byTravel = travel > atLeast
+  if (byTravel) atLeast = travel
   if (F.pairCount * growth > TICK_PAIRS_PER_CANDIDATE * F.full || atLeast > 0) {
     h = levels > 0 ? bestHalvings(w, F, levels, growth) : 0
-    // a tick solved again at a finer spacing (src/contacts/fixedRedo.ts): at least that many
-    if (h < atLeast) h = Math.min(atLeast, levels)
+    // a tick solved again at a finer spacing (src/contacts/fixedRedo.ts), or one whose balls close on their
+    // nearest partner too far a tick: at least that many
+    if (h < atLeast) {
+      if (byTravel) countTravelHalving()
+      h = Math.min(atLeast, levels)
+    }
     if (h > 0) halve(w, F, h)
     // a halved tick whose pairs a finer one would not thin (half of them or more kept: balls sped up beyond
     // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser
@@ -101,6 +112,8 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
     coarsened = false
   }
   F.tickPairs = saturated ? 0 : F.pairCount
+  // too fast for the coarser tick: counted as the halving bound, so it is not coarsened back
+  if (travelApplies(w) && holdsForTravel(F, w.config.CONTACT_TRAVEL_HALVINGS)) F.tickPairs = Math.max(F.tickPairs, TICK_PAIRS_PER_CANDIDATE * F.full)
   F.tickFull = F.full
   gathered = F.pairCount
   return h
