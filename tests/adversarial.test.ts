@@ -108,6 +108,8 @@ interface Cfg {
   horizon?: number
   /** the rim model (absent: the design's stages) */
   rim?: 'tabulated'
+  /** CONTACT_TRAVEL_HALVINGS (absent: the default) */
+  travel?: number
   e: number
   decel: number
 }
@@ -338,6 +340,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
     ROLLING_DECEL: cfg.decel,
     ...(cfg.rim === undefined ? {} : { RIM_MODEL: cfg.rim }),
     ...(cfg.horizon === undefined ? {} : { PREDICTION_HORIZON: cfg.horizon }),
+    ...(cfg.travel === undefined ? {} : { CONTACT_TRAVEL_HALVINGS: cfg.travel }),
   } as const
   const trace: string[] = []
   const sim = createBallPhysics(overrides)
@@ -1020,23 +1023,25 @@ describe('shrunk counterexamples of the long run', () => {
       { t: 'step', dt: 1e-09 },
       { t: 'addHole', x: 210, y: 190, radius: undefined },
     ] as unknown as Op[]
-    let ticks = 0
-    let halvings = -1
-    let time = 0
-    runScenario('counterexample', { contacts: 'fixed', e: 0.5, decel: 0 }, ops, ['finite', 'events', 'time'], (sim) => {
-      ticks = sim.world.fixed!.ticks
-      halvings = sim.world.fixed!.halvings
-      time = sim.time
-    })
     // 1.02 s of simulated time: 122 ticks at the full spacing, 290 before the rule (the burst's own halvings),
     // 298 with it; 355 without the bound on the pairs before the widening, 362 (and still halved at the end)
     // without coarsening such a tick back, and both left out, 12 s of stepping. 332 since a moving light
-    // ball is solved with its wall only when its partner closes the room to the wall within the tick; 392
-    // since the tick is halved where balls close on their nearest partner by more than half their size a
-    // tick (e = 0.5 here: the 1e5 px/s burst's balls, while they fly)
-    expect(time).toBeGreaterThan(1)
-    expect(halvings).toBe(0)
-    expect(ticks).toBeLessThan(420)
+    // ball is solved with its wall only when its partner closes the room to the wall within the tick; all
+    // that with the tick never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0). With that rule (the
+    // default; e = 0.5 here), the 1e5 px/s burst's balls halve the ticks while they fly: 461
+    for (const travel of [0, undefined]) {
+      let ticks = 0
+      let halvings = -1
+      let time = 0
+      runScenario('counterexample', { contacts: 'fixed', e: 0.5, decel: 0, travel }, ops, ['finite', 'events', 'time'], (sim) => {
+        ticks = sim.world.fixed!.ticks
+        halvings = sim.world.fixed!.halvings
+        time = sim.time
+      })
+      expect(time).toBeGreaterThan(1)
+      expect(halvings).toBe(0)
+      expect(ticks).toBeLessThan(travel === 0 ? 345 : 500)
+    }
   })
 
   // the long run at 41×: a round that widened a ball into a closed wall without new pairs solved once more
