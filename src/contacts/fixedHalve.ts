@@ -112,8 +112,8 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
     coarsened = false
   }
   F.tickPairs = saturated ? 0 : F.pairCount
-  // too fast for the coarser tick: counted as the halving bound, so it is not coarsened back
-  if (travelApplies(w) && holdsForTravel(F, w.config.CONTACT_TRAVEL_HALVINGS)) F.tickPairs = Math.max(F.tickPairs, TICK_PAIRS_PER_CANDIDATE * F.full)
+  // too fast for the coarser tick: its next try at coarsening waits (src/contacts/fixedTravel.ts)
+  if (travelApplies(w) && holdsForTravel(F, w.config.CONTACT_TRAVEL_HALVINGS)) F.coarsenWait = Math.max(F.coarsenWait, 1)
   F.tickFull = F.full
   gathered = F.pairCount
   return h

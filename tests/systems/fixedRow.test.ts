@@ -83,7 +83,7 @@ describe('fixed tick: a push along a row with gaps', () => {
     // candidate (4,005 for 1,001 candidates); the tick ended there as solved, ball 803 went on at 1e5 px/s
     // through 804 and 805 within the tick, and the two ended 44 px the wrong way round. Found with the tick
     // never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0), which halves this one first; with it too
-    for (const travel of [0, undefined]) {
+    for (const travel of [0, 4]) {
       const redone = ticksRedone()
       const r = row(11, 1, 1e5, 1000, 1 / 1920, travel)
       expect(r.swapped).toBe(false)
@@ -233,7 +233,7 @@ describe('fixed tick: a tick whose widening rounds stop with a ball that may pas
   it('a ball of mass 100 at 1e5 px/s into 520 radius-0.5 balls 1 px apart: no ball passes another, the last leaves as the two-body law says, the same bits at 60 and 240 Hz', () => {
     // found with the tick never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0), which halves this
     // one before its rounds stop; with it too
-    for (const travel of [0, undefined]) {
+    for (const travel of [0, 4]) {
       const redone = ticksRedone()
       const a = strikeRow(0.5, 520, 100, 60, 3, { travel })
       expect(a.swapped).toBe(-1)
@@ -406,8 +406,8 @@ function strikeRowAtWall(n: number, gap: number, mass: number, speed: number, hz
 
 /**
  * The row above passes no ball at 60 Hz and ends with the same bits at 120 Hz: with the tick never halved for
- * the balls' travel (CONTACT_TRAVEL_HALVINGS 0, as these rows were found), solving a tick again; and with that
- * rule (the default), which halves these ticks before they need it.
+ * the balls' travel (CONTACT_TRAVEL_HALVINGS 0, the default), solving a tick again; and with that rule at 4,
+ * which halves these ticks before they need it.
  */
 function holdsWithRedo(n: number, gap: number, mass: number, speed: number): void {
   const before = ticksRedone()
@@ -415,9 +415,9 @@ function holdsWithRedo(n: number, gap: number, mass: number, speed: number): voi
   expect(a.passed).toBe(-1)
   expect(ticksRedone()).toBeGreaterThan(before)
   expect(strikeRowAtWall(n, gap, mass, speed, 120, 1, 0)).toEqual(a)
-  const b = strikeRowAtWall(n, gap, mass, speed, 60)
+  const b = strikeRowAtWall(n, gap, mass, speed, 60, 1, 4)
   expect(b.passed).toBe(-1)
-  expect(strikeRowAtWall(n, gap, mass, speed, 120)).toEqual(b)
+  expect(strikeRowAtWall(n, gap, mass, speed, 120, 1, 4)).toEqual(b)
 }
 
 describe('fixed tick: a tick that leaves a pair closing deep into itself is solved again, halved', () => {

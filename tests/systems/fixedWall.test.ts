@@ -83,13 +83,14 @@ describe('fixed-tick contacts: a fast light ball between a heavy ball and a wall
   // solved with the wall only where its partner closes the room between it and the wall within the tick.
   // The light ball gains speed at each bounce off the closing heavy one (its speed times the room between
   // them stays about the same), so the heavy ball slows long before the light one is wedged: the exact method
-  // has it at 48.95 px/s after 0.3 s at 50 px/s. Before the tick was halved for the balls' travel, the light
-  // ball, covering the room in a tick, met the heavy one past its restitution visits and closed inelastically:
-  // the heavy ball kept 49.42 px/s all the way in, and at 200 px/s turned only at the wall
+  // has it at 48.95 px/s after 0.3 s at 50 px/s. Without the tick halved for the balls' travel
+  // (CONTACT_TRAVEL_HALVINGS 0, the default), the light ball, covering the room in a tick, meets the heavy one
+  // past its restitution visits and closes inelastically: the heavy ball keeps 49.42 px/s all the way in, and
+  // at 200 px/s turns only at the wall
   for (const speed of [50, 200]) {
-    it(`a ball of mass 1 closing on the wall at ${speed} px/s slows as the exact method has it while the light ball between them gains speed, none passing the other`, () => {
+    it(`a ball of mass 1 closing on the wall at ${speed} px/s, the tick halved for the balls' travel, slows as the exact method has it while the light ball between them gains speed, none passing the other`, () => {
       const run = (mode: 'on' | 'fixed') => {
-        const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+        const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_TRAVEL_HALVINGS: 4 })
         sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 1 })
         const light = sim.addBall({ x: 20, y: 200, vx: -3e4, vy: 0, radius: 2, mass: 1e-6 })
         const heavy = sim.addBall({ x: 300, y: 200, vx: -speed, vy: 0, radius: 11, mass: 1 })
