@@ -13,11 +13,15 @@
 //   free:    1,008 rows with no walls struck end on: restitution 0 or 1, a striker of mass 1 or 100, radii 0.5,
 //           3 or 11, 0.05, 1 or 5 px apart, 200 balls at 3,000, 1e4 or 1e5 px/s and 1,000 at 1e5 px/s,
 //           CONTACT_TICK 1/120 to 1/7,680 s, stepped at 1/240 s until the push could leave the row: the settings
-//           in which a ball passes its neighbour at a step's end (about 4 minutes).
+//           in which a ball passes its neighbour at a step's end;
+//   fine:    the struck set's 768 settings at CONTACT_TICK 1/1,920 s, and again at the default tick with
+//           CONTACT_TRAVEL_HALVINGS 4 (which halves these ticks where the balls move fast): the same counts
+//           (the rows' rules were tuned at the default tick; at 1/1,920 s one of these let a ball through).
+// About 5 minutes in all.
 // Writes docs/results/rows.json.
 //
 //   npm run bench:rows
-import { createBallPhysics } from '../src/index'
+import { createBallPhysics, type BallPhysicsConfig } from '../src/index'
 import { writeResult } from './lib'
 
 interface Struck {
@@ -30,8 +34,8 @@ interface Struck {
 }
 
 /** The first step at which a ball is not ahead of the one before it (−1: none) and the deepest overlap from 0.5 s. */
-function strike({ n, gap, mass, speed, e, hz }: Struck): { passed: number; deepest: number } {
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
+function strike({ n, gap, mass, speed, e, hz }: Struck, extra: Partial<BallPhysicsConfig> = {}): { passed: number; deepest: number } {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: 0.5, ...extra })
   sim.setWalls({ minX: -50, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: e })
   const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: speed, vy: 0, mass })]
   for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
@@ -173,6 +177,18 @@ for (const e of [0, 1])
 const freePasses = freeRows.filter((r) => r.passed >= 0)
 console.log(`free rows: ${freeRows.length}; a ball passes another in ${freePasses.length}`)
 for (const r of freePasses) console.log(`  ${JSON.stringify(r)}`)
+
+// the struck settings again, at a finer tick and with the travel rule
+const fine: (Struck & { tick: string; passed: number; deepest: number })[] = []
+for (const [tick, extra] of [['1/1920', { CONTACT_TICK: 1 / 1920 }], ['travel 4', { CONTACT_TRAVEL_HALVINGS: 4 }]] as const)
+  for (const s of struck) {
+    const k = { n: s.n, gap: s.gap, mass: s.mass, speed: s.speed, e: s.e, hz: s.hz }
+    fine.push({ ...k, tick, ...strike(k, extra) })
+  }
+const finePasses = fine.filter((s) => s.passed >= 0)
+const fineDeep = fine.filter((s) => s.deepest > 1e-3)
+console.log(`fine rows: ${fine.length}; a ball passes another in ${finePasses.length}; over 1e-3 px deep from 0.5 s in ${fineDeep.length} (deepest ${Math.max(...fine.map((s) => s.deepest)).toExponential(2)} px)`)
+for (const s of [...finePasses, ...fineDeep]) console.log(`  ${JSON.stringify(s)}`)
 console.log(`(${((performance.now() - t0) / 1000).toFixed(0)} s)`)
 
 const file = writeResult('rows', {
@@ -198,6 +214,14 @@ const file = writeResult('rows', {
     rows: freeRows.length,
     passes: freePasses.length,
     failing: freePasses,
+  },
+  fine: {
+    scenes: 'the struck settings at CONTACT_TICK 1/1920 s, and at the default tick with CONTACT_TRAVEL_HALVINGS 4',
+    settings: fine.length,
+    passes: finePasses.length,
+    deeperThan1e3From05s: fineDeep.length,
+    deepestFrom05s: Math.max(...fine.map((s) => s.deepest)),
+    failing: [...finePasses, ...fineDeep],
   },
 })
 console.log(`wrote ${file}`)

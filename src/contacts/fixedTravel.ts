@@ -8,9 +8,9 @@
 // most TRAVEL_SHARE of the candidates with a pair have their nearest partner (the least |d|² − S²) closing
 // more than TRAVEL_PER_TICK · S a tick, S the two radii; at most config.CONTACT_TRAVEL_HALVINGS from
 // CONTACT_TICK (0 by default: off; at 4 a gas at 1e5 px/s costs 16 times the ticks at most on this
-// account). Off by default because the finer ticks it takes are where the rows' rules still fail: a ball of
-// mass 100 at 3,000 px/s into 120 radius-0.5 balls 0.3 px apart by a wall lets a ball through its neighbour
-// at a tick of 1/1,920 s, with or without this rule (docs/known-failures.md). The
+// account). Off by default for what it costs where it works: an elastic crowd that keeps its energy stays
+// fast, and the long adversarial run's crowds of balls at 1e5 px/s cost up to twice the time a run with it
+// (docs/known-failures.md). The
 // spacing is not coarsened back while the coarser tick would have more than half that share. Read from the
 // tick's packed candidates and pairs at its solve, as the other halving rules are: the same at every frame
 // rate. With restitution 0 every contact closes inelastically anyway, and the rule is off.

@@ -389,8 +389,8 @@ describe('fixed tick: resting balls the rounds added one by one, touching each o
  * restitution e, a closed wall 5 px past the row, stepped 1 s at `hz`: the first step at which a ball is not
  * ahead of the one before it (-1: none), and every ball's state at the end.
  */
-function strikeRowAtWall(n: number, gap: number, mass: number, speed: number, hz: number, e = 1, travel?: number) {
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: 0.5, CONTACT_TRAVEL_HALVINGS: travel })
+function strikeRowAtWall(n: number, gap: number, mass: number, speed: number, hz: number, e = 1, travel?: number, tick?: number) {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, BALL_RADIUS: 0.5, CONTACT_TRAVEL_HALVINGS: travel, CONTACT_TICK: tick })
   sim.setWalls({ minX: -50, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: e })
   const ids = [sim.addBall({ x: -1 - gap, y: 0, vx: speed, vy: 0, mass })]
   for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: 0, vy: 0 }))
@@ -440,6 +440,23 @@ describe('fixed tick: a tick of many pairs a candidate that leaves a push front 
   for (const [n, gap, speed] of cases) {
     it(`${n} radius-0.5 balls ${gap} px apart struck end on by a mass-3 ball at ${speed} px/s, e = 1, a wall 5 px past the row: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
       holdsWithRedo(n, gap, 3, speed)
+    })
+  }
+})
+
+describe('fixed tick: a push that leaves three fronts closing deep at a fine tick is solved again (DEEP_FRONTS)', () => {
+  // a ball of mass 100 at 3,000 px/s into 120 radius-0.5 balls 0.3 px apart, at a tick of 1/1,920 s (the
+  // default tick halved 4 times, as CONTACT_TRAVEL_HALVINGS 4 does here): the second tick's sweeps leave the
+  // push part-way along the row, three balls at 3,000-3,600 px/s 0.3 px behind balls at rest, on a tick of
+  // more than CHAIN_PAIRS_PER_BALL pairs a candidate; with DEEP_FRONTS 2 it was not solved again, and ball
+  // 95 ended on the far side of ball 94 (npm run bench:rows, its fine set)
+  for (const [travel, tick] of [[0, 1 / 1920], [4, undefined]] as const) {
+    it(`CONTACT_TRAVEL_HALVINGS ${travel}, CONTACT_TICK ${tick === undefined ? 'default' : '1/1920 s'}: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
+      const before = ticksRedone()
+      const a = strikeRowAtWall(120, 0.3, 100, 3000, 60, 1, travel, tick)
+      expect(a.passed).toBe(-1)
+      expect(ticksRedone()).toBeGreaterThan(before)
+      expect(strikeRowAtWall(120, 0.3, 100, 3000, 120, 1, travel, tick)).toEqual(a)
     })
   }
 })
