@@ -33,7 +33,7 @@ import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
-import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
+import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 
@@ -65,11 +65,14 @@ export function fixedContactsSystem(w: BallWorld): void {
     // spacing would not (src/contacts/fixedDeep.ts): solved again too, on a tick of few pairs a candidate;
     // on a tick of more, when it leaves at most DEEP_FRONTS of them (a push's front along a row, not a
     // crowd's many) and it had few pairs a candidate before its widening rounds (as a tick the spacing
-    // coarsens back from: a crowd whose pairs are its radii would keep the finer spacing)
+    // coarsens back from: a crowd whose pairs are its radii would keep the finer spacing); DEEP_ROW_FRONTS of
+    // them when it had at most one pair a candidate before those rounds (a push along a row at a fine tick
+    // leaves three fronts: a crowd's tick that leaves as many has about four pairs a candidate)
     if (h === SOLVED) {
       const dense = F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
       if (dense && !fewPairs(F)) break
-      if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? DEEP_FRONTS : Infinity)) break
+      const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
+      if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? fronts : Infinity)) break
     }
     atLeast = redoHalvings(++tries, h === SOLVED ? tryHalvings : h)
     if (atLeast === 0) break

@@ -84,7 +84,7 @@ export interface BallPhysicsConfig {
    * With BALL_COLLISIONS 'fixed' and BALL_RESTITUTION above 0: most halvings of CONTACT_TICK taken where
    * balls close on their nearest partner by more than half their size a tick, which would otherwise lose an
    * elastic crowd's energy to the solve's inelastic bounds (README: Ball-ball contacts); 0 (the default)
-   * leaves it off, 4 keeps a crowd at up to about 8 radii a tick.
+   * leaves it off; at 4 the tick goes down to CONTACT_TICK / 16 on this account.
    */
   CONTACT_TRAVEL_HALVINGS: number
   /** With BALL_COLLISIONS 'fixed': most sweeps per tick of the velocity solve and of the overlap projection. */

@@ -168,16 +168,24 @@ export const MAX_TICK_REDOS = 4
  * them (counted together) and had at most CHAIN_PAIRS_PER_BALL pairs a candidate before its widening rounds.
  * A push along a row leaves its front and the wall ahead: the first tick of a mass-3 ball striking 55
  * radius-0.5 balls 2 px apart at 3,000–1e4 px/s has 10–20 pairs a candidate after its rounds and one or two
- * of them, and was not solved again, so a ball passed its neighbour before the next tick; at a tick of
- * 1/1,920 s a mass-100 ball striking 120 such balls 0.3 px apart at 3,000 px/s leaves three (the push
- * part-way along the row, balls at the push's speed behind balls at rest), and at 2 a ball passed. A crowd whose balls
+ * of them, and was not solved again, so a ball passed its neighbour before the next tick. A crowd whose balls
  * cover their spacing in a tick leaves many: of the 248 such ticks of a burst of heavy balls at 1e5 px/s in
  * a closed elastic box (the long adversarial run's), 241 left five or more, and every try there costs the
  * whole crowd. A crowd squeezed in a box narrower than a ball has its pairs from its radii before any round:
  * solved again at a finer spacing, it kept that spacing (too many pairs to coarsen back), 17 s of stepping
  * for a sequence of 0.5 s (a named test in tests/adversarial.test.ts).
  */
-export const DEEP_FRONTS = 4
+export const DEEP_FRONTS = 2
+/**
+ * Fixed-tick contacts: as DEEP_FRONTS, for a tick that had at most one pair a candidate before its widening
+ * rounds (a push along a row). At a tick of 1/1,920 s a mass-100 ball striking 120 radius-0.5 balls 0.3 px
+ * apart at 3,000 px/s leaves three (the push part-way along the row, balls at its speed behind balls at
+ * rest), and at 2 a ball passed its neighbour. At 4 for every tick, the long adversarial run's 1,909th
+ * sequence, crowds of about four pairs a candidate leaving three or four, had 5 ticks more solved again,
+ * each halving the ticks after it (627 ticks in its slow step against 389), and its run took twice as long
+ * (5,371 ms dev. against 2,482: its run's budget exceeded).
+ */
+export const DEEP_ROW_FRONTS = 4
 /**
  * Fixed-tick contacts: a ball the solve sped up so that it would move more than CAPSULE_TRAVEL times its
  * radius in a tick is widened along its path only, to the capsule it sweeps (src/contacts/fixedCapsule.ts).

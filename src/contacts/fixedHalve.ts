@@ -89,10 +89,8 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
     h = levels > 0 ? bestHalvings(w, F, levels, growth) : 0
     // a tick solved again at a finer spacing (src/contacts/fixedRedo.ts), or one whose balls close on their
     // nearest partner too far a tick: at least that many
-    if (h < atLeast) {
-      if (byTravel) countTravelHalving()
-      h = Math.min(atLeast, levels)
-    }
+    if (h < atLeast) h = Math.min(atLeast, levels)
+    if (byTravel && h > 0) countTravelHalving()
     if (h > 0) halve(w, F, h)
     // a halved tick whose pairs a finer one would not thin (half of them or more kept: balls sped up beyond
     // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser

@@ -3,17 +3,17 @@
 // by its own size in a tick meets again within the tick, each of its balls with its other partners too;
 // past RESTITUTION_VISITS visits of one pair in a call, or MAX_TICK_CONTACTS contacts of a ball in a tick,
 // the solve closes it inelastically (src/contacts/fixedSolve.ts), so an elastic crowd whose balls cover their
-// size a tick loses its energy: 200 radius-11 balls at 3,000 px/s in an elastic 420 × 480 box kept 0.09-0.11
-// of it over 2 s at 1/120 s, 0.34-0.39 at 1/240 s. A tick is halved (src/contacts/fixedHalve.ts) until at
+// size a tick loses its energy: 200 radius-11 balls at 3,000 px/s in an elastic 420 × 480 box keep 0.10 of
+// it after 1/3 s at 1/120 s, 0.34-0.39 at 1/240 s. A tick is halved (src/contacts/fixedHalve.ts) until at
 // most TRAVEL_SHARE of the candidates with a pair have their nearest partner (the least |d|² − S²) closing
 // more than TRAVEL_PER_TICK · S a tick, S the two radii; at most config.CONTACT_TRAVEL_HALVINGS from
 // CONTACT_TICK (0 by default: off; at 4 a gas at 1e5 px/s costs 16 times the ticks at most on this
 // account). Off by default for what it costs where it works: an elastic crowd that keeps its energy stays
 // fast, and the long adversarial run's crowds of balls at 1e5 px/s cost up to twice the time a run with it
-// (docs/known-failures.md). The
-// spacing is not coarsened back while the coarser tick would have more than half that share. Read from the
-// tick's packed candidates and pairs at its solve, as the other halving rules are: the same at every frame
-// rate. With restitution 0 every contact closes inelastically anyway, and the rule is off.
+// (docs/known-failures.md). The spacing's next try at coarsening back waits while the coarser tick would
+// have more than half that share. Read from the tick's packed candidates and pairs at its solve, as the other
+// halving rules are: the same at every frame rate. With restitution 0 every contact closes inelastically
+// anyway, and the rule is off.
 import { MAX_TICK_HALVINGS, TRAVEL_PER_TICK, TRAVEL_SHARE } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
@@ -23,7 +23,7 @@ let nearest = new Float64Array(64)
 let needs = new Float64Array(64)
 /** Candidates with a pair whose nearest partner needs h halvings, at [h] (scratch). */
 const needAt = new Float64Array(MAX_TICK_HALVINGS + 2)
-/** Ticks halved further for the travel rule than the other rules asked, over the process's life (for tests and benchmarks). */
+/** Ticks halved with the travel rule asking for it, over the process's life (for tests and benchmarks). */
 let halvedForTravel = 0
 
 /** Whether the travel rule applies to this world: fixed-tick contacts with restitution above 0, and halvings allowed it. */
@@ -65,12 +65,12 @@ function anyFast(F: FixedContactState): boolean {
   return false
 }
 
-/** Counts a tick halved further than the other rules asked for the travel rule. */
+/** Counts a tick halved with the travel rule asking for it (more halvings than a tick solved again asked). */
 export function countTravelHalving(): void {
   halvedForTravel++
 }
 
-/** Ticks halved further for the travel rule since the process started. */
+/** Ticks halved with the travel rule asking for it since the process started. */
 export function ticksHalvedForTravel(): number {
   return halvedForTravel
 }

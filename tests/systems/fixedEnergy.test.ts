@@ -4,6 +4,7 @@
 // (docs/decisions.md §12).
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32, type BallPhysics } from '../../src/index'
+import { ticksHalvedForTravel } from '../../src/contacts/fixedTravel'
 
 function kinetic(sim: BallPhysics): number {
   const F = sim.world.fixed
@@ -118,7 +119,9 @@ describe('fixed-tick contacts, restitution 1: the energy kept', () => {
       const coarse = run(seed, undefined, 0)
       expect(coarse.kept, `seed ${seed}`).toBeLessThan(0.5)
       expect(coarse.inelastic, `seed ${seed}`).toBeGreaterThan(0.05 * coarse.contacts)
+      const halved = ticksHalvedForTravel()
       const travelled = run(seed, undefined, 4)
+      expect(ticksHalvedForTravel()).toBeGreaterThan(halved)
       for (const fine of [travelled, run(seed, 1 / 960)]) {
         expect(fine.kept, `seed ${seed}`).toBeGreaterThan(0.98)
         expect(fine.kept, `seed ${seed}`).toBeLessThanOrEqual(1 + 1e-9)
