@@ -444,12 +444,12 @@ describe('fixed tick: a tick of many pairs a candidate that leaves a push front 
   }
 })
 
-describe('fixed tick: a push that leaves three fronts closing deep at a fine tick is solved again (DEEP_FRONTS)', () => {
+describe('fixed tick: a push that leaves three fronts closing deep at a fine tick is solved again (DEEP_ROW_FRONTS)', () => {
   // a ball of mass 100 at 3,000 px/s into 120 radius-0.5 balls 0.3 px apart, at a tick of 1/1,920 s (the
   // default tick halved 4 times, as CONTACT_TRAVEL_HALVINGS 4 does here): the second tick's sweeps leave the
   // push part-way along the row, three balls at 3,000-3,600 px/s 0.3 px behind balls at rest, on a tick of
-  // more than CHAIN_PAIRS_PER_BALL pairs a candidate; with DEEP_FRONTS 2 it was not solved again, and ball
-  // 95 ended on the far side of ball 94 (npm run bench:rows, its fine set)
+  // more than CHAIN_PAIRS_PER_BALL pairs a candidate; at most DEEP_FRONTS (2) such fronts were solved again,
+  // and ball 95 ended on the far side of ball 94 (npm run bench:rows, its fine set)
   for (const [travel, tick] of [[0, 1 / 1920], [4, undefined]] as const) {
     it(`CONTACT_TRAVEL_HALVINGS ${travel}, CONTACT_TICK ${tick === undefined ? 'default' : '1/1920 s'}: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
       const before = ticksRedone()
