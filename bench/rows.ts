@@ -106,10 +106,7 @@ for (const n of [5, 20, 55, 120])
             const s = { n, gap, mass, speed, e, hz }
             struck.push({ ...s, ...strike(s) })
           }
-const passes = struck.filter((s) => s.passed >= 0)
-const deep = struck.filter((s) => s.deepest > 1e-3)
-console.log(`struck rows: ${struck.length}; a ball passes another in ${passes.length}; over 1e-3 px deep from 0.5 s in ${deep.length} (deepest ${Math.max(...struck.map((s) => s.deepest)).toExponential(2)} px)`)
-for (const s of [...passes, ...deep]) console.log(`  ${JSON.stringify(s)}`)
+const struckResult = summarise('struck', 'radius-0.5 balls, n in {5, 20, 55, 120}, gap in {0, 0.05, 0.3, 2} px, striker mass in {1, 3, 100} at {100, 300, 3000, 1e4} px/s, e in {0, 1}, a closed wall 5 px past the row, 1 s at 60 and 120 Hz', struck)
 
 // the pressed rows: a fixed draw (Park–Miller, seed 1) from the ranges above
 let seed = 1
@@ -185,21 +182,11 @@ for (const [tick, extra] of [['1/1920', { CONTACT_TICK: 1 / 1920 }], ['travel 4'
     const k = { n: s.n, gap: s.gap, mass: s.mass, speed: s.speed, e: s.e, hz: s.hz }
     fine.push({ ...k, tick, ...strike(k, extra) })
   }
-const finePasses = fine.filter((s) => s.passed >= 0)
-const fineDeep = fine.filter((s) => s.deepest > 1e-3)
-console.log(`fine rows: ${fine.length}; a ball passes another in ${finePasses.length}; over 1e-3 px deep from 0.5 s in ${fineDeep.length} (deepest ${Math.max(...fine.map((s) => s.deepest)).toExponential(2)} px)`)
-for (const s of [...finePasses, ...fineDeep]) console.log(`  ${JSON.stringify(s)}`)
+const fineResult = summarise('fine', 'the struck settings at CONTACT_TICK 1/1920 s, and at the default tick with CONTACT_TRAVEL_HALVINGS 4', fine)
 console.log(`(${((performance.now() - t0) / 1000).toFixed(0)} s)`)
 
 const file = writeResult('rows', {
-  struck: {
-    scenes: 'radius-0.5 balls, n in {5, 20, 55, 120}, gap in {0, 0.05, 0.3, 2} px, striker mass in {1, 3, 100} at {100, 300, 3000, 1e4} px/s, e in {0, 1}, a closed wall 5 px past the row, 1 s at 60 and 120 Hz',
-    settings: struck.length,
-    passes: passes.length,
-    deeperThan1e3From05s: deep.length,
-    deepestFrom05s: Math.max(...struck.map((s) => s.deepest)),
-    failing: [...passes, ...deep],
-  },
+  struck: struckResult,
   pressed: {
     scenes: 'radius-11 balls, n 2–64, gap in {0, 0.01, 1} px, striker mass in {1, 3, 10, 100, 1e4} at {100, 300, 1000} px/s, e in {0, 0.5, 0.95, 1}, 0 or 2 px off the line, the far wall 0, 5 or 30 px past the row; 200 rows drawn with Park–Miller from seed 1; 1 s at 60 Hz',
     rows: pressed.length,
@@ -215,13 +202,16 @@ const file = writeResult('rows', {
     passes: freePasses.length,
     failing: freePasses,
   },
-  fine: {
-    scenes: 'the struck settings at CONTACT_TICK 1/1920 s, and at the default tick with CONTACT_TRAVEL_HALVINGS 4',
-    settings: fine.length,
-    passes: finePasses.length,
-    deeperThan1e3From05s: fineDeep.length,
-    deepestFrom05s: Math.max(...fine.map((s) => s.deepest)),
-    failing: [...finePasses, ...fineDeep],
-  },
+  fine: fineResult,
 })
 console.log(`wrote ${file}`)
+
+/** A set of struck rows counted (printed, and as rows.json has it): the settings in which a ball passes another, those over 1e-3 px deep from 0.5 s. */
+function summarise<T extends { passed: number; deepest: number }>(name: string, scenes: string, rows: T[]) {
+  const passes = rows.filter((s) => s.passed >= 0)
+  const deep = rows.filter((s) => s.deepest > 1e-3)
+  const deepest = Math.max(...rows.map((s) => s.deepest))
+  console.log(`${name} rows: ${rows.length}; a ball passes another in ${passes.length}; over 1e-3 px deep from 0.5 s in ${deep.length} (deepest ${deepest.toExponential(2)} px)`)
+  for (const s of [...passes, ...deep]) console.log(`  ${JSON.stringify(s)}`)
+  return { scenes, settings: rows.length, passes: passes.length, deeperThan1e3From05s: deep.length, deepestFrom05s: deepest, failing: [...passes, ...deep] }
+}

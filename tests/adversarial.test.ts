@@ -1026,9 +1026,10 @@ describe('shrunk counterexamples of the long run', () => {
     // 1.02 s of simulated time: 122 ticks at the full spacing, 290 before the rule (the burst's own halvings),
     // 298 with it; 355 without the bound on the pairs before the widening, 362 (and still halved at the end)
     // without coarsening such a tick back, and both left out, 12 s of stepping. 332 since a moving light
-    // ball is solved with its wall only when its partner closes the room to the wall within the tick; all
-    // that with the tick never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0, the default). With that
-    // rule at 4 (e = 0.5 here), the 1e5 px/s burst's balls halve the ticks while they fly: 461
+    // ball is solved with its wall only when its partner closes the room to the wall within the tick; 306 since
+    // a tick of at most one pair a candidate before its rounds is solved again for up to DEEP_ROW_FRONTS pairs
+    // closing deep. All that with the tick never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0, the
+    // default); with that rule at 4 (e = 0.5 here) the 1e5 px/s burst's balls halve the ticks while they fly: 470
     for (const travel of [0, 4]) {
       let ticks = 0
       let halvings = -1
