@@ -2,7 +2,7 @@
 import { BallMode } from '../../components/Ball.js'
 import { APPROACH_EPSILON, MAX_CAPSULE_CELLS, MAX_CLUSTER, SETTLE_FLOOR, TOUCH_GAP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { appendId } from '../world/contactState.js'
+import { nextSeenStamp, appendId } from '../world/contactState.js'
 import { sortIdRange } from '../world/idLists.js'
 import { AT, E, VX, VY, X, Y, evalBall, sampleForContact } from './evalMotion.js'
 import { capsuleCellsOver, capsuleCells, pointQuery, staleEntry } from './sweepGrid.js'
@@ -16,11 +16,7 @@ import { capsuleCellsOver, capsuleCells, pointQuery, staleEntry } from './sweepG
  */
 export function collectCluster(w: BallWorld, a: number, b: number, t: number): void {
   const C = w.collide!
-  if (++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
-  const stamp = C.seenStamp
+  const stamp = nextSeenStamp(C)
   C.cluster[0] = a
   C.cluster[1] = b
   C.seen[a] = stamp

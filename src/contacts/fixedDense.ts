@@ -15,6 +15,7 @@ import { pushCandidate, pushPair, reserveCandidates, type FixedContactState } fr
 import { markWall, readWalls } from './fixedGrid.js'
 import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
 import { sortIdRange } from '../world/idLists.js'
+import { nextSeenStamp } from '../world/contactState.js'
 
 /**
  * Gathers the candidates of a dense tick: the moving balls in id order, then the resting balls within reach of
@@ -88,10 +89,7 @@ function gatherRestingDense(w: BallWorld, F: FixedContactState): void {
     return
   }
   const B = w.Ball
-  if (++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
+  nextSeenStamp(C)
   const moving = F.n
   if (4 * (C.restCount + C.bigRestCount) <= moving) {
     // few resting balls: all of them join, in id order (pairing them costs less than a lookup per moving ball)

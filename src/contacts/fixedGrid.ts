@@ -20,6 +20,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { pushListed, reserveCandidates, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { addFresh, keyOut, mergeFresh, smallReach, sweepKey } from './fixedSweep.js'
 import { seedAround, seedOverlapping, seedTouched } from './fixedSeed.js'
+import { nextSeenStamp } from '../world/contactState.js'
 
 /** The tick's reductions over the candidates: sum and largest reach, bounding box, balls big for the sweep cell. */
 const acc = { sum: 0, max: 0, minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity, big: 0, vx: 0, vy: 0, half: 0.5 }
@@ -37,10 +38,7 @@ export function gatherCandidates(w: BallWorld, F: FixedContactState): void {
   // few resting balls: all of them are candidates (pairing them costs less than a lookup per moving ball)
   const allRest = restTotal > 0 && 4 * restTotal <= moving
   const lookup = restTotal > 0 && !allRest
-  if (restTotal > 0 && ++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
+  if (restTotal > 0) nextSeenStamp(C)
   if (F.sweepNext !== 0) {
     // a new sweep cell or cell order: every key changes, the order is sorted again from scratch
     F.sweepCell = F.sweepNext

@@ -82,7 +82,8 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   let saturated = false
   const growth = sustainedGrowth(F)
   // balls closing on their nearest partner by more than a share of their size a tick (src/contacts/fixedTravel.ts)
-  const travel = travelApplies(w) ? travelHalvings(F, Math.min(levels, w.config.CONTACT_TRAVEL_HALVINGS - F.halvings)) : 0
+  const travelOn = travelApplies(w)
+  const travel = travelOn ? travelHalvings(F, Math.min(levels, w.config.CONTACT_TRAVEL_HALVINGS - F.halvings)) : 0
   const byTravel = travel > atLeast
   if (byTravel) atLeast = travel
   if (F.pairCount * growth > TICK_PAIRS_PER_CANDIDATE * F.full || atLeast > 0) {
@@ -111,7 +112,7 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   }
   F.tickPairs = saturated ? 0 : F.pairCount
   // too fast for the coarser tick: its next try at coarsening waits (src/contacts/fixedTravel.ts)
-  if (travelApplies(w) && holdsForTravel(F, w.config.CONTACT_TRAVEL_HALVINGS)) F.coarsenWait = Math.max(F.coarsenWait, 1)
+  if (travelOn && holdsForTravel(F, w.config.CONTACT_TRAVEL_HALVINGS)) F.coarsenWait = Math.max(F.coarsenWait, 1)
   F.tickFull = F.full
   gathered = F.pairCount
   return h

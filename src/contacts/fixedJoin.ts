@@ -19,6 +19,7 @@ import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
 import { box, boxRange, gridBox } from './fixedDense.js'
 import { unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox, sortByKeys } from './fixedSweep.js'
+import { nextSeenStamp } from '../world/contactState.js'
 
 /** Pairs the balls the projection moved with the unpaired balls they overlap; true when it paired any. */
 export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
@@ -53,10 +54,7 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   if (resting) {
     for (let f = 0; f < farCount; f++) {
       const i = far[f]!
-      if (++C.seenStamp === 0xffffffff) {
-        C.seen.fill(0)
-        C.seenStamp = 1
-      }
+      nextSeenStamp(C)
       const x = F.x[i]!
       const y = F.y[i]!
       pushedCount = 0
@@ -90,11 +88,8 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
  */
 export function markCandidatesSeen(F: FixedContactState): void {
   const C = F.rest
-  if (++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
-  for (let k = 0; k < F.n; k++) C.seen[F.id[k]!] = C.seenStamp
+  const stamp = nextSeenStamp(C)
+  for (let k = 0; k < F.n; k++) C.seen[F.id[k]!] = stamp
 }
 
 /** Marks the first n candidates packed, by id, with their indices (F.packMark, F.packAt); returns the mark. */

@@ -2,7 +2,7 @@
 // own next event, pushed into the event heap.
 import { BallMode } from '../../components/Ball.js'
 import { GAP_TOLERANCE, MAX_CAPSULE_CELLS } from '../config/tolerances.js'
-import { appendId } from '../world/contactState.js'
+import { nextSeenStamp, appendId } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { HeapKind, heapPush, pushTime } from './eventHeap.js'
 import { AT, E, MT, VX, VY, X, Y, evalBall, motionEnd, motionStart } from './evalMotion.js'
@@ -38,11 +38,7 @@ export function predictBall(w: BallWorld, a: number): void {
   motionEnd(w, a)
   const endA = E[MT]
   search[TO] = endA
-  if (++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
-  const stamp = C.seenStamp
+  const stamp = nextSeenStamp(C)
   C.seen[a] = stamp
 
   if (mode !== BallMode.Resting) {

@@ -4,6 +4,7 @@
 // the resting balls near it.
 import { BallMode } from '../../components/Ball.js'
 import type { CollisionState } from '../world/contactState.js'
+import { nextSeenStamp } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { isMoving, pushId, type IdList } from '../world/idLists.js'
 import { restingState } from '../world/restingGrid.js'
@@ -25,10 +26,7 @@ export function spotHeldByResting(w: BallWorld, self: number, x: number, y: numb
   out.count = 0
   const C = restingState(w)
   if (C === null || movingAt(w, C, self, x, y, r)) return false
-  if (++C.seenStamp === 0xffffffff) {
-    C.seen.fill(0)
-    C.seenStamp = 1
-  }
+  nextSeenStamp(C)
   restingAt(w, C, self, x, y, r, out)
   return out.count > 0
 }

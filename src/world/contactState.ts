@@ -229,6 +229,15 @@ export function grown<T extends Float64Array | Uint32Array | Int32Array | Uint8A
   return next
 }
 
+/** A new stamp for C.seen (a ball is seen when its entry holds the stamp); the entries are cleared when the stamps wrap. */
+export function nextSeenStamp(C: CollisionState): number {
+  if (++C.seenStamp === 0xffffffff) {
+    C.seen.fill(0)
+    C.seenStamp = 1
+  }
+  return C.seenStamp
+}
+
 /** The key of the contact tick of the world's clock that time t falls in, [k·tick, (k + 1)·tick): k + 1 (0 is none). */
 export function contactTickKey(t: number, contactTick: number): number {
   return Math.floor(t / contactTick) + 1
