@@ -13,7 +13,8 @@
 //     that drives its lighter ball (SQUEEZE_MASS_RATIO times or more) into a closed wall it can reach is
 //     solved together with that wall (pairWithWall):
 //     a light ball squeezed or wedged against a wall by a heavy one would otherwise take a little of the
-//     push each sweep, and the sweeps run out with the pair still closing.
+//     push each sweep, and the sweeps run out with the pair still closing; one touching a second ball as
+//     heavy that closes on its partner, with that contact (src/contacts/fixedSqueeze.ts).
 //   positions: src/contacts/fixedProject.ts.
 // Then every ball the solve changed starts a fresh path from its new state at the tick:
 // src/contacts/fixedApply.ts.
@@ -30,6 +31,7 @@ import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, face, pushed, wallAhead } from './fixedAhead.js'
+import { ASK_APPROACH, ASK_CLOCK, ASK_E, ASK_SEPARATE, ASK_SETTLE, ASK_T, SQ_J1, asked, pairWithBall, squeeze, squeezed } from './fixedSqueeze.js'
 
 /** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */
 const REPORTED = 1
@@ -55,6 +57,8 @@ let changedAt = new Float64Array(256)
 let clock = 0
 /** the clock when the last call began (src/contacts/fixedCalls.ts: what one call keeps for the next) */
 let callFrom = 0
+/** the calls begun (src/contacts/fixedSqueeze.ts keeps a call's adjacency by it) */
+let calls = 0
 
 /**
  * The solve's numbers, in slots rather than arguments: the tick's time, the restitution, the settle speed
@@ -99,6 +103,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     clock = 0
   }
   callFrom = clock
+  calls++
   let moved = false
   const mid = iterations >> 1
   for (let it = 0; it < iterations; it++) {
@@ -230,8 +235,33 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     S[S_SEPARATE] = k - approach
     walled = pairWithWall(w, F, a, b, q)
   }
+  // else a light ball touching a second heavy ball that closes on its partner, the impulse driving it there:
+  // the two contacts together (src/contacts/fixedSqueeze.ts; not with a ball at rest held like a wall)
+  let second = -1
+  if (!walled && q < 0 && !pinA && !pinB) {
+    const l = ima >= SQUEEZE_MASS_RATIO * imb ? a : imb >= SQUEEZE_MASS_RATIO * ima ? b : -1
+    if (l >= 0) {
+      asked[ASK_APPROACH] = approach
+      asked[ASK_SEPARATE] = k - approach
+      asked[ASK_E] = e
+      asked[ASK_SETTLE] = settle
+      asked[ASK_T] = S[S_T]!
+      asked[ASK_CLOCK] = S[S_CLOCK]!
+      second = pairWithBall(F, p, l, j, calls)
+    }
+  }
   if (walled) {
     j = block.j
+  } else if (second >= 0) {
+    j = squeeze[SQ_J1]!
+    const o = F.pairA[second] === a || F.pairA[second] === b ? F.pairB[second]! : F.pairA[second]!
+    capBall(F, a)
+    capBall(F, b)
+    capBall(F, o)
+    noteChange(F, o)
+    changedAt[o] = ++clock
+    F.changed[o]! |= 1
+    squeezed(w, F, second)
   } else {
     const vax = F.vx[a]!
     const vay = F.vy[a]!
