@@ -101,6 +101,8 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   const vly = F.vy[l]!
   const tx = vlx - sigma * j * iml * n1x
   const ty = vly - sigma * j * iml * n1y
+  // l touching its partner (within PROJECTION_SLOP): else no squeeze, and nothing more to look at
+  if (gap(F, l, h) > PROJECTION_SLOP) return -1
   adjacency(F, call)
   let q = -1
   let o = -1
@@ -113,16 +115,16 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     const m = F.pairA[r] === l ? F.pairB[r]! : F.pairA[r]!
     if (m === h || SQUEEZE_MASS_RATIO * F.im[m]! > iml) continue
     if (m >= F.restFrom && F.vx[m] === 0 && F.vy[m] === 0) continue
-    if (!meetsWithinTick(F, l, m)) continue
     // l touching both (a squeeze, not a light ball crossing between them), the two heavy ones closing on
-    // each other along the line of their centres
-    if (gap(F, l, h) > PROJECTION_SLOP || gap(F, l, m) > PROJECTION_SLOP) continue
+    // each other along the line of their centres, and l driven into m within the tick
+    if (gap(F, l, m) > PROJECTION_SLOP) continue
     const dx = F.x[m]! - F.x[h]!
     const dy = F.y[m]! - F.y[h]!
     const d = Math.sqrt(dx * dx + dy * dy)
     if (!(d > 0)) continue
     const closing = ((F.vx[h]! - F.vx[m]!) * dx + (F.vy[h]! - F.vy[m]!) * dy) / d
     if (!(closing > 0)) continue
+    if (!meetsWithinTick(F, l, m)) continue
     if (closing > best) {
       best = closing
       q = r
