@@ -16,10 +16,9 @@
 import { PROJECTION_SLOP, RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { appendCollision } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
-import type { FixedContactState } from '../world/fixedState.js'
-import { grownTo } from '../world/fixedState.js'
+import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
-import { meetsWithinTick, nrm } from './fixedPairs.js'
+import { buildAdjacency, meetsWithinTick, nrm } from './fixedPairs.js'
 
 /** The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before, and the second pair's normal. */
 export const squeeze = new Float64Array(5)
@@ -51,31 +50,15 @@ export function squeezesSolved(): number {
   return solved
 }
 
-// Each candidate's pairs (CSR), for one solve call at a time: built the first time a call asks.
-let start = new Int32Array(64)
-let list = new Int32Array(64)
+/** the solve call the pairs' adjacency (F.adjStart, F.adjPairs) was last built for: the first time a call asks */
 let builtFor = -1
 
 function adjacency(F: FixedContactState, call: number): void {
   if (builtFor === call) return
   builtFor = call
-  if (start.length < F.n + 1) start = new Int32Array(2 * F.n + 1)
-  if (list.length < 2 * F.pairCount) list = grownTo(list, 4 * F.pairCount)
-  start.fill(0, 0, F.n + 1)
-  for (let p = 0; p < F.pairCount; p++) {
-    start[F.pairA[p]! + 1]!++
-    start[F.pairB[p]! + 1]!++
-  }
-  for (let i = 0; i < F.n; i++) start[i + 1]! += start[i]!
-  for (let p = 0; p < F.pairCount; p++) {
-    const a = F.pairA[p]!
-    const b = F.pairB[p]!
-    list[start[a]!++] = p
-    list[start[b]!++] = p
-  }
-  // the fill moved each start to the next candidate's: back by one candidate
-  for (let i = F.n; i > 0; i--) start[i] = start[i - 1]!
-  start[0] = 0
+  // the projection's adjacency, free until it builds its own after the solve (src/contacts/fixedProject.ts)
+  reserveSweeps(F, F.n, F.pairCount)
+  buildAdjacency(F)
 }
 
 /**
@@ -109,8 +92,8 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   let best = 0
   F.vx[l] = tx
   F.vy[l] = ty
-  for (let k = start[l]!, e = start[l + 1]!; k < e; k++) {
-    const r = list[k]!
+  for (let k = F.adjStart[l]!, e = F.adjStart[l + 1]!; k < e; k++) {
+    const r = F.adjPairs[k]!
     if (r === p) continue
     const m = F.pairA[r] === l ? F.pairB[r]! : F.pairA[r]!
     if (m === h || SQUEEZE_MASS_RATIO * F.im[m]! > iml) continue
