@@ -20,13 +20,17 @@ import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
 import { buildAdjacency, meetsWithinTick, nrm } from './fixedPairs.js'
 
-/** The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before, and the second pair's normal. */
-export const squeeze = new Float64Array(5)
+/**
+ * The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before,
+ * the second pair's normal, and 1 when the second pair took no restitution for its visits or count.
+ */
+export const squeeze = new Float64Array(6)
 export const SQ_J1 = 0
 export const SQ_J2 = 1
 export const SQ_APPROACH = 2
 const SQ_NX = 3
 const SQ_NY = 4
+const SQ_BOUND = 5
 
 /**
  * The solve's numbers (set before asking): the pair's approach along nrm and its separation target (its
@@ -85,7 +89,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   const tx = vlx - sigma * j * iml * n1x
   const ty = vly - sigma * j * iml * n1y
   // l touching its partner (within PROJECTION_SLOP): else no squeeze, and nothing more to look at
-  if (gap(F, l, h) > PROJECTION_SLOP) return -1
+  if (!touching(F, l, h)) return -1
   adjacency(F, call)
   let q = -1
   let o = -1
@@ -100,7 +104,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     if (m >= F.restFrom && F.vx[m] === 0 && F.vy[m] === 0) continue
     // l touching both (a squeeze, not a light ball crossing between them), the two heavy ones closing on
     // each other along the line of their centres, and l driven into m within the tick
-    if (gap(F, l, m) > PROJECTION_SLOP) continue
+    if (!touching(F, l, m)) continue
     const dx = F.x[m]! - F.x[h]!
     const dy = F.y[m]! - F.y[h]!
     const d = Math.sqrt(dx * dx + dy * dy)
@@ -145,7 +149,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   const j1 = (r1 * D - B * r2) / det
   const j2 = (A * r2 - B * r1) / det
   if (!(j1 > 0 && j2 > 0)) return -1
-  // the three velocities after: h takes −σ·j₁·n₁ (sign of the pair's side), l +σ·j₁·n₁ − j₂·n₂, o +j₂·n₂
+  // the three velocities after: h takes σ·j₁·n₁, l −σ·j₁·n₁ − j₂·n₂, o +j₂·n₂ (σ: +1 when l is the pair's a)
   const hx = F.vx[h]! + sigma * j1 * imh * n1x
   const hy = F.vy[h]! + sigma * j1 * imh * n1y
   const lx = vlx - sigma * j1 * iml * n1x - j2 * iml * n2x
@@ -168,13 +172,18 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   squeeze[SQ_J1] = j1
   squeeze[SQ_J2] = j2
   squeeze[SQ_APPROACH] = w2
+  squeeze[SQ_BOUND] = bound && w2 >= asked[ASK_SETTLE]! ? 1 : 0
   return q
 }
 
-/** The second pair q of the last block, as the solve does a pair it meets: a visit, its first impulse reported. */
+/**
+ * The second pair q of the last block, as the solve does a pair it meets: a visit, an inelastic meeting of an
+ * elastic scene counted, its first impulse reported.
+ */
 export function squeezed(w: BallWorld, F: FixedContactState, q: number): void {
   const hit = F.pairHit[q]!
   if (hit >> VISIT_SHIFT < RESTITUTION_VISITS) F.pairHit[q] = hit + (1 << VISIT_SHIFT)
+  if (squeeze[SQ_BOUND] === 1 && asked[ASK_E]! > 0) F.inelastic++
   const approach = squeeze[SQ_APPROACH]!
   if ((hit & REPORTED) !== 0 || !(approach >= asked[ASK_SETTLE]!)) return
   F.pairHit[q] = F.pairHit[q]! | REPORTED
@@ -187,8 +196,9 @@ export function squeezed(w: BallWorld, F: FixedContactState, q: number): void {
   w.events.impulse[ev] = squeeze[SQ_J2]!
 }
 
-function gap(F: FixedContactState, i: number, j: number): number {
+/** Whether candidates i and j touch, within PROJECTION_SLOP (a boolean, not the gap: a returned double is boxed). */
+function touching(F: FixedContactState, i: number, j: number): boolean {
   const dx = F.x[j]! - F.x[i]!
   const dy = F.y[j]! - F.y[i]!
-  return Math.sqrt(dx * dx + dy * dy) - F.r[i]! - F.r[j]!
+  return Math.sqrt(dx * dx + dy * dy) - F.r[i]! - F.r[j]! <= PROJECTION_SLOP
 }
