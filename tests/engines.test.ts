@@ -1,6 +1,7 @@
 // The same simulation, bit for bit, in every JavaScript engine: the scenarios of tests/engines/scenarios.ts
-// (the design, PHYSICAL_CONFIG, TABULATED_CONFIG, both contact methods; 1,000 balls each, hero balls among
-// them) bundled once and run in Node (V8), Bun (JavaScriptCore, the @oven/bun-linux-x64 package) and the
+// (the design, PHYSICAL_CONFIG, TABULATED_CONFIG, both contact methods, the fixed tick with unlike masses;
+// 1,000 balls each, hero balls among them) bundled once and run in Node (V8), Bun (JavaScriptCore, the
+// @oven/bun-linux-x64 package) and the
 // SpiderMonkey shell (js102, from Debian's libmozjs-102-dev); every hash must match Node's, and the run
 // inside this test process.
 import { execFileSync } from 'node:child_process'

@@ -37,6 +37,14 @@ export const SCENARIOS: Readonly<Record<string, ConfigOverrides>> = {
   tabulated: TABULATED_CONFIG,
   contactsExact: { BALL_COLLISIONS: 'on' },
   contactsFixed: { BALL_COLLISIONS: 'fixed' },
+  // masses 1e-3 to 1e6 among the throws: the solve's mass-ratio rules (a light ball squeezed, solved with a
+  // wall, met again past its restitution with heavier ones, its contacts counted)
+  contactsFixedMasses: { BALL_COLLISIONS: 'fixed' },
+}
+
+/** each throw's mass in a scenario of unlike masses (undefined: the default) */
+const MASSES: Readonly<Record<string, readonly (number | undefined)[]>> = {
+  contactsFixedMasses: [1e6, 1e-3, undefined, 1e3, 1e-3, 1, 1e-3, 30],
 }
 
 const LITTLE = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1
@@ -149,7 +157,8 @@ export function runScenario(name: string, balls = 1000, seconds = 20): ScenarioR
   const r = random(20261123)
   for (let i = 0; i < balls; i++) {
     // spread across the launch band: the launch point ± 150 px, so throws do not start inside each other
-    sim.throwBall({ x: x - 150 + 300 * r(), y: y - 30 * r(), power: r(), angle: (r() - 0.5) * 1.2, hero: i % 100 === 7 })
+    const masses = MASSES[name]
+    sim.throwBall({ x: x - 150 + 300 * r(), y: y - 30 * r(), power: r(), angle: (r() - 0.5) * 1.2, hero: i % 100 === 7, mass: masses?.[i % masses.length] })
   }
   const h = new Hash()
   let events = 0
