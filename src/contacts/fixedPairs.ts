@@ -4,7 +4,49 @@
 // a push): each candidate's pairs are indexed (CSR), and a sweep takes its pairs in pair order from a heap,
 // so that a pair ahead of the sweep joins it when one of its balls changes and a pair behind joins the next
 // sweep, as in a full Gauss-Seidel sweep.
+import { appendCollision } from '../events.js'
+import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
+
+/** F.pairHit: bit 0, the pair's contact was reported this tick; from PAIR_VISIT_SHIFT up, its impulses this tick (up to RESTITUTION_VISITS) */
+export const PAIR_REPORTED = 1
+export const PAIR_VISIT_SHIFT = 1
+
+/**
+ * The velocity solve's numbers (src/contacts/fixedSolve.ts and the rules it calls), in slots rather than
+ * arguments: the tick's time, the restitution, the settle speed, the contact tick's key (set once a solve),
+ * and a pair's approach, inverse masses, share of restitution and impulse. A double passed to (or returned
+ * from) a call V8 does not inline is boxed, and which of these calls it inlines changes with the process: up
+ * to 9 bytes a ball-step on the gas.
+ */
+export const solveSlots = new Float64Array(9)
+export const S_T = 0
+export const S_E = 1
+export const S_SETTLE = 2
+export const S_APPROACH = 3
+export const S_IMA = 4
+export const S_IMB = 5
+export const S_SEPARATE = 6
+export const S_CLOCK = 7
+export const S_J = 8
+
+/**
+ * Pair p of candidates a and b, met at solveSlots' approach with its impulse: its first meeting of the tick at
+ * the settle speed or above is a 'collision' event at the tick's time, the pair reported in F.pairHit.
+ */
+export function reportPair(w: BallWorld, F: FixedContactState, p: number, a: number, b: number): void {
+  const approach = solveSlots[S_APPROACH]!
+  if ((F.pairHit[p]! & PAIR_REPORTED) !== 0 || !(approach >= solveSlots[S_SETTLE]!)) return
+  F.pairHit[p] = F.pairHit[p]! | PAIR_REPORTED
+  F.contacts++
+  const ia = F.id[a]!
+  const ib = F.id[b]!
+  const ev = w.events
+  const i = appendCollision(ev, ia < ib ? ia : ib, ia < ib ? ib : ia)
+  ev.time[i] = solveSlots[S_T]!
+  ev.speed[i] = approach
+  ev.impulse[i] = solveSlots[S_J]!
+}
 
 /**
  * Normal of pair p (a→b) into nrm.x, nrm.y, and the gap into nrm.gap (negative: overlap). Written, not

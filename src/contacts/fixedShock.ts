@@ -18,10 +18,9 @@
 // alike.
 import { PROJECTION_SLOP, ROW_LINE_COS, TOUCH_GAP } from '../config/tolerances.js'
 import type { FixedContactState } from '../world/fixedState.js'
-import { appendCollision } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { walls } from './fixedGrid.js'
-import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
+import { meetsWithinTick, normal, nrm, reportPair, S_APPROACH, S_J, solveSlots } from './fixedPairs.js'
 import { keepsLine, rootOf, unite } from './fixedUnion.js'
 
 /** Union-find over the candidates; by root: the group's closing, whether it has an anchor, whether it bends, and its line */
@@ -84,12 +83,12 @@ function reserve(n: number, pairs: number): void {
 }
 
 /**
- * Holds the rows pressed into closed walls of a solve at tick t that did not converge (see the top of this
- * file); `e` is the balls' restitution and `settle` BALL_SETTLE_SPEED; `wallBack` sends an anchor back from the
+ * Holds the rows pressed into closed walls of a solve that did not converge (see the top of this file;
+ * the tick's time in solveSlots); `e` is the balls' restitution and `settle` BALL_SETTLE_SPEED; `wallBack` sends an anchor back from the
  * walls it moves into within the tick (the solve's own wall step, which keeps its account). Returns how many
  * other candidates' velocities changed, listed in heldBalls().
  */
-export function holdRows(w: BallWorld, F: FixedContactState, t: number, e: number, settle: number, wallBack: (w: BallWorld, F: FixedContactState, i: number) => number): number {
+export function holdRows(w: BallWorld, F: FixedContactState, e: number, settle: number, wallBack: (w: BallWorld, F: FixedContactState, i: number) => number): number {
   const n = F.n
   const pairs = F.pairCount
   // no candidate within reach of a closed wall: nothing to hold
@@ -197,15 +196,12 @@ export function holdRows(w: BallWorld, F: FixedContactState, t: number, e: numbe
       if (reached[u] === 1 || !meetsWithinTick(F, l, u)) continue
       reached[u] = 1
       queue[tail++] = u
-      count = against(w, F, p, l, u, t, e, settle, count)
+      count = against(w, F, p, l, u, e, settle, count)
     }
   }
   if (count > 0) held++
   return count
 }
-
-/** pairHit's bit 0: the pair's contact was reported this tick (src/contacts/fixedSolve.ts) */
-const REPORTED = 1
 
 /** Whether the group rooted at r is held (see the top of this file). */
 function holds(r: number): boolean {
@@ -239,7 +235,7 @@ function pressedIntoWall(F: FixedContactState, i: number): boolean {
  * `settle`), u's normal speed never above what it was. A pair whose contact this tick was not yet reported
  * is reported, as the solve reports its impulses.
  */
-function against(w: BallWorld, F: FixedContactState, p: number, l: number, u: number, t: number, e: number, settle: number, count: number): number {
+function against(w: BallWorld, F: FixedContactState, p: number, l: number, u: number, e: number, settle: number, count: number): number {
   const nx = nrm.x
   const ny = nrm.y
   // normal speeds along l→u: they close while u's falls short of l's
@@ -255,17 +251,10 @@ function against(w: BallWorld, F: FixedContactState, p: number, l: number, u: nu
   F.vx[u] = F.vx[u]! + (to - vu) * nx
   F.vy[u] = F.vy[u]! + (to - vu) * ny
   list[count] = u
-  if ((F.pairHit[p]! & REPORTED) === 0 && approach >= settle) {
-    F.pairHit[p] = F.pairHit[p]! | REPORTED
-    F.contacts++
-    const il = F.id[l]!
-    const iu = F.id[u]!
-    const ev = w.events
-    const k = appendCollision(ev, il < iu ? il : iu, il < iu ? iu : il)
-    ev.time[k] = t
-    ev.speed[k] = approach
-    ev.impulse[k] = F.mass[iu]! * (to - vu)
-  }
+  // reported as the solve reports a pair (its time and settle speed are the solve's, in solveSlots)
+  solveSlots[S_APPROACH] = approach
+  solveSlots[S_J] = F.mass[F.id[u]!]! * (to - vu)
+  reportPair(w, F, p, l, u)
   return count + 1
 }
 

@@ -18,12 +18,12 @@
 //   positions: src/contacts/fixedProject.ts.
 // Then every ball the solve changed starts a fresh path from its new state at the tick:
 // src/contacts/fixedApply.ts.
-import { EventType, appendCollision, appendEvent } from '../events.js'
+import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { bouncesBetween, intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
-import { meetsWithinTick, nrm } from './fixedPairs.js'
+import { meetsWithinTick, nrm, PAIR_VISIT_SHIFT as VISIT_SHIFT, reportPair, S_APPROACH, S_CLOCK, S_E, S_IMA, S_IMB, S_J, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
 import { heldBalls, holdRows } from './fixedShock.js'
 import { capImpulse } from './law.js'
@@ -31,11 +31,8 @@ import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, face, pushed, wallAhead } from './fixedAhead.js'
-import { ASK_APPROACH, ASK_CLOCK, ASK_E, ASK_SEPARATE, ASK_SETTLE, ASK_T, SQ_J1, asked, pairWithBall, squeeze, squeezed } from './fixedSqueeze.js'
+import { SQ_APPROACH, SQ_BOUND, SQ_J1, SQ_J2, pairWithBall, squeeze } from './fixedSqueeze.js'
 
-/** pairHit: bit 0, the pair's contact was reported this tick; above it, its impulses this tick (up to RESTITUTION_VISITS) */
-const REPORTED = 1
-const VISIT_SHIFT = 1
 /** changed bit of a candidate whose wall hit this tick was reported */
 const WALL_REPORTED = 4
 /**
@@ -59,22 +56,6 @@ let clock = 0
 let callFrom = 0
 /** the calls begun (src/contacts/fixedSqueeze.ts keeps a call's adjacency by it) */
 let calls = 0
-
-/**
- * The solve's numbers, in slots rather than arguments: the tick's time, the restitution, the settle speed
- * (set once a solve), and a pair's approach and inverse masses, and its share of restitution, for
- * applyImpulse and pairWithWall. A double passed to (or returned from) a call V8 does not inline is boxed,
- * and which of these calls it inlines changes with the process: up to 9 bytes a ball-step on the gas.
- */
-const S = new Float64Array(8)
-const S_T = 0
-const S_E = 1
-const S_SETTLE = 2
-const S_APPROACH = 3
-const S_IMA = 4
-const S_IMB = 5
-const S_SEPARATE = 6
-const S_CLOCK = 7
 
 /**
  * The velocity sweeps over the tick's pairs; true when a sweep left every pair as it was (converged).
@@ -147,7 +128,7 @@ function settle(w: BallWorld, F: FixedContactState): void {
     F.changed[i]! |= 1
   }
   const held = heldBalls()
-  for (let k = 0, n = holdRows(w, F, S[S_T]!, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
+  for (let k = 0, n = holdRows(w, F, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
     const i = held[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
@@ -241,12 +222,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   if (!walled && q < 0 && !pinA && !pinB) {
     const l = ima >= SQUEEZE_MASS_RATIO * imb ? a : imb >= SQUEEZE_MASS_RATIO * ima ? b : -1
     if (l >= 0) {
-      asked[ASK_APPROACH] = approach
-      asked[ASK_SEPARATE] = k - approach
-      asked[ASK_E] = e
-      asked[ASK_SETTLE] = settle
-      asked[ASK_T] = S[S_T]!
-      asked[ASK_CLOCK] = S[S_CLOCK]!
+      S[S_SEPARATE] = k - approach
       second = pairWithBall(F, p, l, j, calls)
     }
   }
@@ -261,7 +237,13 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     noteChange(F, o)
     changedAt[o] = ++clock
     F.changed[o]! |= 1
-    squeezed(w, F, second)
+    // the second pair as the sweeps take a pair they meet: a visit, an inelastic meeting counted, reported
+    const hit2 = F.pairHit[second]!
+    if (hit2 >> VISIT_SHIFT < RESTITUTION_VISITS) F.pairHit[second] = hit2 + (1 << VISIT_SHIFT)
+    if (squeeze[SQ_BOUND] === 1 && e > 0) F.inelastic++
+    S[S_APPROACH] = squeeze[SQ_APPROACH]!
+    S[S_J] = squeeze[SQ_J2]!
+    reportPair(w, F, second, F.pairA[second]!, F.pairB[second]!)
   } else {
     const vax = F.vx[a]!
     const vay = F.vy[a]!
@@ -288,17 +270,9 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   changedAt[b] = clock
   F.changed[a]! |= 1
   F.changed[b]! |= 1
-  if ((hit & REPORTED) === 0 && approach >= settle) {
-    F.pairHit[p] = F.pairHit[p]! | REPORTED
-    F.contacts++
-    const ia = F.id[a]!
-    const ib = F.id[b]!
-    const ev = w.events
-    const i = appendCollision(ev, ia < ib ? ia : ib, ia < ib ? ib : ia)
-    ev.time[i] = S[S_T]!
-    ev.speed[i] = approach
-    ev.impulse[i] = j
-  }
+  S[S_APPROACH] = approach
+  S[S_J] = j
+  reportPair(w, F, p, a, b)
   return true
 }
 

@@ -14,11 +14,9 @@
 // 0.36 of its energy (above 0.97 without), and with the material's restitution in place of the visits' the
 // long adversarial run's slowest step took 11.9 s against 3.4 s.
 import { PROJECTION_SLOP, RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
-import { appendCollision } from '../events.js'
-import type { BallWorld } from '../world/createWorld.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
-import { buildAdjacency, meetsWithinTick, nrm } from './fixedPairs.js'
+import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_CLOCK, S_E, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
 
 /**
  * The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before,
@@ -30,23 +28,7 @@ export const SQ_J2 = 1
 export const SQ_APPROACH = 2
 const SQ_NX = 3
 const SQ_NY = 4
-const SQ_BOUND = 5
-
-/**
- * The solve's numbers (set before asking): the pair's approach along nrm and its separation target (its
- * restitution's share), the restitution, the settle speed, the tick's time and its contact tick's key.
- */
-export const asked = new Float64Array(6)
-export const ASK_APPROACH = 0
-export const ASK_SEPARATE = 1
-export const ASK_E = 2
-export const ASK_SETTLE = 3
-export const ASK_T = 4
-export const ASK_CLOCK = 5
-
-/** pairHit (src/contacts/fixedSolve.ts): bit 0, the pair's contact reported this tick; above it, its impulses */
-const REPORTED = 1
-const VISIT_SHIFT = 1
+export const SQ_BOUND = 5
 
 /** Squeezes solved as blocks since the process started (for tests). */
 let solved = 0
@@ -129,12 +111,12 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   const n2x = squeeze[SQ_NX]!
   const n2y = squeeze[SQ_NY]!
   const imo = F.im[o]!
-  const w1 = asked[ASK_APPROACH]!
+  const w1 = solveSlots[S_APPROACH]!
   const w2 = (vlx - F.vx[o]!) * n2x + (vly - F.vy[o]!) * n2y
-  const s1 = asked[ASK_SEPARATE]!
+  const s1 = solveSlots[S_SEPARATE]!
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
-  const bound = F.pairHit[q]! >> VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, l, o, asked[ASK_CLOCK]!)
-  const s2 = w2 >= asked[ASK_SETTLE]! && !bound ? asked[ASK_E]! * w2 : 0
+  const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, l, o, solveSlots[S_CLOCK]!)
+  const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
   // (imh + iml)·j₁ + σ·iml·c·j₂ = w₁ + s₁; σ·iml·c·j₁ + (iml + imo)·j₂ = w₂ + s₂ (c = n₁·n₂). The
   // determinant written out, 1 − c² as the cross product squared: A·D − B² cancels to the heavy balls'
   // inverse masses, a billionth of the light one's, and lost half the digits of the impulses
@@ -172,28 +154,8 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   squeeze[SQ_J1] = j1
   squeeze[SQ_J2] = j2
   squeeze[SQ_APPROACH] = w2
-  squeeze[SQ_BOUND] = bound && w2 >= asked[ASK_SETTLE]! ? 1 : 0
+  squeeze[SQ_BOUND] = bound && w2 >= solveSlots[S_SETTLE]! ? 1 : 0
   return q
-}
-
-/**
- * The second pair q of the last block, as the solve does a pair it meets: a visit, an inelastic meeting of an
- * elastic scene counted, its first impulse reported.
- */
-export function squeezed(w: BallWorld, F: FixedContactState, q: number): void {
-  const hit = F.pairHit[q]!
-  if (hit >> VISIT_SHIFT < RESTITUTION_VISITS) F.pairHit[q] = hit + (1 << VISIT_SHIFT)
-  if (squeeze[SQ_BOUND] === 1 && asked[ASK_E]! > 0) F.inelastic++
-  const approach = squeeze[SQ_APPROACH]!
-  if ((hit & REPORTED) !== 0 || !(approach >= asked[ASK_SETTLE]!)) return
-  F.pairHit[q] = F.pairHit[q]! | REPORTED
-  F.contacts++
-  const ia = F.id[F.pairA[q]!]!
-  const ib = F.id[F.pairB[q]!]!
-  const ev = appendCollision(w.events, ia < ib ? ia : ib, ia < ib ? ib : ia)
-  w.events.time[ev] = asked[ASK_T]!
-  w.events.speed[ev] = approach
-  w.events.impulse[ev] = squeeze[SQ_J2]!
 }
 
 /** Whether candidates i and j touch, within PROJECTION_SLOP (a boolean, not the gap: a returned double is boxed). */
