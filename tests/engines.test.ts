@@ -8,8 +8,8 @@ import { execFileSync } from 'node:child_process'
 import { existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs'
 import { tmpdir } from 'node:os'
 import { join, resolve } from 'node:path'
-import { build } from 'esbuild'
 import { afterAll, beforeAll, describe, expect, it } from 'vitest'
+import { bundleText } from './engines/bundle.js'
 import { Hash, playSession, recordSession, runAll, SCENARIOS, type ScenarioResult } from './engines/scenarios.js'
 
 const root = resolve(import.meta.dirname, '..')
@@ -25,22 +25,10 @@ let replayBundle = ''
 /** the session recorded in this process: its replay's JSON and the hash of its events */
 const session = recordSession()
 
-/** Bundles a test entry into one script with no imports (an IIFE), the way every engine can run it. */
+/** Writes the bundle of a test entry (tests/engines/bundle.ts) into the test's folder. */
 async function bundleFile(entry: string, name: string, define: Record<string, string> = {}): Promise<string> {
-  const out = await build({
-    absWorkingDir: root,
-    entryPoints: [entry],
-    bundle: true,
-    format: 'iife',
-    platform: 'neutral',
-    mainFields: ['module', 'main'],
-    target: 'es2022',
-    define,
-    write: false,
-    logLevel: 'silent',
-  })
   const file = join(dir, name)
-  writeFileSync(file, out.outputFiles[0]!.text)
+  writeFileSync(file, await bundleText(entry, define))
   return file
 }
 
