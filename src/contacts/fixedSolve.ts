@@ -14,7 +14,8 @@
 //     solved together with that wall (pairWithWall):
 //     a light ball squeezed or wedged against a wall by a heavy one would otherwise take a little of the
 //     push each sweep, and the sweeps run out with the pair still closing; one touching a second ball as
-//     heavy that closes on its partner, with that contact (src/contacts/fixedSqueeze.ts).
+//     heavy that closes on its partner (or that its partner closes on, at rest), with that contact
+//     (src/contacts/fixedSqueeze.ts).
 //   positions: src/contacts/fixedProject.ts.
 // Then every ball the solve changed starts a fresh path from its new state at the tick:
 // src/contacts/fixedApply.ts.
@@ -217,11 +218,14 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     walled = pairWithWall(w, F, a, b, q)
   }
   // else a light ball touching a second heavy ball that closes on its partner, the impulse driving it there:
-  // the two contacts together (src/contacts/fixedSqueeze.ts; not with a ball at rest held like a wall)
+  // the two contacts together (src/contacts/fixedSqueeze.ts), by the balls' own masses: a heavy ball at rest
+  // takes part, held like a wall only where the block too would leave it slower than BALL_SETTLE_SPEED
   let second = -1
-  if (!walled && q < 0 && !pinA && !pinB) {
-    const l = ima >= SQUEEZE_MASS_RATIO * imb ? a : imb >= SQUEEZE_MASS_RATIO * ima ? b : -1
-    if (l >= 0) {
+  if (!walled && q < 0) {
+    const ra = F.im[a]!
+    const rb = F.im[b]!
+    const l = ra >= SQUEEZE_MASS_RATIO * rb ? a : rb >= SQUEEZE_MASS_RATIO * ra ? b : -1
+    if (l >= 0 && !(l === a ? pinA : pinB)) {
       S[S_SEPARATE] = k - approach
       second = pairWithBall(F, p, l, j, calls)
     }

@@ -12,7 +12,11 @@
 // before. A light ball crossing between heavy ones without touching both (a pumped crowd) is not a squeeze:
 // with the block taken from within a tick's reach, the pumped crowd of tests/systems/fixedHalve.test.ts kept
 // 0.36 of its energy (above 0.97 without), and with the material's restitution in place of the visits' the
-// long adversarial run's slowest step took 11.9 s against 3.4 s.
+// long adversarial run's slowest step took 11.9 s against 3.4 s. A heavy ball at rest takes part by its own
+// mass; where the block would leave it slower than BALL_SETTLE_SPEED it stays at rest, held like a wall as
+// the sweeps hold it (its inverse mass 0), and the block is solved again so: the light ball's push alone
+// leaves such a ball held at every impulse, and a heavy ball carrying a light one into it went on at its
+// full speed, shoving both ahead of it through the projection while they stayed at rest.
 import { PROJECTION_SLOP, RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
@@ -54,7 +58,8 @@ function adjacency(F: FixedContactState, call: number): void {
  * velocities written to the three balls. Returns the second pair's index, with j₁, j₂ and its approach in
  * `squeeze`; -1, changing nothing, when there is no such ball or the block does not hold (an impulse not
  * above 0, or kinetic energy rising). `call` numbers the solve call (the pairs do not change within one).
- * A ball at rest held like a wall is not taken as the second ball.
+ * A heavy ball at rest (l's partner or the second ball) that the block would leave slower than
+ * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0.
  */
 export function pairWithBall(F: FixedContactState, p: number, l: number, j: number, call: number): number {
   const a = F.pairA[p]!
@@ -83,7 +88,6 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     if (r === p) continue
     const m = F.pairA[r] === l ? F.pairB[r]! : F.pairA[r]!
     if (m === h || SQUEEZE_MASS_RATIO * F.im[m]! > iml) continue
-    if (m >= F.restFrom && F.vx[m] === 0 && F.vy[m] === 0) continue
     // l touching both (a squeeze, not a light ball crossing between them), the two heavy ones closing on
     // each other along the line of their centres, and l driven into m within the tick
     if (!touching(F, l, m)) continue
@@ -117,30 +121,44 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
   const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, l, o, solveSlots[S_CLOCK]!)
   const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
-  // (imh + iml)·j₁ + σ·iml·c·j₂ = w₁ + s₁; σ·iml·c·j₁ + (iml + imo)·j₂ = w₂ + s₂ (c = n₁·n₂). The
-  // determinant written out, 1 − c² as the cross product squared: A·D − B² cancels to the heavy balls'
-  // inverse masses, a billionth of the light one's, and lost half the digits of the impulses
-  const A = imh + iml
-  const B = sigma * iml * (n1x * n2x + n1y * n2y)
-  const D = iml + imo
-  const cross = n1x * n2y - n1y * n2x
-  const det = imh * iml + imh * imo + iml * imo + iml * iml * cross * cross
-  if (!(det > 0)) return -1
   const r1 = w1 + s1
   const r2 = w2 + s2
-  const j1 = (r1 * D - B * r2) / det
-  const j2 = (A * r2 - B * r1) / det
-  if (!(j1 > 0 && j2 > 0)) return -1
-  // the three velocities after: h takes σ·j₁·n₁, l −σ·j₁·n₁ − j₂·n₂, o +j₂·n₂ (σ: +1 when l is the pair's a)
-  const hx = F.vx[h]! + sigma * j1 * imh * n1x
-  const hy = F.vy[h]! + sigma * j1 * imh * n1y
-  const lx = vlx - sigma * j1 * iml * n1x - j2 * iml * n2x
-  const ly = vly - sigma * j1 * iml * n1y - j2 * iml * n2y
-  const ox = F.vx[o]! + j2 * imo * n2x
-  const oy = F.vy[o]! + j2 * imo * n2y
-  const mh = 1 / imh
+  const sigmaC = sigma * (n1x * n2x + n1y * n2y)
+  const cross = n1x * n2y - n1y * n2x
+  // a heavy ball at rest that the block would leave slower than BALL_SETTLE_SPEED stays at rest
+  // (applyChanges): it holds like a wall, as in the sweeps (its inverse mass taken as 0), and the block is
+  // solved again so
+  let imhUsed = imh
+  let imoUsed = imo
+  let j1 = 0
+  let j2 = 0
+  let hx = 0
+  let hy = 0
+  let lx = 0
+  let ly = 0
+  let ox = 0
+  let oy = 0
+  for (let pass = 0; ; pass++) {
+    if (!impulses(imhUsed, iml, imoUsed, sigmaC, cross, r1, r2)) return -1
+    j1 = squeeze[SQ_J1]!
+    j2 = squeeze[SQ_J2]!
+    // the three velocities after: h takes σ·j₁·n₁, l −σ·j₁·n₁ − j₂·n₂, o +j₂·n₂ (σ: +1 when l is the pair's a)
+    hx = F.vx[h]! + sigma * j1 * imhUsed * n1x
+    hy = F.vy[h]! + sigma * j1 * imhUsed * n1y
+    lx = vlx - sigma * j1 * iml * n1x - j2 * iml * n2x
+    ly = vly - sigma * j1 * iml * n1y - j2 * iml * n2y
+    ox = F.vx[o]! + j2 * imoUsed * n2x
+    oy = F.vy[o]! + j2 * imoUsed * n2y
+    if (pass > 0) break
+    const heldH = holds(F, h, hx, hy)
+    const heldO = holds(F, o, ox, oy)
+    if (!heldH && !heldO) break
+    if (heldH) imhUsed = 0
+    if (heldO) imoUsed = 0
+  }
+  const mh = imhUsed > 0 ? 1 / imhUsed : 0
   const ml = 1 / iml
-  const mo = imo > 0 ? 1 / imo : 0
+  const mo = imoUsed > 0 ? 1 / imoUsed : 0
   const before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vlx * vlx + vly * vly) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
   const after = mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy)
   if (after > before + 8 * Number.EPSILON * before) return -1
@@ -151,11 +169,35 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   F.vx[o] = ox
   F.vy[o] = oy
   solved++
-  squeeze[SQ_J1] = j1
-  squeeze[SQ_J2] = j2
   squeeze[SQ_APPROACH] = w2
   squeeze[SQ_BOUND] = bound && w2 >= solveSlots[S_SETTLE]! ? 1 : 0
   return q
+}
+
+/**
+ * The block's impulses into squeeze[SQ_J1], squeeze[SQ_J2]: (imh + iml)·j₁ + σ·iml·c·j₂ = r₁ and
+ * σ·iml·c·j₁ + (iml + imo)·j₂ = r₂ (c = n₁·n₂, σc given). The determinant is written out, 1 − c² as the cross
+ * product squared: A·D − B² cancels to the heavy balls' inverse masses, a billionth of the light one's, and
+ * lost half the digits of the impulses. False when it is not above 0, or an impulse is not.
+ */
+function impulses(imh: number, iml: number, imo: number, sigmaC: number, cross: number, r1: number, r2: number): boolean {
+  const A = imh + iml
+  const B = sigmaC * iml
+  const D = iml + imo
+  const det = imh * iml + imh * imo + iml * imo + iml * iml * cross * cross
+  if (!(det > 0)) return false
+  const j1 = (r1 * D - B * r2) / det
+  const j2 = (A * r2 - B * r1) / det
+  if (!(j1 > 0 && j2 > 0)) return false
+  squeeze[SQ_J1] = j1
+  squeeze[SQ_J2] = j2
+  return true
+}
+
+/** Whether candidate i is a ball at rest that velocity (vx, vy) would leave slower than BALL_SETTLE_SPEED. */
+function holds(F: FixedContactState, i: number, vx: number, vy: number): boolean {
+  const settle = solveSlots[S_SETTLE]!
+  return i >= F.restFrom && F.vx[i] === 0 && F.vy[i] === 0 && vx * vx + vy * vy < settle * settle
 }
 
 /** Whether candidates i and j touch, within PROJECTION_SLOP (a boolean, not the gap: a returned double is boxed). */
