@@ -32,7 +32,7 @@ import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, face, pushed, wallAhead } from './fixedAhead.js'
-import { SQ_APPROACH, SQ_BOUND, SQ_J1, SQ_J2, pairWithBall, squeeze } from './fixedSqueeze.js'
+import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
 
 /** changed bit of a candidate whose wall hit this tick was reported */
 const WALL_REPORTED = 4
@@ -234,13 +234,21 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = block.j
   } else if (second >= 0) {
     j = squeeze[SQ_J1]!
-    const o = F.pairA[second] === a || F.pairA[second] === b ? F.pairB[second]! : F.pairA[second]!
+    const o = squeeze[SQ_OTHER]!
     capBall(F, a)
     capBall(F, b)
     capBall(F, o)
     noteChange(F, o)
     changedAt[o] = ++clock
     F.changed[o]! |= 1
+    // the light balls in a row after the pair's own (src/contacts/fixedSqueeze.ts)
+    for (let k = 1, n = squeeze[SQ_CHAIN]!; k < n; k++) {
+      const c = squeezeChain[k]!
+      capBall(F, c)
+      noteChange(F, c)
+      changedAt[c] = ++clock
+      F.changed[c]! |= 1
+    }
     // the second pair as the sweeps take a pair they meet: a visit, an inelastic meeting counted, reported
     const hit2 = F.pairHit[second]!
     if (hit2 >> VISIT_SHIFT < RESTITUTION_VISITS) F.pairHit[second] = hit2 + (1 << VISIT_SHIFT)

@@ -16,7 +16,12 @@
 // mass; where the block would leave it slower than BALL_SETTLE_SPEED it stays at rest, held like a wall as
 // the sweeps hold it (its inverse mass 0), and the block is solved again so: the light ball's push alone
 // leaves such a ball held at every impulse, and a heavy ball carrying a light one into it went on at its
-// full speed, shoving both ahead of it through the projection while they stayed at rest.
+// full speed, shoving both ahead of it through the projection while they stayed at rest. Two or more light
+// balls in a row, touching one another, each within 60° of the line from the one before (up to MAX_CHAIN),
+// between the two heavy ones are taken as one body: its mass their sum, its velocity their centre of
+// mass's, and each of them takes that body's change of velocity (so their motion within the row, and its
+// kinetic energy, are left as they were); before, the sweeps turned the row's balls between the two, and
+// the heavy ones went on closing while the projection held them apart.
 import { PROJECTION_SLOP, RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
@@ -26,13 +31,23 @@ import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_C
  * The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before,
  * the second pair's normal, and 1 when the second pair took no restitution for its visits or count.
  */
-export const squeeze = new Float64Array(6)
+export const squeeze = new Float64Array(8)
 export const SQ_J1 = 0
 export const SQ_J2 = 1
 export const SQ_APPROACH = 2
 const SQ_NX = 3
 const SQ_NY = 4
 export const SQ_BOUND = 5
+/** the second heavy ball, and the light balls between the two (1: l alone; more: squeezeChain) */
+export const SQ_OTHER = 6
+export const SQ_CHAIN = 7
+
+/** Most light balls in a row between the two heavy ones that a block takes. */
+const MAX_CHAIN = 8
+/** The light balls of the last block, l first, in a row from l's partner to the second heavy ball (SQ_CHAIN of them). */
+export const squeezeChain = new Int32Array(MAX_CHAIN)
+/** How far a row may bend at each ball: the next ball within 60° of the line from the one before. */
+const CHAIN_COS = 0.5
 
 /** Squeezes solved as blocks since the process started (for tests). */
 let solved = 0
@@ -110,16 +125,50 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   F.vy[l] = vly
   nrm.x = n1x
   nrm.y = n1y
-  if (q < 0) return -1
-  // the second contact's normal from l to o
+  // l alone between the two, or a row of light balls touching one another from l to the second heavy ball
+  // (taken as one body: a push crosses such a row at once, as the light balls between two heavy ones)
+  let count = 1
+  squeezeChain[0] = l
+  if (q < 0) {
+    q = chainTo(F, l, h)
+    if (q < 0) return -1
+    o = squeeze[SQ_OTHER]!
+    count = squeeze[SQ_CHAIN]!
+  }
+  // the light side as one body: its inverse mass and velocity (l's own when alone)
+  let imv = iml
+  let vvx = vlx
+  let vvy = vly
+  let w1 = solveSlots[S_APPROACH]!
+  let s1 = solveSlots[S_SEPARATE]!
+  if (count > 1) {
+    let mass = 0
+    let px = 0
+    let py = 0
+    for (let k = 0; k < count; k++) {
+      const c = squeezeChain[k]!
+      const m = 1 / F.im[c]!
+      mass += m
+      px += m * F.vx[c]!
+      py += m * F.vy[c]!
+    }
+    imv = 1 / mass
+    vvx = px / mass
+    vvy = py / mass
+    // the pair's approach and separation for the row's velocity (the separation the same share of it)
+    const share = s1 / w1
+    w1 = sigma * ((vvx - F.vx[h]!) * n1x + (vvy - F.vy[h]!) * n1y)
+    if (!(w1 > 0)) return -1
+    s1 = share * w1
+  }
+  // the second contact's normal, from the light side to o
   const n2x = squeeze[SQ_NX]!
   const n2y = squeeze[SQ_NY]!
   const imo = F.im[o]!
-  const w1 = solveSlots[S_APPROACH]!
-  const w2 = (vlx - F.vx[o]!) * n2x + (vly - F.vy[o]!) * n2y
-  const s1 = solveSlots[S_SEPARATE]!
+  const w2 = (vvx - F.vx[o]!) * n2x + (vvy - F.vy[o]!) * n2y
+  const last = squeezeChain[count - 1]!
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
-  const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, l, o, solveSlots[S_CLOCK]!)
+  const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, last, o, solveSlots[S_CLOCK]!)
   const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
   const r1 = w1 + s1
   const r2 = w2 + s2
@@ -139,14 +188,14 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   let ox = 0
   let oy = 0
   for (let pass = 0; ; pass++) {
-    if (!impulses(imhUsed, iml, imoUsed, sigmaC, cross, r1, r2)) return -1
+    if (!impulses(imhUsed, imv, imoUsed, sigmaC, cross, r1, r2)) return -1
     j1 = squeeze[SQ_J1]!
     j2 = squeeze[SQ_J2]!
     // the three velocities after: h takes σ·j₁·n₁, l −σ·j₁·n₁ − j₂·n₂, o +j₂·n₂ (σ: +1 when l is the pair's a)
     hx = F.vx[h]! + sigma * j1 * imhUsed * n1x
     hy = F.vy[h]! + sigma * j1 * imhUsed * n1y
-    lx = vlx - sigma * j1 * iml * n1x - j2 * iml * n2x
-    ly = vly - sigma * j1 * iml * n1y - j2 * iml * n2y
+    lx = vvx - sigma * j1 * imv * n1x - j2 * imv * n2x
+    ly = vvy - sigma * j1 * imv * n1y - j2 * imv * n2y
     ox = F.vx[o]! + j2 * imoUsed * n2x
     oy = F.vy[o]! + j2 * imoUsed * n2y
     if (pass > 0) break
@@ -156,22 +205,104 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     if (heldH) imhUsed = 0
     if (heldO) imoUsed = 0
   }
+  // kinetic energy of the three bodies (a row's motion within itself is not changed: each of its balls takes
+  // the row's change of velocity)
   const mh = imhUsed > 0 ? 1 / imhUsed : 0
-  const ml = 1 / iml
+  const ml = 1 / imv
   const mo = imoUsed > 0 ? 1 / imoUsed : 0
-  const before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vlx * vlx + vly * vly) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
+  const before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vvx * vvx + vvy * vvy) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
   const after = mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy)
   if (after > before + 8 * Number.EPSILON * before) return -1
   F.vx[h] = hx
   F.vy[h] = hy
-  F.vx[l] = lx
-  F.vy[l] = ly
+  if (count === 1) {
+    F.vx[l] = lx
+    F.vy[l] = ly
+  } else {
+    const dx = lx - vvx
+    const dy = ly - vvy
+    for (let k = 0; k < count; k++) {
+      const c = squeezeChain[k]!
+      F.vx[c] = F.vx[c]! + dx
+      F.vy[c] = F.vy[c]! + dy
+    }
+  }
   F.vx[o] = ox
   F.vy[o] = oy
+  squeeze[SQ_OTHER] = o
+  squeeze[SQ_CHAIN] = count
   solved++
   squeeze[SQ_APPROACH] = w2
   squeeze[SQ_BOUND] = bound && w2 >= solveSlots[S_SETTLE]! ? 1 : 0
   return q
+}
+
+/**
+ * From l (touching its partner h), a row of light balls touching one another, each within 60° of the line
+ * from the one before, up to a ball SQUEEZE_MASS_RATIO times heavier than every one of them or more that
+ * touches the last and closes on h along the line of their centres: the row into squeezeChain (l first),
+ * its length into squeeze[SQ_CHAIN], that ball into squeeze[SQ_OTHER] and the normal from the last to it
+ * into squeeze[SQ_NX], [SQ_NY]. Returns the index of the last pair, -1 when there is no such row (within
+ * MAX_CHAIN balls). Every light ball is SQUEEZE_MASS_RATIO times lighter than h or more.
+ */
+function chainTo(F: FixedContactState, l: number, h: number): number {
+  let prev = h
+  let cur = l
+  let count = 1
+  // the row's heaviest ball: the second heavy ball must be that much heavier than each
+  let imMin = F.im[l]!
+  for (;;) {
+    const dx = F.x[cur]! - F.x[prev]!
+    const dy = F.y[cur]! - F.y[prev]!
+    const dl = Math.sqrt(dx * dx + dy * dy)
+    if (!(dl > 0)) return -1
+    let next = -1
+    let bestCos = CHAIN_COS
+    let q = -1
+    let best = 0
+    for (let k = F.adjStart[cur]!, e = F.adjStart[cur + 1]!; k < e; k++) {
+      const r = F.adjPairs[k]!
+      const m = F.pairA[r] === cur ? F.pairB[r]! : F.pairA[r]!
+      if (m === prev || m === h || inChain(m, count) || !touching(F, cur, m)) continue
+      const ex = F.x[m]! - F.x[cur]!
+      const ey = F.y[m]! - F.y[cur]!
+      const el = Math.sqrt(ex * ex + ey * ey)
+      const cos = (ex * dx + ey * dy) / (el * dl)
+      if (!(cos > CHAIN_COS)) continue
+      if (SQUEEZE_MASS_RATIO * F.im[m]! <= imMin) {
+        // a heavy ball: closing on h along the line of their centres
+        const hx = F.x[m]! - F.x[h]!
+        const hy = F.y[m]! - F.y[h]!
+        const d = Math.sqrt(hx * hx + hy * hy)
+        const closing = ((F.vx[h]! - F.vx[m]!) * hx + (F.vy[h]! - F.vy[m]!) * hy) / d
+        if (closing > best) {
+          best = closing
+          q = r
+          squeeze[SQ_OTHER] = m
+          squeeze[SQ_NX] = ex / el
+          squeeze[SQ_NY] = ey / el
+        }
+      } else if (SQUEEZE_MASS_RATIO * F.im[h]! <= F.im[m]! && cos > bestCos) {
+        bestCos = cos
+        next = m
+      }
+    }
+    if (q >= 0 && count > 1) {
+      squeeze[SQ_CHAIN] = count
+      return q
+    }
+    if (next < 0 || count === MAX_CHAIN) return -1
+    squeezeChain[count++] = next
+    if (F.im[next]! < imMin) imMin = F.im[next]!
+    prev = cur
+    cur = next
+  }
+}
+
+/** Whether candidate m is among the first `count` balls of squeezeChain. */
+function inChain(m: number, count: number): boolean {
+  for (let k = 0; k < count; k++) if (squeezeChain[k] === m) return true
+  return false
 }
 
 /**
