@@ -7,7 +7,7 @@ import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
 import { sweepsRun } from '../../src/contacts/fixedCalls'
 import { squeezesSolved } from '../../src/contacts/fixedSqueeze'
-import { createBallPhysics } from '../../src/index'
+import { createBallPhysics, type BallPhysics } from '../../src/index'
 
 function strike(radius: number, speed: number, gap: number, e: number) {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e })
@@ -31,6 +31,29 @@ function strike(radius: number, speed: number, gap: number, e: number) {
     last = k
   }
   return { approach, big: sim.ballState(big), small: sim.ballState(small), rose }
+}
+
+/** A squeeze's masses for fast-check: a light ball of 1e-6 to 1, and two heavy ones 3 to 1e9 times heavier. */
+const squeezeMasses = {
+  light: fc.double({ min: 1e-6, max: 1, noNaN: true }),
+  ratioA: fc.double({ min: 3, max: 1e9, noNaN: true }),
+  ratioB: fc.double({ min: 3, max: 1e9, noNaN: true }),
+}
+
+/** A world of fixed-tick contacts at restitution e with no rolling deceleration, room for a few balls. */
+function squeezeWorld(e: number): BallPhysics {
+  return createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+}
+
+/** The balls' states, and their kinetic energy and momentum by the masses given. */
+function bodies(sim: BallPhysics, ids: number[], masses: number[]) {
+  const states = () => ids.map((id) => sim.ballState(id))
+  return {
+    states,
+    energy: () => states().reduce((k, st, i) => k + 0.5 * masses[i]! * (st.vx ** 2 + st.vy ** 2), 0),
+    px: () => states().reduce((p, st, i) => p + masses[i]! * st.vx, 0),
+    py: () => states().reduce((p, st, i) => p + masses[i]! * st.vy, 0),
+  }
 }
 
 describe('fixed-tick contacts at a closed wall', () => {
@@ -189,12 +212,10 @@ describe('fixed-tick contacts: a light ball turned between heavy ones', () => {
   // ones: momentum kept, energy never rising. (Touching both, it is a squeeze: below.)
   for (const e of [1, 0]) {
     it(`a ball of mass 1 between two of mass 1e9 that close on it at 50 px/s each, 1 px from each, restitution ${e}: at most half the sweeps (and one) a call, momentum kept, energy never rising, the order kept`, () => {
-      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+      const sim = squeezeWorld(e)
       const masses = [1e9, 1, 1e9]
       const ids = [sim.addBall({ x: 99, y: 200, vx: 50, vy: 0, mass: 1e9 }), sim.addBall({ x: 122, y: 200, vx: 0, vy: 0, mass: 1 }), sim.addBall({ x: 145, y: 200, vx: -50, vy: 0, mass: 1e9 })]
-      const states = () => ids.map((id) => sim.ballState(id))
-      const energy = () => states().reduce((k, s, i) => k + 0.5 * masses[i]! * (s.vx ** 2 + s.vy ** 2), 0)
-      const momentum = () => states().reduce((p, s, i) => p + masses[i]! * s.vx, 0)
+      const { states, energy, px: momentum } = bodies(sim, ids, masses)
       const F = sim.world.fixed!
       const iterations = sim.world.config.CONTACT_ITERATIONS
       let last = energy()
@@ -228,11 +249,10 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
   // projection held their positions (docs/known-failures.md).
   for (const e of [1, 0.5, 0]) {
     it(`a ball of mass 1 touching two of mass 1e9 that close on it at 50 px/s each, restitution ${e}: they leave at ∓${50 * e} px/s, the light ball at rest between them, in one tick`, () => {
-      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+      const sim = squeezeWorld(e)
       const masses = [1e9, 1, 1e9]
       const ids = [sim.addBall({ x: 100, y: 200, vx: 50, vy: 0, mass: 1e9 }), sim.addBall({ x: 122, y: 200, vx: 0, vy: 0, mass: 1 }), sim.addBall({ x: 144, y: 200, vx: -50, vy: 0, mass: 1e9 })]
-      const states = () => ids.map((id) => sim.ballState(id))
-      const energy = () => states().reduce((k, s, i) => k + 0.5 * masses[i]! * (s.vx ** 2 + s.vy ** 2), 0)
+      const { states, energy } = bodies(sim, ids, masses)
       const before = energy()
       const sweeps = sweepsRun()
       const squeezes = squeezesSolved()
@@ -260,16 +280,14 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
     fc.assert(
       fc.property(
         fc.record({
-          light: fc.double({ min: 1e-6, max: 1, noNaN: true }),
-          ratioA: fc.double({ min: 3, max: 1e9, noNaN: true }),
-          ratioB: fc.double({ min: 3, max: 1e9, noNaN: true }),
+          ...squeezeMasses,
           angle: fc.double({ min: -1.2, max: 1.2, noNaN: true }),
           va: fc.double({ min: 1, max: 3000, noNaN: true }),
           vb: fc.double({ min: 1, max: 3000, noNaN: true }),
           e: fc.double({ min: 0, max: 1, noNaN: true }),
         }),
         ({ light, ratioA, ratioB, angle, va, vb, e }) => {
-          const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+          const sim = squeezeWorld(e)
           const masses = [light * ratioA, light, light * ratioB]
           const c = Math.cos(angle)
           const sn = Math.sin(angle)
@@ -278,10 +296,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
             sim.addBall({ x: 122, y: 200, vx: 0, vy: 0, mass: light }),
             sim.addBall({ x: 122 + 22.00001 * c, y: 200 + 22.00001 * sn, vx: -vb * c, vy: -vb * sn, mass: masses[2] }),
           ]
-          const states = () => ids.map((id) => sim.ballState(id))
-          const energy = () => states().reduce((k, st, i) => k + 0.5 * masses[i]! * (st.vx ** 2 + st.vy ** 2), 0)
-          const px = () => states().reduce((p, st, i) => p + masses[i]! * st.vx, 0)
-          const py = () => states().reduce((p, st, i) => p + masses[i]! * st.vy, 0)
+          const { states, energy, px, py } = bodies(sim, ids, masses)
           const [k0, x0, y0] = [energy(), px(), py()]
           const scale = masses[0]! * va + masses[2]! * vb
           const squeezes = squeezesSolved()
@@ -314,12 +329,10 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
   for (const gap of [0.5, 5]) {
     for (const e of [1, 0]) {
       it(`a ball of mass 1e9 at 50 px/s carrying one of mass 1 into one of mass 1e9 at rest ${gap} px ahead, restitution ${e}: the ball at rest is struck, the carrier slows, no ball at rest moves, momentum kept`, () => {
-        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+        const sim = squeezeWorld(e)
         const masses = [1e9, 1, 1e9]
         const ids = [sim.addBall({ x: 100, y: 200, vx: 50, vy: 0, mass: 1e9 }), sim.addBall({ x: 122, y: 200, vx: 50, vy: 0, mass: 1 }), sim.addBall({ x: 144 + gap, y: 200, vx: 0, vy: 0, mass: 1e9 })]
-        const states = () => ids.map((id) => sim.ballState(id))
-        const momentum = () => states().reduce((p, st, i) => p + masses[i]! * st.vx, 0)
-        const energy = () => states().reduce((k, st, i) => k + 0.5 * masses[i]! * (st.vx ** 2 + st.vy ** 2), 0)
+        const { states, px: momentum, energy } = bodies(sim, ids, masses)
         const p0 = momentum()
         let last = energy()
         const squeezes = squeezesSolved()
@@ -357,25 +370,21 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
     fc.assert(
       fc.property(
         fc.record({
-          light: fc.double({ min: 1e-6, max: 1, noNaN: true }),
-          ratioA: fc.double({ min: 3, max: 1e9, noNaN: true }),
-          ratioB: fc.double({ min: 3, max: 1e9, noNaN: true }),
+          ...squeezeMasses,
           angle: fc.double({ min: -0.5, max: 0.5, noNaN: true }),
           v: fc.double({ min: 1, max: 3000, noNaN: true }),
           gap: fc.double({ min: 0, max: 5, noNaN: true }),
           e: fc.double({ min: 0, max: 1, noNaN: true }),
         }),
         ({ light, ratioA, ratioB, angle, v, gap, e }) => {
-          const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+          const sim = squeezeWorld(e)
           const masses = [light * ratioA, light, light * ratioB]
           const ids = [
             sim.addBall({ x: 100, y: 200, vx: v, vy: 0, mass: masses[0] }),
             sim.addBall({ x: 122, y: 200, vx: v, vy: 0, mass: light }),
             sim.addBall({ x: 122 + (22 + gap) * Math.cos(angle), y: 200 + (22 + gap) * Math.sin(angle), vx: 0, vy: 0, mass: masses[2] }),
           ]
-          const states = () => ids.map((id) => sim.ballState(id))
-          const energy = () => states().reduce((k, st, i) => k + 0.5 * masses[i]! * (st.vx ** 2 + st.vy ** 2), 0)
-          const px = () => states().reduce((p, st, i) => p + masses[i]! * st.vx, 0)
+          const { states, energy, px } = bodies(sim, ids, masses)
           const p0 = px()
           let last = energy()
           // how far the balls at rest were moved while at rest
@@ -406,7 +415,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
   for (const e of [1, 0]) {
     for (const still of [false, true]) {
       it(`two balls of mass 1 in a row between two of mass 1e9 ${still ? 'one at rest, the other at 50 px/s' : 'closing at 50 px/s each'}, restitution ${e}: the heavy ones meet through the row in one tick`, () => {
-        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+        const sim = squeezeWorld(e)
         const masses = [1e9, 1, 1, 1e9]
         const ids = [
           sim.addBall({ x: 100, y: 200, vx: 50, vy: 0, mass: 1e9 }),
@@ -414,9 +423,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
           sim.addBall({ x: 144, y: 200, vx: still ? 50 : 0, vy: 0, mass: 1 }),
           sim.addBall({ x: 166, y: 200, vx: still ? 0 : -50, vy: 0, mass: 1e9 }),
         ]
-        const states = () => ids.map((id) => sim.ballState(id))
-        const energy = () => states().reduce((k, st, i) => k + 0.5 * masses[i]! * (st.vx ** 2 + st.vy ** 2), 0)
-        const momentum = () => states().reduce((p, st, i) => p + masses[i]! * st.vx, 0)
+        const { states, energy, px: momentum } = bodies(sim, ids, masses)
         const [k0, p0] = [energy(), momentum()]
         const squeezes = squeezesSolved()
         sim.step(1 / 120)
@@ -461,7 +468,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
           e: fc.double({ min: 0, max: 1, noNaN: true }),
         }),
         ({ n, light, ratioA, ratioB, bends, va, vb, e }) => {
-          const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+          const sim = squeezeWorld(e)
           const masses = [light * ratioA, ...Array<number>(n).fill(light), light * ratioB]
           // the balls' centres along a bent line, 5e-7 px apart (within TOUCH_GAP: the tick pairs balls at
           // rest that close; further apart, and within the projection's slop, the light ones are paired as
@@ -479,10 +486,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
           const ids = masses.map((mass, k) =>
             sim.addBall({ x: xs[k]!, y: ys[k]!, vx: k === 0 ? va : k === n + 1 ? -vb * ux : 0, vy: k === n + 1 ? -vb * uy : 0, mass }),
           )
-          const states = () => ids.map((id) => sim.ballState(id))
-          const energy = () => states().reduce((k, st, i) => k + 0.5 * masses[i]! * (st.vx ** 2 + st.vy ** 2), 0)
-          const px = () => states().reduce((p, st, i) => p + masses[i]! * st.vx, 0)
-          const py = () => states().reduce((p, st, i) => p + masses[i]! * st.vy, 0)
+          const { states, energy, px, py } = bodies(sim, ids, masses)
           const [k0, x0, y0] = [energy(), px(), py()]
           const scale = masses[0]! * va + masses[n + 1]! * vb
           const squeezes = squeezesSolved()
@@ -512,7 +516,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
     for (let seed = 1; seed <= 12; seed++) {
       const angle = ((seed * 0.37) % 1.2) - 0.6
       const e = [0, 0.5, 1][seed % 3]!
-      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 }, { capacity: 16 })
+      const sim = squeezeWorld(e)
       const masses = [1e9, 1, 5e8]
       // the light ball touching both: one to its left, one up or down the given angle from its right
       const ids = [
@@ -520,10 +524,7 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
         sim.addBall({ x: 122, y: 200, vx: 0, vy: 0, mass: 1 }),
         sim.addBall({ x: 122 + 22.00001 * Math.cos(angle), y: 200 + 22.00001 * Math.sin(angle), vx: -30 * Math.cos(angle), vy: -30 * Math.sin(angle), mass: 5e8 }),
       ]
-      const states = () => ids.map((id) => sim.ballState(id))
-      const energy = () => states().reduce((k, s, i) => k + 0.5 * masses[i]! * (s.vx ** 2 + s.vy ** 2), 0)
-      const px = () => states().reduce((p, s, i) => p + masses[i]! * s.vx, 0)
-      const py = () => states().reduce((p, s, i) => p + masses[i]! * s.vy, 0)
+      const { states, energy, px, py } = bodies(sim, ids, masses)
       const [k0, x0, y0] = [energy(), px(), py()]
       const squeezes = squeezesSolved()
       sim.step(1 / 120)
