@@ -153,6 +153,18 @@ describe('ball-ball contacts (opt-in)', () => {
     expect(sim.ballState(row[4]!).vx).toBeCloseTo(300, 9)
   })
 
+  // The TC model below e = 1 (README, Ball-ball contacts): the contacts along a row within 1e-4 s of each
+  // other are elastic, so a row keeps more energy than its restitution alone would leave it; the fixed tick
+  // solves the row's contacts together, as one plastic body at e = 0.
+  it('below e = 1 a row struck end on keeps the energy the TC model gives it (e = 0: the last two at 50 px/s, half the energy; the fixed tick: 25 each)', () => {
+    for (const [mode, want] of [['on', [0, 0, 50, 50]], ['fixed', [25, 25, 25, 25]]] as const) {
+      const sim = createBallPhysics({ ...ON, BALL_COLLISIONS: mode, ROLLING_DECEL: 0, BALL_RESTITUTION: 0 })
+      const ids = [sim.addBall({ x: 50, y: 200, vx: 100, vy: 0 }), ...[0, 1, 2].map((i) => sim.addBall({ x: 100 + 22 * i, y: 200, vx: 0, vy: 0 }))]
+      run(sim, 1, 1 / 60)
+      ids.forEach((id, i) => expect(sim.ballState(id).vx, `${mode}, ball ${i}`).toBeCloseTo(want[i]!, 6))
+    }
+  })
+
   it('a resting ball is not iterated until struck; then it wakes and rolls', () => {
     const sim = createBallPhysics(ON)
     const resting = Array.from({ length: 2000 }, (_, i) => sim.addBall({ x: 40 * (i % 50), y: 200 + 40 * Math.floor(i / 50), vx: 0, vy: 0 }))
