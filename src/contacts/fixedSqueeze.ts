@@ -69,9 +69,10 @@ function adjacency(F: FixedContactState, call: number): void {
 /**
  * Pair p (a, b), approaching along nrm, whose lighter ball `l` (a or b) touches a second ball
  * SQUEEZE_MASS_RATIO times heavier than l or more, which the pair's impulse `j` would drive l into within
- * the tick while that ball and l's partner close on each other: the two contacts solved together, the new
- * velocities written to the three balls. Returns the second pair's index, with j₁, j₂ and its approach in
- * `squeeze`; -1, changing nothing, when there is no such ball or the block does not hold (an impulse not
+ * the tick while that ball and l's partner close on each other, or touches a row of light balls that ends
+ * at such a ball (chainTo): the two end contacts solved together, the new velocities written to the heavy
+ * balls and the light ones. Returns the second pair's index, with j₁, j₂, its approach, the second heavy
+ * ball and the row's length in `squeeze`; -1, changing nothing, when there is no such ball or the block does not hold (an impulse not
  * above 0, or kinetic energy rising). `call` numbers the solve call (the pairs do not change within one).
  * A heavy ball at rest (l's partner or the second ball) that the block would leave slower than
  * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0.
@@ -105,21 +106,12 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     if (m === h || SQUEEZE_MASS_RATIO * F.im[m]! > iml) continue
     // l touching both (a squeeze, not a light ball crossing between them), the two heavy ones closing on
     // each other along the line of their centres, and l driven into m within the tick
-    if (!touching(F, l, m)) continue
-    const dx = F.x[m]! - F.x[h]!
-    const dy = F.y[m]! - F.y[h]!
-    const d = Math.sqrt(dx * dx + dy * dy)
-    if (!(d > 0)) continue
-    const closing = ((F.vx[h]! - F.vx[m]!) * dx + (F.vy[h]! - F.vy[m]!) * dy) / d
-    if (!(closing > 0)) continue
-    if (!meetsWithinTick(F, l, m)) continue
-    if (closing > best) {
-      best = closing
-      q = r
-      o = m
-      squeeze[SQ_NX] = nrm.x
-      squeeze[SQ_NY] = nrm.y
-    }
+    if (!touching(F, l, m) || !closesFaster(F, h, m, best) || !meetsWithinTick(F, l, m)) continue
+    best = closing[0]!
+    q = r
+    o = m
+    squeeze[SQ_NX] = nrm.x
+    squeeze[SQ_NY] = nrm.y
   }
   F.vx[l] = vlx
   F.vy[l] = vly
@@ -271,12 +263,8 @@ function chainTo(F: FixedContactState, l: number, h: number): number {
       if (!(cos > CHAIN_COS)) continue
       if (SQUEEZE_MASS_RATIO * F.im[m]! <= imMin) {
         // a heavy ball: closing on h along the line of their centres
-        const hx = F.x[m]! - F.x[h]!
-        const hy = F.y[m]! - F.y[h]!
-        const d = Math.sqrt(hx * hx + hy * hy)
-        const closing = ((F.vx[h]! - F.vx[m]!) * hx + (F.vy[h]! - F.vy[m]!) * hy) / d
-        if (closing > best) {
-          best = closing
+        if (closesFaster(F, h, m, best)) {
+          best = closing[0]!
           q = r
           squeeze[SQ_OTHER] = m
           squeeze[SQ_NX] = ex / el
@@ -297,6 +285,22 @@ function chainTo(F: FixedContactState, l: number, h: number): number {
     prev = cur
     cur = next
   }
+}
+
+/** closesFaster's speed (a slot: a returned double is boxed) */
+const closing = new Float64Array(1)
+
+/**
+ * Whether candidates h and m close on each other along the line of their centres faster than `than` (and
+ * faster than 0): the speed into closing[0].
+ */
+function closesFaster(F: FixedContactState, h: number, m: number, than: number): boolean {
+  const dx = F.x[m]! - F.x[h]!
+  const dy = F.y[m]! - F.y[h]!
+  const d = Math.sqrt(dx * dx + dy * dy)
+  const v = ((F.vx[h]! - F.vx[m]!) * dx + (F.vy[h]! - F.vy[m]!) * dy) / d
+  closing[0] = v
+  return v > than
 }
 
 /** Whether candidate m is among the first `count` balls of squeezeChain. */
