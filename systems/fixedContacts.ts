@@ -33,6 +33,7 @@ import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
+import { iterationsNow, lean, meterTick, spend } from '../src/contacts/fixedBudget.js'
 import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -50,6 +51,7 @@ export function fixedContactsSystem(w: BallWorld): void {
     if (F.dense === 0) F.sweepNext = F.sweepCell
   }
   coarsenTick(w, F)
+  meterTick(w, F)
   // a try that stopped with a ball that may pass through another is dropped, and the tick solved again at a
   // finer spacing (src/contacts/fixedRedo.ts)
   saveTick(w, F)
@@ -74,6 +76,8 @@ export function fixedContactsSystem(w: BallWorld): void {
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
       if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? fronts : Infinity)) break
     }
+    // past the span's work budget, no finer try (src/contacts/fixedBudget.ts)
+    if (lean(F)) break
     atLeast = redoHalvings(++tries, h === SOLVED ? tryHalvings : h)
     if (atLeast === 0) break
     restoreTick(w, F)
@@ -85,7 +89,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   // MAX_WIDEN_ROUNDS only along a row (a push running along balls at rest that the tick did not gather, a
   // ball a round): while each round pairs one ball more and the tick has CHAIN_PAIRS_PER_BALL pairs a
   // candidate or fewer, up to MAX_PASS_ROUNDS
-  for (let round = 0; F.overlap && F.capped === capped; round++) {
+  for (let round = 0; F.overlap && F.capped === capped && !lean(F); round++) {
     const pairs = F.pairCount
     if (!joinPushed(w, F)) break
     solvePositions(w, F)
@@ -101,15 +105,16 @@ export function fixedContactsSystem(w: BallWorld): void {
   // radius-3 balls 1 px apart, e = 0: the front ball went from 640 to 946 px/s, through its neighbour at
   // rest, which was not a candidate)
   if (anchoredCount() !== anchored) {
-    solveVelocities(w, F, t, w.config.CONTACT_ITERATIONS)
-    if (mayPass(F)) {
+    solveVelocities(w, F, t, iterationsNow(w, F))
+    if (!lean(F) && mayPass(F)) {
       markCandidatesSeen(F)
-      for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * F.n && mayPass(F); round++) {
+      for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * F.n && !lean(F) && mayPass(F); round++) {
         if (!widenReach(w, F)) break
-        solveVelocities(w, F, t, w.config.CONTACT_ITERATIONS)
+        solveVelocities(w, F, t, iterationsNow(w, F))
       }
     }
   }
+  if (lean(F)) F.lean++
   recordGrowth(F, true)
   countTickContacts(w, F, t)
   applyChanges(w, F, t)
@@ -139,10 +144,11 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
   if (F.dense === 1) findPairsDense(F)
   else findPairs(w, F)
   const h = halveTick(w, F, atLeast)
+  spend(F, F.full + F.pairCount)
   tryHalvings = h
   chooseBroadphase(F)
   if (F.pairCount === 0) return NO_PAIRS
-  const iterations = w.config.CONTACT_ITERATIONS
+  const iterations = iterationsNow(w, F)
   F.hitCount = 0
   F.overlap = false
   let converged = solveVelocities(w, F, t, iterations)
@@ -161,6 +167,8 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
   let widened = 1
   let wallAgain = false
   for (let round = 0; ; round++) {
+    // past the span's work budget: no more rounds (src/contacts/fixedBudget.ts)
+    if (lean(F)) return SOLVED
     if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) return SOLVED
     const extra = round >= MAX_WIDEN_ROUNDS
     if (extra) {

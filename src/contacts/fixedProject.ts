@@ -9,23 +9,36 @@
 // groups' anchors (src/contacts/fixedLayered.ts). Only positions change: no kinetic energy is added.
 // The part of a push that a closed wall keeps a ball from taking goes to the other ball of the pair, so a
 // heavy ball cannot drive a light one through the wall (src/contacts/fixedPush.ts).
-import { MAX_LISTED_SWEEPS, PROJECTION_BUDGET, PROJECTION_QUEUE_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
+import { LEAN_PROJECTION_BUDGET, MAX_LISTED_SWEEPS, PROJECTION_BUDGET, PROJECTION_QUEUE_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { activate, buildAdjacency, heapPop, nextStamp, normal, nrm, startSweep } from './fixedPairs.js'
 import { layered } from './fixedLayered.js'
+import { lean, spend } from './fixedBudget.js'
 import { movedA, movedB, pushApart } from './fixedPush.js'
 
 export function solvePositions(w: BallWorld, F: FixedContactState): void {
   // the velocity sweeps met every pair at the tick's positions: no overlap among them, nothing to move
   if (!F.overlap) return
+  // past the span's work budget, a lean projection (src/contacts/fixedBudget.ts)
+  const sweeps = lean(F) ? LEAN_PROJECTION_BUDGET : PROJECTION_BUDGET
+  const budget0 = sweeps * F.pairCount
+  project(w, F, sweeps)
+  spend(F, budget0 - left)
+}
+
+/** the projection's pair visits left of its budget when it returned */
+let left = 0
+
+function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
   const pairs = F.pairCount
   reserveSweeps(F, F.n, pairs)
-  let budget = PROJECTION_BUDGET * pairs
+  let budget = sweeps * pairs
+  left = budget
   // full sweeps, forward and back, while the overlaps are spread through the pairs
   let it = 0
   let moved = 0
-  for (; it < PROJECTION_BUDGET; it++) {
+  for (; it < sweeps; it++) {
     const stamp = nextStamp(F)
     const back = (it & 1) === 1
     let worst = 0
@@ -47,12 +60,13 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
       }
     }
     budget -= pairs
+    left = budget
     if (worst <= PROJECTION_SLOP) return
     if (moved === 0) break // held by the walls: no sweep can do more
     // a few balls still moving: on to sweeps over their pairs only
     if (moved * 8 < pairs) break
   }
-  if (it === PROJECTION_BUDGET || budget <= 0 || moved === 0) {
+  if (it === sweeps || budget <= 0 || moved === 0) {
     if (!layered(w, F)) F.capped++
     return
   }
@@ -85,6 +99,7 @@ export function solvePositions(w: BallWorld, F: FixedContactState): void {
       size = heapPop(F.heap, size)
       const p = back ? pairs - 1 - key : key
       budget--
+      left = budget
       const a = F.pairA[p]!
       const b = F.pairB[p]!
       normal(F, a, b)

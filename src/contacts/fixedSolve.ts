@@ -20,6 +20,7 @@
 // Then every ball the solve changed starts a fresh path from its new state at the tick:
 // src/contacts/fixedApply.ts.
 import { EventType, appendEvent } from '../events.js'
+import { spend } from './fixedBudget.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { bouncesBetween, intoWalls, walls } from './fixedGrid.js'
@@ -99,6 +100,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     const back = (it & 1) === 1
     // every pair, or only those that can be met again, in the same order (src/contacts/fixedCalls.ts)
     const listed = beginSweep(F, back, it === 0, fresh)
+    spend(F, F.pairCount)
     let turned = wallVelocities(w, F)
     remet = 0
     plain = 0

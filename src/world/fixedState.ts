@@ -1,8 +1,7 @@
-// State of the fixed-tick contact method (config.BALL_COLLISIONS = 'fixed'): each ball's mass, the contact
-// clock, the sweep order kept from tick to tick (src/contacts/fixedSweep.ts), and the per-tick working arrays
-// of src/contacts/fixedGrid.ts, fixedDense.ts, fixedOrder.ts, fixedSolve.ts and fixedProject.ts, packed by
-// candidate (the balls of a contact tick that can touch) and grown by doubling, so a tick allocates nothing
-// once the arrays have reached the scene's size. A world without the fixed method has none of it (null).
+// State of the fixed-tick contact method (config.BALL_COLLISIONS = 'fixed'; null without it): each ball's mass, the
+// contact clock, the sweep order kept from tick to tick (src/contacts/fixedSweep.ts), the work meter (fixedBudget.ts),
+// and the per-tick working arrays of fixedGrid.ts, fixedDense.ts, fixedOrder.ts, fixedSolve.ts and fixedProject.ts, packed
+// by candidate (the balls of a tick that can touch) and grown by doubling: a tick allocates nothing once they fit the scene.
 import type { BallPhysicsConfig } from '../config/design.js'
 import { appendId, createCollisionState, type CollisionState } from './contactState.js'
 import { GROWTH_TICKS } from '../config/tolerances.js'
@@ -157,6 +156,9 @@ export interface FixedContactState {
   inelastic: number
   /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
   capped: number
+  /** the work meter (src/contacts/fixedBudget.ts): the CONTACT_TICK span it meters, the work spent in it, its budget; ticks solved past it (the world's life) */
+  budget: Float64Array
+  lean: number
   /** pairs of a pushed ball and a moving ball listed after a projection (src/contacts/fixedJoin.ts), counted over the world's life */
   movingJoins: number
 }
@@ -232,6 +234,8 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     inelastic: 0,
     ticks: 0,
     capped: 0,
+    budget: new Float64Array([-1, 0, Infinity]),
+    lean: 0,
     movingJoins: 0,
     ord: new Uint32Array(n),
     okey: new Float64Array(n),
@@ -289,11 +293,10 @@ export function reserveSweeps(F: FixedContactState, n: number, pairs: number): v
     F.nextStamp = new Uint32Array(2 * pairs)
     F.stamp = 0
   }
-  if (F.stamp === 0) {
-    F.pairStamp.fill(0)
-    F.nextStamp.fill(0)
-    F.ballStamp.fill(0)
-  }
+  if (F.stamp !== 0) return
+  F.pairStamp.fill(0)
+  F.nextStamp.fill(0)
+  F.ballStamp.fill(0)
 }
 
 /** Grows the per-ball stores (mass, and the sweep's marks by id) so that ball id cap − 1 fits. */
@@ -385,10 +388,7 @@ export function reserveCandidates(F: FixedContactState, n: number): void {
 }
 
 /** len doubled until it is at least n. */
-function doubled(len: number, n: number): number {
-  while (len < n) len *= 2
-  return len
-}
+const doubled = (len: number, n: number): number => (len >= n ? len : doubled(2 * len, n))
 
 export function grownTo<T extends Float64Array | Int32Array | Uint8Array | Uint32Array>(a: T, n: number): T {
   const next = new (a.constructor as new (n: number) => T)(n)

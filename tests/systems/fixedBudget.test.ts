@@ -1,0 +1,156 @@
+// The fixed-tick method's work budget (config.CONTACT_WORK_BUDGET, src/contacts/fixedBudget.ts; off by
+// default): each CONTACT_TICK span of the clock may spend CONTACT_WORK_BUDGET visits to every pair of its
+// balls; past that, the rest of the span is solved lean. A pumped elastic crowd (light balls driven by heavy
+// ones in a closed box) reaches a budget of 16 at once; a sparse gas never reaches one of 1.
+import { describe, expect, it } from 'vitest'
+import { createBallPhysics, type BallPhysics } from '../../src/index'
+import { LEAN_ITERATIONS, LEAN_PROJECTION_BUDGET } from '../../src/config/tolerances'
+import { sweepsRun } from '../../src/contacts/fixedCalls'
+
+/** 360 radius-11 balls in a closed elastic 420 × 480 box (about half of it covered): every 25th of mass 1e9 at 1e4 px/s, the rest of mass 1e-5 at 100 px/s */
+function pumped(budget?: number): BallPhysics {
+  let seed = 7
+  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, ...(budget === undefined ? {} : { CONTACT_WORK_BUDGET: budget }) })
+  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+  for (let i = 0; i < 360; i++) {
+    const heavy = i % 25 === 0
+    const a = random() * 6.283
+    const speed = heavy ? 1e4 : 100
+    sim.addBall({ x: 15 + 390 * random(), y: 15 + 450 * random(), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: heavy ? 1e9 : 1e-5 })
+  }
+  return sim
+}
+
+function energy(sim: BallPhysics): number {
+  let k = 0
+  const F = sim.world.fixed!
+  for (const b of sim.balls()) {
+    const s = sim.ballState(b)
+    k += 0.5 * F.mass[b]! * (s.vx * s.vx + s.vy * s.vy)
+  }
+  return k
+}
+
+function states(sim: BallPhysics): number[] {
+  const out: number[] = []
+  for (const b of sim.balls()) {
+    const s = sim.ballState(b)
+    out.push(b, s.x, s.y, s.vx, s.vy)
+  }
+  return out
+}
+
+describe('fixed-tick contacts: the work meter', () => {
+  it('CONTACT_WORK_BUDGET 16, a pumped elastic crowd: its spans spend their budget and go lean, each lean tick within its own bound; energy never rises at a tick, every state finite; under a fifth of the sweeps of the unbounded solve', () => {
+    const sim = pumped(16)
+    const F = sim.world.fixed!
+    // a probe right after each tick's solve: a tick that starts with its span's budget spent costs at most
+    // its gather, two lean velocity calls and a lean projection over its pairs
+    let span = -1
+    let work = 0
+    let leanTicks = 0
+    let ticks = 0
+    let last = energy(sim)
+    const at = sim.schedule.findIndex((e) => e.name === 'fixedContacts')
+    sim.schedule.splice(at + 1, 0, {
+      name: 'meterProbe',
+      run: () => {
+        if (F.ticks === ticks) return
+        // the solve at a step's end runs without the probe: two ticks then come to it at once
+        const one = F.ticks === ticks + 1
+        ticks = F.ticks
+        const [s, spent, limit] = F.budget as unknown as [number, number, number]
+        if (one && s === span && work > limit) {
+          leanTicks++
+          expect(spent - work).toBeLessThanOrEqual(F.full + (1 + 2 * LEAN_ITERATIONS + LEAN_PROJECTION_BUDGET) * F.pairCount)
+        }
+        span = s
+        work = spent
+        const k = energy(sim)
+        expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+        last = k
+      },
+    })
+    const sweeps = sweepsRun()
+    for (let i = 0; i < 12; i++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+      expect(states(sim).every(Number.isFinite)).toBe(true)
+    }
+    expect(leanTicks).toBeGreaterThan(20)
+    expect(F.lean).toBeGreaterThanOrEqual(leanTicks)
+    const bounded = sweepsRun() - sweeps
+    // the same crowd without a budget (the default), for its first steps only
+    const free = pumped()
+    const freeSweeps = sweepsRun()
+    for (let i = 0; i < 12; i++) free.step(1 / 60)
+    expect(free.world.fixed!.lean).toBe(0)
+    expect(5 * bounded).toBeLessThan(sweepsRun() - freeSweeps)
+  })
+
+  it('lean ticks are decided at the ticks: the same events and states at 30, 60 and 240 Hz', () => {
+    const run = (hz: number) => {
+      const sim = pumped(2)
+      const events: string[] = []
+      for (let i = 0; i < hz / 6; i++) {
+        sim.step(1 / hz)
+        for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+      }
+      return { events, states: states(sim), lean: sim.world.fixed!.lean }
+    }
+    const at60 = run(60)
+    expect(at60.lean).toBeGreaterThan(10)
+    expect(at60.events.length).toBeGreaterThan(100)
+    for (const hz of [30, 240]) {
+      const other = run(hz)
+      expect(other.events).toEqual(at60.events)
+      expect(other.states).toEqual(at60.states)
+    }
+  })
+
+  it('a snapshot taken in the middle of a lean span restores the meter: the restored world goes on with the same bits', () => {
+    const a = pumped(2)
+    for (let i = 0; i < 6; i++) a.step(1 / 60)
+    // half a CONTACT_TICK on: the span has begun and spent its budget
+    a.step(1 / 240)
+    expect(a.world.fixed!.budget[1]).toBeGreaterThan(a.world.fixed!.budget[2]!)
+    a.drainEvents()
+    const b = createBallPhysics(a.config)
+    b.restore(a.snapshot())
+    const lean = a.world.fixed!.lean
+    for (let i = 0; i < 6; i++) {
+      a.step(1 / 60)
+      b.step(1 / 60)
+      expect(b.drainEvents()).toEqual(a.drainEvents())
+    }
+    expect(a.world.fixed!.lean).toBeGreaterThan(lean)
+    expect(states(b)).toEqual(states(a))
+    expect(b.world.fixed!.lean).toBe(a.world.fixed!.lean)
+  })
+
+  it('a scene within its budget is not touched by it: a 60-ball gas ends with the same bits at CONTACT_WORK_BUDGET 1 and without one', () => {
+    const gas = (budget: number) => {
+      let seed = 3
+      const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0.9, ROLLING_DECEL: 0, CONTACT_WORK_BUDGET: budget })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 300, maxY: 300, restitution: 0.9 })
+      for (let i = 0; i < 60; i++) {
+        const a = random() * 6.283
+        sim.addBall({ x: 15 + 270 * random(), y: 15 + 270 * random(), vx: 300 * Math.cos(a), vy: 300 * Math.sin(a) })
+      }
+      for (let i = 0; i < 120; i++) sim.step(1 / 60)
+      return { states: states(sim), lean: sim.world.fixed!.lean, contacts: sim.world.fixed!.contacts }
+    }
+    const low = gas(1)
+    expect(low.lean).toBe(0)
+    expect(low.contacts).toBeGreaterThan(100)
+    expect(low).toEqual(gas(0))
+  })
+
+  it('CONTACT_WORK_BUDGET outside 0…1e6, or not an integer, is refused with its name and range', () => {
+    for (const bad of [-1, 0.5, 2e6, Number.NaN, Infinity]) {
+      expect(() => createBallPhysics({ BALL_COLLISIONS: 'fixed', CONTACT_WORK_BUDGET: bad })).toThrow(/CONTACT_WORK_BUDGET.*\[0, 1000000\]/)
+    }
+  })
+})
