@@ -110,6 +110,8 @@ interface Cfg {
   rim?: 'tabulated'
   /** CONTACT_TRAVEL_HALVINGS (absent: the default) */
   travel?: number
+  /** CONTACT_WORK_BUDGET (absent: the default, none) */
+  budget?: number
   e: number
   decel: number
 }
@@ -281,7 +283,7 @@ function noteRun(name: string, ms: number, scale: number, runDevMs: number): voi
   list.length = Math.min(list.length, SLOWEST_RUNS)
 }
 /** what the runs of a property exercised: runs, steps, most balls at once, energy or overlap checks made, events by type */
-const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; halved: number; mostHalvings: number; events: Record<string, number> }> = {}
+const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; halved: number; mostHalvings: number; lean: number; events: Record<string, number> }> = {}
 
 const PANEL_MODES = new Set(['rolling', 'rimRoll', 'resting'])
 
@@ -341,6 +343,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
     ...(cfg.rim === undefined ? {} : { RIM_MODEL: cfg.rim }),
     ...(cfg.horizon === undefined ? {} : { PREDICTION_HORIZON: cfg.horizon }),
     ...(cfg.travel === undefined ? {} : { CONTACT_TRAVEL_HALVINGS: cfg.travel }),
+    ...(cfg.budget === undefined ? {} : { CONTACT_WORK_BUDGET: cfg.budget }),
   } as const
   const trace: string[] = []
   const sim = createBallPhysics(overrides)
@@ -360,8 +363,9 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (ms > 2 * STEP_BUDGET_MS) throw new OverBudget(`step still running after ${ms.toFixed(0)} ms (pass ${sim.world.pass})`)
     },
   })
-  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, halved: 0, mostHalvings: 0, events: {} })
+  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, halved: 0, mostHalvings: 0, lean: 0, events: {} })
   let halved = false
+  let lean = false
   stats.runs++
   let lastSpawn = 0
   // fixed-tick contacts resolve overlaps at each contact tick; between ticks a ball whose path changes (a
@@ -577,6 +581,11 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       stats.halved++
     }
     stats.mostHalvings = Math.max(stats.mostHalvings, sim.world.fixed?.halvings ?? 0)
+    // runs with a tick solved past its span's work budget (src/contacts/fixedBudget.ts)
+    if (!lean && (sim.world.fixed?.lean ?? 0) > 0) {
+      lean = true
+      stats.lean++
+    }
     stats.balls = Math.max(stats.balls, sim.balls().length)
     for (const e of events) stats.events[e.type] = (stats.events[e.type] ?? 0) + 1
     if (on('events')) {
@@ -734,6 +743,16 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
   it('fixed-tick contacts, bursts of up to 150 balls (the tick halved in some): stores finite, events in order and in their window, every step within its time budget, no overlap over 1e-3 px 0.5 s after the last spawn', () => {
     property('crowds (fixed)', scenario(CROWDS, ['fixed']), ['finite', 'events', 'time', 'overlap'], 60, SEED + 15)
     expect(seen['crowds (fixed)']!.halved).toBeGreaterThan(0)
+  }, 120_000 * SCALE)
+
+  // a game that bounds its frames (CONTACT_WORK_BUDGET, src/contacts/fixedBudget.ts): the lean ticks past the
+  // budget keep every invariant but the pairing of balls sped up beyond their reach
+  it('fixed-tick contacts with CONTACT_WORK_BUDGET 1 (the least), bursts of up to 150 balls: stores finite, events in order and in their window, every step within its time budget, no overlap over 1e-3 px 0.5 s after the last spawn; kinetic energy does not rise without walls', () => {
+    const budgeted = (L: Limits) => scenario(L, ['fixed']).map(([cfg, ops]): [Cfg, Op[]] => [{ ...cfg, budget: 1 }, ops])
+    property('crowds (fixed, budget)', budgeted(CROWDS), ['finite', 'events', 'time', 'overlap'], 30, SEED + 41)
+    property('energy (fixed, budget)', budgeted({ ...CROWDS, walls: false }), ['energy'], 20, SEED + 42)
+    expect(seen['crowds (fixed, budget)']!.lean).toBeGreaterThan(0)
+    expect(seen['energy (fixed, budget)']!.lean).toBeGreaterThan(0)
   }, 120_000 * SCALE)
 
   it('fixed-tick contacts, bursts of up to 150 balls, no walls: kinetic energy does not rise across a step with collisions', () => {
