@@ -56,6 +56,14 @@ function bodies(sim: BallPhysics, ids: number[], masses: number[]) {
   }
 }
 
+/** A light ball (mass light) between balls ratioA and ratioB times heavier, put down as `balls` says, in squeezeWorld(e): the world, its balls and their bodies. */
+function trio(e: number, { light, ratioA, ratioB }: { light: number; ratioA: number; ratioB: number }, balls: Array<{ x: number; y: number; vx: number; vy: number }>) {
+  const sim = squeezeWorld(e)
+  const masses = [light * ratioA, light, light * ratioB]
+  const ids = balls.map((b, i) => sim.addBall({ ...b, mass: masses[i] }))
+  return { sim, ids, masses, ...bodies(sim, ids, masses) }
+}
+
 describe('fixed-tick contacts at a closed wall', () => {
   for (const [radius, speed] of [[22, 2500], [22, 600], [60, 2500], [110, 1000]] as const) {
     for (const gap of [0, 0.5, 3]) {
@@ -287,16 +295,13 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
           e: fc.double({ min: 0, max: 1, noNaN: true }),
         }),
         ({ light, ratioA, ratioB, angle, va, vb, e }) => {
-          const sim = squeezeWorld(e)
-          const masses = [light * ratioA, light, light * ratioB]
           const c = Math.cos(angle)
           const sn = Math.sin(angle)
-          const ids = [
-            sim.addBall({ x: 100, y: 200, vx: va, vy: 0, mass: masses[0] }),
-            sim.addBall({ x: 122, y: 200, vx: 0, vy: 0, mass: light }),
-            sim.addBall({ x: 122 + 22.00001 * c, y: 200 + 22.00001 * sn, vx: -vb * c, vy: -vb * sn, mass: masses[2] }),
-          ]
-          const { states, energy, px, py } = bodies(sim, ids, masses)
+          const { sim, masses, states, energy, px, py } = trio(e, { light, ratioA, ratioB }, [
+            { x: 100, y: 200, vx: va, vy: 0 },
+            { x: 122, y: 200, vx: 0, vy: 0 },
+            { x: 122 + 22.00001 * c, y: 200 + 22.00001 * sn, vx: -vb * c, vy: -vb * sn },
+          ])
           const [k0, x0, y0] = [energy(), px(), py()]
           const scale = masses[0]! * va + masses[2]! * vb
           const squeezes = squeezesSolved()
@@ -377,14 +382,11 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
           e: fc.double({ min: 0, max: 1, noNaN: true }),
         }),
         ({ light, ratioA, ratioB, angle, v, gap, e }) => {
-          const sim = squeezeWorld(e)
-          const masses = [light * ratioA, light, light * ratioB]
-          const ids = [
-            sim.addBall({ x: 100, y: 200, vx: v, vy: 0, mass: masses[0] }),
-            sim.addBall({ x: 122, y: 200, vx: v, vy: 0, mass: light }),
-            sim.addBall({ x: 122 + (22 + gap) * Math.cos(angle), y: 200 + (22 + gap) * Math.sin(angle), vx: 0, vy: 0, mass: masses[2] }),
-          ]
-          const { states, energy, px } = bodies(sim, ids, masses)
+          const { sim, masses, states, energy, px } = trio(e, { light, ratioA, ratioB }, [
+            { x: 100, y: 200, vx: v, vy: 0 },
+            { x: 122, y: 200, vx: v, vy: 0 },
+            { x: 122 + (22 + gap) * Math.cos(angle), y: 200 + (22 + gap) * Math.sin(angle), vx: 0, vy: 0 },
+          ])
           const p0 = px()
           let last = energy()
           // how far the balls at rest were moved while at rest
