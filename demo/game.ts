@@ -33,6 +33,8 @@ export const REST_HOLD = 0.9
 export const REST_FADE = 0.6
 const STRESS_REST_HOLD = 0.25
 const STRESS_CAPTURE_HOLD = 0.6
+/** The least power of a ball a burst throws from the launch point. */
+const LAUNCHER_MIN_POWER = 0.35
 /** How long a burst's captured ball stays in its hole before it is taken out, s (burst after burst filled the holes with thousands of balls to draw). */
 const BURST_CAPTURE_HOLD = 1.5
 
@@ -112,6 +114,11 @@ export class Game {
   throwsMade = 0
   lastThrow: (ThrowRequest & { speed: number }) | null = null
   stressTarget = 0
+  /**
+   * Where the multi-ball bursts come from: spread along the bottom edge, or all from the launch point (an
+   * arcade launcher: with contacts on, the balls leave it one after another as each clears the spot)
+   */
+  burstFrom: 'edge' | 'launcher' = 'edge'
   private stressLive = 0
   private playerMoving = 0
   private random = mulberry32(0x5eed)
@@ -244,13 +251,16 @@ export class Game {
     return true
   }
 
-  /** n balls thrown at once from along the bottom edge toward random points of the hole field. */
+  /**
+   * n balls thrown at once toward random points of the hole field: from along the bottom edge, or (burstFrom
+   * 'launcher') all from the launch point.
+   */
   burst(n: number): void {
     if (this.replaying !== null) return
     this.cancelCall()
     this.applyPending()
     this.beginRound()
-    for (let i = 0; i < n; i++) this.spawnRandom(Kind.Burst)
+    for (let i = 0; i < n; i++) this.spawnRandom(Kind.Burst, this.burstFrom === 'launcher')
   }
 
   /** Keeps `n` balls in play (0 = off): finished ones are removed and thrown again. */
@@ -284,9 +294,18 @@ export class Game {
     }
   }
 
-  private spawnRandom(kind: KindCode): number {
+  private spawnRandom(kind: KindCode, fromLauncher = false): number {
     const r = this.random
     const W = this.panel.width
+    if (fromLauncher) {
+      // from the launch point: aimed at a random point of the hole field, with at least LAUNCHER_MIN_POWER (a
+      // ball too slow to clear the spot would hold the ones behind it until it rolls back off)
+      const { x, y } = this.panel.launch
+      const tx = 20 + r() * (W - 40)
+      const ty = 100 + r() * 300
+      const angle = Math.max(-1.4, Math.min(1.4, Math.atan2(tx - x, -(ty - y))))
+      return this.spawn(kind, x, y, LAUNCHER_MIN_POWER + (1 - LAUNCHER_MIN_POWER) * r(), angle)
+    }
     const x = 40 + r() * (W - 80)
     const y = this.panel.launch.y + (r() - 0.5) * 20
     const tx = 20 + r() * (W - 40)

@@ -8,6 +8,7 @@ import { PanelView, type InspectorOptions } from './panelView'
 import { RegimeView } from './regimeView'
 import { MAP_SPEC, OutcomeView } from './outcomeView'
 import { BALL_MODE_NAMES, EVENT_TYPE_NAMES, type ThrowFailure, type ThrowSolution } from '../src/index'
+import { BallMode } from '../src/ecs'
 import type { ShotReply } from './shotCall'
 import { eventColor, hex, modeColor } from './theme'
 import { createTuning } from './tuning'
@@ -300,6 +301,9 @@ async function main(): Promise<void> {
       case 'KeyS':
         setStress(game.stressTarget === 0)
         break
+      case 'KeyL':
+        setBurstFrom(game.burstFrom === 'edge' ? 'launcher' : 'edge')
+        break
       case 'KeyP':
         game.replayLastRound()
         break
@@ -364,6 +368,14 @@ async function main(): Promise<void> {
     tuning.set('BALL_COLLISIONS', now === 'off' ? 'on' : now === 'on' ? 'fixed' : 'off')
     syncContacts()
   })
+  // where the multi-ball bursts come from: the bottom edge, or the launch point (an arcade launcher)
+  const fromBtn = el<HTMLButtonElement>('burst-from')
+  const setBurstFrom = (from: 'edge' | 'launcher'): void => {
+    game.burstFrom = from
+    fromBtn.setAttribute('aria-pressed', String(from === 'launcher'))
+    fromBtn.textContent = from === 'launcher' ? 'From: launcher' : 'From: bottom edge'
+  }
+  button('burst-from', () => setBurstFrom(game.burstFrom === 'edge' ? 'launcher' : 'edge'))
   // lil-gui keeps key events from leaving its controls: a tuning button keeps no focus, so the keys go on
   // working after it (as after the demo's own buttons)
   el('gui').addEventListener('click', (e) => {
@@ -488,6 +500,21 @@ async function main(): Promise<void> {
       return game.live.length
     },
     /** the deepest overlap of two balls on the panel (rolling, on a rim or resting), px; 0 when none */
+    /** where the bursts come from ('edge' or 'launcher') */
+    get burstFrom() {
+      return game.burstFrom
+    },
+    /** balls waiting at their spots to be launched (mode 'held': contacts on, thrown onto another ball) */
+    get heldBalls() {
+      const B = game.sim.world.Ball
+      return game.live.filter((b) => B.mode[b] === BallMode.Held).length
+    },
+    /** the balls on the panel (rolling, on a rim or resting) whose centres are over 30 px from the launch point */
+    get awayFromLauncher() {
+      const B = game.sim.world.Ball
+      const { x, y } = game.panel.launch
+      return game.live.filter((b) => (B.mode[b] === BallMode.Rolling || B.mode[b] === BallMode.RimRoll || B.mode[b] === BallMode.Resting) && Math.hypot(B.x[b]! - x, B.y[b]! - y) > 30).length
+    },
     get worstOverlap() {
       const B = game.sim.world.Ball
       const on = game.live.filter((b) => B.mode[b] === 0 || B.mode[b] === 1 || B.mode[b] === 3)

@@ -52,6 +52,9 @@ interface DemoHook {
   config: Record<string, unknown>
   simTime: number
   worstOverlap: number
+  burstFrom: 'edge' | 'launcher'
+  heldBalls: number
+  awayFromLauncher: number
   lipRiders: { ball: number; distance: number; angle: number }[]
   roundsRecorded: number
   lastRoundSteps: number
@@ -352,6 +355,43 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.click('#clear-balls')
     }
     // back to the design values for the tests after this one
+    await page.click('#contacts')
+    expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('false')
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await page.click('#clear-balls')
+    expect(problems).toEqual([])
+  })
+
+  it('a 1,000-ball burst from the launcher (From: launcher, every ball thrown from the launch point), exact then fixed tick: the balls leave one after another and spread, none inside another, and score', async () => {
+    await page.click('#burst-from')
+    expect(await page.textContent('#burst-from')).toBe('From: launcher')
+    expect(await page.evaluate(() => window.__demo.burstFrom)).toBe('launcher')
+    for (const mode of ['on', 'fixed'] as const) {
+      await page.click('#contacts')
+      await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe(mode)
+      const score0 = await page.evaluate(() => window.__demo.score)
+      await page.click('#multi-1000')
+      await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe(mode)
+      const t0 = await page.evaluate(() => window.__demo.simTime)
+      // every ball was put down on the launch point: all but the first wait there
+      expect(await page.evaluate(() => window.__demo.heldBalls), mode).toBeGreaterThan(900)
+      await page.waitForFunction((t) => window.__demo.simTime > t + 0.5, t0, { timeout: 30_000 })
+      expect(await page.evaluate(() => window.__demo.worstOverlap), mode).toBeLessThanOrEqual(1e-3)
+      await page.waitForFunction((t) => window.__demo.simTime > t + 3, t0, { timeout: 60_000 })
+      const state = await page.evaluate(() => ({ held: window.__demo.heldBalls, away: window.__demo.awayFromLauncher, overlap: window.__demo.worstOverlap, t: window.__demo.simTime }))
+      measured[`launcher ${mode}`] = state
+      expect(state.overlap, mode).toBeLessThanOrEqual(1e-3)
+      // out one after another: tens of balls a second have left the spot and rolled away from it (none waits
+      // for good), and most are still held, in order, at the launcher
+      expect(state.away, mode).toBeGreaterThanOrEqual(8)
+      expect(state.held, mode).toBeLessThan(1000 - 30)
+      expect(state.held, mode).toBeGreaterThan(500)
+      await page.waitForFunction((s) => window.__demo.score > s, score0, { timeout: 30_000 })
+      await page.click('#clear-balls')
+      expect(await page.evaluate(() => window.__demo.heldBalls)).toBe(0)
+    }
+    await page.click('#burst-from')
+    expect(await page.textContent('#burst-from')).toBe('From: bottom edge')
     await page.click('#contacts')
     expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('false')
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
