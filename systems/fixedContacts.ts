@@ -13,7 +13,8 @@
 // (fixedLayered.ts) has its velocities solved again; each ball's contacts are counted on the clock, a light
 // ball past MAX_TICK_CONTACTS in a contact tick of it meeting heavy ones without restitution (fixedCount.ts).
 // With config.CONTACT_WORK_BUDGET set, each CONTACT_TICK span's work is metered, and past its budget the
-// span's remaining ticks are solved lean: one try, a short velocity call, no rounds (fixedBudget.ts).
+// span's remaining ticks are solved lean: one try, a short velocity call, no widening rounds, a short
+// projection (fixedBudget.ts).
 // Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
@@ -35,7 +36,7 @@ import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
-import { iterationsNow, lean, meterTick, spend } from '../src/contacts/fixedBudget.js'
+import { iterationsNow, lean, meterTick, skipRest, spend } from '../src/contacts/fixedBudget.js'
 import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -45,7 +46,6 @@ export function fixedContactsSystem(w: BallWorld): void {
   if (F === null || !F.due || w.pass !== 0) return
   F.due = false
   const t = w.time
-  F.ticks++
   if (F.broadphase >= 0) F.denseNext = F.broadphase
   if (F.dense !== F.denseNext) {
     F.dense = F.denseNext
@@ -54,6 +54,9 @@ export function fixedContactsSystem(w: BallWorld): void {
   }
   coarsenTick(w, F)
   meterTick(w, F)
+  // past its budget and as much again on lean ticks, the span's last ticks are skipped (src/contacts/fixedBudget.ts)
+  if (skipRest(F)) return
+  F.ticks++
   // a try that stopped with a ball that may pass through another is dropped, and the tick solved again at a
   // finer spacing (src/contacts/fixedRedo.ts)
   saveTick(w, F)
@@ -90,13 +93,15 @@ export function fixedContactsSystem(w: BallWorld): void {
   // a ball the projection pushed into a ball the tick did not pair it with: paired, projected again; past
   // MAX_WIDEN_ROUNDS only along a row (a push running along balls at rest that the tick did not gather, a
   // ball a round): while each round pairs one ball more and the tick has CHAIN_PAIRS_PER_BALL pairs a
-  // candidate or fewer, up to MAX_PASS_ROUNDS
-  for (let round = 0; F.overlap && F.capped === capped && !lean(F); round++) {
+  // candidate or fewer, up to MAX_PASS_ROUNDS. A lean tick takes the first MAX_WIDEN_ROUNDS only (each with a
+  // lean projection): without them it left a ball the projection pushed 7 px, out of one ball into another
+  // it had not paired, 1.4 px deep in it (src/contacts/fixedBudget.ts)
+  for (let round = 0; F.overlap && F.capped === capped; round++) {
     const pairs = F.pairCount
     if (!joinPushed(w, F)) break
     solvePositions(w, F)
     if (round + 1 < MAX_WIDEN_ROUNDS) continue
-    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
+    if (lean(F) || F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
   }
   // a row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
   // push carried along it by more than the gaps between its balls: a ball moved up to one closing on it,

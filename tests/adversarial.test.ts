@@ -887,6 +887,66 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['overlap'])
   })
 
+  // a crowd at up to 1e5 px/s in the panel's closed elastic walls with CONTACT_WORK_BUDGET 1, every tick past
+  // the first ones lean (found at 29x the long run): a lean tick's projection pushed a radius-11 ball 7 px,
+  // out of one ball into another the tick had not paired with it (5.7 px apart at the tick, just beyond the
+  // two reaches), and a lean tick took no rounds to pair it, so the two stayed 1.4 px deep after the tick
+  it('fixed-tick contacts with a work budget: a lean tick pairs a ball its projection pushes into one it had not paired', () => {
+    const ops = [
+      { t: 'burst', n: 93, x: 93.35826, y: 1.0256799999999977, spread: 0, speed: 100000, mass: 1.0046157902783952, seed: 579, aim: { p: 'aim', k: 0, d: 9.556199999999999, off: -0.676728, a: 2.3503977, lip: 467.61796 } },
+      { t: 'addHole', x: 91.4097, y: 109.35988, radius: 10.30312 },
+      { t: 'throw', x: 349.24016, y: 398.36496, power: 0.188936, angle: 0.008721061206364844, radius: 0.007014552984199714, place: { p: 'overlap', k: 18, f: 1.9899880600000002, a: 2.2233644999999997 } },
+      { t: 'addHole', x: 50, y: 370 },
+      { t: 'addBall', x: 168.59632000000002, y: 420.36408, radius: 0.002471724145016129, mass: 1000000000, place: { p: 'free' }, vx: -0.08342223854201766, vy: -0.11641456912643863 },
+      { t: 'addBall', x: 1321295.6341865766, y: -19.99844, place: { p: 'free' }, vx: 5e-324, vy: -5e-324 },
+      { t: 'burst', n: 15, x: -13.199359999999999, y: 460.37496, spread: 60, speed: 5000, radius: 0.00399024902362142, mass: 1.0092528860766845, seed: 760, aim: { p: 'aim', k: 39, d: 133.4718, off: -0.47454419999999997, a: 0.0001134 } },
+      { t: 'walls', minX: 324.14164, minY: 430, w: 0.000001, h: 0.000001, e: 0, open: { left: true, top: true, right: false, bottom: true } },
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, open: { left: true, top: true, right: true, bottom: false } },
+      { t: 'burst', n: 146, x: 439.9931, y: 228.90268, spread: 1, speed: 30000, radius: 0.002978516429429191, seed: 230, aim: { p: 'aim', k: 26, d: 0.00039999999999999996, off: 0.9773478000000002, a: 0.000063 } },
+      { t: 'addBall', x: 381.10573999999997, y: 376.32008, place: { p: 'stack', k: 42 }, vx: 4561.266057205212, vy: 99895.92009664552 },
+      { t: 'addHole', x: 260, y: 396.36192 },
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { top: false, right: false } },
+      { t: 'throw', x: 210, y: 450, power: 1, angle: -0.33929200658769787, radius: 1, mass: 0.9840111057611337, place: { p: 'free' } },
+      { t: 'removeHole', k: 38 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 1 }, ops, ['overlap'])
+  })
+
+  // 82 balls of radius 0.1 at 1e5 px/s in the closed elastic walls with CONTACT_WORK_BUDGET 1, and 60 more put
+  // down among them (found at 29x the long run): the tick was halved 9 times for their speed, and each span's
+  // 512 ticks were solved lean after its budget, 1,024 a frame at about 150 us each: the run's steps took
+  // 7.3 s. A span now skips its last ticks once its lean ticks have spent its budget again (0.9 s)
+  it('fixed-tick contacts with a work budget: a span of a tick halved 9 times skips its last ticks past its budget, and the run keeps its time budget', () => {
+    const ops = [
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { bottom: false } },
+      { t: 'burst', n: 82, x: 172.52334, y: 499.49144, spread: 400, speed: 100000, radius: 0.10232929922807542, mass: 5902010.801718442, seed: 2, aim: { p: 'aim', k: 11, d: 114.838, off: -0.34718839999999995, a: 3.9503078999999994 } },
+      { t: 'removeBall', k: 14 },
+      { t: 'step', dt: 10 },
+      { t: 'throw', x: 139.98937999999998, y: 123.72435999999999, power: 0.384739, angle: -0.26633165880072784, mass: 0.011534532578210924, place: { p: 'free' } },
+      { t: 'throw', x: 251.01912, y: 192.12256, power: 0, angle: 3.2216278680326464, radius: 0.0018879913490962926, mass: 9.72747223776964e-09, place: { p: 'stack', k: 9 } },
+      { t: 'addBall', x: 146554784.09559128, y: 303.98548, radius: 438.5306977749856, mass: 27.47894153102397, place: { p: 'free' }, vx: 0.8185012494249873, vy: 1.227911021631003 },
+      { t: 'step', dt: 0.25 },
+      { t: 'addBall', x: -5.687908260029906e-273, y: 112.47052, radius: 0.0017538805018417621, mass: 1e-09, place: { p: 'aim', k: 40, d: 75.38040000000001, off: -0.6316492, a: 0.7996589999999999 }, vx: 0.38579967947829635, vy: 0.864015840632588 },
+      { t: 'burst', n: 55, x: 283.20762, y: 476.61404, spread: 0, speed: 5000, radius: 0.008709635899560805, seed: 772, aim: { p: 'aim', k: 44, d: 172.0282, off: 0.64096932, a: 2.9706327, lip: 490.779955 } },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'addHole', x: 297.15114, y: 340.74324 },
+      { t: 'setVel', k: 0, vx: -0.028183829312644536, vy: 0 },
+      { t: 'step', dt: 0.25 },
+      { t: 'addBall', x: 286.72294, y: 487.81899999999996, place: { p: 'free' }, vx: 0.008779773674119647, vy: 0.006185539589505897 },
+      { t: 'addBall', x: 224.7085, y: 377.99604, radius: 779.8301105232586, mass: 0.0007726805850957021, place: { p: 'free' }, vx: 0, vy: 0.0019724227361148533 },
+      { t: 'setVel', k: 16, vx: 0, vy: 0.2630267991895382 },
+      { t: 'addBall', x: 297.76063999999997, y: 50.99924, place: { p: 'free' }, vx: -1e-300, vy: 0 },
+      { t: 'addHole', x: 290, y: 370 },
+      { t: 'addBall', x: 159.65944000000002, y: 92.20352, radius: 0.07464487584100665, mass: 1e-09, place: { p: 'free' }, vx: -8.629785477669705, vy: 0 },
+      { t: 'addBall', x: 423.9506, y: 350, mass: 171001531.50902897, place: { p: 'inHole', k: 20, f: 0.101402, a: 1.8921483000000001 }, vx: 0.04997713440463897, vy: -0.04645586046916193 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'step', dt: 0.1 },
+      { t: 'addBall', x: 132.8005, y: 214.95316, radius: 0.23014418174085083, mass: 17619760.46411631, place: { p: 'free' }, vx: 0.03261512073488495, vy: 0.06301793385479981 },
+      { t: 'step', dt: 0.016666666666666666 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 1 }, ops, ['finite', 'time'])
+  })
+
   // big and small balls pressed in the panel's walls: the projection's last sweep over the moving balls' pairs
   // was cut short by the budget, and the overlap of the pairs it had reached was read as the whole tick's,
   // so the tick, 3.7e-3 px deep, was not counted in world.fixed.capped (whose ticks the overlap check skips)

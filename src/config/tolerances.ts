@@ -294,8 +294,11 @@ export const GRAZE_SLIDE = 64
  * Fixed-tick contacts: the work meter (src/contacts/fixedBudget.ts). A CONTACT_TICK span of the clock may
  * spend config.CONTACT_WORK_BUDGET visits to every pair of its balls, counted as at least MIN_WORK_BALLS
  * balls. Past that, the span's remaining ticks are lean: one try, one velocity call of LEAN_ITERATIONS sweeps
- * and no widening rounds, a projection of at most LEAN_PROJECTION_BUDGET × pairs pair visits.
+ * and no widening rounds, a projection of at most LEAN_PROJECTION_BUDGET × pairs pair visits (and as many
+ * again after each of up to MAX_WIDEN_ROUNDS join rounds); past LEAN_SHARE × the budget more, the span's last
+ * ticks are skipped.
  */
 export const MIN_WORK_BALLS = 64
 export const LEAN_ITERATIONS = 2
 export const LEAN_PROJECTION_BUDGET = 2
+export const LEAN_SHARE = 1

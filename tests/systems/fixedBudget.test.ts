@@ -4,7 +4,7 @@
 // ones in a closed box) reaches a budget of 16 at once; a sparse gas never reaches one of 1.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, type BallPhysics } from '../../src/index'
-import { LEAN_ITERATIONS, LEAN_PROJECTION_BUDGET } from '../../src/config/tolerances'
+import { LEAN_ITERATIONS, LEAN_PROJECTION_BUDGET, LEAN_SHARE, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 import { sweepsRun } from '../../src/contacts/fixedCalls'
 
 /** 360 radius-11 balls in a closed elastic 420 × 480 box (about half of it covered): every 25th of mass 1e9 at 1e4 px/s, the rest of mass 1e-5 at 100 px/s */
@@ -18,6 +18,22 @@ function pumped(budget?: number): BallPhysics {
     const a = random() * 6.283
     const speed = heavy ? 1e4 : 100
     sim.addBall({ x: 15 + 390 * random(), y: 15 + 450 * random(), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: heavy ? 1e9 : 1e-5 })
+  }
+  return sim
+}
+
+/**
+ * 145 radius-0.1 balls at 1e5 px/s in a closed elastic 420 × 480 box, every 10th of mass 6e6 (the rest of
+ * mass 1): each crosses the box 200 times a second, and the tick is halved for it.
+ */
+function fast(budget: number): BallPhysics {
+  let seed = 11
+  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_WORK_BUDGET: budget })
+  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
+  for (let i = 0; i < 145; i++) {
+    const a = random() * 6.283
+    sim.addBall({ x: 10 + 400 * random(), y: 10 + 460 * random(), vx: 1e5 * Math.cos(a), vy: 1e5 * Math.sin(a), radius: 0.1, mass: i % 10 === 0 ? 6e6 : 1 })
   }
   return sim
 }
@@ -46,7 +62,8 @@ describe('fixed-tick contacts: the work meter', () => {
     const sim = pumped(16)
     const F = sim.world.fixed!
     // a probe right after each tick's solve: a tick that starts with its span's budget spent costs at most
-    // its gather, two lean velocity calls and a lean projection over its pairs
+    // its gather, two lean velocity calls, and a lean projection over its pairs and one after each of up to
+    // MAX_WIDEN_ROUNDS rounds that pair the balls it pushed into others
     let span = -1
     let work = 0
     let leanTicks = 0
@@ -63,7 +80,7 @@ describe('fixed-tick contacts: the work meter', () => {
         const [s, spent, limit] = F.budget as unknown as [number, number, number]
         if (one && s === span && work > limit) {
           leanTicks++
-          expect(spent - work).toBeLessThanOrEqual(F.full + (1 + 2 * LEAN_ITERATIONS + LEAN_PROJECTION_BUDGET) * F.pairCount)
+          expect(spent - work).toBeLessThanOrEqual(F.full + (1 + 2 * LEAN_ITERATIONS + (1 + MAX_WIDEN_ROUNDS) * LEAN_PROJECTION_BUDGET) * F.pairCount)
         }
         span = s
         work = spent
@@ -107,6 +124,72 @@ describe('fixed-tick contacts: the work meter', () => {
       expect(other.events).toEqual(at60.events)
       expect(other.states).toEqual(at60.states)
     }
+  })
+
+  it('past its budget and LEAN_SHARE of it again on lean ticks, a span skips its last ticks: no tick is solved past that, the same bits at 30, 60 and 240 Hz, energy never rising, a snapshot goes on with the same bits', () => {
+    const run = (hz: number, probe: boolean) => {
+      const sim = fast(1)
+      const F = sim.world.fixed!
+      let ticks = 0
+      let span = -1
+      let work = 0
+      let solved = 0
+      let last = energy(sim)
+      if (probe) {
+        const at = sim.schedule.findIndex((e) => e.name === 'fixedContacts')
+        sim.schedule.splice(at + 1, 0, {
+          name: 'meterProbe',
+          run: () => {
+            if (F.ticks === ticks) return
+            const one = F.ticks === ticks + 1
+            ticks = F.ticks
+            const [s, spent, limit] = F.budget as unknown as [number, number, number]
+            // a tick solved in a span whose work before it was past (1 + LEAN_SHARE) × its budget: not skipped
+            if (one && s === span) {
+              solved++
+              expect(work).toBeLessThanOrEqual((1 + LEAN_SHARE) * limit)
+            }
+            span = s
+            work = spent
+            const k = energy(sim)
+            expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+            last = k
+          },
+        })
+      }
+      const events: string[] = []
+      for (let i = 0; i < hz / 3; i++) {
+        sim.step(1 / hz)
+        for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+      }
+      expect(states(sim).every(Number.isFinite)).toBe(true)
+      return { sim, events, states: states(sim), skipped: F.budget[3]!, ticks: F.ticks, solved }
+    }
+    const at60 = run(60, true)
+    expect(at60.skipped).toBeGreaterThan(5)
+    expect(at60.solved).toBeGreaterThan(10)
+    expect(at60.events.length).toBeGreaterThan(100)
+    for (const hz of [30, 240]) {
+      const other = run(hz, false)
+      expect(other.events).toEqual(at60.events)
+      expect(other.states).toEqual(at60.states)
+    }
+    // a snapshot taken after skipped spans goes on with the same bits
+    const a = at60.sim
+    a.drainEvents()
+    const b = createBallPhysics(a.config)
+    b.restore(a.snapshot())
+    for (let i = 0; i < 10; i++) {
+      a.step(1 / 60)
+      b.step(1 / 60)
+      expect(b.drainEvents()).toEqual(a.drainEvents())
+    }
+    expect(states(b)).toEqual(states(a))
+    expect(b.world.fixed!.budget).toEqual(a.world.fixed!.budget)
+    // without a budget the same third of a second takes many times the ticks (the tick is halved for the balls' speed)
+    const free = fast(0)
+    for (let i = 0; i < 20; i++) free.step(1 / 60)
+    expect(free.world.fixed!.ticks).toBeGreaterThan(4 * at60.ticks)
   })
 
   it('a snapshot taken in the middle of a lean span restores the meter: the restored world goes on with the same bits', () => {
