@@ -14,7 +14,7 @@
 // ball past MAX_TICK_CONTACTS in a contact tick of it meeting heavy ones without restitution (fixedCount.ts).
 // With config.CONTACT_WORK_BUDGET set, each CONTACT_TICK span's work is metered, and past its budget the
 // span's remaining ticks are solved lean: one try, a short velocity call, no widening rounds, a short
-// projection (fixedBudget.ts).
+// projection; past as much again, they are skipped until the next span (fixedBudget.ts).
 // Between ticks the balls follow their closed-form paths through the holes
 // and walls exactly, as in every other mode. Cheaper than the exact method in dense scenes, at a cost in
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
