@@ -7,19 +7,26 @@ import { createBallPhysics, type BallPhysics } from '../../src/index'
 import { LEAN_ITERATIONS, LEAN_PROJECTION_BUDGET, LEAN_SHARE, MAX_WIDEN_ROUNDS } from '../../src/config/tolerances'
 import { sweepsRun } from '../../src/contacts/fixedCalls'
 
+/** A ball to put down: the i-th, with a random direction `a` and the scene's seeded generator. */
+type Put = (i: number, a: number, random: () => number) => Parameters<BallPhysics['addBall']>[0]
+
+/** n balls put down by `put` in a closed box of restitution e, from a seeded generator; no deceleration. */
+function boxed(seed0: number, e: number, width: number, height: number, n: number, budget: number | undefined, put: Put): BallPhysics {
+  let seed = seed0
+  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0, ...(budget === undefined ? {} : { CONTACT_WORK_BUDGET: budget }) })
+  sim.setWalls({ minX: 0, minY: 0, maxX: width, maxY: height, restitution: e })
+  for (let i = 0; i < n; i++) sim.addBall(put(i, random() * 6.283, random))
+  return sim
+}
+
 /** 360 radius-11 balls in a closed elastic 420 × 480 box (about half of it covered): every 25th of mass 1e9 at 1e4 px/s, the rest of mass 1e-5 at 100 px/s */
 function pumped(budget?: number): BallPhysics {
-  let seed = 7
-  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, ...(budget === undefined ? {} : { CONTACT_WORK_BUDGET: budget }) })
-  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
-  for (let i = 0; i < 360; i++) {
+  return boxed(7, 1, 420, 480, 360, budget, (i, a, random) => {
     const heavy = i % 25 === 0
-    const a = random() * 6.283
     const speed = heavy ? 1e4 : 100
-    sim.addBall({ x: 15 + 390 * random(), y: 15 + 450 * random(), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: heavy ? 1e9 : 1e-5 })
-  }
-  return sim
+    return { x: 15 + 390 * random(), y: 15 + 450 * random(), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: heavy ? 1e9 : 1e-5 }
+  })
 }
 
 /**
@@ -27,15 +34,7 @@ function pumped(budget?: number): BallPhysics {
  * mass 1): each crosses the box 200 times a second, and the tick is halved for it.
  */
 function fast(budget: number): BallPhysics {
-  let seed = 11
-  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_WORK_BUDGET: budget })
-  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
-  for (let i = 0; i < 145; i++) {
-    const a = random() * 6.283
-    sim.addBall({ x: 10 + 400 * random(), y: 10 + 460 * random(), vx: 1e5 * Math.cos(a), vy: 1e5 * Math.sin(a), radius: 0.1, mass: i % 10 === 0 ? 6e6 : 1 })
-  }
-  return sim
+  return boxed(11, 1, 420, 480, 145, budget, (i, a, random) => ({ x: 10 + 400 * random(), y: 10 + 460 * random(), vx: 1e5 * Math.cos(a), vy: 1e5 * Math.sin(a), radius: 0.1, mass: i % 10 === 0 ? 6e6 : 1 }))
 }
 
 function energy(sim: BallPhysics): number {
@@ -57,37 +56,48 @@ function states(sim: BallPhysics): number[] {
   return out
 }
 
+/**
+ * A probe right after the fixed-contacts system: after each tick's solve it holds the kinetic energy to no
+ * rise and calls `tick` with the work its span had spent before the tick and after it, and the span's budget;
+ * `same` is false for a span's first tick the probe sees and for a tick that came to it with another (the
+ * solve at a step's end runs without the probe).
+ */
+function probeTicks(sim: BallPhysics, tick: (same: boolean, before: number, after: number, limit: number) => void): void {
+  const F = sim.world.fixed!
+  let ticks = 0
+  let span = -1
+  let work = 0
+  let last = energy(sim)
+  const at = sim.schedule.findIndex((e) => e.name === 'fixedContacts')
+  sim.schedule.splice(at + 1, 0, {
+    name: 'meterProbe',
+    run: () => {
+      if (F.ticks === ticks) return
+      const one = F.ticks === ticks + 1
+      ticks = F.ticks
+      const [s, spent, limit] = F.budget as unknown as [number, number, number]
+      tick(one && s === span, work, spent, limit)
+      span = s
+      work = spent
+      const k = energy(sim)
+      expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
+      last = k
+    },
+  })
+}
+
 describe('fixed-tick contacts: the work meter', () => {
   it('CONTACT_WORK_BUDGET 16, a pumped elastic crowd: its spans spend their budget and go lean, each lean tick within its own bound; energy never rises at a tick, every state finite; under a fifth of the sweeps of the unbounded solve', () => {
     const sim = pumped(16)
     const F = sim.world.fixed!
-    // a probe right after each tick's solve: a tick that starts with its span's budget spent costs at most
-    // its gather, two lean velocity calls, and a lean projection over its pairs and one after each of up to
-    // MAX_WIDEN_ROUNDS rounds that pair the balls it pushed into others
-    let span = -1
-    let work = 0
+    // a tick that starts with its span's budget spent costs at most its gather, two lean velocity calls, and a
+    // lean projection over its pairs and one after each of up to MAX_WIDEN_ROUNDS rounds that pair the balls
+    // it pushed into others
     let leanTicks = 0
-    let ticks = 0
-    let last = energy(sim)
-    const at = sim.schedule.findIndex((e) => e.name === 'fixedContacts')
-    sim.schedule.splice(at + 1, 0, {
-      name: 'meterProbe',
-      run: () => {
-        if (F.ticks === ticks) return
-        // the solve at a step's end runs without the probe: two ticks then come to it at once
-        const one = F.ticks === ticks + 1
-        ticks = F.ticks
-        const [s, spent, limit] = F.budget as unknown as [number, number, number]
-        if (one && s === span && work > limit) {
-          leanTicks++
-          expect(spent - work).toBeLessThanOrEqual(F.full + (1 + 2 * LEAN_ITERATIONS + (1 + MAX_WIDEN_ROUNDS) * LEAN_PROJECTION_BUDGET) * F.pairCount)
-        }
-        span = s
-        work = spent
-        const k = energy(sim)
-        expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
-        last = k
-      },
+    probeTicks(sim, (same, before, after, limit) => {
+      if (!same || before <= limit) return
+      leanTicks++
+      expect(after - before).toBeLessThanOrEqual(F.full + (1 + 2 * LEAN_ITERATIONS + (1 + MAX_WIDEN_ROUNDS) * LEAN_PROJECTION_BUDGET) * F.pairCount)
     })
     const sweeps = sweepsRun()
     for (let i = 0; i < 12; i++) {
@@ -130,31 +140,13 @@ describe('fixed-tick contacts: the work meter', () => {
     const run = (hz: number, probe: boolean) => {
       const sim = fast(1)
       const F = sim.world.fixed!
-      let ticks = 0
-      let span = -1
-      let work = 0
       let solved = 0
-      let last = energy(sim)
+      // a tick solved in a span whose work before it was past (1 + LEAN_SHARE) × its budget: not skipped
       if (probe) {
-        const at = sim.schedule.findIndex((e) => e.name === 'fixedContacts')
-        sim.schedule.splice(at + 1, 0, {
-          name: 'meterProbe',
-          run: () => {
-            if (F.ticks === ticks) return
-            const one = F.ticks === ticks + 1
-            ticks = F.ticks
-            const [s, spent, limit] = F.budget as unknown as [number, number, number]
-            // a tick solved in a span whose work before it was past (1 + LEAN_SHARE) × its budget: not skipped
-            if (one && s === span) {
-              solved++
-              expect(work).toBeLessThanOrEqual((1 + LEAN_SHARE) * limit)
-            }
-            span = s
-            work = spent
-            const k = energy(sim)
-            expect(k).toBeLessThanOrEqual(last * (1 + 1e-12))
-            last = k
-          },
+        probeTicks(sim, (same, before, _after, limit) => {
+          if (!same) return
+          solved++
+          expect(before).toBeLessThanOrEqual((1 + LEAN_SHARE) * limit)
         })
       }
       const events: string[] = []
@@ -214,14 +206,7 @@ describe('fixed-tick contacts: the work meter', () => {
 
   it('a scene within its budget is not touched by it: a 60-ball gas ends with the same bits at CONTACT_WORK_BUDGET 1 and without one', () => {
     const gas = (budget: number) => {
-      let seed = 3
-      const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
-      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0.9, ROLLING_DECEL: 0, CONTACT_WORK_BUDGET: budget })
-      sim.setWalls({ minX: 0, minY: 0, maxX: 300, maxY: 300, restitution: 0.9 })
-      for (let i = 0; i < 60; i++) {
-        const a = random() * 6.283
-        sim.addBall({ x: 15 + 270 * random(), y: 15 + 270 * random(), vx: 300 * Math.cos(a), vy: 300 * Math.sin(a) })
-      }
+      const sim = boxed(3, 0.9, 300, 300, 60, budget, (_i, a, random) => ({ x: 15 + 270 * random(), y: 15 + 270 * random(), vx: 300 * Math.cos(a), vy: 300 * Math.sin(a) }))
       for (let i = 0; i < 120; i++) sim.step(1 / 60)
       return { states: states(sim), lean: sim.world.fixed!.lean, contacts: sim.world.fixed!.contacts }
     }
