@@ -184,6 +184,40 @@ describe('fixed-tick contacts: the work meter', () => {
     expect(free.world.fixed!.ticks).toBeGreaterThan(4 * at60.ticks)
   })
 
+  it('a ball given a new velocity in the middle of a skipped span waits for the next span: the same bits at 240 and 480 Hz, and each span counted once', () => {
+    const run = (hz: number) => {
+      const sim = fast(1)
+      const F = sim.world.fixed!
+      const events: string[] = []
+      let skippedAt = -1
+      let inSkip = false
+      for (let i = 0; i < hz / 3; i++) {
+        // at 41/240 s, half way through a span of 1/120 s, after its budget was spent twice over
+        if (i === (41 * hz) / 240) {
+          skippedAt = F.budget[3]!
+          inSkip = F.budget[1]! > (1 + LEAN_SHARE) * F.budget[2]! && F.nextTick % (1 << F.halvings) === 0
+          const ball = sim.balls()[5]!
+          sim.setBallVelocity(ball, -3e4, 2e4)
+        }
+        sim.step(1 / hz)
+        // the solve the command asked for, in the skipped part, neither solves nor counts the span again
+        if (i === (41 * hz) / 240) expect(F.budget[3]).toBe(skippedAt)
+        for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+      }
+      return { events, states: states(sim), skipped: F.budget[3]!, skippedAt, inSkip, ticks: F.ticks }
+    }
+    const a = run(240)
+    const b = run(480)
+    expect(a.skippedAt).toBeGreaterThan(5)
+    expect(a.inSkip).toBe(true)
+    // 40 spans in a third of a second
+    expect(a.skipped).toBeLessThanOrEqual(40)
+    expect(b.events).toEqual(a.events)
+    expect(b.states).toEqual(a.states)
+    expect(b.skipped).toBe(a.skipped)
+    expect(b.ticks).toBe(a.ticks)
+  })
+
   it('a snapshot taken in the middle of a lean span restores the meter: the restored world goes on with the same bits', () => {
     const a = pumped(2)
     for (let i = 0; i < 6; i++) a.step(1 / 60)
