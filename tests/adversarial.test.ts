@@ -947,6 +947,31 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 1 }, ops, ['finite', 'time'])
   })
 
+  // light balls pumped to 5e5 px/s by balls of mass 1e9 in a closed box 1 px wide (found at 61x the long run,
+  // 'time (full)', with no budget): the tick stays halved 10 times, 2,048 ticks a frame, and the run's steps
+  // take 7.1 s (docs/known-failures.md). With CONTACT_WORK_BUDGET 16 the spans go lean and skip: 0.9 s
+  it('fixed-tick contacts with a work budget: light balls pumped in a box 1 px wide step within the run budget', () => {
+    const ops = [
+      { t: 'burst', n: 25, x: -20, y: 24.347679999999997, spread: 400, speed: 1000, seed: 514, aim: { p: 'aim', k: 2, d: 0.003, off: -1.2999818, a: 6.156139499999999 } },
+      { t: 'addHole', x: 250.52324, y: 204.06436000000002 },
+      { t: 'burst', n: 11, x: 255.85326000000003, y: 291.4852, spread: 60, speed: 5000, radius: 0.024603676041476272, mass: 1000000000, seed: 779 },
+      { t: 'burst', n: 5, x: 222.97292, y: 344.7514, spread: 1, speed: 5000, radius: 0.3372873086588689, seed: 396 },
+      { t: 'addBall', x: 198.93608, y: 30, radius: 0.3047894989627983, place: { p: 'inHole', k: 47, f: 0.772971, a: 4.593141 }, vx: 0.00435933448403327, vy: 0.006186744374459098 },
+      { t: 'walls', minX: 272.04066, minY: 371.1622, w: 1, h: 420, e: 1, open: { top: false, right: false } },
+      { t: 'throw', x: 109.51024000000001, y: 130, power: 1, angle: -3.0266983270627072, radius: 26.121613543992066, place: { p: 'free' } },
+      { t: 'addBall', x: 380, y: 375.95036, radius: 0.1233104833228909, mass: 6807.693586937417, place: { p: 'stack', k: 2 }, vx: 0, vy: 5.861381645140288 },
+      { t: 'step', dt: 1e-09 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'addBall', x: 129.33394, y: 37.21872, mass: 0.00159220872705117, place: { p: 'aim', k: 4, d: 120.95100000000001, off: 0.22609079999999993, a: 1.1265156 }, vx: 0, vy: -0.002648500138606701 },
+      { t: 'addHole', x: 210, y: 190 },
+      { t: 'addBall', x: 131.52722, y: 274.77708, mass: 1000000000, place: { p: 'free' }, vx: 1.4521116175877422, vy: 0 },
+      { t: 'step', dt: 10 },
+      { t: 'setVel', k: 30, vx: 578.0392556479994, vy: 18654.84349049709 },
+      { t: 'addBall', x: 380.75154, y: -1.8566800000000008, place: { p: 'inHole', k: 22, f: 0.784773, a: 1.3621419 }, vx: 0, vy: -374.97300224548337 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 16 }, ops, ['finite', 'time'])
+  })
+
   // big and small balls pressed in the panel's walls: the projection's last sweep over the moving balls' pairs
   // was cut short by the budget, and the overlap of the pairs it had reached was read as the whole tick's,
   // so the tick, 3.7e-3 px deep, was not counted in world.fixed.capped (whose ticks the overlap check skips)
