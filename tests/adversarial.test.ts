@@ -972,6 +972,24 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 16 }, ops, ['finite', 'time'])
   })
 
+  // exact contacts, e = 0: a ball of mass 1e-3 settled against one of mass 1,000 in a corner, which a third
+  // ball's hit then nudged toward it at 8.2e-4 px/s, below the settle floor of 1e-3 px/s then: never a
+  // contact, the pair sank into itself, 1.00004e-3 px deep 0.67 s after the last spawn (found at 71x the long
+  // run). At the floor of 1e-5 px/s the nudge settles the pair
+  it('contacts on: a pair nudged together slower than 1e-3 px/s settles instead of sinking into itself', () => {
+    const ops = [
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 0, open: { bottom: true } },
+      { t: 'burst', n: 15, x: -9.762239999999998, y: 48.38364, spread: 400, speed: 5000, mass: 0.001, seed: 23 },
+      { t: 'throw', x: 0, y: 0, power: 0, angle: -6.283185307179586, mass: 1000, place: { p: 'inHole', k: 0, f: 0, a: 0 } },
+      { t: 'step', dt: 0.1 },
+      { t: 'step', dt: 10 },
+      { t: 'step', dt: 10 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'throw', x: 210, y: 450, power: 0, angle: -6.283185307179586, mass: 1, place: { p: 'aim', k: 0, d: 0, off: -1.3, a: 0 } },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'on', e: 0, decel: 0 }, ops, ['overlap'])
+  })
+
   // big and small balls pressed in the panel's walls: the projection's last sweep over the moving balls' pairs
   // was cut short by the budget, and the overlap of the pairs it had reached was read as the whole tick's,
   // so the tick, 3.7e-3 px deep, was not counted in world.fixed.capped (whose ticks the overlap check skips)

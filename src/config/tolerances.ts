@@ -13,11 +13,14 @@ export const GAP_TOLERANCE = 1e-7
 /**
  * Balls approach when the gap closes faster than this share of their relative speed plus SETTLE_FLOOR of
  * BALL_SETTLE_SPEED: rounding after a contact that left them sliding side by side is not a new contact,
- * and balls settled against each other (their speeds equal to within a thousandth of the settle speed)
- * stay settled instead of averaging their velocities ever more finely.
+ * and balls settled against each other (their speeds equal to within 1e-5 of the settle speed) stay
+ * settled instead of averaging their velocities ever more finely. A pair that closes slower than that is
+ * never a contact, so it can sink into itself by up to SETTLE_FLOOR · BALL_SETTLE_SPEED px a second (1e-3 px
+ * in 100 s at the default): at 1e-3, a light ball lying against a heavy one that a third ball nudged toward
+ * it at 8e-4 px/s was 1e-3 px deep 0.67 s later (the long adversarial run at 71×).
  */
 export const APPROACH_EPSILON = 1e-9
-export const SETTLE_FLOOR = 1e-3
+export const SETTLE_FLOOR = 1e-5
 /**
  * A contact within this time, s, of an earlier contact of either ball is elastic (the TC model of Luding and
  * McNamara): a push through a row of touching balls then passes along it in one sweep, as in Newton's
