@@ -3,6 +3,8 @@ import { describe, expect, it } from 'vitest'
 import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
 import { contactOut, resolveContact } from '../../src/contacts/law'
 import { PathEvent } from '../../components/Path'
+import { SETTLE_FLOOR, SINK_DEPTH } from '../../src/config/tolerances'
+import { FROM, RESULT, SearchResult, TO, search, searchContact } from '../../src/contacts/search'
 import { EXACT, rng, shoot, timeBudget } from '../helpers'
 
 const ON: ConfigOverrides = { BALL_COLLISIONS: 'on' }
@@ -436,5 +438,53 @@ describe('a graze: two balls alone touching slower than BALL_SETTLE_SPEED while 
     sim.addBall({ x: 300, y: 21.99999, vx: -300, vy: 0 })
     for (let f = 0; f < 60; f++) sim.step(1 / 60)
     expect(sim.ballState(a).vx).toBe(0)
+  })
+})
+
+describe('a pair closing slower than the settle floor (exact method)', () => {
+  // Two balls rolling together with no deceleration, the one behind 9e-6 px/s faster: below SETTLE_FLOOR ·
+  // BALL_SETTLE_SPEED (1e-5 px/s), so their meeting is no contact. They sank on into each other without end
+  // (1e-3 px about 110 s after meeting), and each search for their contact crept by MIN_ADVANCE through the
+  // overlap, from the start of their paths: 23 ms a step 9 s after they met, and growing.
+  function pair() {
+    const sim = createBallPhysics({ ...ON, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, maxX: 2000, minY: 0, maxY: 2000 })
+    const a = sim.addBall({ x: 100, y: 1000, vx: 5 + 9e-6, vy: 0 })
+    const b = sim.addBall({ x: 122.0001, y: 1000, vx: 5, vy: 0 })
+    return { sim, a, b }
+  }
+
+  it(`sinks no deeper than SINK_DEPTH (${SINK_DEPTH} px), settles there, and stays`, () => {
+    const { sim, a, b } = pair()
+    const depth = () => 22 - (sim.ballState(b).x - sim.ballState(a).x)
+    let deepest = -1
+    const contacts: BallEvent[] = []
+    for (let i = 0; i < 60 * 40; i++) {
+      sim.step(1 / 60)
+      contacts.push(...collisions(sim.drainEvents()))
+      deepest = Math.max(deepest, depth())
+    }
+    // met at about 11.1 s, SINK_DEPTH deep 11.1 s later: one contact, slower than the floor, that settles
+    // the two (they leave with their centre-of-mass velocity)
+    expect(contacts.length).toBe(1)
+    expect(contacts[0]!.time).toBeCloseTo(100 / 9 + SINK_DEPTH / 9e-6, 3)
+    expect(contacts[0]!.speed).toBeLessThan(SETTLE_FLOOR)
+    expect(sim.ballState(a).vx).toBe(sim.ballState(b).vx)
+    expect(sim.ballState(a).vx).toBeCloseTo(5 + 4.5e-6, 9)
+    expect(deepest).toBeLessThan(SINK_DEPTH * (1 + 1e-6))
+    expect(depth()).toBeGreaterThan(SINK_DEPTH * (1 - 1e-6))
+  })
+
+  it('a search through their overlap passes over it to the end of its span, instead of creeping', () => {
+    const { sim, a, b } = pair()
+    for (let i = 0; i < 60 * 15; i++) sim.step(1 / 60)
+    const depth = 22 - (sim.ballState(b).x - sim.ballState(a).x)
+    expect(depth).toBeGreaterThan(3e-5) // met 3.9 s ago, sinking
+    search[FROM] = sim.time
+    search[TO] = sim.time + 100
+    searchContact(sim.world, a, b)
+    // the span ends at b's next own event, within the prediction window: no contact before it, found in one
+    // search; creeping by MIN_ADVANCE it reached only 512 µs further (Resume), and the next search as little
+    expect(search[RESULT]).toBe(SearchResult.None)
   })
 })
