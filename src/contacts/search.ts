@@ -256,17 +256,17 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
 
 /**
  * How far a search may advance from a state where the gap's own bound h1 is under MIN_ADVANCE (touching, or
- * nearly and not closing), without passing the first time its contact test holds: the gap g (px), its rate
- * vn (negative: closing), the balls' relative speed vrel, and A, a bound on their relative acceleration until
- * the state's piece ends. The test holds either at a gap of at most 0 (GAP_TOLERANCE)
- * closing faster than the floor (route 1), or deeper than SINK_DEPTH closing at all (route 2). The gap's rate
- * falls no faster than A (the gap's second derivative is at least −A: |dv|² − vn² ≥ 0 over the distance,
- * plus the acceleration along the normal), so each route holds no sooner than both the time its gap needs to
- * close (the positive root of x + vn·h − A·h²/2, written without cancellation) and half the time its rate
- * needs to fall to its threshold (the half a margin for the threshold's share of vrel, which grows by at
- * most A·h, and for rounding). Elsewhere the gap's time is the step, as it always was. A pair that closes slower than the floor no longer creeps while it sinks into
- * itself (which cost one pair 23 ms a step 9 s after it met, and more every step): the search passes over to
- * the depth of route 2, where it is a contact.
+ * nearly and not closing), without passing the first time its contact test holds. g is the gap (px), vn its
+ * rate (negative: closing), vrel the balls' relative speed, A a bound on their relative acceleration until
+ * the state's piece ends. The test holds either at a gap of at most 0 (GAP_TOLERANCE) closing faster than
+ * the floor (route 1), or deeper than SINK_DEPTH closing at all (route 2). The gap's rate falls no faster
+ * than A (the gap's second derivative is at least −A: (|dv|² − vn²) / distance ≥ 0, plus the relative
+ * acceleration along the normal), so each route holds no sooner than both the time its gap needs to close
+ * (the positive root of x + vn·h − A·h²/2, written without cancellation) and half the time its rate needs to
+ * fall to its threshold (the half a margin for the threshold's share of vrel, which grows by at most A·h,
+ * and for rounding). Everywhere else the gap's bound is the step, as it always was. A pair that closes
+ * slower than the floor no longer creeps while it sinks into itself (which cost one pair 23 ms a step 9 s
+ * after it met, and more every step): the search passes over to the depth of route 2, where it is a contact.
  */
 function creep(h1: number, g: number, vn: number, vrel: number, A: number, floor: number, deep: number, minAdvance: number): number {
   // route 1 waits for its rate, route 2 for its depth and a rate of closing at all
