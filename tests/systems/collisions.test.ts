@@ -475,6 +475,54 @@ describe('a pair closing slower than the settle floor (exact method)', () => {
     expect(depth()).toBeGreaterThan(SINK_DEPTH * (1 - 1e-6))
   })
 
+  it('any pair closing slower than the floor, in any direction, sliding or not, with any restitution, masses and radii: never deeper than SINK_DEPTH, momentum kept (fast-check)', () => {
+    fc.assert(
+      fc.property(
+        fc.record({
+          r1: fc.double({ min: 0.5, max: 50, noNaN: true }),
+          r2: fc.double({ min: 0.5, max: 50, noNaN: true }),
+          m1: fc.constantFrom(1e-3, 1, 1e3),
+          m2: fc.constantFrom(1e-3, 1, 1e3),
+          angle: fc.double({ min: 0, max: 6.283, noNaN: true }),
+          heading: fc.double({ min: 0, max: 6.283, noNaN: true }),
+          speed: fc.double({ min: 0, max: 500, noNaN: true }),
+          // apart when put down (a ball put down touching another is held until its spot is clear)
+          gap: fc.double({ min: 1e-9, max: 2e-5, noNaN: true }),
+          closing: fc.double({ min: 5e-6, max: 9.9e-6, noNaN: true }),
+          slide: fc.double({ min: -1e-4, max: 1e-4, noNaN: true }),
+          e: fc.constantFrom(0, 0.5, 1),
+        }),
+        ({ r1, r2, m1, m2, angle, heading, speed, gap, closing, slide, e }) => {
+          const sim = createBallPhysics({ ...ON, ROLLING_DECEL: 0, BALL_RESTITUTION: e })
+          const nx = Math.cos(angle)
+          const ny = Math.sin(angle)
+          const vx = speed * Math.cos(heading)
+          const vy = speed * Math.sin(heading)
+          const d = r1 + r2 + gap
+          // a closes on b along the normal (nx, ny) at `closing`, and slides across it at `slide`
+          const a = sim.addBall({ x: 0, y: 0, radius: r1, mass: m1, vx: vx + closing * nx - slide * ny, vy: vy + closing * ny + slide * nx })
+          const b = sim.addBall({ x: d * nx, y: d * ny, radius: r2, mass: m2, vx, vy })
+          const px = m1 * sim.ballState(a).vx + m2 * sim.ballState(b).vx
+          const py = m1 * sim.ballState(a).vy + m2 * sim.ballState(b).vy
+          const B = sim.world.Ball
+          let deepest = -1
+          // the depth is reached (gap + SINK_DEPTH) / closing after the start: 24 s at most; sinking on, 1.8e-4 px by 40 s
+          for (let i = 0; i < 60 * 40; i++) {
+            sim.step(1 / 60)
+            deepest = Math.max(deepest, r1 + r2 - Math.hypot(B.x[b]! - B.x[a]!, B.y[b]! - B.y[a]!))
+          }
+          expect(deepest).toBeLessThan(SINK_DEPTH + 1e-8)
+          const qx = m1 * sim.ballState(a).vx + m2 * sim.ballState(b).vx
+          const qy = m1 * sim.ballState(a).vy + m2 * sim.ballState(b).vy
+          const scale = (m1 + m2) * (speed + 1)
+          expect(Math.abs(qx - px)).toBeLessThan(1e-9 * scale)
+          expect(Math.abs(qy - py)).toBeLessThan(1e-9 * scale)
+        },
+      ),
+      { numRuns: 40, seed: 20_261_201 },
+    )
+  })
+
   it('a search through their overlap passes over it to the end of its span, instead of creeping', () => {
     const { sim, a, b } = pair()
     for (let i = 0; i < 60 * 15; i++) sim.step(1 / 60)
