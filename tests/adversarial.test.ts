@@ -1211,6 +1211,47 @@ describe('shrunk counterexamples of the long run', () => {
     for (const b of sim.balls()) expect(Number.isFinite(sim.ballState(b).x)).toBe(true)
   })
 
+  // the long run at 59×: heavy balls (mass 5.2e8) thrown at 1e5 px/s and light ones (9.8) at 5,000 px/s into a
+  // closed 420 × 480 box, restitution 0 everywhere, no deceleration. In the corners heavy balls pressed light
+  // ones against light ones lying at a wall, in piles (their normals 50° and more apart, not rows): the
+  // sweeps take a heavy ball's push down by about the mass ratio each, so they ran out with the pile still
+  // closing, the projection held the positions, and 76 of 166 rolling balls kept velocities of up to 3.3e4
+  // px/s while they did not move, tick after tick. Their reach halved the tick 5 times: 1,797 ticks for the
+  // step of 0.25 s (3.4 s against a step budget of 3.0 s), 90 ms for every frame after
+  it('fixed-tick contacts: heavy balls pressing light ones into a corner pile with restitution 0 stop there (no ball keeps a velocity it cannot move at), and the tick is not halved for them', () => {
+    const ops = [
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 0, open: { bottom: false } },
+      { t: 'burst', n: 69, x: -20, y: -19.9922, spread: 400, speed: 100000, radius: undefined, mass: 519995996.53351516, seed: 811, aim: { p: 'aim', k: 19, d: 0.002, off: -0.5700015599999999, a: 0.00011970000000000001, lip: 460.000585 } },
+      { t: 'burst', n: 114, x: 271.28764, y: 190, spread: 400, speed: 5000, radius: undefined, mass: 9.794899854086989, seed: 889, aim: undefined },
+      { t: 'addBall', x: 1.2221053941287913e-55, y: 30690219.88391158, radius: 0.13645831365889247, mass: 2.857590543374944e-9, place: { p: 'inHole', k: 30, f: 0.000955, a: 3.0251213999999997 }, vx: -68.70174968148031, vy: -262.8126568558169 },
+      { t: 'step', dt: 10 },
+    ] as unknown as Op[]
+    let ticks = 0
+    let halvings = -1
+    let pressing = 0
+    runScenario('corner pile', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['finite', 'events', 'time', 'overlap'], (sim) => {
+      const F = sim.world.fixed!
+      ticks = F.ticks
+      halvings = F.halvings
+      const B = sim.world.Ball
+      const ids = sim.balls().filter((b) => sim.ballState(b).mode === 'rolling' || sim.ballState(b).mode === 'resting')
+      for (const a of ids) {
+        for (const b of ids) {
+          const dx = B.x[b]! - B.x[a]!
+          const dy = B.y[b]! - B.y[a]!
+          const d = Math.hypot(dx, dy)
+          if (a === b || d > B.radius[a]! + B.radius[b]! + 1e-3) continue
+          // closing on a ball it touches faster than 100 px/s after the last tick's solve: a push left standing
+          if (-((B.vx[b]! - B.vx[a]!) * dx + (B.vy[b]! - B.vy[a]!) * dy) / d > 100) pressing++
+        }
+      }
+    })
+    // 0.92 s in all: 110 ticks of 1/120 s, 148 with the tick halved where the heavy balls first strike
+    expect(pressing).toBe(0)
+    expect(halvings).toBe(0)
+    expect(ticks).toBeLessThan(300)
+  })
+
   // the contact normal from the swept test was d + u·τ over the radii's sum: a difference of two lengths of a
   // tick's travel (250 px) taken to 0.14 px, unit only to 1e-10, so the elastic impulse of equal balls
   // left the pair 0.64 of 4.5e8 (1.4e-9) richer; it is now divided by its own length

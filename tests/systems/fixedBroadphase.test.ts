@@ -56,7 +56,7 @@ describe('fixed-tick broadphases', () => {
   })
 
   it('light balls at rest and heavy ones at 1,000 px/s in closed walls of restitution 0: the projection pushes balls into moving ones it was not paired with, paired in the same tick', () => {
-    for (const seed of [11, 24, 27]) {
+    for (const seed of [4, 27, 30]) {
       // by broadphase: the sweep's (0), the dense one's (1)
       const joins = [0, 0]
       const make = () => {
