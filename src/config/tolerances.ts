@@ -243,8 +243,8 @@ export const ROW_MIN_BALLS = 3
  * the group to count as a row, cos 30° (src/contacts/fixedJam.ts, fixedShock.ts). A row struck end on has
  * all its normals on one line, the pairs a tick's swept test finds between balls that are not neighbours
  * too (a fast striker meets a dozen balls ahead of it on straight lines); a pile has normals 60° or 90°
- * apart, and is left to the sweeps (unless, with restitution 0, a ball SQUEEZE_MASS_RATIO times heavier than
- * another presses it: src/contacts/fixedShock.ts).
+ * apart, and is left to the sweeps (unless, with restitution below 1, a ball SQUEEZE_MASS_RATIO times heavier
+ * than another presses it: src/contacts/fixedShock.ts).
  */
 export const ROW_LINE_COS = Math.sqrt(3) / 2
 

@@ -9,12 +9,12 @@
 // where a row is held). A group is held when its closing pairs close by more than PROJECTION_SLOP in all,
 // the normals of all its pairs keep within 30° of one line (a row, not a pile), and one of its balls is pushed by its
 // closing pairs into a closed wall within its reach, along the wall's normal (its anchor). With restitution
-// 0, a pile is held too where one of its closing pairs has a ball SQUEEZE_MASS_RATIO times heavier than the
-// other: heavy balls pressing light ones into a corner pile were never stopped either (the long adversarial
-// run at 59×: 76 of 166 rolling balls kept up to 3.3e4 px/s while the projection held them still, and their
-// reach halved the tick 5 times, 1,797 ticks for a step of 0.25 s against 30); a pile of like balls is
-// left to the sweeps, which settle it, and an elastic one too (held, a pumped elastic crowd lost two thirds
-// of its energy where it keeps 0.97 of it, tests/systems/fixedHalve.test.ts). From the
+// below 1, a pile is held too where one of its closing pairs has a ball SQUEEZE_MASS_RATIO times heavier
+// than the other: heavy balls pressing light ones into a corner pile were never stopped either (the long
+// adversarial run at 59×: 76 of 166 rolling balls kept up to 3.3e4 px/s while the projection held them
+// still, and their reach halved the tick 5 times, 1,797 ticks for a step of 0.25 s against 30); a pile of
+// like balls is left to the sweeps, which settle it, and an elastic one too (held, a pumped elastic crowd
+// lost two thirds of its energy where it keeps 0.97 of it, tests/systems/fixedHalve.test.ts). From the
 // anchors, breadth first, each ball that meets one already reached meets it as if that one could not move:
 // the wall first sends the anchor back with its restitution (the solve's own wall step), then each next ball
 // leaves the one before with BALL_RESTITUTION (0 below BALL_SETTLE_SPEED) of their approach, its normal
@@ -161,7 +161,7 @@ export function holdRows(w: BallWorld, F: FixedContactState, e: number, settle: 
     const r = root(F.pairA[p]!)
     closes[r] = closes[r]! + approachOf[p]! * F.tick
     if (!keepsLine(lineX, lineY, r, normalX, normalY, p)) bent[r] = 1
-    if (e === 0 && approachOf[p]! > 0) {
+    if (e < 1 && approachOf[p]! > 0) {
       const ia = F.im[F.pairA[p]!]!
       const ib = F.im[F.pairB[p]!]!
       if (ia >= SQUEEZE_MASS_RATIO * ib || ib >= SQUEEZE_MASS_RATIO * ia) heavy[r] = 1
@@ -217,7 +217,7 @@ export function holdRows(w: BallWorld, F: FixedContactState, e: number, settle: 
   return count
 }
 
-/** Whether the group rooted at r is held (see the top of this file): a row, or with restitution 0 a pile a heavy ball presses. */
+/** Whether the group rooted at r is held (see the top of this file): a row, or with restitution below 1 a pile a heavy ball presses. */
 function holds(r: number): boolean {
   return anchored[r] === 1 && (bent[r] === 0 || heavy[r] === 1) && closes[r]! > PROJECTION_SLOP
 }
