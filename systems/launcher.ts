@@ -9,14 +9,18 @@
 // and a released ball starts where it was put, at the instant: release times are the same at every frame
 // rate (before, they were the steps' starts). A spot held only by resting balls is cleared: the launcher
 // knocks them off it (kick, below; the one place it adds energy, as a throw does), so a ball that stops on
-// a launcher's spot does not hold the balls behind it for good.
+// a launcher's spot does not hold the balls behind it for good; unless one of them is too heavy for the
+// kick to move, when none is kicked. Kicks that do not clear the spot back off: after the k-th with no ball
+// launched since, the next waits 2^(k − 1) launch ticks (at most 2^(KICK_BACKOFF_DOUBLINGS − 1)), so a spot
+// that balls jammed by the walls and one another cover for good is not kicked at every instant, for ever.
 // Bounded work: at most MAX_SPOT_CHECKS full checks per launch instant (each against the moving and resting
 // balls near the spot, through grids); a held ball overlapping the held ball just before it in the queue
 // waits without one. The rest wait for later instants.
-// Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact.
+// Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact and the
+// world's kick back-off (kickStreak, kickAfter).
 import { BallMode } from '../components/Ball.js'
 import { MAX_SPEED } from '../src/config/limits.js'
-import { MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
+import { KICK_BACKOFF_DOUBLINGS, MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
 import { spotHeldByResting, spotTaken } from '../src/contacts/spot.js'
 import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
@@ -48,12 +52,20 @@ export function launcherSystem(w: BallWorld): void {
     if (wait) {
       // a spot held only by resting balls: the launcher knocks them off it (else a ball that came to rest
       // on a launcher's spot would hold every ball behind it for good)
-      if (checked && spotHeldByResting(w, eid, x, y, r, blockers)) kick(w, eid, x, y)
+      if (checked && w.time >= w.kickAfter && spotHeldByResting(w, eid, x, y, r, blockers) && kick(w, eid, x, y)) {
+        // kicks that do not clear the spot (balls jammed on it by walls and one another stop again at once,
+        // every launch instant) come less and less often, so such a world can come to rest: the next no
+        // sooner than the launch instant 2^(streak − 1) ticks on (half a tick short of it, against rounding)
+        if (w.kickStreak < KICK_BACKOFF_DOUBLINGS) w.kickStreak++
+        w.kickAfter = w.time + w.config.CONTACT_TICK * ((1 << (w.kickStreak - 1)) - 0.5)
+      }
       q.ids[kept++] = eid
       last = eid
       continue
     }
     placeBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!)
+    w.kickStreak = 0
+    w.kickAfter = 0
   }
   q.count = kept
 }
@@ -63,18 +75,21 @@ const blockers = createIdList(8)
 /**
  * Each resting ball on held ball h's spot (x, y) leaves it, away from the spot's centre, at the speed a
  * head-on strike by h at its launch velocity would give it: (1 + e)·m_h/(m_h + m_b)·|v_h| (at most
- * MAX_SPEED; not at all below BALL_SETTLE_SPEED, where it would stay). The launcher does the work: kinetic
- * energy is added, as by a throw, and h stays held until its spot is clear.
+ * MAX_SPEED). The launcher does the work: kinetic energy is added, as by a throw, and h stays held until its
+ * spot is clear. A ball that speed would leave below BALL_SETTLE_SPEED stays, and so the spot cannot be
+ * cleared by kicks: then none is kicked (kicking the others only adds energy: a held ball wider than its
+ * closed box, with balls too heavy for it on its spot, kicked the light ones round the box every second or
+ * so for good, and the world never came to rest). Returns whether it kicked.
  */
-function kick(w: BallWorld, h: number, x: number, y: number): void {
+function kick(w: BallWorld, h: number, x: number, y: number): boolean {
   const B = w.Ball
   const mass = w.collide !== null ? w.collide.mass : w.fixed!.mass
   const vh = hypot(B.vx[h]!, B.vy[h]!)
   const e = w.config.BALL_RESTITUTION
+  for (let i = 0; i < blockers.count; i++) if (!(kickSpeed(mass, h, blockers.ids[i]!, vh, e) >= w.config.BALL_SETTLE_SPEED)) return false
   for (let i = 0; i < blockers.count; i++) {
     const b = blockers.ids[i]!
-    const speed = Math.min(MAX_SPEED, ((1 + e) * mass[h]! * vh) / (mass[h]! + mass[b]!))
-    if (!(speed >= w.config.BALL_SETTLE_SPEED)) continue
+    const speed = kickSpeed(mass, h, b, vh, e)
     let nx = B.x[b]! - x
     let ny = B.y[b]! - y
     let d = hypot(nx, ny)
@@ -87,6 +102,12 @@ function kick(w: BallWorld, h: number, x: number, y: number): void {
     placeBall(w, b, B.x[b]!, B.y[b]!, (speed * nx) / d, (speed * ny) / d)
     w.kicks++
   }
+  return true
+}
+
+/** The speed a head-on strike by held ball h at speed vh gives resting ball b (at most MAX_SPEED). */
+function kickSpeed(mass: Float64Array, h: number, b: number, vh: number, e: number): number {
+  return Math.min(MAX_SPEED, ((1 + e) * mass[h]! * vh) / (mass[h]! + mass[b]!))
 }
 
 function overlaps(w: BallWorld, a: number, b: number): boolean {

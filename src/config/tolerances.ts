@@ -59,6 +59,13 @@ export const MAX_GRID_CELLS = 1 << 22
 export const MAX_SPOT_CHECKS = 64
 
 /**
+ * The launcher's kicks back off: after its k-th kick with no ball launched since, it kicks again no sooner
+ * than CONTACT_TICK · 2^(min(k, KICK_BACKOFF_DOUBLINGS) − 1) later (systems/launcher.ts): about 4.3 s at most
+ * with the default tick.
+ */
+export const KICK_BACKOFF_DOUBLINGS = 10
+
+/**
  * A moving ball whose swept capsule would cover more grid cells than this in a step (a very large or very
  * fast ball) is not rasterised into the contact hash: it is paired with every moving ball near it directly,
  * and every other prediction pairs with it directly. Bounds a prediction's work for a ball of any radius.

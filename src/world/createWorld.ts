@@ -103,6 +103,12 @@ export interface BallWorldData {
   launchDue: boolean
   /** balls the launcher has knocked off its spots since the world was made (systems/launcher.ts) */
   kicks: number
+  /**
+   * the launcher's kicks since it last launched a ball, and the world time before which it kicks no more
+   * (systems/launcher.ts: a spot its kicks do not clear is kicked less and less often)
+   */
+  kickStreak: number
+  kickAfter: number
   /** the inputs recorded for a replay while the world records (src/commands/replay.ts), else null */
   recorder: Recorder | null
 }
@@ -165,6 +171,8 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     held: createIdList(16),
     launchDue: false,
     kicks: 0,
+    kickStreak: 0,
+    kickAfter: 0,
     recorder: null,
   }
   return createWorld<BallWorldData>(data, entityIndex)
