@@ -16,6 +16,9 @@
 //   overlap  contacts on, 0.5 s after the last ball was put down: no two balls on the panel (rolling, rimRoll,
 //            resting) overlap by more than 1e-3 px; fixed, the same right after each contact tick's solve,
 //            unless the balls cover more than half of a closed box (they may not fit)
+//   quiet    after the settling steps, a second of 1/60 s steps, 20 s in steps of MAX_STEP, and a second again: the
+//            later second costs at most twice the first plus QUIET_FLOOR_DEV_MS (a cost that grows with time
+//            while nothing new happens: a pair that crept into itself grew from 1.6 ms a step to 23 ms in 8 s)
 // A failure throws with the API calls made so far written as code, so fast-check's shrunk counterexample
 // reads as a repro.
 //
@@ -76,6 +79,12 @@ function overBudget(name: string, run: { scale: number; rechecked: boolean }, ms
   return false
 }
 const SETTLE_STEPS = 40 // 0.67 s at 60 Hz after the last call: past the 0.5 s the overlap check waits for
+/** 'quiet': the steps of 1/60 s in each timed second, the steps of MAX_STEP (0.25 s) between them, and the slack, development-machine ms */
+const QUIET_STEPS = 60
+const QUIET_JUMPS = 80
+const QUIET_FLOOR_DEV_MS = 100
+/** 'quiet': a whole run's stepping, development-machine ms (22 s more of simulated time than the others') */
+const QUIET_RUN_DEV_MS = 20_000
 const SEED = 20_240_517
 
 // ---------------------------------------------------------------- operations
@@ -255,7 +264,7 @@ const scenario = (L: Limits, contacts: readonly Contacts[] = ['off', 'on', 'fixe
 
 // ---------------------------------------------------------------- the runner
 
-type Check = 'finite' | 'events' | 'energy' | 'overlap' | 'time'
+type Check = 'finite' | 'events' | 'energy' | 'overlap' | 'time' | 'quiet'
 
 class Violation extends Error {}
 /** a step or a run went over its wall-clock budget (a failure of 'time'; the other checks discard the run) */
@@ -397,7 +406,12 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       },
     })
   }
-  const all: Op[] = [...ops, ...Array.from({ length: SETTLE_STEPS }, (): Op => ({ t: 'step', dt: 1 / 60 }))]
+  const frames = (n: number, dt: number) => Array.from({ length: n }, (): Op => ({ t: 'step', dt }))
+  const tail = on('quiet') ? [...frames(QUIET_STEPS, 1 / 60), ...frames(QUIET_JUMPS, 0.25), ...frames(QUIET_STEPS, 1 / 60)] : []
+  const all: Op[] = [...ops, ...frames(SETTLE_STEPS, 1 / 60), ...tail]
+  // 'quiet': the stepping of the first and the last timed second, by the index in `all` where each begins
+  const quiet = { first: 0, last: 0, from: ops.length + SETTLE_STEPS }
+  let index = -1
   let lastEvent = -Infinity
   let stepping = 0
   const budget = { scale: SLOWDOWN, rechecked: false }
@@ -450,6 +464,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
   }
 
   for (const op of all) {
+    index++
     const t0 = sim.time
     const ke0 = on('energy') && op.t === 'step' && cfg.contacts !== 'off' ? kinetic(sim) : 0
     const kicks0 = sim.world.kicks
@@ -560,6 +575,11 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         }
         const ms = performance.now() - stepStart
         stepping += ms
+        if (on('quiet') && index >= quiet.from) {
+          const k = index - quiet.from
+          if (k < QUIET_STEPS) quiet.first += ms
+          else if (k >= QUIET_STEPS + QUIET_JUMPS) quiet.last += ms
+        }
         worst[name] = Math.max(worst[name] ?? 0, ms)
         const slowStep = overBudget(name, budget, ms, STEP_DEV_MS)
         if (slowStep || overBudget(name, budget, stepping, runDevMs)) {
@@ -629,6 +649,11 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
     }
   }
   noteRun(name, stepping, budget.scale, runDevMs)
+  if (on('quiet') && quiet.last > 2 * quiet.first + QUIET_FLOOR_DEV_MS * budget.scale) {
+    // judged again at the machine's slowness now, as the budgets are (overBudget)
+    budget.scale = Math.max(budget.scale, slowdownNow())
+    if (quiet.last > 2 * quiet.first + QUIET_FLOOR_DEV_MS * budget.scale) fail(`quiet: the second of steps after the settling ones took ${quiet.first.toFixed(1)} ms, the one 20 s later (ending at t = ${sim.time}) ${quiet.last.toFixed(1)} ms`)
+  }
   for (const b of sim.balls()) trace.push(JSON.stringify(sim.ballState(b)))
   inspect?.(sim)
   return trace.join('\n')
@@ -777,6 +802,11 @@ describe('adversarial API sequences (fast-check, seeded)', () => {
   // land inside a neighbour)
   it('contacts on: 0.5 s after the last spawn no two balls on the panel overlap by more than 1e-3 px', () => {
     property('overlap', scenario(NO_RUNAWAY, ['on']), ['overlap'], 100, SEED + 7)
+  }, 120_000 * SCALE)
+
+  // the other properties end 0.67 s after the last call: a cost that grows with time alone shows only later
+  it('every contact mode, full ranges: a second of steps 20 s after the calls costs at most twice the first second after them (plus 100 ms)', () => {
+    property('quiet', scenario(FULL), ['finite', 'events', 'quiet'], 40, SEED + 51, (cfg, ops) => void runScenario('quiet', cfg, ops, ['finite', 'events', 'quiet'], undefined, QUIET_RUN_DEV_MS))
   }, 120_000 * SCALE)
 })
 
