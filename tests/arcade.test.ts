@@ -892,38 +892,58 @@ describe('a launcher firing many balls from one point', () => {
     // jammed balls hit the walls and one another and stopped again at once: 8,400 collisions and 10,300
     // wall events a second for good, about 150 ms of stepping a simulated second (the exact method; the
     // fixed tick's solve leaves two of them sliding along the walls, and the spot is kicked once)
-    for (const mode of ['on'] as const) {
-      const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
-      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0 })
-      addPanel(sim)
-      const big = { x: 357.48525177284836, y: -27.640485840321077, vx: -2.4735573966796065, vy: 49.938777656299635, radius: 200 }
-      sim.addBall(big)
-      sim.addBall(big)
-      const spots = [[53.509668186361296, 381.25955351931646], [45.20070217075187, 366.4677291716082], [61.417539676662805, 364.8556910167025], [44.21305722967726, 377.11920453066597], [47.68474576822099, 381.78847183521924], [44.18600059896383, 384.37841213011734], [45.88247123755957, 384.96043500872975]] as const
-      for (const [x, y] of spots) sim.addBall({ x, y, vx: 35.16854481428675, vy: -297.9314912117306, radius: 94.18895965228413 })
-      sim.throwBall({ x: 220.9689532933402, y: 268.3100813664967, power: 0.599072, angle: -2.8720872921655256 })
-      const held = () => sim.balls().filter((b) => sim.ballState(b).mode === 'held').length
-      const events = (seconds: number) => {
-        let n = 0
-        for (let i = 0; i < 60 * seconds; i++) {
-          sim.step(1 / 60)
-          n += sim.drainEvents().filter((e) => e.type === 'collision' || e.type === 'wall').length
-        }
-        return n
+    const sim = jammedLauncher('on')
+    const held = () => sim.balls().filter((b) => sim.ballState(b).mode === 'held').length
+    const events = (seconds: number) => {
+      let n = 0
+      for (let i = 0; i < 60 * seconds; i++) {
+        sim.step(1 / 60)
+        n += sim.drainEvents().filter((e) => e.type === 'collision' || e.type === 'wall').length
       }
-      events(20)
-      const heldBefore = held()
-      expect(heldBefore, mode).toBeGreaterThan(0)
-      // the spot is still kicked, at most once every 2^(KICK_BACKOFF_DOUBLINGS − 1) launch ticks
-      const kicks = sim.world.kicks
-      const later = events(20)
-      expect(sim.world.kickStreak, mode).toBe(KICK_BACKOFF_DOUBLINGS)
-      const gap = sim.config.CONTACT_TICK * 2 ** (KICK_BACKOFF_DOUBLINGS - 1)
-      expect(sim.world.kicks - kicks, mode).toBeGreaterThan(0)
-      expect(sim.world.kicks - kicks, mode).toBeLessThanOrEqual(3 * Math.ceil(20 / gap))
-      expect(later, mode).toBeLessThan(200)
-      expect(held(), mode).toBe(heldBefore)
+      return n
     }
+    events(20)
+    const heldBefore = held()
+    expect(heldBefore).toBeGreaterThan(0)
+    // the spot is still kicked, at most once every 2^(KICK_BACKOFF_DOUBLINGS − 1) launch ticks
+    const kicks = sim.world.kicks
+    const later = events(20)
+    expect(sim.world.kickStreak).toBe(KICK_BACKOFF_DOUBLINGS)
+    const gap = sim.config.CONTACT_TICK * 2 ** (KICK_BACKOFF_DOUBLINGS - 1)
+    expect(sim.world.kicks - kicks).toBeGreaterThan(0)
+    expect(sim.world.kicks - kicks).toBeLessThanOrEqual(3 * Math.ceil(20 / gap))
+    expect(later).toBeLessThan(200)
+    expect(held()).toBe(heldBefore)
+  })
+
+  it('the kicks\' back-off is the same at 30, 60, 120 and 240 Hz, and a snapshot taken while it waits goes on with the same bits', () => {
+    const run = (hz: number) => {
+      const sim = jammedLauncher('on')
+      const kicks: string[] = []
+      let last = 0
+      for (let i = 0; i < 12 * hz; i++) {
+        sim.step(1 / hz)
+        sim.drainEvents()
+        if (sim.world.kicks !== last) kicks.push(`${sim.world.kickStreak} ${sim.world.kickAfter}`)
+        last = sim.world.kicks
+      }
+      return { sim, kicks }
+    }
+    const at60 = run(60)
+    // the streak climbed through several waits within the 12 s
+    expect(at60.kicks.length).toBeGreaterThan(5)
+    for (const hz of [30, 120, 240]) expect(run(hz).kicks, `${hz} Hz`).toEqual(at60.kicks)
+    const a = at60.sim
+    expect(a.world.kickAfter).toBeGreaterThan(a.time)
+    const b = createBallPhysics(a.config)
+    b.restore(a.snapshot())
+    for (let i = 0; i < 600; i++) {
+      a.step(1 / 60)
+      b.step(1 / 60)
+    }
+    expect(b.world.kicks).toBe(a.world.kicks)
+    expect(b.world.kickAfter).toBe(a.world.kickAfter)
+    for (const id of a.balls()) expect(b.ballState(id)).toEqual(a.ballState(id))
   })
 
   it('with contacts off nothing is held (balls pass through each other)', () => {
@@ -970,3 +990,17 @@ describe('the fixed tick: events at one instant in the same order at every frame
     }
   })
 })
+
+/** Three big balls that fill a closed 420 × 480 box (e = 0), six more held on their spots, the panel's holes. */
+function jammedLauncher(mode: 'on' | 'fixed') {
+  const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+  sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0 })
+  addPanel(sim)
+  const big = { x: 357.48525177284836, y: -27.640485840321077, vx: -2.4735573966796065, vy: 49.938777656299635, radius: 200 }
+  sim.addBall(big)
+  sim.addBall(big)
+  const spots = [[53.509668186361296, 381.25955351931646], [45.20070217075187, 366.4677291716082], [61.417539676662805, 364.8556910167025], [44.21305722967726, 377.11920453066597], [47.68474576822099, 381.78847183521924], [44.18600059896383, 384.37841213011734], [45.88247123755957, 384.96043500872975]] as const
+  for (const [x, y] of spots) sim.addBall({ x, y, vx: 35.16854481428675, vy: -297.9314912117306, radius: 94.18895965228413 })
+  sim.throwBall({ x: 220.9689532933402, y: 268.3100813664967, power: 0.599072, angle: -2.8720872921655256 })
+  return sim
+}
