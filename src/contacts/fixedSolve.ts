@@ -40,10 +40,13 @@ const WALL_REPORTED = 4
 /**
  * A sweep's impulses: pairs met past RESTITUTION_VISITS whose one ball is SQUEEZE_MASS_RATIO times lighter
  * than the other or more (by their own masses: a ball at rest held like a wall is not a heavier one, or a slow
- * push along a row at rest ended its calls half way and left the row 5e-3 px deep), and all others
+ * push along a row at rest ended its calls half way and left the row 5e-3 px deep), with restitution 1 any
+ * pair one of whose balls was the light ball of such a meeting earlier in the call (pumped), and all others
  */
 let remet = 0
 let plain = 0
+/** the call in which each packed ball was last the light ball of such a meeting (scratch, as testedAt) */
+let pumpedIn = new Float64Array(256)
 
 /**
  * The sweeps' stamps within one call (scratch: one solve at a time): when each pair was last tested, and
@@ -71,6 +74,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   S[S_CLOCK] = clockTick(w, t)
   if (testedAt.length < F.pairCount) testedAt = grownTo(testedAt, 2 * F.pairCount)
   if (changedAt.length < F.n) changedAt = grownTo(changedAt, 2 * F.n)
+  if (pumpedIn.length < F.n) pumpedIn = grownTo(pumpedIn, 2 * F.n)
   const fromN = lastCallN()
   if (beginCall(F, fresh)) {
     // the old pairs and candidates keep their stamps; the new pairs are tested in the first sweep, and the
@@ -114,8 +118,9 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // among heavy ones: docs/known-failures.md). It ends unconverged (the next call tests every pair)
     if (!moved) return turned === 0
     // from half way on, a sweep whose only impulses met light balls again past their restitution with
-    // heavier ones ends the sweeps too: each turns a light ball between heavy ones it reaches within the
-    // tick, as between two walls, and the next sweep would turn it back (pumped crowds: docs/decisions.md §12)
+    // heavier ones (or, with restitution 1, met a ball such a meeting turned earlier in the call) ends the
+    // sweeps too: each turns a light ball between heavy ones it reaches within the tick, as between two
+    // walls, and the next sweep would turn it back (pumped crowds: docs/decisions.md §12)
     if (it >= mid && remet > 0 && plain === 0) return false
   }
   return false
@@ -193,7 +198,13 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   }
   if (visits < RESTITUTION_VISITS) F.pairHit[p] = hit + (1 << VISIT_SHIFT)
   if (bound && e > 0) F.inelastic++
-  if (visits >= RESTITUTION_VISITS && (F.im[a]! >= SQUEEZE_MASS_RATIO * F.im[b]! || F.im[b]! >= SQUEEZE_MASS_RATIO * F.im[a]!)) remet++
+  // a pumped ball's other meetings go on only while the heavy ones turn it (docs/decisions.md §12), with
+  // restitution 1: below it, piles of light balls a heavy one pressed into a corner kept velocities they
+  // could not move at (2 and 4 balls at e = 0 and 0.5)
+  if (visits >= RESTITUTION_VISITS && (F.im[a]! >= SQUEEZE_MASS_RATIO * F.im[b]! || F.im[b]! >= SQUEEZE_MASS_RATIO * F.im[a]!)) {
+    remet++
+    pumpedIn[F.im[a]! > F.im[b]! ? a : b] = calls
+  } else if (e === 1 && (pumpedIn[a] === calls || pumpedIn[b] === calls)) remet++
   else plain++
   // a ball SQUEEZE_MASS_RATIO times lighter than its partner (or more) that the impulse drives into a closed
   // wall it can reach within the tick (at its speed; a ball standing still, at the speed the impulse gives

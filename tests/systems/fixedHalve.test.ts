@@ -303,7 +303,8 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     // cost: 201-210 ticks, 0-1 such steps, 0.955-0.986 of the energy kept (seeds 1-5). That is with the tick
     // never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0, the default); with that rule (4) the light
     // balls, at 1e5 px/s covering about 38 times the two radii of a pair a tick at 1/120 s, hold the tick at its
-    // 4 halvings or more: 450-490 ticks, 0.98-0.99 of the energy kept
+    // 4 halvings or more: 450-490 ticks, 0.98-0.99 of the energy kept (441-520 ticks, 0.94-0.99, since a
+    // meeting of a ball pumped earlier in a call counts as pumped: src/contacts/fixedSolve.ts)
     for (const travel of [0, 4]) {
       const kept: number[] = []
       for (const seed of [1, 2, 3, 4, 5]) {
@@ -313,7 +314,7 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
         const start = energy()
         for (let i = 0; i < 12; i++) sim.step(1 / 60)
         // 24 ticks at 1/120 s, 16 times that at 4 halvings
-        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 520)
+        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 560)
         const share = energy() / start
         expect(share).toBeLessThanOrEqual(1)
         kept.push(share)
