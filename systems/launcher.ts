@@ -11,8 +11,9 @@
 // knocks them off it (kick, below; the one place it adds energy, as a throw does), so a ball that stops on
 // a launcher's spot does not hold the balls behind it for good; unless one of them is too heavy for the
 // kick to move, when none is kicked. Kicks that do not clear the spot back off: after the k-th with no ball
-// launched since, the next waits 2^(k − 1) launch ticks (at most 2^(KICK_BACKOFF_DOUBLINGS − 1)), so a spot
-// that balls jammed by the walls and one another cover for good is not kicked at every instant, for ever.
+// launched since (nor the queue emptied), the next waits 2^(k − 1) launch ticks (at most
+// 2^(KICK_BACKOFF_DOUBLINGS − 1)), so a spot that balls jammed by the walls and one another cover for good
+// is not kicked at every instant, for ever.
 // Bounded work: at most MAX_SPOT_CHECKS full checks per launch instant (each against the moving and resting
 // balls near the spot, through grids); a held ball overlapping the held ball just before it in the queue
 // waits without one. The rest wait for later instants.
@@ -28,6 +29,11 @@ import { createIdList } from '../src/world/idLists.js'
 import { hypot } from '../src/math.js'
 
 export function launcherSystem(w: BallWorld): void {
+  // no ball held (all launched or removed): the next held ball's kicks start without a wait
+  if (w.held.count === 0 && w.kickStreak !== 0) {
+    w.kickStreak = 0
+    w.kickAfter = 0
+  }
   if (w.pass !== 0 || w.held.count === 0 || !w.launchDue) return
   const q = w.held
   const B = w.Ball

@@ -914,6 +914,11 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.world.kicks - kicks).toBeLessThanOrEqual(3 * Math.ceil(20 / gap))
     expect(later).toBeLessThan(200)
     expect(held()).toBe(heldBefore)
+    // with every held ball removed, the queue empties and the next held ball kicks without a wait
+    for (const b of sim.balls()) if (sim.ballState(b).mode === 'held') sim.removeBall(b)
+    sim.step(1 / 60)
+    sim.step(1 / 60)
+    expect([sim.world.held.count, sim.world.kickStreak, sim.world.kickAfter]).toEqual([0, 0, 0])
   })
 
   it('the kicks\' back-off is the same at 30, 60, 120 and 240 Hz, and a snapshot taken while it waits goes on with the same bits', () => {
