@@ -99,9 +99,9 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
       A = acca + E[ACC]
       pieceEnd = 1 / 0
     }
-    // the gap closes no sooner than the positive root of gg + vn·h − A·h²/2 (written without cancellation)
+    // the gap closes no sooner than closeIn's bound
     const gg = g > 0 ? g : 0
-    let h = vn < 0 ? (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn) : A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : 1 / 0
+    let h = closeIn(gg, vn, A)
     // touching (or nearly, and not closing): a step from the rates (creep), at least MIN_ADVANCE
     if (h < minAdvance && !(vn < 0 && g > 0)) h = creep(h, g, vn, vrel, A, floor, deep, minAdvance)
     let next = t + h
@@ -239,9 +239,9 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
     const ry = ayb - aya
     const A = Math.sqrt(rx * rx + ry * ry)
     const pieceEnd = na < nb ? na : nb
-    // the gap closes no sooner than the positive root of gg + vn·h − A·h²/2 (written without cancellation)
+    // the gap closes no sooner than closeIn's bound
     const gg = g > 0 ? g : 0
-    let h = vn < 0 ? (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn) : A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : 1 / 0
+    let h = closeIn(gg, vn, A)
     // touching (or nearly, and not closing): a step from the rates (creep), at least MIN_ADVANCE
     if (h < minAdvance && !(vn < 0 && g > 0)) h = creep(h, g, vn, vrel, A, floor, deep, minAdvance)
     let next = t + h
@@ -285,7 +285,10 @@ function creep(h1: number, g: number, vn: number, vrel: number, A: number, floor
   return h < minAdvance ? minAdvance : h
 }
 
-/** The least time in which a gap x ≥ 0 closing at rate vn, its rate falling no faster than A, can close. */
+/**
+ * The least time in which a gap x ≥ 0 closing at rate vn, its rate falling no faster than A, can close: the
+ * positive root of x + vn·h − A·h²/2, written without cancellation (infinite when it never closes).
+ */
 function closeIn(x: number, vn: number, A: number): number {
   if (vn < 0) return (2 * x) / (Math.sqrt(vn * vn + 2 * A * x) - vn)
   return A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * x)) / A : 1 / 0
