@@ -42,7 +42,11 @@ const bad: [string, (s: BallPhysics) => unknown, RegExp, ErrorConstructor][] = [
   ['step string', (s) => s.step('0.1' as never), /dt must be a number/, TypeError],
   ['ballState unknown', (s) => s.ballState(9999), /ball 9999 is not a live ball/, RangeError],
   ['ballState of a hole', (s) => s.ballState(s.holes()[0]!), /is not a live ball/, RangeError],
-  ['ballState 1.5', (s) => s.ballState(1.5), /ball must be a ball id/, TypeError],
+  // a number that is no id is out of range; anything else is the wrong type
+  ['ballState 1.5', (s) => s.ballState(1.5), /ball must be a ball id \(a positive integer\), got 1\.5/, RangeError],
+  ['ballState -1', (s) => s.ballState(-1), /ball must be a ball id \(a positive integer\), got -1/, RangeError],
+  ['ballState string', (s) => s.ballState('3' as never), /ball must be a ball id \(a positive integer\), got the string "3"/, TypeError],
+  ['holeState 0', (s) => s.holeState(0), /hole must be a hole id/, RangeError],
   ['removeBall unknown', (s) => s.removeBall(12345), /not a live ball/, RangeError],
   ['holeState of a ball', (s) => s.holeState(s.balls()[0]!), /is not a live hole/, RangeError],
 ]

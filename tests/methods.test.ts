@@ -1,7 +1,7 @@
 // METHOD and SUBSTEPS: one config option selects the schedule; validation names the key and the values.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_SCHEDULE, createSchedule } from '../src/ecs'
-import { addPanel, createBallPhysics, resolveConfig } from '../src/index'
+import { CONFIG_CHOICES, addPanel, createBallPhysics, resolveConfig } from '../src/index'
 import { settle } from './helpers'
 
 describe('METHOD and SUBSTEPS', () => {
@@ -20,10 +20,19 @@ describe('METHOD and SUBSTEPS', () => {
     expect(missing).toEqual([])
   })
 
-  it('a bad METHOD or SUBSTEPS throws a RangeError naming the key and the allowed values', () => {
+  it('a bad METHOD or SUBSTEPS throws a RangeError (a TypeError for a choice that is not a string) naming the key and the allowed values', () => {
     expect(() => resolveConfig({ METHOD: 'rk4' as never })).toThrow(RangeError)
     expect(() => resolveConfig({ METHOD: 'rk4' as never })).toThrow(/config\.METHOD must be one of 'exact', 'naive', 'v1', got 'rk4'/)
     expect(() => resolveConfig({ METHOD: 3 as never })).toThrow(/config\.METHOD must be one of/)
+    // every choice key: a value of the wrong type (not a string) is a TypeError, a string not among the choices a RangeError
+    for (const key of Object.keys(CONFIG_CHOICES) as Array<keyof typeof CONFIG_CHOICES>) {
+      for (const bad of [true, 3, null, {}]) {
+        expect(() => resolveConfig({ [key]: bad as never }), `${key} ${String(bad)}`).toThrow(TypeError)
+        expect(() => resolveConfig({ [key]: bad as never })).toThrow(new RegExp(`config\\.${key} must be one of '`))
+      }
+      expect(() => resolveConfig({ [key]: 'none of them' as never }), key).toThrow(RangeError)
+      expect(() => resolveConfig({ [key]: 'none of them' as never })).toThrow(new RegExp(`config\\.${key} must be one of .*, got 'none of them'`))
+    }
     expect(() => resolveConfig({ SUBSTEPS: 0 })).toThrow(/config\.SUBSTEPS must be in \[1, 64\] \(an integer\), got 0/)
     expect(() => resolveConfig({ SUBSTEPS: 65 })).toThrow(RangeError)
     expect(() => resolveConfig({ SUBSTEPS: 2.5 })).toThrow(/config\.SUBSTEPS/)

@@ -7,9 +7,9 @@ import { isBall } from '../world/balls.js'
 export { checkWorld, describe, finite, flag, positive, readSpec, specObject, within } from '../check.js'
 
 function checkId(field: string, eid: unknown, kind: string): number {
-  if (typeof eid !== 'number' || !Number.isInteger(eid) || eid < 1) {
-    throw new TypeError(`${field} must be a ${kind} id (a positive integer), got ${describe(eid)}`)
-  }
+  // not a number: the wrong type; a number that is not a positive integer: out of range
+  if (typeof eid !== 'number') throw new TypeError(`${field} must be a ${kind} id (a positive integer), got ${describe(eid)}`)
+  if (!Number.isInteger(eid) || eid < 1) throw new RangeError(`${field} must be a ${kind} id (a positive integer), got ${describe(eid)}`)
   return eid
 }
 

@@ -217,10 +217,10 @@ export function describeRange(r: Range): string {
 
 function checkChoice(key: ChoiceKey, value: unknown): string {
   const allowed = CONFIG_CHOICES[key]
-  if (typeof value !== 'string' || !allowed.includes(value)) {
-    const got = typeof value === 'string' ? `'${value}'` : describe(value)
-    throw new RangeError(`config.${key} must be one of ${allowed.map((a) => `'${a}'`).join(', ')}, got ${got}`)
-  }
+  const choices = allowed.map((a) => `'${a}'`).join(', ')
+  // the wrong type (not a string) is a TypeError, a string not among the choices a RangeError, as for the numbers
+  if (typeof value !== 'string') throw new TypeError(`config.${key} must be one of ${choices}, got ${describe(value)}`)
+  if (!allowed.includes(value)) throw new RangeError(`config.${key} must be one of ${choices}, got '${value}'`)
   return value
 }
 
