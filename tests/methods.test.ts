@@ -20,7 +20,7 @@ describe('METHOD and SUBSTEPS', () => {
     expect(missing).toEqual([])
   })
 
-  it('a bad METHOD or SUBSTEPS throws a RangeError (a TypeError for a choice that is not a string) naming the key and the allowed values', () => {
+  it('a bad METHOD, other choice key or SUBSTEPS throws a RangeError naming the key and the allowed values (a TypeError for a choice that is not a string)', () => {
     expect(() => resolveConfig({ METHOD: 'rk4' as never })).toThrow(RangeError)
     expect(() => resolveConfig({ METHOD: 'rk4' as never })).toThrow(/config\.METHOD must be one of 'exact', 'naive', 'v1', got 'rk4'/)
     expect(() => resolveConfig({ METHOD: 3 as never })).toThrow(/config\.METHOD must be one of/)
