@@ -30,10 +30,7 @@ import { hypot } from '../src/math.js'
 
 export function launcherSystem(w: BallWorld): void {
   // no ball held (all launched or removed): the next held ball's kicks start without a wait
-  if (w.held.count === 0 && w.kickStreak !== 0) {
-    w.kickStreak = 0
-    w.kickAfter = 0
-  }
+  if (w.held.count === 0 && w.kickStreak !== 0) endKickStreak(w)
   if (w.pass !== 0 || w.held.count === 0 || !w.launchDue) return
   const q = w.held
   const B = w.Ball
@@ -70,13 +67,18 @@ export function launcherSystem(w: BallWorld): void {
       continue
     }
     placeBall(w, eid, x, y, B.vx[eid]!, B.vy[eid]!)
-    w.kickStreak = 0
-    w.kickAfter = 0
+    endKickStreak(w)
   }
   q.count = kept
 }
 
 const blockers = createIdList(8)
+
+/** A ball launched, or none left held: the next kick comes without a wait. */
+function endKickStreak(w: BallWorld): void {
+  w.kickStreak = 0
+  w.kickAfter = 0
+}
 
 /**
  * Each resting ball on held ball h's spot (x, y) leaves it, away from the spot's centre, at the speed a

@@ -95,8 +95,11 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const along = s.along === undefined ? 0 : finite('request.along', s.along, MAX_COORDINATE)
   if (along < 0) throw new RangeError(`request.along must be a finite number in [0, ${MAX_COORDINATE}], got ${along}`)
   const outcome = s.outcome === undefined ? 'capture' : (s.outcome as ThrowOutcome)
-  if (typeof outcome !== 'string') throw new TypeError(`request.outcome must be one of ${OUTCOMES.join(', ')}, got ${describe(s.outcome)}`)
-  if (!OUTCOMES.includes(outcome)) throw new RangeError(`request.outcome must be one of ${OUTCOMES.join(', ')}, got ${describe(s.outcome)}`)
+  if (typeof outcome !== 'string' || !OUTCOMES.includes(outcome)) {
+    // the wrong type a TypeError, a string not among the outcomes a RangeError
+    const message = `request.outcome must be one of ${OUTCOMES.join(', ')}, got ${describe(s.outcome)}`
+    throw typeof outcome === 'string' ? new RangeError(message) : new TypeError(message)
+  }
   const maxStep = world.config.MAX_STEP
   const step = s.step === undefined ? maxStep : positive('request.step', s.step, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
