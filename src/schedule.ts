@@ -67,8 +67,8 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
   if (!Array.isArray(schedule)) throw new TypeError(`runSchedule: schedule must be an array of { name, run } entries, got ${describe(schedule)}`)
   for (let i = 0; i < schedule.length; i++) {
     const entry: unknown = schedule[i]
-    if (typeof entry !== 'object' || entry === null || typeof (entry as ScheduleEntry).run !== 'function') {
-      throw new TypeError(`runSchedule: schedule[${i}] must be a { name, run } entry whose run is a function (world) => void, got ${describe(entry)}`)
+    if (typeof entry !== 'object' || entry === null || typeof (entry as ScheduleEntry).run !== 'function' || typeof (entry as ScheduleEntry).name !== 'string') {
+      throw new TypeError(`runSchedule: schedule[${i}] must be a { name, run } entry whose name is a string and whose run is a function (world) => void, got ${describe(entry)}`)
     }
   }
   if (typeof dt !== 'number') throw new TypeError(`dt must be a number of seconds > 0, got ${describe(dt)}`)

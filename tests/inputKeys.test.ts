@@ -15,7 +15,7 @@ import {
   type OutcomeScene,
   type Replay,
 } from '../src/index'
-import { addHole, addHoles, createBallWorld, listBalls, listHoles, playReplay, setWalls, throwBall } from '../src/ecs'
+import { addHole, addHoles, createBallWorld, forEachBall, isBall, listBalls, listHoles, playReplay, setWalls, throwBall } from '../src/ecs'
 import { lipEnergy, referenceOutcome, referenceTrace, rollOnLip, validateReferenceInput } from '../src/reference/index'
 
 /** What a refused call could have touched. */
@@ -224,7 +224,7 @@ describe('error messages say what was wrong, in the caller\'s terms', () => {
 })
 
 describe('a world deleted by bitECS deleteWorld (not supported)', () => {
-  it('every sim method that reaches the world then throws a clear error instead of a bitECS internal one', async () => {
+  it('every sim method that reaches the world, and the ecs entry\'s forEachBall and isBall, then throw a clear error instead of a bitECS internal one or a stale answer', async () => {
     const { deleteWorld } = await import('bitecs')
     const sim = scene()
     const ball = sim.balls()[0]!
@@ -237,6 +237,9 @@ describe('a world deleted by bitECS deleteWorld (not supported)', () => {
       ['drainEvents', () => sim.drainEvents()],
       ['snapshotWorld', () => sim.snapshot()],
       ['setWalls', () => sim.setWalls({ minX: 0, minY: 0, maxX: 1, maxY: 1 })],
+      // the ecs entry's readers too: they would read the stores of a world bitECS no longer knows
+      ['forEachBall', () => forEachBall(sim.world, () => {})],
+      ['isBall', () => isBall(sim.world, ball)],
     ]
     for (const [name, call] of calls) expect(call).toThrow(`${name}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
   })

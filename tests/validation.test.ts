@@ -1,7 +1,7 @@
 // Every entry point validates its input, says what it got, and leaves the world as it was.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics, type PanelLayout } from '../src/index'
-import { HOT, H_V0, createBallWorld, createSchedule, listBalls, listHoles, runSchedule, throwBall, type BallWorld } from '../src/ecs'
+import { HOT, H_V0, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, runSchedule, throwBall, type BallWorld } from '../src/ecs'
 
 /** Everything a failed call could have touched. */
 function snapshot(w: BallWorld): string {
@@ -65,7 +65,19 @@ describe('steps', () => {
     expectRefused(sim, () => runSchedule({} as never, sim.schedule, 1 / 60), TypeError, /runSchedule: world must be/)
   })
 
-  it('runSchedule and sim.step refuse a schedule entry that is not { name, run } with run a function, naming the entry; the world is unchanged', () => {
+  it('forEachBall and isBall refuse what is not a world, and forEachBall a callback that is not a function', () => {
+    const sim = scene()
+    expectRefused(sim, () => forEachBall({} as never, () => {}), TypeError, /forEachBall: world must be/)
+    expectRefused(sim, () => forEachBall(sim.world, 'each' as never), TypeError, /forEachBall: fn must be a function/, /got the string "each"/)
+    expectRefused(sim, () => isBall(null as never, 1), TypeError, /isBall: world must be/)
+    const seen: number[] = []
+    forEachBall(sim.world, (b) => void seen.push(b))
+    expect(seen.length).toBeGreaterThan(0)
+    expect(seen).toEqual(listBalls(sim.world))
+    expect(seen.every((b) => isBall(sim.world, b))).toBe(true)
+  })
+
+  it('runSchedule and sim.step refuse a schedule entry that is not { name, run } with name a string and run a function, naming the entry; the world is unchanged', () => {
     const sim = scene()
     const good = sim.schedule[0]!
     const cases: [unknown[], RegExp, string][] = [
@@ -73,6 +85,8 @@ describe('steps', () => {
       [[good, { name: 'mine', run: 5 }], /schedule\[1\]/, 'got an object'],
       [[good, good, 'integration'], /schedule\[2\]/, 'got the string "integration"'],
       [[{ name: 'no run' }], /schedule\[0\]/, 'run is a function'],
+      [[good, { run: () => {} }], /schedule\[1\]/, 'name is a string'],
+      [[{ name: 7, run: () => {} }], /schedule\[0\]/, 'name is a string'],
     ]
     for (const [bad, which, got] of cases) {
       expectRefused(sim, () => runSchedule(sim.world, bad as never, 1 / 60), TypeError, which, got)

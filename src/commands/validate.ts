@@ -2,7 +2,7 @@
 import { entityExists, hasComponent } from 'bitecs'
 import { describe } from '../check.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { isBall } from '../world/balls.js'
+import { isLiveBall } from '../world/balls.js'
 
 export { checkWorld, describe, finite, flag, positive, readSpec, specObject, within } from '../check.js'
 
@@ -16,7 +16,7 @@ function checkId(field: string, eid: unknown, kind: string): number {
 /** The id of a live ball of the world. */
 export function checkBall(world: BallWorld, field: string, eid: unknown): number {
   const b = checkId(field, eid, 'ball')
-  if (!isBall(world, b)) {
+  if (!isLiveBall(world, b)) {
     if (entityExists(world, b) && hasComponent(world, b, world.Hole)) throw new RangeError(`${field} ${b} is not a live ball of this world: it is a hole`)
     throw new RangeError(`${field} ${b} is not a live ball of this world (unknown or removed)`)
   }
@@ -26,7 +26,7 @@ export function checkBall(world: BallWorld, field: string, eid: unknown): number
 /** The id of a live hole of the world. */
 export function checkHole(world: BallWorld, field: string, eid: unknown): number {
   const h = checkId(field, eid, 'hole')
-  if (isBall(world, h)) throw new RangeError(`${field} ${h} is not a live hole of this world: it is a ball`)
+  if (isLiveBall(world, h)) throw new RangeError(`${field} ${h} is not a live hole of this world: it is a ball`)
   if (!entityExists(world, h) || !hasComponent(world, h, world.Hole)) {
     throw new RangeError(`${field} ${h} is not a live hole of this world (unknown or removed)`)
   }

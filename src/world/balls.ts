@@ -19,6 +19,7 @@ import { dropId, removeMoving } from './idLists.js'
 import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
+import { checkWorld, describe } from '../check.js'
 
 /** Makes a ball entity (Ball and Path), out of play at the origin; a command then places and launches it. */
 export function addBallEntity(world: BallWorld): number {
@@ -50,7 +51,7 @@ export function adoptBall(world: BallWorld, eid: number): void {
 
 /** onRemove(Ball): the simulation forgets the ball (see the top of this file). */
 export function forgetBall(world: BallWorld, eid: number): void {
-  if (!isBall(world, eid)) return
+  if (!isLiveBall(world, eid)) return
   world.ballCount--
   if (world.Ball.mode[eid] === BallMode.Held) dropId(world.held, eid)
   removeMoving(world, eid)
@@ -71,11 +72,19 @@ export function forgetBall(world: BallWorld, eid: number): void {
 
 /** True when `eid` is a live ball of this world. */
 export function isBall(world: BallWorld, eid: number): boolean {
+  checkWorld('isBall', world)
+  return isLiveBall(world, eid)
+}
+
+/** isBall without the world's check, for callers that made it */
+export function isLiveBall(world: BallWorld, eid: number): boolean {
   return eid > 0 && eid < world.capacity && world.Ball.live[eid] === 1
 }
 
 /** Calls `fn` for every live ball, in ascending id order. */
 export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
+  checkWorld('forEachBall', world)
+  if (typeof fn !== 'function') throw new TypeError(`forEachBall: fn must be a function (eid) => void, got ${describe(fn)}`)
   if (world.ballCount === 0) return
   const live = world.Ball.live
   for (let eid = 1, n = Math.min(live.length, world.entityIndex.maxId + 1); eid < n; eid++) if (live[eid] === 1) fn(eid)
