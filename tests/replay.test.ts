@@ -144,6 +144,12 @@ describe('replays', () => {
     expect(() => createReplayPlayer({ ...good, inputs: [['fly', 1]] }).next()).toThrow(/replay input 0 \("fly"\): unknown command/)
     expect(() => createReplayPlayer({ ...good, config: { ...good.config, BALL_RADIUS: -1 } })).toThrow(/BALL_RADIUS/)
     expect(() => sim.stopRecording()).toThrow(/not recording/)
+    // replayFromJSON checks as the player does: an unknown key, a wrong version or a text that is no replay
+    const text = replayToJSON(good)
+    expect(() => replayFromJSON(text.replace('{', '{"extra":1,'))).toThrow(/replay\.extra is not a known key/)
+    expect(() => replayFromJSON(text.replace(/"version":\d+/, '"version":2'))).toThrow(/replay\.version 2/)
+    expect(() => replayFromJSON('null')).toThrow(TypeError)
+    expect(replayFromJSON(text)).toEqual(good)
   })
 })
 

@@ -183,10 +183,12 @@ export function replayToJSON(replay: Replay): string {
   return JSON.stringify(replay, (_k, v: unknown) => (Object.is(v, -0) ? '-0' : v))
 }
 
-/** A replay from replayToJSON's text. */
+/** A replay from replayToJSON's text, checked as a player checks it (an unknown key, a wrong format or version throws here). */
 export function replayFromJSON(text: string): Replay {
   if (typeof text !== 'string') throw new TypeError(`replayFromJSON: text must be a string, got ${describe(text)}`)
-  return JSON.parse(text, (_k, v: unknown) => (v === '-0' ? -0 : v)) as Replay
+  const replay = JSON.parse(text, (_k, v: unknown) => (v === '-0' ? -0 : v)) as Replay
+  checkReplay(replay)
+  return replay
 }
 
 const B64 = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/'
