@@ -1,6 +1,6 @@
 // Bad input: clear errors naming the field and its range, and the world left as it was.
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, createReplayPlayer, replayFromJSON, replayToJSON, type BallPhysics } from '../src/index'
 import { settle } from './helpers'
 
 function snapshot(sim: BallPhysics): string {
@@ -71,6 +71,26 @@ describe('bad input', () => {
     const c = sim.addBall({ x: 5, y: 5, vx: 0, vy: 0 })
     expect(sim.ballState(c)).toMatchObject({ x: 5, y: 5, vx: 0, vy: 0, mode: 'rolling' })
     expect(sim.balls()).toEqual([c])
+  })
+
+  it('addBall without vx and vy puts the ball down at rest, as vx: 0, vy: 0 does, and records it so', () => {
+    const run = (spec: { x: number; y: number; vx?: number; vy?: number }) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      sim.startRecording()
+      const b = sim.addBall(spec)
+      sim.addBall({ x: spec.x - 60, y: spec.y, vx: 300, vy: 0 }) // rolls into it
+      for (let i = 0; i < 30; i++) sim.step(1 / 60)
+      return { b, state: sim.ballState(b), events: sim.drainEvents().length, replay: sim.stopRecording() }
+    }
+    const bare = run({ x: 120, y: 300 })
+    expect(bare.state).toEqual(run({ x: 120, y: 300, vx: 0, vy: 0 }).state)
+    expect(bare.state.vx).not.toBe(0) // it was struck
+    expect(bare.events).toBeGreaterThan(0)
+    const p = createReplayPlayer(replayFromJSON(replayToJSON(bare.replay)))
+    while (p.next());
+    expect(p.sim.ballState(bare.b)).toEqual(bare.state)
+    const sim = createBallPhysics()
+    expect(() => sim.addBall({ x: 0, y: 0, vx: null as never })).toThrow(TypeError)
   })
 
   it('no NaN or Infinity reaches a component array under random valid use', () => {

@@ -21,8 +21,10 @@ import { record, specOf } from '../world/recorder.js'
 export interface BallSpec {
   x: number
   y: number
-  vx: number
-  vy: number
+  /** px/s, default 0 (put down at rest) */
+  vx?: number | undefined
+  /** px/s, default 0 */
+  vy?: number | undefined
   /** px, default config.BALL_RADIUS */
   radius?: number | undefined
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
@@ -97,7 +99,7 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
   return eid
 }
 
-/** Puts a ball down at (x, y) with velocity (vx, vy), now; returns its entity id. */
+/** Puts a ball down at (x, y) with velocity (vx, vy) (default 0, at rest), now; returns its entity id. */
 export function addBall(world: BallWorld, spec: BallSpec): number {
   const w = checkWorld('addBall', world)
   // each field read once, into locals (a ball added in a burst allocates nothing here)
@@ -111,8 +113,8 @@ export function addBall(world: BallWorld, spec: BallSpec): number {
   const sMass = s.mass
   const x = finite('ball.x', sx, MAX_COORDINATE)
   const y = finite('ball.y', sy, MAX_COORDINATE)
-  const vx = finite('ball.vx', svx, MAX_SPEED)
-  const vy = finite('ball.vy', svy, MAX_SPEED)
+  const vx = svx === undefined ? 0 : finite('ball.vx', svx, MAX_SPEED)
+  const vy = svy === undefined ? 0 : finite('ball.vy', svy, MAX_SPEED)
   const radius = sRadius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', sRadius, MAX_RADIUS)
   const hero = flag('ball.hero', sHero)
   const mass = massOf(w, 'ball.mass', sMass, radius)
