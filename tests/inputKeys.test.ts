@@ -187,8 +187,8 @@ describe('error messages say what was wrong, in the caller\'s terms', () => {
     const input = { delta: 1, speed: 300, holeRadius: 18, ballRadius: 11, gravity: 6953, inertia: 0.4 }
     expect(() => referenceOutcome({ ...input, speed: '300' as never })).toThrow(TypeError)
     expect(() => referenceOutcome({ ...input, speed: '300' as never })).toThrow('speed must be a finite number, got the string "300"')
-    expect(() => referenceOutcome({ ...input, speed: -1 })).toThrow('speed must be in (0, ∞), got -1')
-    expect(() => referenceOutcome({ ...input, ballRadius: 20 })).toThrow('ballRadius must be in (0, holeRadius), got 20 with holeRadius 18')
+    expect(() => referenceOutcome({ ...input, speed: -1 })).toThrow('speed must be in (0, 1000000000000·√(gravity·ballRadius)] = (0, 276555600196416.22], got -1')
+    expect(() => referenceOutcome({ ...input, ballRadius: 20 })).toThrow('ballRadius must be in [holeRadius / 100000000, holeRadius) = [1.8e-7, 18), got 20')
     expect(() => referenceOutcome(null as never)).toThrow(new TypeError('reference input must be an object, got null'))
     expect(() => referenceTrace(undefined as never)).toThrow('reference input must be an object, got undefined')
     const start = { psi: 0, theta: 0.1, psiDot: 1, thetaDot: 0, omegaN: 0 }

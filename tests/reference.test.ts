@@ -170,15 +170,32 @@ describe('sphere on a sharp lip: inputs and invariances', () => {
   const bad: Array<[keyof ReferenceInput, number, RegExp]> = [
     ['delta', Number.NaN, /delta/],
     ['delta', R, /delta must be in \(−holeRadius, holeRadius\)/],
-    ['speed', 0, /speed must be in \(0, ∞\)/],
+    ['speed', 0, /speed must be in \(0, 1000000000000·√\(gravity·ballRadius\)\] = \(0, /],
     ['speed', Number.POSITIVE_INFINITY, /speed/],
+    // the model's domain: v/√(g·r) at most 1e12 (here about 4.6e11 m/s), R/r at most 1e8
+    ['speed', 1e12 * Math.sqrt(9.81 * r) * 1.000001, /speed must be in \(0, 1000000000000·√\(gravity·ballRadius\)\]/],
     ['holeRadius', -1, /holeRadius/],
-    ['ballRadius', R, /ballRadius must be in \(0, holeRadius\)/],
+    ['ballRadius', R, /ballRadius must be in \[holeRadius \/ 100000000, holeRadius\)/],
     ['ballRadius', 0, /ballRadius/],
+    ['ballRadius', R / 1e8 / 1.000001, /ballRadius must be in \[holeRadius \/ 100000000, holeRadius\)/],
     ['gravity', 0, /gravity must be in \(0, ∞\)/],
     ['inertia', 0, /inertia must be in \(0, 2\/3\]/],
     ['inertia', 1, /inertia/],
   ]
+  it('refuses input past the model\'s domain that used to hang it or answer wrongly (the flight search stalled on a step that rounded away)', () => {
+    const px = { holeRadius: 18, ballRadius: 11, gravity: 6953, inertia: 0.4 }
+    expect(() => referenceOutcome({ ...px, delta: 0, speed: 1e160 })).toThrow(/speed must be in \(0, 1000000000000·√\(gravity·ballRadius\)\]/)
+    expect(() => referenceOutcome({ ...px, delta: 0, speed: 400, gravity: 5e-324 })).toThrow(/speed must be in/)
+    expect(() => referenceCaptureSpeed(0, 1e14, 1, 1, 0.4)).toThrow(/ballRadius must be in \[holeRadius \/ 100000000, holeRadius\)/)
+    expect(() => referenceCaptureOffset(1e308, 18, 11, 6953, 0.4)).toThrow(/speed must be in/)
+    expect(() => referenceOutcome({ ...px, holeRadius: 1e20, ballRadius: 1, delta: 0, speed: 1000 })).toThrow(RangeError)
+    // at the domain's edges it still answers, quickly: a ball 1e8 times smaller than the hole drops in
+    const edge = referenceOutcome({ holeRadius: 1e8, ballRadius: 1, gravity: 6953, inertia: 0.4, delta: 1e8 - 3, speed: 1000 })
+    expect(edge.captured).toBe(true)
+    expect(edge.ending).toBe('droppedInFlight')
+    expect(referenceOutcome({ ...px, delta: 3, speed: 0.999e12 * Math.sqrt(6953 * 11) }).ending).toBe('hoppedOut')
+  })
+
   it.each(bad)('%s = %s throws a RangeError naming the field', (field, value, message) => {
     expect(() => referenceOutcome({ ...good, [field]: value })).toThrow(RangeError)
     expect(() => referenceOutcome({ ...good, [field]: value })).toThrow(message)

@@ -1,7 +1,7 @@
 // The reference-tabulated rim model (RIM_MODEL 'tabulated', TABULATED_CONFIG): its table against the live
 // reference, its shipped capture rows, and what a ball does at a tabulated crossing.
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_CONFIG, TABULATED_CONFIG, createBallPhysics, prepareRimTable, type BallEvent } from '../src/index'
+import { DEFAULT_CONFIG, TABULATED_CONFIG, createBallPhysics, prepareRimTable, tabulatedCaptureSpeed, type BallEvent } from '../src/index'
 import { timeBudget } from './helpers'
 import { agreement, engineMap, gameGrid, referenceMap } from '../src/physical/agreement'
 import { RimKind, TABLE_ROWS, buildRimTable, captureRows, captureSpeedAt, crossingAngle, outcomeAt, rimOut } from '../src/reference/rimTable'
@@ -237,8 +237,17 @@ describe('a ball at a tabulated crossing', () => {
     expect(outcomes(false)).toEqual(expected)
     expect(outcomes(true)).toEqual(expected)
     const sim = createBallPhysics(TABULATED_CONFIG)
-    expect(() => prepareRimTable(sim, 18, 18)).toThrow(/ballRadius must be in \(0, holeRadius\)/)
+    expect(() => prepareRimTable(sim, 18, 18)).toThrow(/ballRadius must be in \[holeRadius \/ 100000000, holeRadius\)/)
     expect(() => prepareRimTable(sim, -1, 5)).toThrow(/holeRadius must be a finite number/)
     expect(() => prepareRimTable(sim, 18, 5, { rows: 'later' as never })).toThrow(/options.rows must be 'now' or 'lazy'/)
+    // the wrong type is a TypeError; past the reference's domain (R/r above 1e8) a RangeError; before any work
+    expect(() => prepareRimTable(sim, '18' as never, 5)).toThrow(TypeError)
+    expect(() => prepareRimTable(sim, 18, 5, { inertia: '0.4' as never })).toThrow(/options.inertia must be a number in \(0, 2\/3\], got the string "0.4"/)
+    expect(() => prepareRimTable(sim, 18, 5, { inertia: 1 })).toThrow(RangeError)
+    expect(() => prepareRimTable(sim, 1e4, 1e-5)).toThrow(/ballRadius must be in \[holeRadius \/ 100000000, holeRadius\) = \[0.0001, 10000\), got 0.00001/)
+    expect(() => prepareRimTable(null as never, 18, 5)).toThrow(/prepareRimTable: world must be/)
+    expect(() => tabulatedCaptureSpeed(3, 18, 11, Number.NaN)).toThrow(/gravity must be a finite number in \(0, ∞\), got NaN/)
+    expect(() => tabulatedCaptureSpeed(3, 18, 11, -1)).toThrow(RangeError)
+    expect(sim.world.rimTables.length).toBe(1)
   }, 60_000)
 })

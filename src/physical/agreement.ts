@@ -46,7 +46,7 @@ export function referenceMap(g: DeltaSpeedGrid, ballRadius: number, gravity: num
     for (let k = 0; k < g.nSpeed; k++) {
       input.speed = gridSpeed(g, k)
       const o = referenceOutcome(input)
-      if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit') guarded++
+      if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit' || o.ending === 'flightLimit' || o.ending === 'outOfDomain') guarded++
       map[i * g.nSpeed + k] = o.captured ? 1 : 0
     }
   }

@@ -6,6 +6,7 @@ import { brentRoot } from './brent.js'
 import { lipToCartesian } from './contact.js'
 import { G, V } from './state.js'
 import {
+  FLIGHT_MAX_SAMPLES,
   FLIGHT_MIN_TIME,
   FLIGHT_ROOT_TOL,
   FLIGHT_SAMPLE_DISTANCE,
@@ -15,7 +16,7 @@ import {
 } from './tolerances.js'
 import { hypot } from '../math.js'
 
-export type FlightEnd = 'impact' | 'landed' | 'droppedInFlight' | 'noClearance'
+export type FlightEnd = 'impact' | 'landed' | 'droppedInFlight' | 'noClearance' | 'sampleLimit'
 
 /**
  * Gap function of a flight: D(G(t)) − D(G(0)), where D(G) = (ρ_G − R)² + z_G² is the squared distance from
@@ -95,9 +96,11 @@ export function fly(rs: number): { end: FlightEnd; dt: number } {
   let fa = Number.POSITIVE_INFINITY // the take-off point is on the surface (gap 0) and leaving it
   let tEvent = tStop
   let end: FlightEnd = stopEnd
-  while (ta < tStop) {
+  for (let samples = 0; ta < tStop; samples++) {
     const clearance = Number.isFinite(fa) ? fa / (Math.sqrt(d0 * d0 + fa) + d0) : 0 // distance − d0
     const tb = Math.min(tStop, ta + Math.max(dtFloor, clearance / vMax))
+    // a guard: a step that rounds away (it can at the domain's edges) or a search that runs on; G and V untouched
+    if (!(tb > ta) || samples >= FLIGHT_MAX_SAMPLES) return { end: 'sampleLimit', dt: 0 }
     const fb = lipGap(tb, rs)
     if (fb <= 0) {
       let tClosed = tb

@@ -5,7 +5,7 @@ export { referenceCaptureSpeed, referenceCaptureOffset } from './captureSearch.j
 export { singleImpactDeadCentreLimit, singleImpactEscapes } from './singleImpact.js'
 export { lipEnergy, rollOnLip } from './lipRoll.js'
 export { validateReferenceInput } from './types.js'
-export { LIP_RTOL, LIP_ATOL, MAX_PHASES, MAX_TIME } from './tolerances.js'
+export { LIP_RTOL, LIP_ATOL, MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME } from './tolerances.js'
 export type {
   ReferenceInput,
   ReferenceOutcome,

@@ -102,7 +102,7 @@ export function referenceToOut(o: ReferenceOutcome, ratio: number, ds: number): 
   const out = rimOut
   out.turn = o.turnAngle
   out.time = o.duration
-  if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit') {
+  if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit' || o.ending === 'flightLimit' || o.ending === 'outOfDomain') {
     out.kind = RimKind.Guarded
     return
   }

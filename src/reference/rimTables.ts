@@ -2,7 +2,8 @@
 // late, which are the same bits whenever they are found), and what a world may use: its config's table from
 // the start, others given by prepareRimTable. src/reference/rimTable.ts builds and reads a table.
 import type { BallWorld } from '../world/createWorld.js'
-import { readSpec } from '../check.js'
+import { checkWorld, describe, readSpec } from '../check.js'
+import { MAX_RATIO } from './tolerances.js'
 import { buildRimTable, captureSpeedAt, fillCaptureRows, type RimTable } from './rimTable.js'
 import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
 
@@ -21,11 +22,10 @@ export function prepareRimTable(
   ballRadius: number,
   options: { inertia?: number | undefined; rows?: 'now' | 'lazy' | undefined } = {},
 ): number {
-  const w = 'world' in target ? target.world : target
-  if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
-  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
+  const w = checkWorld('prepareRimTable', target !== null && typeof target === 'object' && 'world' in target ? target.world : target)
+  checkSizes(holeRadius, ballRadius)
   const o = readSpec('options', options, ['inertia', 'rows'] as const)
-  const inertia = (o.inertia as number | undefined) ?? w.config.BALL_INERTIA
+  const inertia = o.inertia === undefined ? w.config.BALL_INERTIA : checkInertia('options.inertia', o.inertia as number)
   const rows = o.rows ?? 'now'
   if (rows !== 'now' && rows !== 'lazy') throw new RangeError(`options.rows must be 'now' or 'lazy', got ${String(rows)}`)
   const t0 = performance.now()
@@ -44,10 +44,30 @@ export function prepareRimTable(
  * captures at that offset (for overlays and charts; builds the geometry's table if need be).
  */
 export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRadius: number, gravity: number, inertia = 2 / 5): number {
-  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius}`)
+  checkSizes(holeRadius, ballRadius)
+  if (typeof delta !== 'number') throw new TypeError(`delta must be a number in [0, holeRadius), got ${describe(delta)}`)
   if (!(delta >= 0 && delta < holeRadius)) throw new RangeError(`delta must be in [0, holeRadius), got ${delta}`)
-  const t = rimTableFor(holeRadius / ballRadius, inertia)
+  if (typeof gravity !== 'number') throw new TypeError(`gravity must be a finite number in (0, ∞), got ${describe(gravity)}`)
+  if (!(gravity > 0) || !Number.isFinite(gravity)) throw new RangeError(`gravity must be a finite number in (0, ∞), got ${gravity}`)
+  const t = rimTableFor(holeRadius / ballRadius, checkInertia('inertia', inertia))
   return captureSpeedAt(t, delta / ballRadius) * Math.sqrt(gravity * ballRadius)
+}
+
+/** A table's hole and ball radii: numbers (TypeError), finite, and R/r in (1, MAX_RATIO] (RangeError). */
+function checkSizes(holeRadius: number, ballRadius: number): void {
+  if (typeof holeRadius !== 'number') throw new TypeError(`holeRadius must be a finite number in (0, ∞), got ${describe(holeRadius)}`)
+  if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
+  if (typeof ballRadius !== 'number') throw new TypeError(`ballRadius must be a number in [holeRadius / ${MAX_RATIO}, holeRadius), got ${describe(ballRadius)}`)
+  if (!(ballRadius > 0 && ballRadius < holeRadius && holeRadius <= MAX_RATIO * ballRadius)) {
+    throw new RangeError(`ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius) = [${holeRadius / MAX_RATIO}, ${holeRadius}), got ${ballRadius}`)
+  }
+}
+
+/** An inertia factor j: a number (TypeError) in (0, 2/3] (RangeError). */
+function checkInertia(field: string, j: number): number {
+  if (typeof j !== 'number') throw new TypeError(`${field} must be a number in (0, 2/3], got ${describe(j)}`)
+  if (!(j > 0 && j <= 2 / 3)) throw new RangeError(`${field} must be in (0, 2/3], got ${j}`)
+  return j
 }
 
 /** Tables built so far, by R/r and j (each is immutable, but for rows found late, and shared by every world). */

@@ -40,7 +40,7 @@ import {
   ws,
 } from './lipRoll.js'
 import { G, P, V, W, lip } from './state.js'
-import { MAX_PHASES, MAX_TIME } from './tolerances.js'
+import { MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME } from './tolerances.js'
 import {
   validateReferenceInput,
   type PhaseEnd,
@@ -57,6 +57,9 @@ import { atan2, hypot } from '../math.js'
  * the phases in scaled units; the caller converts.
  */
 export function simulateScaled(rs: number, ds: number, vs: number, j: number, trace: PhaseRecord[] | null): ReferenceOutcome {
+  if (!(rs <= MAX_RATIO) || !(vs <= MAX_SCALED_SPEED)) {
+    return { captured: false, turnAngle: 0, ending: 'outOfDomain', impacts: 0, phases: 0, duration: 0 }
+  }
   P.rs = rs
   P.j = j
   const k = Math.sqrt(1 - (ds * ds) / (rs * rs))
@@ -153,6 +156,7 @@ export function simulateScaled(rs: number, ds: number, vs: number, j: number, tr
       const { end, dt } = fly(rs)
       t += dt
       if (trace) trace.push({ kind: 'flight', tStart: t0, tEnd: t, end })
+      if (end === 'sampleLimit') return result('flightLimit', false)
       if (end === 'landed') return result('hoppedOut', false, { vx: V[0]!, vy: V[1]! })
       if (end === 'droppedInFlight') return result('droppedInFlight', true)
       if (end === 'noClearance') {

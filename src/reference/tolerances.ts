@@ -31,3 +31,14 @@ export const FLIGHT_ROOT_TOL = 1e-14
 export const MAX_PHASES = 400
 /** time (units √(r/g)) before the run is stopped (a steady roll round the lip that never decides) */
 export const MAX_TIME = 2000
+/**
+ * The model's domain, scaled: a hole at most MAX_RATIO ball radii wide, a ball at most MAX_SCALED_SPEED × √(g·r)
+ * fast. Beyond them the geometry's differences (the gap to the lip beside R/r) or the squared speeds lose their
+ * digits: at R/r = 1e10 the flight search stalls on steps that round away, at 1e14 it hung, at 1e20 a ball that
+ * must drop in was reported as hopping out, and a speed of 1e160 overflowed. The public functions refuse such
+ * input; the engine leaves such a crossing to the stages, as it does a ball not smaller than the hole.
+ */
+export const MAX_RATIO = 1e8
+export const MAX_SCALED_SPEED = 1e12
+/** flight search samples before the run is stopped (a guard; ordinary flights take a few hundred at most) */
+export const FLIGHT_MAX_SAMPLES = 1_000_000

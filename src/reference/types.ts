@@ -1,6 +1,7 @@
 // Public data of the physical reference model (docs/reference-model.md): the input and its validation, the
 // outcome, the phase trace and the lip state. No behaviour beyond checking an input.
 import { describe, readSpec } from '../check.js'
+import { MAX_RATIO, MAX_SCALED_SPEED } from './tolerances.js'
 
 export interface ReferenceInput {
   /** offset of the straight path from the hole centre (its closest approach); |delta| < holeRadius */
@@ -18,7 +19,10 @@ export interface ReferenceInput {
  * How a run ended. `rolledOut`: θ back to 0, the ball rolls away on the surface; `hoppedOut`: landed on the
  * surface outside the hole after a flight; `droppedFromLip`: θ reached −π/2 while rolling on the lip;
  * `droppedInFlight`: the centre went below lip level inside the hole in flight; `phaseLimit`, `timeLimit`,
- * `integratorLimit`: a guard stopped the run before an outcome (then `captured` is false and no exit is given).
+ * `integratorLimit`, `flightLimit`: a guard stopped the run before an outcome (the phases, the time, the lip
+ * integrator's steps or the flight search's samples ran out), and `outOfDomain`: the scaled input lies outside
+ * the model's domain (R/r above MAX_RATIO, 1e8, or v/√(g·r) above MAX_SCALED_SPEED, 1e12; only the engine's internal runs
+ * can meet it, the public functions refuse such input); then `captured` is false and no exit is given.
  */
 export type ReferenceEnding =
   | 'rolledOut'
@@ -28,6 +32,8 @@ export type ReferenceEnding =
   | 'phaseLimit'
   | 'timeLimit'
   | 'integratorLimit'
+  | 'flightLimit'
+  | 'outOfDomain'
 
 export interface ReferenceOutcome {
   captured: boolean
@@ -62,6 +68,7 @@ export type PhaseEnd =
   | 'timeLimit'
   | 'integratorLimit'
   | 'noClearance'
+  | 'sampleLimit'
   | 'clear'
   | 'pressing'
 
@@ -112,13 +119,17 @@ export function validateReferenceInput(input: ReferenceInput): void {
   checkFinite('holeRadius', holeRadius)
   if (!(holeRadius > 0)) throw new RangeError(`holeRadius must be in (0, ∞), got ${holeRadius}`)
   checkFinite('ballRadius', ballRadius)
-  if (!(ballRadius > 0 && ballRadius < holeRadius)) throw new RangeError(`ballRadius must be in (0, holeRadius), got ${ballRadius} with holeRadius ${holeRadius}`)
+  // the model's domain (src/reference/tolerances.ts) bounds the ratio R/r and the scaled speed v/√(g·r)
+  if (!(ballRadius > 0 && ballRadius < holeRadius && holeRadius <= MAX_RATIO * ballRadius)) {
+    throw new RangeError(`ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius) = [${holeRadius / MAX_RATIO}, ${holeRadius}), got ${ballRadius}`)
+  }
   checkFinite('delta', delta)
   if (!(Math.abs(delta) < holeRadius)) throw new RangeError(`delta must be in (−holeRadius, holeRadius) = (${-holeRadius}, ${holeRadius}), got ${delta}`)
   checkFinite('speed', speed)
-  if (!(speed > 0)) throw new RangeError(`speed must be in (0, ∞), got ${speed}`)
   checkFinite('gravity', gravity)
   if (!(gravity > 0)) throw new RangeError(`gravity must be in (0, ∞), got ${gravity}`)
+  const vMax = MAX_SCALED_SPEED * Math.sqrt(gravity * ballRadius)
+  if (!(speed > 0 && speed <= vMax)) throw new RangeError(`speed must be in (0, ${MAX_SCALED_SPEED}·√(gravity·ballRadius)] = (0, ${vMax}], got ${speed}`)
   checkFinite('inertia', inertia)
   // a spherically symmetric mass inside radius r has 0 < j ≤ 2/3 (the thin shell is the extreme)
   if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError(`inertia must be in (0, 2/3], got ${inertia}`)
