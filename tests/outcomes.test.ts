@@ -105,4 +105,52 @@ describe('outcome estimates', () => {
     expect(() => sampleThrows(scene, dist, 10, 1, 0.5)).toThrow(/first must be/)
     expect(() => summarizeOutcomes(sampleThrows(scene, dist, 10, 1), [1, 2])).toThrow(/payouts has 2 entries/)
   })
+
+  it('refuses requests that would run without end, name the wrong hole or give NaN, by field, before any work', () => {
+    const at = (f: () => unknown, type: ErrorConstructor, message: RegExp): void => {
+      const t0 = performance.now()
+      expect(f).toThrow(type)
+      expect(f).toThrow(message)
+      expect(performance.now() - t0).toBeLessThan(2000) // refused, not run
+    }
+    // sizes: the generator streams are 32-bit, a map's cells 16-bit and at most 2^24
+    at(() => sampleThrows(scene, dist, 1e15, 1), RangeError, /count must be a non-negative integer ≤ 4294967296/)
+    at(() => sampleThrows(scene, dist, 10, 1, 1e300), RangeError, /first must be a non-negative integer with first \+ count ≤ 4294967296/)
+    at(() => sampleThrows(scene, dist, 10, Number.NaN), RangeError, /seed must be an integer in \[0, 4294967296\), got NaN/)
+    at(() => sampleThrows(scene, dist, 10, 1.7), RangeError, /seed must be an integer/)
+    at(() => sampleThrows(scene, dist, 10, 'abc' as never), TypeError, /seed must be an integer/)
+    at(() => sampleThrows(scene, { ...dist, power: { mean: 2 } }, 10, 1), RangeError, /distribution\.power\.mean must be in \[0, 1\], got 2/)
+    at(() => sampleThrows(scene, { ...dist, angle: { mean: 0, sd: Number.NaN } }, 10, 1), RangeError, /distribution\.angle\.sd/)
+    const spec = { from: { x: 210, y: 450 }, power: { min: 0.2, max: 0.8, steps: 4 }, angle: { min: -0.3, max: 0.3, steps: 5 } }
+    at(() => outcomeMap(scene, { ...spec, angle: { min: 0, max: 0, steps: 2e7 } }), RangeError, /spec\.angle\.steps must be in \[1, 16777216\]/)
+    at(() => outcomeMap(scene, { ...spec, power: { min: 0, max: 1, steps: 1e5 }, angle: { min: 0, max: 1, steps: 1e5 } }), RangeError, /power\.steps × spec\.angle\.steps must be at most 16777216/)
+    at(() => outcomeMap(scene, spec, { from: Number.NaN, to: 2 }), RangeError, /rows\.from must be in \[0, 4\]/)
+    at(() => outcomeMap(scene, spec, { from: 3, to: 2 }), RangeError, /rows\.to must be in \[3, 4\]/)
+    const many = Array.from({ length: 32768 }, (_, i) => ({ x: 40 * (i % 200), y: 40 * Math.floor(i / 200) }))
+    at(() => outcomeMap({ holes: many }, spec), RangeError, /at most 32767 holes/)
+    // steps: each throw is stepped at the scene's MAX_STEP for up to 30 s
+    at(() => sampleThrows({ ...scene, config: { MAX_STEP: 1e-9 } }, dist, 1, 1), RangeError, /scene\.config\.MAX_STEP must be at least 0\.0001 s/)
+    // summaries: a payout, a stake and a tally that give no number are refused
+    const tally = sampleThrows(scene, dist, 20, 1)
+    const payouts = scene.holes.map((h) => h.value ?? 0)
+    at(() => summarizeOutcomes(tally, payouts, 0), RangeError, /stake must be in \(0, 1000000000000\], got 0/)
+    at(() => summarizeOutcomes(tally, payouts.map((p, i) => (i === 3 ? Number.NaN : p))), RangeError, /payouts\[3\] must be a finite number/)
+    at(() => summarizeOutcomes(tally, undefined as never), TypeError, /payouts must be an array/)
+    at(() => summarizeOutcomes({ ...tally, throws: 1 }, payouts), RangeError, /captured and \d+ missed of 1 throws/)
+    at(() => summarizeOutcomes({ ...tally, extra: 1 } as never, payouts), RangeError, /tally\.extra is not a known key/)
+    at(() => mergeTallies(tally, { ...tally, skips: [1] }), RangeError, /b\.skips has 1 entries/)
+    at(() => mergeTallies(tally, { ...tally, throws: '1' as never }), TypeError, /b\.throws must be a non-negative integer/)
+    expect(summarizeOutcomes(mergeTallies(tally, tally), payouts).throws).toBe(40)
+  })
+
+  it('a wide angle spread draws past ±2π and throws the same direction a turn back; a map row longer than a batch is split', () => {
+    const wide = sampleThrows(scene, { ...dist, angle: { mean: 0, sd: 20 } }, 200, 4)
+    expect(wide.throws).toBe(200)
+    expect(sampleThrows(scene, { ...dist, angle: { mean: 0, sd: 20 } }, 200, 4)).toEqual(wide)
+    const spec = { from: { x: 210, y: 450 }, power: { min: 0.3, max: 0.5, steps: 2 }, angle: { min: -1, max: 1, steps: 2500 } }
+    const map = outcomeMap(scene, spec)
+    expect(map.length).toBe(5000)
+    expect(Array.from(outcomeMap(scene, spec, { from: 1, to: 2 }))).toEqual(Array.from(map.slice(2500)))
+    expect(new Set(map).size).toBeGreaterThan(3)
+  }, 60_000)
 })

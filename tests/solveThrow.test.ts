@@ -107,6 +107,12 @@ describe('solveThrow', () => {
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, outcome: 5 as never })).toThrow(/request\.outcome must be one of capture, skip, lipOut, bounce, got 5/)
     expect(() => solveThrow(sim, { from: { x: Number.NaN, y: 450 }, hole: holes[0]! })).toThrow(/request\.from\.x/)
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, along: -1 })).toThrow(/request\.along/)
+    // along keeps the segment within the coordinates; a step too short to simulate 20 s of throws is refused, by name
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, along: 1e9 })).toThrow(/request\.along must be in \[0, 999999790\]/)
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step: 5e-324 })).toThrow(/request\.step must be in \[0\.0001, 0\.25\], got 5e-324/)
+    expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step: '1' as never })).toThrow(TypeError)
+    const fine = panel({ MAX_STEP: 1e-6 })
+    expect(() => solveThrow(fine.sim, { from: DEFAULT_PANEL.launch, hole: fine.holes[0]! })).toThrow(/solveThrow: the world's MAX_STEP must be at least 0\.0001 s/)
     // inside a drain's callback: refused in its own name (the snapshot it takes named snapshotWorld)
     sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0 })
     let inDrain = ''
@@ -123,7 +129,7 @@ describe('solveThrow', () => {
     expect(inDrain).toMatch(/^solveThrow: called from a drainEventsWith callback/)
     const inside = solveThrow(sim, { from: { x: 50, y: 370 }, hole: holes[0]! })
     expect(inside.found).toBe(false)
-    for (const step of [0, -1, 1, Number.NaN]) expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step })).toThrow(/request\.step must be in \(0, 0\.25\]/)
+    for (const step of [0, -1, 1, Number.NaN]) expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step })).toThrow(/request\.step must be in \[0\.0001, 0\.25\]/)
     expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[0]!, step: '0.1' as unknown as number })).toThrow(TypeError)
   })
 

@@ -11,7 +11,8 @@
 import type { ConfigOverrides } from '../config/design.js'
 import type { HoleSpec } from '../commands/holes.js'
 import type { WallsSpec } from '../commands/walls.js'
-import { readSpec } from '../check.js'
+import { describe, finite, readSpec, within } from '../check.js'
+import { MAX_COORDINATE, MIN_OUTCOME_STEP } from '../config/limits.js'
 import { EventType } from '../events.js'
 import { cos, log, sin } from '../math.js'
 import { mulberry32 } from '../random.js'
@@ -48,13 +49,51 @@ export interface OutcomeTally {
 const LIMIT = 30
 /** throws simulated together in one world */
 const BATCH = 2048
+/** throw indices of a run (first + count): each throw's generator is seeded by a 32-bit mix of its index */
+const MAX_THROW_INDEX = 4294967296
+/** cells of one outcome map (power steps × angle steps; an Int16Array of the scene's hole indices) */
+const MAX_MAP_CELLS = 16777216
+/** holes an outcome map can name (its cells are 16-bit) */
+const MAX_MAP_HOLES = 32767
+/** the largest payout or stake a summary takes (its squares and sums stay finite and exact enough) */
+const MAX_PAYOUT = 1e12
 
 function emptyTally(holes: number): OutcomeTally {
   const z = (): number[] => new Array<number>(holes).fill(0)
   return { throws: 0, captures: z(), missed: 0, skips: z(), bounces: z(), lipOuts: z() }
 }
 
+const TALLY_KEYS = ['throws', 'captures', 'missed', 'skips', 'bounces', 'lipOuts'] as const
+
+/** Refuses what is not a tally: counts that are not non-negative integers, lists of other lengths, more captured and missed than thrown. */
+function checkTally(name: string, tally: unknown): OutcomeTally {
+  const t = readSpec(name, tally, TALLY_KEYS)
+  const count = (field: string, v: unknown): number => {
+    if (typeof v !== 'number') throw new TypeError(`${field} must be a non-negative integer, got ${describe(v)}`)
+    if (!Number.isSafeInteger(v) || v < 0) throw new RangeError(`${field} must be a non-negative integer, got ${v}`)
+    return v
+  }
+  const throws = count(`${name}.throws`, t.throws)
+  const missed = count(`${name}.missed`, t.missed)
+  if (!Array.isArray(t.captures)) throw new TypeError(`${name}.captures must be an array of counts, got ${describe(t.captures)}`)
+  const holes = t.captures.length
+  let captured = 0
+  for (const key of ['captures', 'skips', 'bounces', 'lipOuts'] as const) {
+    const list = t[key]
+    if (!Array.isArray(list)) throw new TypeError(`${name}.${key} must be an array of counts, got ${describe(list)}`)
+    if (list.length !== holes) throw new RangeError(`${name}.${key} has ${list.length} entries; ${name}.captures has ${holes}`)
+    for (let i = 0; i < holes; i++) {
+      const c = count(`${name}.${key}[${i}]`, list[i])
+      if (key === 'captures') captured += c
+    }
+  }
+  if (captured + missed > throws) throw new RangeError(`${name}: ${captured} captured and ${missed} missed of ${throws} throws`)
+  return tally as OutcomeTally
+}
+
 export function mergeTallies(a: OutcomeTally, b: OutcomeTally): OutcomeTally {
+  checkTally('a', a)
+  checkTally('b', b)
   if (a.captures.length !== b.captures.length) throw new RangeError(`mergeTallies: tallies of ${a.captures.length} and ${b.captures.length} holes`)
   const add = (x: number[], y: number[]): number[] => x.map((v, i) => v + y[i]!)
   return {
@@ -72,14 +111,37 @@ function checkScene(scene: unknown): void {
   readSpec('scene', scene, ['config', 'holes', 'walls'] as const)
 }
 
-/** Refuses a spec whose parts are not objects of the known keys. */
-function checkParts(name: string, spec: unknown, parts: Record<string, readonly string[]>): void {
+/** A number's allowed range, and whether it may be left out. */
+type Range = readonly [lo: number, hi: number, optional: boolean]
+
+/**
+ * Refuses a spec whose parts are not objects of the known keys, or whose numbers are not numbers (TypeError)
+ * or lie outside their ranges (RangeError), each named by its field.
+ */
+function checkParts(name: string, spec: unknown, parts: Record<string, Record<string, Range>>): void {
   const s = readSpec(name, spec, Object.keys(parts))
-  for (const key of Object.keys(parts)) readSpec(`${name}.${key}`, s[key], parts[key]!)
+  for (const key of Object.keys(parts)) {
+    const fields = parts[key]!
+    const part = readSpec(`${name}.${key}`, s[key], Object.keys(fields))
+    for (const field of Object.keys(fields)) {
+      const [lo, hi, optional] = fields[field]!
+      if (!(optional && part[field] === undefined)) within(`${name}.${key}.${field}`, part[field], lo, hi)
+    }
+  }
 }
 
-const DIST_PARTS = { power: ['mean', 'sd'], angle: ['mean', 'sd'], from: ['x', 'y', 'sdX', 'sdY'] } as const
-const MAP_PARTS = { from: ['x', 'y'], power: ['min', 'max', 'steps'], angle: ['min', 'max', 'steps'] } as const
+const TURN = 2 * Math.PI
+const C = MAX_COORDINATE
+const DIST_PARTS: Record<string, Record<string, Range>> = {
+  power: { mean: [0, 1, false], sd: [0, 1e3, true] },
+  angle: { mean: [-TURN, TURN, false], sd: [0, 1e3, true] },
+  from: { x: [-C, C, false], y: [-C, C, false], sdX: [0, C, true], sdY: [0, C, true] },
+}
+const MAP_PARTS: Record<string, Record<string, Range>> = {
+  from: { x: [-C, C, false], y: [-C, C, false] },
+  power: { min: [0, 1, false], max: [0, 1, false], steps: [1, MAX_MAP_CELLS, false] },
+  angle: { min: [-TURN, TURN, false], max: [-TURN, TURN, false], steps: [1, MAX_MAP_CELLS, false] },
+}
 
 /** The scene's world (contacts off), its hole ids in the scene's order. */
 function build(scene: OutcomeScene, capacity: number): { sim: BallPhysics; index: Map<number, number> } {
@@ -110,6 +172,7 @@ function simulate(scene: OutcomeScene, throws: Float64Array, n: number, fate: (k
     }
   }
   const dt = sim.config.MAX_STEP
+  if (dt < MIN_OUTCOME_STEP) throw new RangeError(`scene.config.MAX_STEP must be at least ${MIN_OUTCOME_STEP} s for outcome estimates (the throws are stepped at it for up to ${LIMIT} s), got ${dt}`)
   // the world's moving set holds its rolling and rim-rolling balls (contacts off: none is ever held)
   for (let t = 0; t < LIMIT && sim.world.moving.count > 0; t += dt) {
     sim.step(dt)
@@ -140,8 +203,14 @@ function normals(r: () => number): void {
 export function sampleThrows(scene: OutcomeScene, dist: ThrowDistribution, count: number, seed: number, first = 0): OutcomeTally {
   checkScene(scene)
   checkParts('distribution', dist, DIST_PARTS)
-  if (!Number.isInteger(count) || count < 0) throw new RangeError(`count must be a non-negative integer, got ${count}`)
-  if (!Number.isInteger(first) || first < 0) throw new RangeError(`first must be a non-negative integer, got ${first}`)
+  if (typeof count !== 'number') throw new TypeError(`count must be a non-negative integer, got ${describe(count)}`)
+  if (!Number.isInteger(count) || count < 0 || count > MAX_THROW_INDEX) throw new RangeError(`count must be a non-negative integer ≤ ${MAX_THROW_INDEX}, got ${count}`)
+  if (typeof first !== 'number') throw new TypeError(`first must be a non-negative integer, got ${describe(first)}`)
+  if (!Number.isInteger(first) || first < 0 || first + count > MAX_THROW_INDEX) {
+    throw new RangeError(`first must be a non-negative integer with first + count ≤ ${MAX_THROW_INDEX} (each throw's generator is seeded by its 32-bit index), got ${first} with count ${count}`)
+  }
+  if (typeof seed !== 'number') throw new TypeError(`seed must be an integer in [0, ${MAX_THROW_INDEX}), got ${describe(seed)}`)
+  if (!Number.isInteger(seed) || seed < 0 || seed >= MAX_THROW_INDEX) throw new RangeError(`seed must be an integer in [0, ${MAX_THROW_INDEX}), got ${seed}`)
   const tally = emptyTally(scene.holes.length)
   const buf = new Float64Array(4 * Math.min(BATCH, Math.max(1, count)))
   for (let done = 0; done < count; ) {
@@ -150,7 +219,9 @@ export function sampleThrows(scene: OutcomeScene, dist: ThrowDistribution, count
       const r = throwRandom(seed, first + done + k)
       normals(r)
       const p = dist.power.mean + (dist.power.sd ?? 0) * pair[0]!
-      const a = dist.angle.mean + (dist.angle.sd ?? 0) * pair[1]!
+      let a = dist.angle.mean + (dist.angle.sd ?? 0) * pair[1]!
+      // a wide spread can draw past ±2π, throwBall's range: the same direction a whole turn back
+      if (a > TURN || a < -TURN) a -= TURN * Math.trunc(a / TURN)
       normals(r)
       buf[4 * k] = dist.from.x + (dist.from.sdX ?? 0) * pair[0]!
       buf[4 * k + 1] = dist.from.y + (dist.from.sdY ?? 0) * pair[1]!
@@ -182,28 +253,38 @@ export function outcomeMap(scene: OutcomeScene, spec: OutcomeMapSpec, rows?: { f
   checkParts('spec', spec, MAP_PARTS)
   const P = spec.power
   const A = spec.angle
-  const part = rows === undefined ? { from: 0, to: P.steps } : (readSpec('rows', rows, ['from', 'to'] as const), rows)
-  if (!(P.steps >= 1 && A.steps >= 1 && Number.isInteger(P.steps) && Number.isInteger(A.steps))) throw new RangeError('power.steps and angle.steps must be integers ≥ 1')
-  const r0 = Math.max(0, part.from)
-  const r1 = Math.min(P.steps, part.to)
-  const out = new Int16Array(Math.max(0, r1 - r0) * A.steps)
-  const per = Math.max(1, Math.floor(BATCH / A.steps))
-  const buf = new Float64Array(4 * per * A.steps)
-  for (let r = r0; r < r1; r += per) {
-    const nr = Math.min(per, r1 - r)
-    for (let i = 0; i < nr; i++) {
-      const power = P.steps === 1 ? P.min : P.min + ((P.max - P.min) * (r + i)) / (P.steps - 1)
-      for (let j = 0; j < A.steps; j++) {
-        const k = i * A.steps + j
-        buf[4 * k] = spec.from.x
-        buf[4 * k + 1] = spec.from.y
-        buf[4 * k + 2] = power
-        buf[4 * k + 3] = A.steps === 1 ? A.min : A.min + ((A.max - A.min) * j) / (A.steps - 1)
-      }
+  if (!Number.isInteger(P.steps) || !Number.isInteger(A.steps)) throw new RangeError(`spec.power.steps and spec.angle.steps must be integers, got ${P.steps} and ${A.steps}`)
+  if (P.steps * A.steps > MAX_MAP_CELLS) throw new RangeError(`spec.power.steps × spec.angle.steps must be at most ${MAX_MAP_CELLS}, got ${P.steps} × ${A.steps}`)
+  if (!Array.isArray(scene.holes)) throw new TypeError(`scene.holes must be an array of holes, got ${describe(scene.holes)}`)
+  if (scene.holes.length > MAX_MAP_HOLES) throw new RangeError(`scene.holes: an outcome map names at most ${MAX_MAP_HOLES} holes (16-bit cells), got ${scene.holes.length}; use sampleThrows`)
+  let r0 = 0
+  let r1 = P.steps
+  if (rows !== undefined) {
+    const part = readSpec('rows', rows, ['from', 'to'] as const)
+    r0 = within('rows.from', part.from, 0, P.steps)
+    r1 = within('rows.to', part.to, r0, P.steps)
+    if (!Number.isInteger(r0) || !Number.isInteger(r1)) throw new RangeError(`rows.from and rows.to must be integers, got ${r0} and ${r1}`)
+  }
+  const total = (r1 - r0) * A.steps
+  const out = new Int16Array(total)
+  const buf = new Float64Array(4 * Math.min(BATCH, Math.max(1, total)))
+  // cells in row-major order, BATCH throws to a world (a row longer than BATCH takes several)
+  for (let done = 0; done < total; ) {
+    const n = Math.min(BATCH, total - done)
+    for (let k = 0; k < n; k++) {
+      const cell = done + k
+      const row = r0 + Math.floor(cell / A.steps)
+      const j = cell - (row - r0) * A.steps
+      buf[4 * k] = spec.from.x
+      buf[4 * k + 1] = spec.from.y
+      buf[4 * k + 2] = P.steps === 1 ? P.min : P.min + ((P.max - P.min) * row) / (P.steps - 1)
+      buf[4 * k + 3] = A.steps === 1 ? A.min : A.min + ((A.max - A.min) * j) / (A.steps - 1)
     }
-    simulate(scene, buf, nr * A.steps, (k, h) => {
-      out[(r - r0) * A.steps + k] = h
+    const at = done
+    simulate(scene, buf, n, (k, h) => {
+      out[at + k] = h
     })
+    done += n
   }
   return out
 }
@@ -223,8 +304,13 @@ export interface OutcomeSummary {
 
 /** Probabilities with 95 % intervals, and the payout per throw for a payout table (see OutcomeSummary). */
 export function summarizeOutcomes(tally: OutcomeTally, payouts: readonly number[], stake = 1): OutcomeSummary {
+  checkTally('tally', tally)
   const n = tally.throws
+  if (!Array.isArray(payouts)) throw new TypeError(`payouts must be an array of numbers, one per hole, got ${describe(payouts)}`)
   if (payouts.length !== tally.captures.length) throw new RangeError(`payouts has ${payouts.length} entries; the tally has ${tally.captures.length} holes`)
+  for (let i = 0; i < payouts.length; i++) finite(`payouts[${i}]`, payouts[i], MAX_PAYOUT)
+  if (typeof stake !== 'number') throw new TypeError(`stake must be a number in (0, ${MAX_PAYOUT}], got ${describe(stake)}`)
+  if (!(stake > 0 && stake <= MAX_PAYOUT)) throw new RangeError(`stake must be in (0, ${MAX_PAYOUT}], got ${stake}`)
   const z = 1.959963984540054
   const wilson = (c: number): { p: number; low: number; high: number } => {
     if (n === 0) return { p: 0, low: 0, high: 1 }

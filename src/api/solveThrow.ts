@@ -20,12 +20,12 @@
 // bench/solver.ts (a few ms for a capture on the default panel).
 import type { BallWorld } from '../world/createWorld.js'
 import { checkHole, checkWorld, describe, finite, readSpec } from '../commands/validate.js'
-import { MAX_COORDINATE } from '../config/limits.js'
-import { positive } from '../check.js'
+import { MAX_COORDINATE, MIN_OUTCOME_STEP } from '../config/limits.js'
+import { within } from '../check.js'
 import { atan2, hypot } from '../math.js'
 import type { BallPhysics } from './createBallPhysics.js'
 import { WallEdge } from '../../components/Walls.js'
-import { ExactCheck, Trial, type ThrowOutcome } from './throwTrials.js'
+import { ExactCheck, HORIZON, Trial, type ThrowOutcome } from './throwTrials.js'
 
 export type { ThrowOutcome } from './throwTrials.js'
 
@@ -42,7 +42,7 @@ export interface ThrowRequest {
   /** default 'capture' */
   outcome?: ThrowOutcome | undefined
   /**
-   * s, in (0, MAX_STEP]: the step the answer is checked at, in a copy of the world. The outcome is the same
+   * s, in [1e-4, MAX_STEP]: the step the answer is checked at, in a copy of the world. The outcome is the same
    * at every step (balls held at the launcher leave at launch instants of the world's clock, not at step
    * starts), so this changes only the check's cost. Default: MAX_STEP
    */
@@ -93,7 +93,9 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   const fy = finite('request.from.y', f.y, MAX_COORDINATE)
   const hole = checkHole(world, 'request.hole', s.hole)
   const along = s.along === undefined ? 0 : finite('request.along', s.along, MAX_COORDINATE)
-  if (along < 0) throw new RangeError(`request.along must be a finite number in [0, ${MAX_COORDINATE}], got ${along}`)
+  // the segment from.x ± along lies within the coordinates a throw may start at
+  const alongMax = MAX_COORDINATE - Math.abs(fx)
+  if (!(along >= 0 && along <= alongMax)) throw new RangeError(`request.along must be in [0, ${alongMax}] (from.x ± along within ±${MAX_COORDINATE}), got ${along}`)
   const outcome = s.outcome === undefined ? 'capture' : (s.outcome as ThrowOutcome)
   if (typeof outcome !== 'string' || !OUTCOMES.includes(outcome)) {
     // the wrong type a TypeError, a string not among the outcomes a RangeError
@@ -101,7 +103,9 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
     throw typeof outcome === 'string' ? new RangeError(message) : new TypeError(message)
   }
   const maxStep = world.config.MAX_STEP
-  const step = s.step === undefined ? maxStep : positive('request.step', s.step, maxStep)
+  // the throws are stepped for up to HORIZON seconds: at MAX_STEP (the grid) and at request.step (the answer)
+  if (maxStep < MIN_OUTCOME_STEP) throw new RangeError(`solveThrow: the world's MAX_STEP must be at least ${MIN_OUTCOME_STEP} s (its throws are stepped at it for up to ${HORIZON} s), got ${maxStep}`)
+  const step = s.step === undefined ? maxStep : within('request.step', s.step, MIN_OUTCOME_STEP, maxStep)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
   if (world.events.draining) throw new Error('solveThrow: called from a drainEventsWith callback (it copies the world by snapshot); call it after the drain returns')
 
