@@ -72,3 +72,11 @@ describe('METHOD and SUBSTEPS', () => {
     }
   })
 })
+
+describe('a derived key out of range says where it came from', () => {
+  it('GRAVITY derived from V_SKIP_MAX and the radii (HOLE_RADIUS 1e-9 gives 2.25e24) names the keys to change', () => {
+    expect(() => createBallPhysics({ HOLE_RADIUS: 1e-9 })).toThrow(RangeError)
+    expect(() => createBallPhysics({ HOLE_RADIUS: 1e-9 })).toThrow(/config\.GRAVITY must be in \(0, 1000000000\], got .* \(derived from config\.V_SKIP_MAX, HOLE_RADIUS and BALL_RADIUS/)
+    expect(() => createBallPhysics({ GRAVITY: 1e9, HOLE_RADIUS: 1e4, BALL_RADIUS: 1e-3 })).toThrow(/config\.V_SKIP_MAX .* \(derived from config\.GRAVITY/)
+  })
+})

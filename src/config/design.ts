@@ -4,6 +4,7 @@
 // consistent, so they can never disagree.
 import { describe } from '../check.js'
 import { CONSISTENCY_TOLERANCE } from './tolerances.js'
+import { MIN_TABLE_RATIO } from './limits.js'
 
 /** How a world steps: the exact event-driven core, a tick-sampled port of the six stages, or v1's rule. */
 export const METHODS = Object.freeze(['exact', 'naive', 'v1'] as const)
@@ -244,6 +245,16 @@ function checkKey(key: NumericKey, value: unknown): number {
  * the other is derived; give both and they must agree; give neither and V_SKIP_MAX (the design's number)
  * is kept while GRAVITY follows the radii.
  */
+/** A key derived from the others (GRAVITY from V_SKIP_MAX or the reverse, with the two radii): out of range, it says where it came from. */
+function checkDerived(key: 'GRAVITY' | 'V_SKIP_MAX', value: number, from: string): void {
+  try {
+    checkKey(key, value)
+  } catch (e) {
+    if (!(e instanceof RangeError)) throw e
+    throw new RangeError(`${e.message} (derived from config.${from}, HOLE_RADIUS and BALL_RADIUS: V_SKIP_MAX = HOLE_RADIUS·√(2·GRAVITY/BALL_RADIUS); change one of them)`)
+  }
+}
+
 export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhysicsConfig> {
   if (overrides === null || typeof overrides !== 'object' || Array.isArray(overrides)) {
     const got = overrides === null ? 'null' : Array.isArray(overrides) ? 'an array' : typeof overrides
@@ -272,6 +283,12 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
   if (out.BALL_COLLISIONS !== 'off' && out.METHOD !== 'exact') {
     throw new RangeError(`config.BALL_COLLISIONS '${out.BALL_COLLISIONS}' needs config.METHOD 'exact', got '${out.METHOD}'`)
   }
+  if (out.RIM_MODEL === 'tabulated' && !(out.HOLE_RADIUS >= MIN_TABLE_RATIO * out.BALL_RADIUS)) {
+    throw new RangeError(
+      `config.BALL_RADIUS must be at most HOLE_RADIUS / ${MIN_TABLE_RATIO} = ${out.HOLE_RADIUS / MIN_TABLE_RATIO} with RIM_MODEL 'tabulated' ` +
+        `(its table's rows take minutes closer to the hole's size), got ${out.BALL_RADIUS}`,
+    )
+  }
   if (out.MAX_VY < out.MIN_VY) {
     throw new RangeError(`config.MAX_VY must be in [MIN_VY = ${out.MIN_VY}, 1000000], got ${out.MAX_VY}`)
   }
@@ -287,10 +304,10 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
     }
   } else if (hasG) {
     out.V_SKIP_MAX = skipFromGravity(out.GRAVITY, out.HOLE_RADIUS, out.BALL_RADIUS)
-    checkKey('V_SKIP_MAX', out.V_SKIP_MAX)
+    checkDerived('V_SKIP_MAX', out.V_SKIP_MAX, 'GRAVITY')
   } else {
     out.GRAVITY = gravityFromSkip(out.V_SKIP_MAX, out.HOLE_RADIUS, out.BALL_RADIUS)
-    checkKey('GRAVITY', out.GRAVITY)
+    checkDerived('GRAVITY', out.GRAVITY, 'V_SKIP_MAX')
   }
   return Object.freeze(out)
 }

@@ -16,3 +16,9 @@ export const MAX_MASS = 1e9
  * request's step): they step each throw for up to 20–30 s, so at most 300,000 steps.
  */
 export const MIN_OUTCOME_STEP = 1e-4
+/**
+ * Smallest hole-to-ball radius ratio R/r the tabulated rim model builds a table for. Closer to 1 the reference's
+ * rolls round the lip last to its time limit, and a table's capture rows take minutes (R/r 1.084: 9 s for all
+ * 32 rows; 1.071: 77 s; 1.059: 117 s); a crossing of such a ball in a tabulated world is left to the stages.
+ */
+export const MIN_TABLE_RATIO = 1.08

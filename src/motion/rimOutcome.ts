@@ -16,6 +16,7 @@ import { CaptureVia, EventType } from '../events.js'
 import { cogRadius } from '../geometry.js'
 import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, outcomeAt, referenceToOut, rimOut, type RimTable } from '../reference/rimTable.js'
 import { simulateScaled } from '../reference/sphereLip.js'
+import { MIN_TABLE_RATIO } from '../config/limits.js'
 import { lockAtLip } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import type { BallWorld } from '../world/createWorld.js'
@@ -52,6 +53,9 @@ export function decideByReference(w: BallWorld, eid: number, tabulated: boolean)
   const j = w.config.BALL_INERTIA
   const ds = delta / r
   const vs = v / Math.sqrt(w.config.GRAVITY * r)
+  // a ball within MIN_TABLE_RATIO of the hole's size, in a tabulated world: left to the stages (no table is
+  // built for it, and the live reference's rolls round the lip run to its time limit there)
+  if (tabulated && !(R >= MIN_TABLE_RATIO * r)) return
   const table = tabulated && vs <= TABLE_TOP_SPEED ? tableFor(w, R / r, j) : null
   // beyond the table's speeds (a fast ball, rare), a geometry with no table, or a hero ball: a live run
   if (table === null) referenceToOut(simulateScaled(R / r, ds, vs, j, null), R / r, ds)

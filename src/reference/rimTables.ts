@@ -4,6 +4,7 @@
 import type { BallWorld } from '../world/createWorld.js'
 import { checkWorld, describe, readSpec } from '../check.js'
 import { MAX_RATIO } from './tolerances.js'
+import { MIN_TABLE_RATIO } from '../config/limits.js'
 import { buildRimTable, captureSpeedAt, fillCaptureRows, type RimTable } from './rimTable.js'
 import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
 
@@ -53,13 +54,16 @@ export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRad
   return captureSpeedAt(t, delta / ballRadius) * Math.sqrt(gravity * ballRadius)
 }
 
-/** A table's hole and ball radii: numbers (TypeError), finite, and R/r in (1, MAX_RATIO] (RangeError). */
+/** A table's hole and ball radii: numbers (TypeError), finite, and R/r in [MIN_TABLE_RATIO, MAX_RATIO] (RangeError). */
 function checkSizes(holeRadius: number, ballRadius: number): void {
   if (typeof holeRadius !== 'number') throw new TypeError(`holeRadius must be a finite number in (0, ∞), got ${describe(holeRadius)}`)
   if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
   if (typeof ballRadius !== 'number') throw new TypeError(`ballRadius must be a number in [holeRadius / ${MAX_RATIO}, holeRadius), got ${describe(ballRadius)}`)
-  if (!(ballRadius > 0 && ballRadius < holeRadius && holeRadius <= MAX_RATIO * ballRadius)) {
-    throw new RangeError(`ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius) = [${holeRadius / MAX_RATIO}, ${holeRadius}), got ${ballRadius}`)
+  if (!(ballRadius > 0 && holeRadius >= MIN_TABLE_RATIO * ballRadius && holeRadius <= MAX_RATIO * ballRadius)) {
+    throw new RangeError(
+      `ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius / ${MIN_TABLE_RATIO}] = [${holeRadius / MAX_RATIO}, ${holeRadius / MIN_TABLE_RATIO}] ` +
+        `(closer to the hole's size a table's rows take minutes), got ${ballRadius}`,
+    )
   }
 }
 
