@@ -16,7 +16,7 @@ import {
   type Replay,
 } from '../src/index'
 import { addHole, addHoles, createBallWorld, forEachBall, isBall, listBalls, listHoles, playReplay, setWalls, throwBall } from '../src/ecs'
-import { lipEnergy, referenceOutcome, referenceTrace, rollOnLip, validateReferenceInput } from '../src/reference/index'
+import { brentRoot, createDopri5Workspace, dopri5, lipEnergy, referenceOutcome, referenceTrace, rollOnLip, singleImpactEscapes, validateReferenceInput } from '../src/reference/index'
 
 /** What a refused call could have touched. */
 function state(sim: BallPhysics): string {
@@ -197,6 +197,37 @@ describe('error messages say what was wrong, in the caller\'s terms', () => {
     expect(() => rollOnLip(start, '1' as never, 18, 11, 6953, 0.4)).toThrow(TypeError)
     expect(() => lipEnergy(null as never, 18, 11, 6953, 0.4)).toThrow('start must be an object, got null')
     expect(rollOnLip(start, 0.01, 18, 11, 6953, 0.4).state.psi).toBeGreaterThan(0)
+    // the geometry of lipEnergy; a roll too long for the integrator's steps is a RangeError naming duration
+    expect(() => lipEnergy(start, Number.NaN, 11, 6953, 0.4)).toThrow('holeRadius must be a finite number, got NaN')
+    expect(() => lipEnergy(start, 18, 11, Number.POSITIVE_INFINITY, 0.4)).toThrow(RangeError)
+    expect(Number.isFinite(lipEnergy(start, 18, 11, 6953, 0.4))).toBe(true)
+    expect(() => rollOnLip(start, 1e9, 18, 11, 6953, 0.4)).toThrow(/rollOnLip: duration 1000000000 is too long/)
+  })
+
+  it('the reference\'s numerical tools check their arguments: no NaN passes for a root, no integration runs without end', () => {
+    const f = (x: number): number => x - 0.3
+    expect(brentRoot(f, 0, 1, -0.3, 0.7, 1e-12, 1)).toBeCloseTo(0.3, 11)
+    expect(() => brentRoot(f, 0, 1, Number.NaN, 0.7, 1e-12, 1)).toThrow('fa must be a finite number, got NaN')
+    expect(() => brentRoot(f, 0, 1, -0.3, 0.7, Number.NaN, 1)).toThrow('xtol must be a finite number > 0, got NaN')
+    expect(() => brentRoot('f' as never, 0, 1, -0.3, 0.7, 1e-12, 1)).toThrow(TypeError)
+    const ws = createDopri5Workspace(1)
+    const decay = (_t: number, y: Float64Array, dy: Float64Array): void => {
+      dy[0] = -y[0]!
+    }
+    const y = new Float64Array([1])
+    expect(dopri5(ws, decay, 0, y, 1, { rtol: 1e-9, atol: 1e-12 }).status).toBe('reachedEnd')
+    expect(y[0]).toBeCloseTo(Math.exp(-1), 8)
+    expect(() => dopri5(ws, decay, 0, new Float64Array([Number.NaN]), 1, { rtol: 1e-9, atol: 1e-12, maxSteps: 1e12 })).toThrow('y[0] must be a finite number, got NaN')
+    expect(() => dopri5(ws, decay, 0, y, 1, { rtol: 1e-9, atol: 1e-12, maxSteps: Number.POSITIVE_INFINITY })).toThrow(/opts\.maxSteps must be an integer in \[1, 1000000000\]/)
+    expect(() => dopri5(ws, decay, 0, y, 1, { rtol: '1e-9' as never, atol: 1e-12 })).toThrow(TypeError)
+    expect(() => dopri5(ws, decay, 0, y, 1, { rtol: 1e-9, atol: 1e-12, hMax: Number.NaN })).toThrow('opts.hMax must be a finite number > 0, got NaN')
+    expect(() => dopri5(ws, decay, 0, y, 1, { rtol: 1e-9, atol: 1e-12, tol: 1 } as never)).toThrow(/opts\.tol is not a known key/)
+    // dead centre at the design's geometry: captured well below its limit (v/√(g·r) about 2.4), out well above
+    expect(singleImpactEscapes(1, 18 / 11, 0.4)).toBe(false)
+    expect(singleImpactEscapes(10, 18 / 11, 0.4)).toBe(true)
+    expect(() => singleImpactEscapes('3' as never, 18 / 11, 0.4)).toThrow(TypeError)
+    expect(() => singleImpactEscapes(Number.NaN, 18 / 11, 0.4)).toThrow(/vs must be in/)
+    expect(() => singleImpactEscapes(3, -1, 0.4)).toThrow(/rs \(R\/r\) must be in \(1, 100000000\]/)
   })
 
   it('stopRecording when not recording names the sim methods; startRecording while recording is refused, the recording kept', () => {

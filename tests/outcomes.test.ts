@@ -128,6 +128,7 @@ describe('outcome estimates', () => {
     at(() => outcomeMap(scene, spec, { from: 3, to: 2 }), RangeError, /rows\.to must be in \[3, 4\]/)
     const many = Array.from({ length: 32768 }, (_, i) => ({ x: 40 * (i % 200), y: 40 * Math.floor(i / 200) }))
     at(() => outcomeMap({ holes: many }, spec), RangeError, /at most 32767 holes/)
+    at(() => sampleThrows({ holes: 5 } as never, dist, 1, 1), TypeError, /scene\.holes must be an array of holes, got 5/)
     // steps: each throw is stepped at the scene's MAX_STEP for up to 30 s
     at(() => sampleThrows({ ...scene, config: { MAX_STEP: 1e-9 } }, dist, 1, 1), RangeError, /scene\.config\.MAX_STEP must be at least 0\.0001 s/)
     // summaries: a payout, a stake and a tally that give no number are refused

@@ -108,7 +108,8 @@ export function mergeTallies(a: OutcomeTally, b: OutcomeTally): OutcomeTally {
 
 /** Refuses a scene that is not an object of the known keys (each part is checked by its own command). */
 function checkScene(scene: unknown): void {
-  readSpec('scene', scene, ['config', 'holes', 'walls'] as const)
+  const s = readSpec('scene', scene, ['config', 'holes', 'walls'] as const)
+  if (!Array.isArray(s.holes)) throw new TypeError(`scene.holes must be an array of holes, got ${describe(s.holes)}`)
 }
 
 /** A number's allowed range, and whether it may be left out. */
@@ -255,7 +256,6 @@ export function outcomeMap(scene: OutcomeScene, spec: OutcomeMapSpec, rows?: { f
   const A = spec.angle
   if (!Number.isInteger(P.steps) || !Number.isInteger(A.steps)) throw new RangeError(`spec.power.steps and spec.angle.steps must be integers, got ${P.steps} and ${A.steps}`)
   if (P.steps * A.steps > MAX_MAP_CELLS) throw new RangeError(`spec.power.steps × spec.angle.steps must be at most ${MAX_MAP_CELLS}, got ${P.steps} × ${A.steps}`)
-  if (!Array.isArray(scene.holes)) throw new TypeError(`scene.holes must be an array of holes, got ${describe(scene.holes)}`)
   if (scene.holes.length > MAX_MAP_HOLES) throw new RangeError(`scene.holes: an outcome map names at most ${MAX_MAP_HOLES} holes (16-bit cells), got ${scene.holes.length}; use sampleThrows`)
   let r0 = 0
   let r1 = P.steps

@@ -2,7 +2,8 @@
 // six-stage model is charted against. See docs/reference-model.md.
 export { referenceOutcome, referenceTrace } from './sphereLip.js'
 export { referenceCaptureSpeed, referenceCaptureOffset } from './captureSearch.js'
-export { singleImpactDeadCentreLimit, singleImpactEscapes } from './singleImpact.js'
+export { singleImpactDeadCentreLimit } from './singleImpact.js'
+export { brentRoot, dopri5, singleImpactEscapes } from './checked.js'
 export { lipEnergy, rollOnLip } from './lipRoll.js'
 export { validateReferenceInput } from './types.js'
 export { LIP_RTOL, LIP_ATOL, MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME } from './tolerances.js'
@@ -16,7 +17,6 @@ export type {
   LipState,
 } from './types.js'
 export {
-  dopri5,
   dopri5Interpolate,
   dopri5DenseOutput,
   createDopri5Workspace,
@@ -26,5 +26,4 @@ export {
   DOPRI5_PI_BETA,
   DOPRI5_DEFAULT_MAX_STEPS,
 } from './dopri5.js'
-export { brentRoot } from './brent.js'
 export type { OdeRhs, EventFunction, OdeEvent, Dopri5Options, Dopri5Result, Dopri5Status, Dopri5Workspace } from './dopri5.js'

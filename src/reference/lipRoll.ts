@@ -6,7 +6,7 @@ import { createDopri5Workspace, dopri5, type OdeEvent, type OdeRhs } from './dop
 import { freePathClearance } from './flight.js'
 import { P, lip } from './state.js'
 import { LIP_ATOL, LIP_MAX_STEP, LIP_MAX_STEPS, LIP_RTOL } from './tolerances.js'
-import { readLipState, validateReferenceInput, type LipState } from './types.js'
+import { readLipState, validateLipGeometry, type LipState } from './types.js'
 import { cos, sin } from '../math.js'
 import { describe } from '../check.js'
 
@@ -79,6 +79,7 @@ export const ws = createDopri5Workspace(5, HELD_EVENTS.length)
 /** E/m of a ball rolling on the lip: ½(1+j)(ρ²ψ̇² + r²θ̇²) + ½ j r² ω_n² + g r cosθ, ρ = R + r sinθ. */
 export function lipEnergy(state: LipState, holeRadius: number, ballRadius: number, gravity: number, inertia: number): number {
   const s = readLipState(state)
+  validateLipGeometry(holeRadius, ballRadius, gravity, inertia)
   const rho = holeRadius + ballRadius * sin(s.theta)
   const r = ballRadius
   return (
@@ -101,7 +102,7 @@ export function rollOnLip(
   inertia: number,
 ): { state: LipState; steps: number } {
   const s = readLipState(start)
-  validateReferenceInput({ delta: 0, speed: 1, holeRadius, ballRadius, gravity, inertia })
+  validateLipGeometry(holeRadius, ballRadius, gravity, inertia)
   if (typeof duration !== 'number') throw new TypeError(`duration must be a number in [0, ∞), got ${describe(duration)}`)
   if (!(duration >= 0 && Number.isFinite(duration))) throw new RangeError(`duration must be in [0, ∞), got ${duration}`)
   const T = Math.sqrt(ballRadius / gravity)
@@ -119,7 +120,8 @@ export function rollOnLip(
     hMax: LIP_MAX_STEP,
     maxSteps: LIP_MAX_STEPS,
   })
-  if (res.status !== 'reachedEnd') throw new Error(`rollOnLip: integrator stopped (${res.status})`)
+  // a duration the integrator's steps cannot cover (LIP_MAX_STEPS at most LIP_MAX_STEP each, scaled)
+  if (res.status !== 'reachedEnd') throw new RangeError(`rollOnLip: duration ${duration} is too long: the integrator stopped (${res.status}) at ${res.t * T}`)
   return {
     state: { psi: y[0]!, theta: y[1]!, psiDot: y[2]! / T, thetaDot: y[3]! / T, omegaN: y[4]! / T },
     steps: res.accepted + res.rejected,

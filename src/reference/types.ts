@@ -135,6 +135,20 @@ export function validateReferenceInput(input: ReferenceInput): void {
   if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError(`inertia must be in (0, 2/3], got ${inertia}`)
 }
 
+/** A lip's geometry and the ball's, for functions given no crossing (lipEnergy): the same ranges as validateReferenceInput's. */
+export function validateLipGeometry(holeRadius: number, ballRadius: number, gravity: number, inertia: number): void {
+  checkFinite('holeRadius', holeRadius)
+  if (!(holeRadius > 0)) throw new RangeError(`holeRadius must be in (0, ∞), got ${holeRadius}`)
+  checkFinite('ballRadius', ballRadius)
+  if (!(ballRadius > 0 && ballRadius < holeRadius && holeRadius <= MAX_RATIO * ballRadius)) {
+    throw new RangeError(`ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius) = [${holeRadius / MAX_RATIO}, ${holeRadius}), got ${ballRadius}`)
+  }
+  checkFinite('gravity', gravity)
+  if (!(gravity > 0)) throw new RangeError(`gravity must be in (0, ∞), got ${gravity}`)
+  checkFinite('inertia', inertia)
+  if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError(`inertia must be in (0, 2/3], got ${inertia}`)
+}
+
 const LIP_STATE_KEYS = ['psi', 'theta', 'psiDot', 'thetaDot', 'omegaN'] as const
 
 /** A lip state's fields, each a finite number (TypeError or RangeError naming the field otherwise). */
