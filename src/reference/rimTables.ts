@@ -58,7 +58,7 @@ export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRad
 function checkSizes(holeRadius: number, ballRadius: number): void {
   if (typeof holeRadius !== 'number') throw new TypeError(`holeRadius must be a finite number in (0, ∞), got ${describe(holeRadius)}`)
   if (!(holeRadius > 0) || !Number.isFinite(holeRadius)) throw new RangeError(`holeRadius must be a finite number in (0, ∞), got ${holeRadius}`)
-  if (typeof ballRadius !== 'number') throw new TypeError(`ballRadius must be a number in [holeRadius / ${MAX_RATIO}, holeRadius), got ${describe(ballRadius)}`)
+  if (typeof ballRadius !== 'number') throw new TypeError(`ballRadius must be a number in [holeRadius / ${MAX_RATIO}, holeRadius / ${MIN_TABLE_RATIO}], got ${describe(ballRadius)}`)
   if (!(ballRadius > 0 && holeRadius >= MIN_TABLE_RATIO * ballRadius && holeRadius <= MAX_RATIO * ballRadius)) {
     throw new RangeError(
       `ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius / ${MIN_TABLE_RATIO}] = [${holeRadius / MAX_RATIO}, ${holeRadius / MIN_TABLE_RATIO}] ` +
