@@ -2,7 +2,7 @@
 // same events and states, bit for bit, in every contact mode and rim model; bad bytes are refused with a
 // message that says what is wrong, and the world they were given to is left as it was.
 import { describe, expect, it } from 'vitest'
-import { addPanel, createBallPhysics, PHYSICAL_CONFIG, SNAPSHOT_VERSION, TABULATED_CONFIG, type BallPhysics, type ConfigOverrides } from '../src/index.js'
+import { addPanel, createBallPhysics, PHYSICAL_CONFIG, prepareRimTable, SNAPSHOT_VERSION, TABULATED_CONFIG, type BallPhysics, type ConfigOverrides } from '../src/index.js'
 import { checksum } from '../src/commands/snapshotCodec.js'
 
 function random(seed: number): () => number {
@@ -306,5 +306,25 @@ describe('bytes changed on purpose (the checksum recomputed)', () => {
     expect(() => twice.restore(altered((v) => v.setUint32(last, want[0]!, true)))).toThrow(/moving set lists/)
     // unchanged bytes still restore
     createBallPhysics({ BALL_COLLISIONS: 'on' }).restore(bytes)
+  })
+})
+
+describe('rim tables in a snapshot', () => {
+  it('a table prepared for any geometry prepareRimTable takes restores (R/r 1e7 was refused as malformed bytes); one outside it is refused by name', () => {
+    const src = createBallPhysics(TABULATED_CONFIG)
+    prepareRimTable(src, 1e4, 1e-3, { rows: 'lazy' })
+    const bytes = src.snapshot()
+    const dst = createBallPhysics(TABULATED_CONFIG)
+    dst.restore(bytes)
+    expect(dst.world.rimTables.map((t) => t.ratio)).toEqual([18 / 11, 1e7])
+    // the ratio 1e7 written as 1.05 (no table is built that close to the hole's size), the checksum recomputed
+    const b = bytes.slice()
+    const v = new DataView(b.buffer)
+    let at = -1
+    for (let i = 0; i + 8 <= b.length && at < 0; i++) if (v.getFloat64(i, true) === 1e7) at = i
+    expect(at).toBeGreaterThan(0)
+    v.setFloat64(at, 1.05, true)
+    v.setUint32(b.length - 4, checksum(b, b.length - 4), true)
+    expect(() => createBallPhysics(TABULATED_CONFIG).restore(b)).toThrow(/restore: rim table 1\.05:0\.4 outside the geometry a table can have \(R\/r in \[1\.08, 100000000\]/)
   })
 })

@@ -19,6 +19,8 @@
 // state outside the world, and are refused.
 import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
 import type { BallWorld } from '../world/createWorld.js'
+import { MIN_TABLE_RATIO } from '../config/limits.js'
+import { MAX_RATIO } from '../reference/tolerances.js'
 import { rimTableFor } from '../reference/rimTables.js'
 import { checkWorld } from './validate.js'
 import { BALL_MODE_NAMES } from '../../components/Ball.js'
@@ -172,7 +174,10 @@ function decode(bytes: Uint8Array, config: string): Decoded {
   for (let i = 0; i < tableCount; i++) {
     const ratio = r.f64('the rim tables')
     const inertia = r.f64('the rim tables')
-    if (!(ratio > 1 && ratio < 1e6) || !(inertia >= 0 && inertia <= 1)) throw new SnapshotError(`restore: rim table ${ratio}:${inertia} outside the geometry a table can have (malformed bytes)`)
+    // the geometry prepareRimTable accepts (src/reference/rimTables.ts): no table is built outside it
+    if (!(ratio >= MIN_TABLE_RATIO && ratio <= MAX_RATIO) || !(inertia > 0 && inertia <= 2 / 3)) {
+      throw new SnapshotError(`restore: rim table ${ratio}:${inertia} outside the geometry a table can have (R/r in [${MIN_TABLE_RATIO}, ${MAX_RATIO}], j in (0, 2/3])`)
+    }
     tables.push([ratio, inertia])
   }
   const count = r.u32('the body')
