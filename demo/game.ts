@@ -8,7 +8,7 @@
 // step at the same 120 Hz, and then the live game resumes where it was. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
 // component of its own, DemoBall, on the simulation's ball entities: its balls are query([Ball, DemoBall]).
 import { addComponent, hasComponent, query } from 'bitecs'
-import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, mulberry32, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
+import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, MIN_OUTCOME_STEP, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, mulberry32, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
 import type { ShotCall } from './shotCall'
@@ -20,6 +20,8 @@ const MODE_OUT = (BALL_MODE_NAMES as readonly string[]).indexOf('out')
 /** Physics rate, Hz, and the most steps run for one displayed frame (the catch-up cap). */
 export const PHYSICS_HZ = 120
 export const MAX_STEPS_PER_FRAME = 8
+/** the largest ball the demo draws (its static layer, the launch pad included, is cached as one texture) */
+export const MAX_DEMO_RADIUS = 100
 /** A frame longer than this (a tab that slept) counts as this long, s. */
 export const MAX_FRAME_SECONDS = 0.25
 export const BALLS_PER_GAME = 10
@@ -166,12 +168,25 @@ export class Game {
     return this.playerMoving
   }
 
+  /** Why a call of a shot cannot be made now (no ball left, a replay playing, a method without snapshots), or null. */
+  get callBlocked(): string | null {
+    if (this.ballsLeft <= 0) return 'No balls left: start a new game.'
+    if (this.replaying !== null) return 'A replay is playing: call your shot when it ends.'
+    if (this.sim.config.METHOD !== 'exact') return `Call your shot needs METHOD 'exact' (the solver works on a snapshot of the world); this one runs '${this.sim.config.METHOD}'.`
+    return null
+  }
+
   /** Checks overrides the way a new simulation would use them (config and the panel's holes). */
   static validate(overrides: ConfigOverrides): Validation {
     try {
       const probe = createBallPhysics(overrides)
       addPanel(probe, DEFAULT_PANEL)
       probe.setWalls(wallsFor(DEFAULT_PANEL))
+      // what the demo itself needs beyond the core's ranges: its outcome map and Call your shot step each
+      // throw at MAX_STEP for up to 30 s, and its panel is drawn at a fixed scale
+      const c = probe.config
+      if (c.MAX_STEP < MIN_OUTCOME_STEP) return { ok: false, error: `RangeError: config.MAX_STEP must be at least ${MIN_OUTCOME_STEP} s in the demo (its outcome map and Call your shot step each throw at it), got ${c.MAX_STEP}` }
+      if (c.BALL_RADIUS > MAX_DEMO_RADIUS) return { ok: false, error: `RangeError: config.BALL_RADIUS must be at most ${MAX_DEMO_RADIUS} px in the demo (its panel is ${DEFAULT_PANEL.width} px wide), got ${c.BALL_RADIUS}` }
       return { ok: true, config: probe.config }
     } catch (e) {
       const err = e instanceof Error ? e : new Error(String(e))
@@ -459,7 +474,8 @@ export class Game {
 
   /** A throw or burst on a quiet panel starts recording a round. */
   private beginRound(): void {
-    if (this.roundKinds !== null || this.stressTarget > 0) return
+    // a replay starts from a snapshot, which only the exact method has: other methods play without rounds
+    if (this.roundKinds !== null || this.stressTarget > 0 || this.sim.config.METHOD !== 'exact') return
     this.sim.startRecording()
     this.roundKinds = new Map()
     this.recordingEvents = []
@@ -510,10 +526,11 @@ export class Game {
     const hole = this.holes[holeIndex]
     if (hole === undefined) return null
     this.applyPending()
+    if (this.callBlocked !== null) return null
     const token = ++this.calls
     this.solving = { holeIndex, token }
     // checked at the demo's own step (the outcome is the same at every step; the cost is not)
-    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160, step: 1 / PHYSICS_HZ }
+    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160, step: Math.min(1 / PHYSICS_HZ, this.sim.config.MAX_STEP) }
     return { token, config: { ...this.sim.config }, snapshot: this.sim.snapshot(), request }
   }
 

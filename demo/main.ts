@@ -168,11 +168,15 @@ async function main(): Promise<void> {
   const showAnswer = (i: number, answer: ThrowSolution | ThrowFailure | null): void => {
     const ms = game.lastCall?.ms ?? 0
     const value = game.panel.holes[i]!.value
-    if (answer === null) callStatus.textContent = game.ballsLeft <= 0 ? 'No balls left: start a new game.' : ''
+    if (answer === null) callStatus.textContent = game.callBlocked ?? ''
     else if (answer.found) {
       const deg = (answer.angle * 180) / Math.PI
       callStatus.textContent = `Hole ${value}: power ${answer.power.toFixed(3)}, aim ${deg.toFixed(1)}°, from x = ${answer.from.x.toFixed(0)}; margin ±${answer.margin.power.toFixed(3)} power, ±${((answer.margin.angle * 180) / Math.PI).toFixed(2)}° (solved in ${ms.toFixed(0)} ms)`
-    } else callStatus.textContent = `Hole ${value}: no throw found (${answer.reason})`
+    } else {
+      // the solver names holes by entity id; the player knows them by value
+      const reason = answer.reason.replace(/hole (\d+)/g, (_m, id: string) => `hole ${game.panel.holes[game.holeIndex(Number(id))]?.value ?? id}`)
+      callStatus.textContent = `Hole ${value}: no throw found (${reason})`
+    }
   }
   // the hole of the call whose answer the status line waits for (-1: none): a call cancelled meanwhile (a
   // throw, a burst, a reset) says so at once, not when its answer comes
@@ -354,7 +358,7 @@ async function main(): Promise<void> {
   // cycles off → exact ('on') → fixed tick → off
   const contactsBtn = el<HTMLButtonElement>('contacts')
   const contactsMode = () => (game.pending ?? game.overrides).BALL_COLLISIONS ?? 'off'
-  const CONTACT_LABEL = { off: 'off', on: 'exact', fixed: 'fixed tick' } as const
+  const CONTACT_LABEL = { off: 'off', on: 'on · exact', fixed: 'fixed · tick' } as const // the config's values first, as the tuning panel names them
   // the label follows the key, however it was set (this button, the drop-down, a preset, a reset)
   const syncContacts = (): void => {
     const mode = contactsMode()

@@ -64,8 +64,14 @@ export class OutcomeView {
     }
     if (!this.done) {
       const to = Math.min(MAP_SPEC.power.steps, this.rows + ROWS_PER_FRAME)
-      this.cells.set(outcomeMap(this.scene(), MAP_SPEC, { from: this.rows, to }), this.rows * MAP_SPEC.angle.steps)
-      this.rows = to
+      try {
+        this.cells.set(outcomeMap(this.scene(), MAP_SPEC, { from: this.rows, to }), this.rows * MAP_SPEC.angle.steps)
+        this.rows = to
+      } catch (e) {
+        // a config the map cannot be computed for: the map stops (grey) and says why; the game goes on
+        console.warn(`outcome map: ${e instanceof Error ? e.message : String(e)}`)
+        this.rows = MAP_SPEC.power.steps
+      }
     }
     this.draw(power, angle)
   }

@@ -31,6 +31,13 @@ function packColor(rgb: number, alpha: number): number {
   return bgr + (((alpha * 255) | 0) << 24)
 }
 
+/** The least of 1, 2, 5 × 10^k at or above `at` and `least`: a grid step. */
+function niceStep(at: number, least: number): number {
+  let step = least
+  while (step < at) step = step * (String(step)[0] === '2' ? 2.5 : 2)
+  return step
+}
+
 function label(s: string, size: number, fill: number, mono = false): Text {
   return new Text({
     text: s,
@@ -105,14 +112,17 @@ export class RegimeView {
     const f = this.frame.clear()
     f.roundRect(0, 0, x + w + 14, y + h + 112, 10).fill({ color: 0x0d1424 }).stroke({ width: 1, color: COLORS.panelEdge })
     f.rect(x, y, w, h).fill({ color: 0x0a101d })
-    // grid
-    for (let v = 100; v < vt; v += 100) f.moveTo(x, this.py(v)).lineTo(x + w, this.py(v))
-    for (let d = 5; d < R; d += 5) f.moveTo(this.px(d), y).lineTo(this.px(d), y + h)
+    // grid: every 100 px/s and 5 px at the design's scale, coarser (1-2-5 steps) so a wide range keeps about
+    // 7-14 lines a side (MAX_VY 1e6 drew 10,000 labels and took 3 s)
+    const vStep = niceStep(vt / 14, 100)
+    const dStep = niceStep(R / 7, 5)
+    for (let v = vStep; v < vt; v += vStep) f.moveTo(x, this.py(v)).lineTo(x + w, this.py(v))
+    for (let d = dStep; d < R; d += dStep) f.moveTo(this.px(d), y).lineTo(this.px(d), y + h)
     f.stroke({ width: 1, color: COLORS.panelGrid, alpha: 0.9 })
     f.rect(x, y, w, h).stroke({ width: 1, color: COLORS.axis })
     T('Regime map · hole entries (δ, v)', 12, 10, 12.5, COLORS.text)
-    for (let v = 0; v <= vt; v += 100) T(String(v), x - 5, this.py(v), 9, COLORS.textDim, 1, 0.5, true)
-    for (let d = 0; d < R - 1; d += 5) T(String(d), this.px(d), y + h + 4, 9, COLORS.textDim, 0.5, 0, true)
+    for (let v = 0; v <= vt; v += vStep) T(String(v), x - 5, this.py(v), 9, COLORS.textDim, 1, 0.5, true)
+    for (let d = 0; d < R - dStep / 5; d += dStep) T(String(+d.toPrecision(6)), this.px(d), y + h + 4, 9, COLORS.textDim, 0.5, 0, true)
     T(`R=${+R.toFixed(2)}`, this.px(R), y + h + 4, 9, COLORS.textDim, 0.5, 0, true)
     T('δ  offset from hole centre, px', x + w / 2, y + h + 17, 10, COLORS.textDim, 0.5, 0)
     const vl = T('v at the lip, px/s', 12, y + h / 2, 10, COLORS.textDim, 0.5, 0.5)

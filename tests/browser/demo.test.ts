@@ -343,7 +343,7 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.click('#contacts')
       expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('true')
       await expect.poll(() => page.evaluate(() => window.__demo.pending?.BALL_COLLISIONS)).toBe(mode)
-      expect(await page.textContent('#contacts')).toBe(mode === 'on' ? 'Contacts: exact' : 'Contacts: fixed tick')
+      expect(await page.textContent('#contacts')).toBe(mode === 'on' ? 'Contacts: on · exact' : 'Contacts: fixed · tick')
       const score0 = await page.evaluate(() => window.__demo.score)
       await page.click('#multi-1000')
       await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe(mode)
@@ -573,12 +573,65 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(Number(await input.inputValue())).toBe(radius)
     await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
     await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
+    // values the core takes but the demo cannot run with are refused the same way: a MAX_STEP its outcome
+    // map cannot step at (it stopped the page), a ball wider than its drawing layer (the stage went black)
+    for (const [key, value, message] of [['MAX_STEP', '0.00001', /MAX_STEP must be at least 0\.0001 s in the demo/], ['BALL_RADIUS', '10000', /BALL_RADIUS must be at most 100 px in the demo/]] as const) {
+      const field = page.locator(`[data-key="${key}"] input`)
+      await field.fill(value)
+      await field.press('Enter')
+      await field.blur()
+      await expect.poll(() => page.textContent('#tuning-status')).toMatch(message)
+      await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+      await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
+    }
+    expect(problems).toEqual([])
+  })
+
+  it('a method without snapshots (naive) plays without rounds, and Call your shot says why it cannot', async () => {
+    await page.selectOption('[data-key="METHOD"] select', 'naive')
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await expect.poll(() => page.evaluate(() => window.__demo.config.METHOD)).toBe('naive')
+    const live = await page.evaluate(() => window.__demo.liveBalls)
+    await page.keyboard.press('Digit1')
+    await expect.poll(() => page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThanOrEqual(live + 10)
+    await page.click('#call-shot')
+    const at = await page.evaluate(({ x, y }) => window.__demo.toPage(x, y), DEFAULT_PANEL.holes[12]!)
+    await page.mouse.click(at.x, at.y)
+    await expect.poll(() => page.textContent('#call-status')).toMatch(/Call your shot needs METHOD 'exact'/)
+    const frames = await page.evaluate(() => window.__demo.frames)
+    await page.waitForFunction((f) => window.__demo.frames > f + 3, frames)
+    await page.click('#call-shot')
+    await page.click('#clear-balls')
+    await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+    await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
+    await expect.poll(() => page.evaluate(() => window.__demo.config.METHOD)).toBe('exact')
+    expect(problems).toEqual([])
+  })
+
+  it('at 800 × 700 the page scrolls: the side panel lies below the stage, clear of the footer, and its buttons work', async () => {
+    const size = page.viewportSize()!
+    await page.setViewportSize({ width: 800, height: 700 })
+    try {
+      const box = await page.evaluate(() => {
+        const r = (q: string) => document.querySelector(q)!.getBoundingClientRect()
+        return { stage: r('#stage').bottom, aside: r('aside').top, asideBottom: r('aside').bottom, footer: r('footer').top, height: document.documentElement.scrollHeight }
+      })
+      expect(box.aside).toBeGreaterThanOrEqual(box.stage - 1)
+      expect(box.footer).toBeGreaterThanOrEqual(box.asideBottom - 1)
+      expect(box.height).toBeGreaterThan(700)
+      const live = await page.evaluate(() => window.__demo.liveBalls)
+      await page.click('#multi-10') // scrolled into view by the click
+      await expect.poll(() => page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThanOrEqual(live + 10)
+      await page.click('#clear-balls')
+    } finally {
+      await page.setViewportSize(size)
+    }
     expect(problems).toEqual([])
   })
 
   it('the Contacts button shows the key however it is set; the keys work after a tuning-panel button', async () => {
     await page.selectOption('[data-key="BALL_COLLISIONS"] select', 'on')
-    await expect.poll(() => page.textContent('#contacts')).toBe('Contacts: exact')
+    await expect.poll(() => page.textContent('#contacts')).toBe('Contacts: on · exact')
     expect(await page.getAttribute('#contacts', 'aria-pressed')).toBe('true')
     await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
     await expect.poll(() => page.textContent('#contacts')).toBe('Contacts: off')
