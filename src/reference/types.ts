@@ -116,26 +116,16 @@ function checkFinite(name: string, value: number): void {
 /** Throws a TypeError (not an object, a field not a number) or a RangeError naming the first field out of range, and what it got. */
 export function validateReferenceInput(input: ReferenceInput): void {
   const { delta, speed, holeRadius, ballRadius, gravity, inertia } = readSpec('reference input', input, INPUT_KEYS, 'input') as unknown as ReferenceInput
-  checkFinite('holeRadius', holeRadius)
-  if (!(holeRadius > 0)) throw new RangeError(`holeRadius must be in (0, ∞), got ${holeRadius}`)
-  checkFinite('ballRadius', ballRadius)
-  // the model's domain (src/reference/tolerances.ts) bounds the ratio R/r and the scaled speed v/√(g·r)
-  if (!(ballRadius > 0 && ballRadius < holeRadius && holeRadius <= MAX_RATIO * ballRadius)) {
-    throw new RangeError(`ballRadius must be in [holeRadius / ${MAX_RATIO}, holeRadius) = [${holeRadius / MAX_RATIO}, ${holeRadius}), got ${ballRadius}`)
-  }
+  // the model's domain (src/reference/tolerances.ts) bounds the ratio R/r (in validateLipGeometry) and the scaled speed v/√(g·r)
+  validateLipGeometry(holeRadius, ballRadius, gravity, inertia)
   checkFinite('delta', delta)
   if (!(Math.abs(delta) < holeRadius)) throw new RangeError(`delta must be in (−holeRadius, holeRadius) = (${-holeRadius}, ${holeRadius}), got ${delta}`)
   checkFinite('speed', speed)
-  checkFinite('gravity', gravity)
-  if (!(gravity > 0)) throw new RangeError(`gravity must be in (0, ∞), got ${gravity}`)
   const vMax = MAX_SCALED_SPEED * Math.sqrt(gravity * ballRadius)
   if (!(speed > 0 && speed <= vMax)) throw new RangeError(`speed must be in (0, ${MAX_SCALED_SPEED}·√(gravity·ballRadius)] = (0, ${vMax}], got ${speed}`)
-  checkFinite('inertia', inertia)
-  // a spherically symmetric mass inside radius r has 0 < j ≤ 2/3 (the thin shell is the extreme)
-  if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError(`inertia must be in (0, 2/3], got ${inertia}`)
 }
 
-/** A lip's geometry and the ball's, for functions given no crossing (lipEnergy): the same ranges as validateReferenceInput's. */
+/** A lip's geometry and the ball's (R, r, g, j; validateReferenceInput's first checks, and lipEnergy's and rollOnLip's). */
 export function validateLipGeometry(holeRadius: number, ballRadius: number, gravity: number, inertia: number): void {
   checkFinite('holeRadius', holeRadius)
   if (!(holeRadius > 0)) throw new RangeError(`holeRadius must be in (0, ∞), got ${holeRadius}`)
@@ -146,6 +136,7 @@ export function validateLipGeometry(holeRadius: number, ballRadius: number, grav
   checkFinite('gravity', gravity)
   if (!(gravity > 0)) throw new RangeError(`gravity must be in (0, ∞), got ${gravity}`)
   checkFinite('inertia', inertia)
+  // a spherically symmetric mass inside radius r has 0 < j ≤ 2/3 (the thin shell is the extreme)
   if (!(inertia > 0 && inertia <= 2 / 3)) throw new RangeError(`inertia must be in (0, 2/3], got ${inertia}`)
 }
 
