@@ -7,6 +7,13 @@ import { Game } from './game'
 
 type Key = keyof BallPhysicsConfig
 
+/** Decimals to show `v` with: `usual`, or more for a value below its last place (up to 20). */
+function shownDecimals(v: number, usual: number): number {
+  const a = Math.abs(v)
+  if (a === 0 || a >= 10 ** -usual) return usual
+  return Math.min(20, Math.ceil(-Math.log10(a)) + 2)
+}
+
 const DECIMALS: Partial<Record<Key, number>> = {
   GRAVITY: 1,
   V_SKIP_MAX: 1,
@@ -46,6 +53,10 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
   const sync = (config: Readonly<BallPhysicsConfig>): void => {
     for (const [k, c] of controllers) {
       ;(values as Record<Key, unknown>)[k] = config[k]
+      // a value too small for the key's usual decimals shows three significant digits instead of 0.0
+      const d = DECIMALS[k]
+      const v = config[k]
+      if (d !== undefined && typeof v === 'number') c.decimals(shownDecimals(v, d))
       c.updateDisplay()
       c.domElement.classList.remove('invalid')
     }

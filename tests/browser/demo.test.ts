@@ -584,6 +584,14 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
       await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
     }
+    // a valid value below a field's usual decimals shows its digits, not 0.0
+    const gravity = page.locator('[data-key="GRAVITY"] input')
+    await gravity.fill('0.000001')
+    await gravity.press('Enter')
+    await gravity.blur()
+    await expect.poll(() => gravity.inputValue()).toBe('0.00000100')
+    await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
+    await expect.poll(() => gravity.inputValue()).toBe('6953.1')
     expect(problems).toEqual([])
   })
 
