@@ -398,6 +398,7 @@ async function main(): Promise<void> {
     log: el('event-log'),
     counts: el('event-counts'),
   }
+  const ballCountLabel = document.querySelector<HTMLElement>('label[for="ball-count"]')!
   const setText = (e: HTMLElement, s: string): void => {
     if (e.textContent !== s) e.textContent = s
   }
@@ -457,6 +458,9 @@ async function main(): Promise<void> {
     setText(hud.score, String(game.score))
     setText(hud.ballsLeft, String(game.ballsLeft))
     setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
+    // balls the launcher holds until their spot is clear (contacts on) are in play but not yet out: say how many
+    const held = game.sim.world.held.count
+    setText(ballCountLabel, held > 0 ? `Balls in play · ${held.toLocaleString('en-US')} waiting` : 'Balls in play')
     syncReplay()
     syncCall()
     syncContacts()

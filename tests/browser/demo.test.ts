@@ -375,6 +375,8 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       const t0 = await page.evaluate(() => window.__demo.simTime)
       // every ball was put down on the launch point: all but the first wait there
       expect(await page.evaluate(() => window.__demo.heldBalls), mode).toBeGreaterThan(900)
+      // the stat says how many of the balls in play are waiting
+      await expect.poll(() => page.textContent('label[for="ball-count"]')).toMatch(/^Balls in play · [\d,]+ waiting$/)
       await page.waitForFunction((t) => window.__demo.simTime > t + 0.5, t0, { timeout: 30_000 })
       expect(await page.evaluate(() => window.__demo.worstOverlap), mode).toBeLessThanOrEqual(1e-3)
       await page.waitForFunction((t) => window.__demo.simTime > t + 3, t0, { timeout: 60_000 })
