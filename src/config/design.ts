@@ -239,12 +239,6 @@ function checkKey(key: NumericKey, value: unknown): number {
   return value
 }
 
-/**
- * Validates overrides and returns a complete, frozen config. Unknown keys, non-finite or out-of-range
- * values throw an error naming the key and its allowed range. GRAVITY and V_SKIP_MAX: give either and
- * the other is derived; give both and they must agree; give neither and V_SKIP_MAX (the design's number)
- * is kept while GRAVITY follows the radii.
- */
 /** A key derived from the others (GRAVITY from V_SKIP_MAX or the reverse, with the two radii): out of range, it says where it came from. */
 function checkDerived(key: 'GRAVITY' | 'V_SKIP_MAX', value: number, from: string): void {
   try {
@@ -255,6 +249,12 @@ function checkDerived(key: 'GRAVITY' | 'V_SKIP_MAX', value: number, from: string
   }
 }
 
+/**
+ * Validates overrides and returns a complete, frozen config. Unknown keys, non-finite or out-of-range
+ * values throw an error naming the key and its allowed range. GRAVITY and V_SKIP_MAX: give either and
+ * the other is derived; give both and they must agree; give neither and V_SKIP_MAX (the design's number)
+ * is kept while GRAVITY follows the radii.
+ */
 export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhysicsConfig> {
   if (overrides === null || typeof overrides !== 'object' || Array.isArray(overrides)) {
     const got = overrides === null ? 'null' : Array.isArray(overrides) ? 'an array' : typeof overrides

@@ -4,6 +4,7 @@
 import { createBallPhysics, type BallPhysics } from '../api/createBallPhysics.js'
 import type { ConfigOverrides } from '../config/design.js'
 import { referenceOutcome } from '../reference/index.js'
+import { isGuarded } from '../reference/types.js'
 import type { ScheduleEntry } from '../schedule.js'
 
 export interface DeltaSpeedGrid {
@@ -46,7 +47,7 @@ export function referenceMap(g: DeltaSpeedGrid, ballRadius: number, gravity: num
     for (let k = 0; k < g.nSpeed; k++) {
       input.speed = gridSpeed(g, k)
       const o = referenceOutcome(input)
-      if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit' || o.ending === 'flightLimit' || o.ending === 'outOfDomain') guarded++
+      if (isGuarded(o.ending)) guarded++
       map[i * g.nSpeed + k] = o.captured ? 1 : 0
     }
   }

@@ -7,15 +7,10 @@ import { brentRoot as brentRootRaw } from './brent.js'
 import { dopri5 as dopri5Raw, type Dopri5Options, type Dopri5Result, type Dopri5Workspace, type OdeEvent, type OdeRhs } from './dopri5.js'
 import { singleImpactEscapes as singleImpactEscapesRaw } from './singleImpact.js'
 import { MAX_RATIO, MAX_SCALED_SPEED } from './tolerances.js'
+import { checkFinite } from './types.js'
 
 /** the most steps a dopri5 call may be given (maxSteps): a run past it is a mistake, not a long problem */
 const MAX_DOPRI5_STEPS = 1e9
-
-function finiteNumber(field: string, v: unknown): number {
-  if (typeof v !== 'number') throw new TypeError(`${field} must be a finite number, got ${describe(v)}`)
-  if (!Number.isFinite(v)) throw new RangeError(`${field} must be a finite number, got ${v}`)
-  return v
-}
 
 function positiveNumber(field: string, v: unknown): number {
   if (typeof v !== 'number') throw new TypeError(`${field} must be a finite number > 0, got ${describe(v)}`)
@@ -30,10 +25,10 @@ function fn(field: string, v: unknown): void {
 /** Brent's method on a bracket [a, b] (src/reference/brent.ts), its arguments checked. */
 export function brentRoot(f: (x: number) => number, a: number, b: number, fa: number, fb: number, xtol: number, after: 1 | -1): number {
   fn('f', f)
-  finiteNumber('a', a)
-  finiteNumber('b', b)
-  finiteNumber('fa', fa)
-  finiteNumber('fb', fb)
+  checkFinite('a', a)
+  checkFinite('b', b)
+  checkFinite('fa', fa)
+  checkFinite('fb', fb)
   positiveNumber('xtol', xtol)
   if (after !== 1 && after !== -1) throw new RangeError(`after must be 1 or -1, got ${describe(after)}`)
   return brentRootRaw(f, a, b, fa, fb, xtol, after)
@@ -45,11 +40,11 @@ const OPTION_KEYS = ['rtol', 'atol', 'hMax', 'hInit', 'maxSteps'] as const
 export function dopri5(ws: Dopri5Workspace, rhs: OdeRhs, t0: number, y: Float64Array, tEnd: number, opts: Dopri5Options, events: readonly OdeEvent[] = []): Dopri5Result {
   if (ws === null || typeof ws !== 'object' || !Number.isInteger(ws.n)) throw new TypeError(`ws must be a workspace from createDopri5Workspace, got ${describe(ws)}`)
   fn('rhs', rhs)
-  finiteNumber('t0', t0)
-  finiteNumber('tEnd', tEnd)
+  checkFinite('t0', t0)
+  checkFinite('tEnd', tEnd)
   if (!(y instanceof Float64Array)) throw new TypeError(`y must be a Float64Array, got ${describe(y)}`)
   if (y.length < ws.n) throw new RangeError(`y must hold at least the workspace's ${ws.n} components, got ${y.length}`)
-  for (let i = 0; i < ws.n; i++) finiteNumber(`y[${i}]`, y[i])
+  for (let i = 0; i < ws.n; i++) checkFinite(`y[${i}]`, y[i])
   const o = readSpec('opts', opts, OPTION_KEYS)
   positiveNumber('opts.rtol', o.rtol)
   positiveNumber('opts.atol', o.atol)

@@ -14,7 +14,7 @@
 //
 // Above the table's top speed the caller asks the live reference (a rare, fast ball; see tabulatedRimSystem).
 import { simulateScaled } from './sphereLip.js'
-import type { ReferenceOutcome } from './types.js'
+import { isGuarded, type ReferenceOutcome } from './types.js'
 import { atan2, cos, sin } from '../math.js'
 
 /** Outcome kinds stored per node. */
@@ -102,7 +102,7 @@ export function referenceToOut(o: ReferenceOutcome, ratio: number, ds: number): 
   const out = rimOut
   out.turn = o.turnAngle
   out.time = o.duration
-  if (o.ending === 'phaseLimit' || o.ending === 'timeLimit' || o.ending === 'integratorLimit' || o.ending === 'flightLimit' || o.ending === 'outOfDomain') {
+  if (isGuarded(o.ending)) {
     out.kind = RimKind.Guarded
     return
   }

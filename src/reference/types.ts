@@ -35,6 +35,11 @@ export type ReferenceEnding =
   | 'flightLimit'
   | 'outOfDomain'
 
+/** Whether a run ended on a guard (or outside the domain) rather than an outcome: no capture, no exit. */
+export function isGuarded(ending: ReferenceEnding): boolean {
+  return ending === 'phaseLimit' || ending === 'timeLimit' || ending === 'integratorLimit' || ending === 'flightLimit' || ending === 'outOfDomain'
+}
+
 export interface ReferenceOutcome {
   captured: boolean
   /** radians the contact point travelled round the lip: |Σ Δψ| over the rolling phases (flights excluded) */
@@ -108,7 +113,8 @@ export interface LipState {
 
 const INPUT_KEYS = ['delta', 'speed', 'holeRadius', 'ballRadius', 'gravity', 'inertia'] as const
 
-function checkFinite(name: string, value: number): void {
+/** A number that is finite: a TypeError for another type, a RangeError for NaN or ±Infinity, naming it. */
+export function checkFinite(name: string, value: unknown): void {
   if (typeof value !== 'number') throw new TypeError(`${name} must be a finite number, got ${describe(value)}`)
   if (!Number.isFinite(value)) throw new RangeError(`${name} must be a finite number, got ${value}`)
 }
