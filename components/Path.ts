@@ -12,7 +12,7 @@ export const PathEvent = Object.freeze({
   Contact: 2,
   /** speed reaches 0 (decided by capture: over a hole or not) */
   Stop: 3,
-  /** rim roll ends: drop or pop (rim-roll system) */
+  /** rim roll ends: drop or pop (rim-roll system); a reference-decided ride's end (integration, or the tabulated rim system with exact contacts) */
   RollEnd: 4,
   /** centre leaves the locked hole's lip circle (integration unlocks it) */
   Exit: 5,
@@ -27,7 +27,7 @@ export const PathEvent = Object.freeze({
   Gutter: 10,
   /** touches another ball (collisions system; markOther holds the other ball) */
   Collide: 11,
-  /** a tabulated bounce or skip reaches the reference's exit point (tabulated rim system) */
+  /** a tabulated bounce or skip reaches the reference's exit point (integration, or the tabulated rim system with exact contacts) */
   Landing: 12,
 } as const)
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]

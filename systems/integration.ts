@@ -5,8 +5,9 @@
 // crossing (δ, v), the contact circle, the stop, the end of a rim roll. A ball stopped at such an event is
 // marked for the decision systems; the schedule then runs another pass for the marked balls.
 // Bookkeeping events are handled here and the ball goes on: leaving a hole's lip circle (the hole unlocks
-// and the ball's RimContact slot is given back)
-// and the closest approach of a near miss (reported).
+// and the ball's RimContact slot is given back), the closest approach of a near miss (reported), and,
+// without exact contacts, the end of a reference-decided ride round the lip or carry across (its outcome
+// was decided at the crossing: src/motion/rimOutcome.ts).
 //   rolling: s(τ) = v0·τ − a·τ²/2, v(τ) = v0 − a·τ        rim roll: see sampleRimRoll
 // Reads Path, RimContact, Hole; writes Ball (x, y, vx, vy), Path (speed, s, mark), RimContact (angle, arc).
 import { BallMode } from '../components/Ball.js'
@@ -25,6 +26,7 @@ import { FROM, search } from '../src/contacts/search.js'
 import { pushId } from '../src/world/idLists.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0 } from '../src/world/pathHot.js'
 import { releaseRim } from '../src/world/rimSlots.js'
+import { endRide, landCrossing } from '../src/motion/rimOutcome.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
 
@@ -358,6 +360,19 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
     if (kind === PathEvent.Exit) {
       releaseRim(w, eid)
       planRolling(w, eid)
+      continue
+    }
+    if (w.collide === null && (kind === PathEvent.Landing || (kind === PathEvent.RollEnd && w.RimContact.ride[w.Ball.rim[eid]!] !== 0))) {
+      // the end of a reference-decided ride round the lip or carry across: what happens there was decided
+      // at the crossing (src/motion/rimOutcome.ts), so it is bookkeeping too, and the ball goes on in this
+      // pass (or is captured). With exact contacts it is marked instead, so that the contact predictions
+      // follow the new path: systems/tabulatedRim.ts ends it then.
+      P.markHole[eid] = hole
+      if (kind === PathEvent.Landing) landCrossing(w, eid)
+      else {
+        endRide(w, eid)
+        if (w.Ball.mode[eid] !== BallMode.Rolling) return
+      }
       continue
     }
     if (kind === PathEvent.Near) {

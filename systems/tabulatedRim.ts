@@ -1,8 +1,9 @@
 // The reference-tabulated rim model (RIM_MODEL 'tabulated', TABULATED_CONFIG): a lip crossing decided by the
 // rigid-sphere reference's table at the crossing's geometry (src/reference/rimTable.ts) instead of the six
 // closed-form stages. Runs after the hero ball's system and ahead of skipOver; a crossing it decides is
-// unmarked, so the stages never see it. It also ends every ride round the lip and every carry across (the
-// hero ball's too), whatever RIM_MODEL says.
+// unmarked, so the stages never see it. With exact contacts it also ends every ride round the lip and every
+// carry across (the hero ball's too), whatever RIM_MODEL says; otherwise the integration system ends them
+// in its pass (their outcome was decided at the crossing).
 //   capture  v ≤ v_c(δ), the reference's capture speed per δ row, linear between rows
 //   outcome  the table's kind, exit point, direction and speed, time and turn on the lip (interpolated)
 // What the ball does then (a ride round the lip, a carry across, a clean drop): src/motion/rimOutcome.ts.

@@ -200,6 +200,33 @@ describe('a ball at a tabulated crossing', () => {
     expect(scene(1 / 240)).toBe(at60)
   })
 
+  it('a ride or carry ended inside the integration pass (contacts off) gives the bits its own pass gives (exact contacts)', () => {
+    const R = DEFAULT_CONFIG.HOLE_RADIUS
+    const shots = (mode: 'off' | 'on') => {
+      const sim = createBallPhysics({ ...TABULATED_CONFIG, BALL_COLLISIONS: mode }, { capacity: 64 })
+      sim.addHole({ x: 0, y: 0 })
+      const out: string[] = []
+      for (let n = 0; n < 60; n++) {
+        const delta = ((n % 20) * R) / 20
+        const b = sim.addBall({ x: -Math.sqrt(R * R - delta * delta) - 1, y: delta, vx: 40 + 23 * n, vy: 0 })
+        for (let k = 0; k < 10; k++) {
+          sim.step(1 / 20)
+          const s = sim.ballState(b)
+          out.push(`${s.x} ${s.y} ${s.vx} ${s.vy} ${s.mode}`)
+        }
+        for (const e of sim.drainEvents()) out.push(`${e.type} ${e.time} ${e.type === 'capture' ? e.via : ''}`)
+        sim.removeBall(b)
+      }
+      return out
+    }
+    const off = shots('off')
+    // every kind of ending is among the shots: rides out and in, bounces and skips carried across
+    expect(off.filter((l) => l.startsWith('lipOut')).length).toBeGreaterThan(5)
+    expect(off.filter((l) => l.startsWith('capture') && l.endsWith('rimRoll')).length).toBeGreaterThan(0)
+    expect(off.filter((l) => l.startsWith('bounce') || l.startsWith('skip')).length).toBeGreaterThan(0)
+    expect(shots('on')).toEqual(off)
+  })
+
   it('with contacts on, a ball struck while it rides leaves the lip in transit, and every state stays finite', () => {
     const { sim, ball } = shot(10, 300, { BALL_COLLISIONS: 'on' })
     run(sim, 1 / 120, 0.15)
