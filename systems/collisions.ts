@@ -16,19 +16,21 @@
 //   struck while skipping over or entering a hole: likewise in transit (the lip decision no longer applies)
 //   struck at rest: it wakes and rolls
 // Reads Path.mark, Ball; writes Ball, Path, RimContact; emits 'collision' (one per contact, ball < other).
+import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
-import { CONTACT_DURATION, GRAZE_SLIDE, MAX_TICK_CONTACTS, TOUCH_GAP } from '../src/config/tolerances.js'
+import { CONTACT_DURATION, GRAZE_SLIDE, MAX_TICK_CONTACTS, NEVER, TOUCH_GAP } from '../src/config/tolerances.js'
 import { collectCluster } from '../src/contacts/cluster.js'
 import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
 import { appendCollision } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
-import { startAt } from '../src/motion/rolling.js'
+import { planRolling, startAt } from '../src/motion/rolling.js'
+import { planRimRoll } from '../src/motion/rimRoll.js'
 import { pushId } from '../src/world/idLists.js'
 import { contactTickKey, countContacts } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
-import { HOT, H_NEXT_T } from '../src/world/pathHot.js'
+import { HOT, H_NEXT_T, setNextT } from '../src/world/pathHot.js'
 
 export function collisionsSystem(w: BallWorld): void {
   const C = w.collide
@@ -42,6 +44,12 @@ export function collisionsSystem(w: BallWorld): void {
     if (P.mark[a] !== PathEvent.Collide) continue
     const b = P.markOther[a]!
     if (P.mark[b] !== PathEvent.Collide || P.markOther[b] !== a) {
+      // the other ball was removed this pass (by a game's system; its rows are cleared, an id bitECS gave
+      // out again included): a goes on as if it had never been there
+      if (P.mark[b] === PathEvent.None) {
+        dropContact(w, a)
+        continue
+      }
       throw new Error(`ball ${a}: contact with ball ${b} was marked on one ball only`)
     }
     P.mark[a] = PathEvent.None
@@ -108,6 +116,18 @@ export function collisionsSystem(w: BallWorld): void {
     C.partner[a] = b
     C.partner[b] = a
   }
+}
+
+/**
+ * Ball a's contact whose other ball is gone: its mark is cleared and its own next event, which the contact
+ * took the place of, planned again from the same path (the same event: nothing it is planned from changed).
+ */
+function dropContact(w: BallWorld, a: number): void {
+  w.Path.mark[a] = PathEvent.None
+  const mode = w.Ball.mode[a]
+  if (mode === BallMode.Rolling) planRolling(w, a)
+  else if (mode === BallMode.RimRoll) planRimRoll(w, a)
+  else setNextT(w, a, NEVER)
 }
 
 /** The speed at which balls a and b slide past each other: their relative velocity across the normal (nx, ny). */

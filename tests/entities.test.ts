@@ -3,7 +3,8 @@
 import { addComponent, addEntity, entityExists, getEntityComponents, hasComponent, observe, onAdd, onRemove, query } from 'bitecs'
 import { removeComponent, removeEntity } from 'bitecs'
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_PANEL, addPanel, type BallEvent } from '../src/index'
+import { DEFAULT_PANEL, TABULATED_CONFIG, addPanel, type BallEvent } from '../src/index'
+import { PathEvent } from '../components/Path'
 import { addBall, addHole, ballState, createBallWorld, createSchedule, drainEvents, listBalls, removeBall } from '../src/ecs'
 import { BallMode, removeHole, runSchedule, setHeroBall, throwBall, type BallWorld } from '../src/ecs'
 import { rng, stepWorld } from './helpers'
@@ -237,6 +238,62 @@ describe('removal', () => {
         // the other ball: the same bits as in a world that never had the removed one
         expect(ballState(r.w, r.b)).toEqual(ballState(alone.w, alone.b))
         expect(r.ev.map((e) => [e.type, e.time])).toEqual(alone.ev.map((e) => [e.type, e.time]))
+      }
+    })
+  }
+
+  // the other ball rolling, at rest, and riding a hole's lip (the tabulated model's ride, which a strike ends)
+  const partners = {
+    rolling: { config: {}, other: { x: 100, y: 100, vx: 300, vy: 0 }, removed: { x: 200, y: 100, vx: -100, vy: 0 }, at: 0 },
+    resting: { config: {}, other: { x: 200, y: 100 }, removed: { x: 100, y: 100, vx: 300, vy: 0 }, at: 0.2 },
+    riding: { config: { ...TABULATED_CONFIG, ROLLING_DECEL: 0 }, other: { x: -Math.sqrt(22 * 22 - 100) - 30, y: 10, vx: 300, vy: 0 }, removed: { x: 19, y: 63, vx: 0, vy: -900 }, at: 0.15 },
+  } as const
+  for (const [kind, scene] of Object.entries(partners)) {
+    it(`contacts 'on': a game's system removes a ball at its contact with another ${kind}; the other goes on as if it had never been there`, () => {
+      // the contact is marked on both balls when the system runs: the other's mark must not be left without
+      // its partner (the collisions system threw "marked on one ball only", and the step was lost)
+      const run = (withRemoved: boolean, how: Removal) => {
+        const w = createBallWorld({ ...scene.config, BALL_COLLISIONS: 'on' })
+        addHole(w, { x: 0, y: 0 })
+        const other = addBall(w, scene.other)
+        const schedule = createSchedule(w.config)
+        let removed = 0
+        let removedAt = -1
+        schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
+          name: 'zap',
+          run: (ww) => {
+            for (let i = 0; i < ww.marked.count; i++) {
+              const e = ww.marked.ids[i]!
+              if (e !== removed || removedAt >= 0 || ww.Path.mark[e] !== PathEvent.Collide) continue
+              removedAt = ww.time
+              remove(ww, e, how)
+              return
+            }
+          },
+        })
+        const ev: BallEvent[] = []
+        const states: string[] = []
+        for (let f = 0; f < 60; f++) {
+          if (withRemoved && removed === 0 && w.time >= scene.at - 1e-9) removed = addBall(w, scene.removed)
+          runSchedule(w, schedule, 1 / 60)
+          ev.push(...drainEvents(w))
+          states.push(JSON.stringify(ballState(w, other)))
+        }
+        return { w, other, ev, states, removedAt, removed }
+      }
+      const alone = run(false, 'removeBall')
+      expect(alone.ev.some((e) => e.type === 'collision')).toBe(false)
+      if (kind === 'riding') expect(alone.ev.map((e) => e.type)).toContain('rimRoll')
+      for (const how of ['removeBall', 'removeEntity'] as const) {
+        const r = run(true, how)
+        expect(r.removedAt, how).toBeGreaterThan(scene.at - 1e-9)
+        expect(listBalls(r.w)).toEqual([r.other])
+        // no collision, nothing of the removed ball; the other's events and states step by step: the same bits
+        expect(r.ev.filter((e) => e.time >= r.removedAt && names(e).includes(r.removed))).toEqual([])
+        expect(r.ev.filter((e) => e.type === 'collision')).toEqual([])
+        const own = (ev: BallEvent[], b: number) => ev.filter((e) => e.ball === b).map((e) => [e.type, e.time])
+        expect(own(r.ev, r.other)).toEqual(own(alone.ev, alone.other))
+        expect(r.states).toEqual(alone.states)
       }
     })
   }
