@@ -9,8 +9,8 @@
 // and a released ball starts where it was put, at the instant: release times are the same at every frame
 // rate (before, they were the steps' starts). A spot held only by resting balls is cleared: the launcher
 // knocks them off it (kick, below; the one place it adds energy, as a throw does), so a ball that stops on
-// a launcher's spot does not hold the balls behind it for good; unless one of them is too heavy for the
-// kick to move, when none is kicked. Kicks that do not clear the spot back off: after the k-th with no ball
+// a launcher's spot does not hold the balls behind it for good, whatever their masses; a held ball that
+// cannot fit between its closed walls kicks nothing. Kicks that do not clear the spot back off: after the k-th with no ball
 // launched since (nor the queue emptied), the next waits 2^(k − 1) launch ticks (at most
 // 2^(KICK_BACKOFF_DOUBLINGS − 1)), so a spot that balls jammed by the walls and one another cover for good
 // is not kicked at every instant, for ever.
@@ -20,8 +20,9 @@
 // Reads the held queue, Ball, the moving set and the resting grid; writes Ball, Path, RimContact and the
 // world's kick back-off (kickStreak, kickAfter).
 import { BallMode } from '../components/Ball.js'
+import { WallEdge } from '../components/Walls.js'
 import { MAX_SPEED } from '../src/config/limits.js'
-import { KICK_BACKOFF_DOUBLINGS, MAX_SPOT_CHECKS } from '../src/config/tolerances.js'
+import { KICK_BACKOFF_DOUBLINGS, MAX_SPOT_CHECKS, TOUCH_GAP } from '../src/config/tolerances.js'
 import { spotHeldByResting, spotTaken } from '../src/contacts/spot.js'
 import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
@@ -82,35 +83,50 @@ function endKickStreak(w: BallWorld): void {
 
 /**
  * Each resting ball on held ball h's spot (x, y) leaves it, away from the spot's centre, at the speed a
- * head-on strike by h at its launch velocity would give it: (1 + e)·m_h/(m_h + m_b)·|v_h| (at most
- * MAX_SPEED). The launcher does the work: kinetic energy is added, as by a throw, and h stays held until its
- * spot is clear. A ball that speed would leave below BALL_SETTLE_SPEED stays, and so the spot cannot be
- * cleared by kicks: then none is kicked (kicking the others only adds energy: a held ball wider than its
- * closed box, with balls too heavy for it on its spot, kicked the light ones round the box every second or
- * so for good, and the world never came to rest). Returns whether it kicked.
+ * head-on strike by h at its launch velocity would give it, (1 + e)·m_h/(m_h + m_b)·|v_h|, or, if that is
+ * less, at the speed that rolls it off the spot against ROLLING_DECEL, √(2·a·(r_h + r_b − d)) (with no
+ * deceleration, BALL_SETTLE_SPEED); at most MAX_SPEED. The launcher does the work, whatever the masses:
+ * kinetic energy is added, as by a throw, and h stays held until its spot is clear. (Before, a ball the
+ * strike left slower than BALL_SETTLE_SPEED was not kicked, nor any other on the spot, and one struck just
+ * faster rolled 0.003 px and stopped on the spot again: a radius-25 ball lying on a launcher's spot held
+ * every smaller ball behind it for good.) A held ball that cannot fit between its closed walls kicks
+ * nothing: its spot can never be cleared while a ball is in the box (one wider than its box once kicked the
+ * balls round it every second or so for good). Returns whether it kicked.
  */
 function kick(w: BallWorld, h: number, x: number, y: number): boolean {
   const B = w.Ball
+  if (w.walls !== 0 && !fits(w, B.radius[h]!)) return false
   const mass = w.collide !== null ? w.collide.mass : w.fixed!.mass
   const vh = hypot(B.vx[h]!, B.vy[h]!)
   const e = w.config.BALL_RESTITUTION
-  for (let i = 0; i < blockers.count; i++) if (!(kickSpeed(mass, h, blockers.ids[i]!, vh, e) >= w.config.BALL_SETTLE_SPEED)) return false
+  const decel = w.config.ROLLING_DECEL
   for (let i = 0; i < blockers.count; i++) {
     const b = blockers.ids[i]!
-    const speed = kickSpeed(mass, h, b, vh, e)
     let nx = B.x[b]! - x
     let ny = B.y[b]! - y
-    let d = hypot(nx, ny)
+    const away = hypot(nx, ny)
+    let d = away
     if (d === 0) {
       // on the spot's centre: along h's launch direction (or up the panel)
       nx = vh > 0 ? B.vx[h]! : 0
       ny = vh > 0 ? B.vy[h]! : -1
       d = vh > 0 ? vh : 1
     }
+    const clear = decel > 0 ? Math.sqrt(2 * decel * (B.radius[h]! + B.radius[b]! - away + TOUCH_GAP)) : w.config.BALL_SETTLE_SPEED
+    const speed = Math.min(MAX_SPEED, Math.max(kickSpeed(mass, h, b, vh, e), clear))
     placeBall(w, b, B.x[b]!, B.y[b]!, (speed * nx) / d, (speed * ny) / d)
     w.kicks++
   }
   return true
+}
+
+/** Whether a ball of radius r fits between the world's walls on each axis closed at both ends. */
+function fits(w: BallWorld, r: number): boolean {
+  const W = w.Walls
+  const k = w.walls
+  const open = W.open[k]!
+  if ((open & (WallEdge.Left | WallEdge.Right)) === 0 && 2 * r > W.maxX[k]! - W.minX[k]!) return false
+  return (open & (WallEdge.Top | WallEdge.Bottom)) !== 0 || 2 * r <= W.maxY[k]! - W.minY[k]!
 }
 
 /** The speed a head-on strike by held ball h at speed vh gives resting ball b (at most MAX_SPEED). */

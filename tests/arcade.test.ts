@@ -851,19 +851,37 @@ describe('a launcher firing many balls from one point', () => {
     }
   })
 
-  it('a resting ball too heavy to be knocked below BALL_SETTLE_SPEED stays, and the held ball waits', () => {
+  it('a resting ball of any mass on the spot is knocked clear of it: a strike too weak to move it gives way to the speed that rolls it off', () => {
+    // mass 1e9 and no rolling deceleration: the strike would leave it at ~1e-7 px/s; it leaves at
+    // BALL_SETTLE_SPEED, 12 px to roll before the spot is clear
     const sim = createBallPhysics({ BALL_COLLISIONS: 'on', ROLLING_DECEL: 0 })
     const blocker = sim.addBall({ x: 210, y: 440, vx: 0, vy: 0, mass: 1e9 })
     const held = sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0 })
-    for (let i = 0; i < 30; i++) sim.step(1 / 60)
-    expect(sim.ballState(blocker)).toMatchObject({ mode: 'resting', x: 210, y: 440 })
+    for (let i = 0; i < 3; i++) sim.step(1 / 60)
+    expect(sim.ballState(blocker)).toMatchObject({ mode: 'rolling', vx: 0, vy: -sim.config.BALL_SETTLE_SPEED })
     expect(sim.ballState(held).mode).toBe('held')
+    for (let i = 0; i < 13 * 60; i++) sim.step(1 / 60)
+    expect(sim.ballState(held).mode).not.toBe('held')
+    expect(sim.world.kicks).toBe(1)
+    // a radius-25 ball lying on the spot with the default deceleration, light radius-3 balls behind it: struck
+    // by one it left at 1.4 px/s, rolled 0.003 px, stopped on the spot again, and held them for good (a kick
+    // every 4.3 s once backed off, 4,697 in 20,000 s); now one kick rolls it clear and they come out
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim2 = createBallPhysics({ BALL_COLLISIONS: mode })
+      const big = sim2.addBall({ x: 200, y: 452, radius: 25 })
+      const small = [0, 1, 2].map(() => sim2.throwBall({ x: 210, y: 450, power: 0.5, angle: 0.2, radius: 3 }))
+      for (let i = 0; i < 60; i++) sim2.step(1 / 60)
+      expect(small.map((b) => sim2.ballState(b).mode), mode).not.toContain('held')
+      expect(sim2.world.kicks, mode).toBe(1)
+      const s = sim2.ballState(big)
+      expect(Math.hypot(s.x - 210, s.y - 450), mode).toBeGreaterThanOrEqual(28)
+    }
   })
 
-  it('beside such a ball, the light ones on the spot are not kicked either: the spot cannot be cleared, and the world comes to rest', () => {
+  it('a held ball that cannot fit between its closed walls kicks nothing, and the world comes to rest', () => {
     // a shrunk sequence of the long adversarial run ('quiet'): a held ball wider than its closed box, heavy
-    // balls resting on its spot among light ones; the light ones were kicked round the box about every
-    // second for good (4 ms a step of 1/60 s 20 s on, against 0.03 ms with nothing kicked)
+    // and light balls resting on its spot; the light ones were kicked round the box about every second for
+    // good (4 ms a step of 1/60 s 20 s on, against 0.03 ms with nothing kicked)
     for (const mode of ['on', 'fixed'] as const) {
       const sim = createBallPhysics({ BALL_COLLISIONS: mode, ROLLING_DECEL: 300 })
       sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480 })
@@ -879,10 +897,11 @@ describe('a launcher firing many balls from one point', () => {
       expect(rests, mode).toEqual([])
       for (const b of [heavy, ...light]) expect(sim.ballState(b).mode, mode).toBe('resting')
       expect(sim.ballState(held).mode).toBe('held')
-      // with the heavy ball gone the light ones are kicked off the spot (and roll till they rest again)
-      sim.removeBall(heavy)
+      expect(sim.world.kicks, mode).toBe(0)
+      // with room for it (an edge open on each axis), every ball on the spot is kicked off it, the heavy one too
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, open: { bottom: true, left: true } })
       sim.step(1 / 60)
-      expect(light.map((b) => sim.ballState(b).mode), mode).toEqual(['rolling', 'rolling', 'rolling'])
+      expect([heavy, ...light].map((b) => sim.ballState(b).mode), mode).toEqual(['rolling', 'rolling', 'rolling', 'rolling'])
     }
   })
 
