@@ -302,6 +302,39 @@ describe('published package', () => {
     expect(out).toMatchObject({ sameModeNames: true, mainHasNoEcsInternals: true, captured: 'boolean', restored: 41, solved: true })
   })
 
+  it('a CommonJS consumer: a .cts file typechecks under NodeNext and, where Node can require an ES module, runs', async () => {
+    // tsc lets a .cts file import the ES module (Node 20.19+ and 22.12+ load it with require); the exports
+    // carried only \`import\` conditions, so require() failed with ERR_PACKAGE_PATH_NOT_EXPORTED on every Node
+    // while the same code passed the type check. The \`default\` condition now points require() at it too.
+    const dir = join(fixture, 'cjs')
+    await mkdir(dir, { recursive: true })
+    await writeFile(join(dir, 'package.json'), JSON.stringify({ name: 'cjs-fixture', private: true, type: 'commonjs' }, null, 2))
+    await writeFile(
+      join(dir, 'consumer.cts'),
+      [
+        "import { createBallPhysics } from 'positron-ball-physics'",
+        "import { createBallWorld } from 'positron-ball-physics/ecs'",
+        "import { referenceOutcome } from 'positron-ball-physics/reference'",
+        'declare const console: { log(message: string): void } // no @types/node in the fixture',
+        'const sim = createBallPhysics()',
+        'sim.addHole({ x: 0, y: 0 })',
+        'sim.addBall({ x: -50, y: 0, vx: 200, vy: 0 })',
+        'sim.step(1)',
+        "console.log(JSON.stringify({ events: sim.drainEvents().map((e) => e.type), ecs: typeof createBallWorld, reference: typeof referenceOutcome }))",
+        '',
+      ].join('\n'),
+    )
+    const compilerOptions = { module: 'NodeNext', moduleResolution: 'NodeNext', target: 'ES2022', lib: ['ES2022'], strict: true, skipLibCheck: false, outDir: 'out', types: [] }
+    await writeFile(join(dir, 'tsconfig.json'), JSON.stringify({ compilerOptions, files: ['consumer.cts'] }, null, 2))
+    const tsc = await sh(bin('tsc'), ['-p', 'tsconfig.json', '--pretty', 'false'], dir)
+    expect(tsc.stdout.split(/\r?\n/).filter((l) => /error TS\d+/.test(l))).toEqual([])
+    expect(tsc.code).toBe(0)
+    if (!(process.features as { require_module?: boolean }).require_module) return
+    const res = await sh(process.execPath, [join('out', 'consumer.cjs')], dir)
+    expect(res.stderr).toBe('')
+    expect(JSON.parse(res.stdout.trim())).toEqual({ events: ['capture'], ecs: 'function', reference: 'function' })
+  })
+
   it('@arethetypeswrong/cli finds no problem in the tarball', async () => {
     // Default (strict) profile: node10, node16 from ESM, node16 from CJS and bundler resolution, for every
     // subpath in `exports`. The package is ESM-only (`import` conditions, no `require`), so a CommonJS
