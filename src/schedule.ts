@@ -20,7 +20,7 @@ import { nearTick } from './contacts/fixedHalve.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
-import type { BallPhysicsConfig } from './config/design.js'
+import { CONFIG_RANGES, METHODS, type BallPhysicsConfig } from './config/design.js'
 import { checkWorld, describe } from './check.js'
 import { waitOutStep } from './motion/pause.js'
 import type { BallWorld } from './world/createWorld.js'
@@ -54,8 +54,21 @@ export const DEFAULT_SCHEDULE: readonly ScheduleEntry[] = Object.freeze([
  * for the tick-sampled 'naive' and 'v1' (docs/accuracy.md), their sub-step group repeated SUBSTEPS times.
  */
 export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEntry[] {
-  if (config === undefined || config.METHOD === 'exact') return DEFAULT_SCHEDULE.slice()
-  return repeatSubsteps(config.METHOD === 'naive' ? NAIVE_SUBSTEP : V1_SUBSTEP, config.SUBSTEPS)
+  if (config === undefined) return DEFAULT_SCHEDULE.slice()
+  if (typeof config !== 'object' || config === null) {
+    throw new TypeError(`createSchedule: config must be a world's config (world.config) or undefined, got ${describe(config)}`)
+  }
+  const method: unknown = config.METHOD
+  if (method === 'exact') return DEFAULT_SCHEDULE.slice()
+  if (method !== 'naive' && method !== 'v1') {
+    throw new RangeError(`createSchedule: config.METHOD must be one of ${METHODS.map((m) => `'${m}'`).join(', ')}, got ${describe(method)}`)
+  }
+  const n: unknown = config.SUBSTEPS
+  const { min, max } = CONFIG_RANGES.SUBSTEPS
+  if (typeof n !== 'number' || !Number.isInteger(n) || n < min || n > max) {
+    throw new RangeError(`createSchedule: config.SUBSTEPS must be an integer in [${min}, ${max}], got ${describe(n)}`)
+  }
+  return repeatSubsteps(method === 'naive' ? NAIVE_SUBSTEP : V1_SUBSTEP, n)
 }
 
 /**

@@ -77,6 +77,20 @@ describe('steps', () => {
     expect(seen.every((b) => isBall(sim.world, b))).toBe(true)
   })
 
+  it('createSchedule refuses what is not a world\'s config, naming the field and its allowed values (it returned an empty schedule, and steps moved no ball)', () => {
+    expect(() => createSchedule('x' as never)).toThrow(/createSchedule: config must be a world's config .*got the string "x"/)
+    expect(() => createSchedule(null as never)).toThrow(TypeError)
+    expect(() => createSchedule({} as never)).toThrow(/config\.METHOD must be one of 'exact', 'naive', 'v1', got undefined/)
+    expect(() => createSchedule({ METHOD: 'bogus' } as never)).toThrow(RangeError)
+    expect(() => createSchedule({ METHOD: 'naive', SUBSTEPS: 0 } as never)).toThrow(/config\.SUBSTEPS must be an integer in \[1, 64\], got 0/)
+    expect(() => createSchedule({ METHOD: 'v1', SUBSTEPS: 2.5 } as never)).toThrow(RangeError)
+    // a world's own configs give its schedules: the default for 'exact', SUBSTEPS copies of the group otherwise
+    expect(createSchedule(createBallWorld().config).map((e) => e.name)).toEqual(createSchedule().map((e) => e.name))
+    const one = createSchedule(createBallWorld({ METHOD: 'naive', SUBSTEPS: 1 }).config).length
+    expect(one).toBeGreaterThan(0)
+    expect(createSchedule(createBallWorld({ METHOD: 'naive', SUBSTEPS: 4 }).config)).toHaveLength(4 * one)
+  })
+
   it('runSchedule and sim.step refuse a schedule entry that is not { name, run } with name a string and run a function, naming the entry; the world is unchanged', () => {
     const sim = scene()
     const good = sim.schedule[0]!
