@@ -91,6 +91,19 @@ describe('bad input', () => {
     expect(p.sim.ballState(bare.b)).toEqual(bare.state)
     const sim = createBallPhysics()
     expect(() => sim.addBall({ x: 0, y: 0, vx: null as never })).toThrow(TypeError)
+    // put down still: 'rolling' until the next step, which reports its 'rest' (or 'capture', over a hole)
+    // at the instant it was put down
+    sim.step(0.25)
+    sim.addHole({ x: 300, y: 300 })
+    const still = sim.addBall({ x: 100, y: 100 })
+    const over = sim.addBall({ x: 305, y: 300 })
+    expect(sim.ballState(still)).toMatchObject({ mode: 'rolling', vx: 0, vy: 0 })
+    sim.step(1 / 60)
+    expect(sim.drainEvents().map((e) => [e.type, e.ball, e.time])).toEqual([
+      ['rest', still, 0.25],
+      ['capture', over, 0.25],
+    ])
+    expect([sim.ballState(still).mode, sim.ballState(over).mode]).toEqual(['resting', 'captured'])
   })
 
   it('no NaN or Infinity reaches a component array under random valid use', () => {

@@ -222,3 +222,35 @@ describe('a recording starts from the state it was started in', () => {
     expect(replayed(t)).toEqual(live)
   })
 })
+
+describe("a game's own entities made while recording", () => {
+  it('are not recorded: the replay gives the balls the ids of a world without them, with the same events in creation order', async () => {
+    const { addEntity } = await import('bitecs')
+    const { createBallWorld, drainEvents, playReplay, runSchedule, createSchedule, startReplay, takeReplay, throwBall } = await import('../src/ecs.js')
+    const w = createBallWorld({ BALL_COLLISIONS: 'on' })
+    startReplay(w)
+    const balls: number[] = []
+    for (let i = 0; i < 20; i++) {
+      addEntity(w) // the game's own entity, between throws
+      balls.push(throwBall(w, { x: 60 + 12 * i, y: 450, power: 0.6, angle: 0.3 - 0.03 * i }))
+    }
+    const schedule = createSchedule(w.config)
+    const live: string[] = []
+    const key = (ids: number[], e: BallEvent) => `${e.type} ${ids.indexOf(e.ball)} ${e.other === undefined ? '' : ids.indexOf(e.other)} ${e.time}`
+    for (let s = 0; s < 120; s++) {
+      runSchedule(w, schedule, 1 / 60)
+      for (const e of drainEvents(w)) live.push(key(balls, e))
+    }
+    const replayed: BallEvent[] = []
+    const r = playReplay(takeReplay(w), (world) => replayed.push(...drainEvents(world)))
+    replayed.push(...drainEvents(r))
+    // the replay's balls are numbered as in a world with no other entities: ids 1..20 where the game's were 2, 4, ..., 40
+    const ids = [...new Set(replayed.map((e) => e.ball))].sort((a, b) => a - b)
+    expect(ids.length).toBeGreaterThan(10)
+    expect(ids.every((b) => b <= 20)).toBe(true)
+    expect(balls.filter((b) => b > 20).length).toBeGreaterThan(0)
+    const inOrder = Array.from({ length: 20 }, (_, i) => i + 1)
+    expect(replayed.map((e) => key(inOrder, e))).toEqual(live)
+    expect(live.some((l) => l.startsWith('collision'))).toBe(true)
+  })
+})
