@@ -87,7 +87,7 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
   if (typeof dt !== 'number') throw new TypeError(`dt must be a number of seconds > 0, got ${describe(dt)}`)
   if (!Number.isFinite(dt) || dt <= 0) throw new RangeError(`dt must be a finite number of seconds > 0, got ${dt}`)
   if (world.stepping) {
-    throw new Error('runSchedule: the world is already stepping (called from inside a system?); a step cannot run inside a step')
+    throw new Error('step (runSchedule): the world is already stepping (called from inside a system or an observer?); a step cannot run inside a step')
   }
   if (world.recorder !== null) record(world, ['step', dt])
   world.stepping = true

@@ -260,8 +260,8 @@ describe('snapshots and recordings inside a drainEventsWith callback', () => {
     }
     expect(captures).toBeGreaterThan(0)
     expect(errors.length).toBe(2 * captures)
-    expect(errors[0]).toMatch(/snapshotWorld: called from a drainEventsWith callback/)
-    expect(errors[1]).toMatch(/startReplay: called from a drainEventsWith callback/)
+    expect(errors[0]).toMatch(/snapshot \(snapshotWorld\): called from a drainEventsWith callback/)
+    expect(errors[1]).toMatch(/startRecording \(startReplay\): called from a drainEventsWith callback/)
     // after the callback: a snapshot restores into a world that drains, and hands out nothing twice
     const copy = createBallPhysics(sim.config)
     copy.restore(sim.snapshot())

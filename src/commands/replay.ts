@@ -42,8 +42,8 @@ export interface Replay {
 /** Starts recording the world's inputs (see the top of this file); an earlier recording is dropped. */
 export function startReplay(world: BallWorld): void {
   const w = checkWorld('startReplay', world)
-  if (w.stepping) throw new Error('startReplay: the world is in the middle of a step')
-  if (w.events.draining) throw new Error('startReplay: called from a drainEventsWith callback; start the recording after the drain returns')
+  if (w.stepping) throw new Error('startRecording (startReplay): the world is in the middle of a step')
+  if (w.events.draining) throw new Error('startRecording (startReplay): called from a drainEventsWith callback; start the recording after the drain returns')
   w.recorder = null
   // a world as createBallWorld makes it needs no start state (its config makes it again); any other does: a
   // world that ever had an entity, whose clock has run (steps of an empty world), or with rim tables beyond
@@ -57,7 +57,7 @@ export function startReplay(world: BallWorld): void {
 /** Stops recording and returns the replay of everything since startReplay. */
 export function takeReplay(world: BallWorld): Replay {
   const w = checkWorld('takeReplay', world)
-  if (w.recorder === null) throw new Error('takeReplay: the world is not recording; call startReplay first')
+  if (w.recorder === null) throw new Error('takeReplay (stopRecording): the world is not recording; call startReplay (startRecording) first')
   const replay: Replay = {
     format: REPLAY_FORMAT,
     version: REPLAY_VERSION,

@@ -60,10 +60,10 @@ function bodyKeys(w: BallWorld): string[] {
  */
 export function snapshotWorld(world: BallWorld): Uint8Array {
   const w = checkWorld('snapshotWorld', world)
-  if (w.stepping) throw new Error('snapshotWorld: the world is in the middle of a step; take the snapshot between steps')
+  if (w.stepping) throw new Error('snapshot (snapshotWorld): the world is in the middle of a step; take the snapshot between steps')
   // the events the callback has been handed are still in the buffer until the drain returns: a world restored
   // from such a snapshot would hand them out again (and refuse to drain, the drain's flag set)
-  if (w.events.draining) throw new Error('snapshotWorld: called from a drainEventsWith callback; take the snapshot after the drain returns')
+  if (w.events.draining) throw new Error('snapshot (snapshotWorld): called from a drainEventsWith callback; take the snapshot after the drain returns')
   exactOnly('snapshotWorld', w)
   const out = new Writer()
   for (const b of MAGIC) out.u8(b)
