@@ -9,7 +9,8 @@
 // the lip is ridden for the reference's time to its exit or drop ('rimRoll', then 'lipOut' or 'capture' via
 // 'rimRoll'), a bounce or a skip is carried to the reference's exit point ('bounce' + 'nearMiss' or 'skip'
 // at the crossing), a clean drop is captured at the crossing; no jump. Costs one reference run (~35 µs on
-// average) per hero lip crossing; allocates only the reference's result object, once per crossing.
+// average, at most LIVE_STEP_BUDGET lip steps: about 10 ms) per hero lip crossing; allocates only the
+// reference's result object, once per crossing.
 // Reads Path, Ball, Hole, config; writes Ball, Path, RimContact (takes the ball's slot); emits the events above.
 import { PathEvent } from '../components/Path.js'
 import { decideByReference } from '../src/motion/rimOutcome.js'

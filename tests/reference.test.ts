@@ -12,6 +12,7 @@ import {
   singleImpactDeadCentreLimit,
   type LipState,
   type OdeRhs,
+  type PhaseRecord,
   type ReferenceInput,
 } from '../src/reference/index'
 
@@ -254,5 +255,39 @@ describe('sphere on a sharp lip: inputs and invariances', () => {
       }
     }
     expect(endings.size).toBe(4) // all four endings occur
+  })
+})
+
+describe('sphere on a sharp lip: the engine\'s live step budget', () => {
+  it('a steady roll that would run to MAX_TIME stops at LIVE_STEP_BUDGET lip steps (guarded); a run that decides is the same, bit for bit', async () => {
+    const { simulateScaled } = await import('../src/reference/sphereLip')
+    const { LIVE_STEP_BUDGET } = await import('../src/reference/tolerances')
+    const { isGuarded } = await import('../src/reference/types')
+    const lipSteps = (trace: PhaseRecord[]) => trace.reduce((s, p) => s + (p.kind === 'lip' ? p.steps! : 0), 0)
+    // a ball nearly the hole's size, slow and near the centre line: it rolls round the lip to the time limit
+    const steady = [22 / 21.5, 1.1 / 21.5, 90 / Math.sqrt(1000 * 21.5), 0.4] as const
+    const full: PhaseRecord[] = []
+    const whole = simulateScaled(...steady, full)
+    expect(whole.ending).toBe('timeLimit')
+    expect(lipSteps(full)).toBeGreaterThan(5 * LIVE_STEP_BUDGET)
+    const cut: PhaseRecord[] = []
+    const capped = simulateScaled(...steady, cut, LIVE_STEP_BUDGET)
+    expect(capped.ending).toBe('integratorLimit')
+    expect(isGuarded(capped.ending)).toBe(true)
+    expect(lipSteps(cut)).toBe(LIVE_STEP_BUDGET)
+    // runs that decide, over a grid of the design's geometry and of balls near the hole's size
+    let decided = 0
+    for (const rs of [2, 1.2, 1.02]) {
+      for (let i = 0; i < 8; i++) {
+        for (let k = 0; k < 8; k++) {
+          const args = [rs, ((i + 0.5) / 8) * rs, 0.1 + 0.4 * k, 0.4] as const
+          const a = simulateScaled(...args, null)
+          if (isGuarded(a.ending)) continue
+          decided++
+          expect(simulateScaled(...args, null, LIVE_STEP_BUDGET)).toEqual(a)
+        }
+      }
+    }
+    expect(decided).toBeGreaterThan(150)
   })
 })

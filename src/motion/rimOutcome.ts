@@ -16,6 +16,7 @@ import { CaptureVia, EventType } from '../events.js'
 import { cogRadius } from '../geometry.js'
 import { RimKind, ROLL_TURN, TABLE_TOP_SPEED, captureSpeedAt, outcomeAt, referenceToOut, rimOut, type RimTable } from '../reference/rimTable.js'
 import { simulateScaled } from '../reference/sphereLip.js'
+import { LIVE_STEP_BUDGET } from '../reference/tolerances.js'
 import { MIN_TABLE_RATIO } from '../config/limits.js'
 import { lockAtLip } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
@@ -58,7 +59,7 @@ export function decideByReference(w: BallWorld, eid: number, tabulated: boolean)
   if (tabulated && !(R >= MIN_TABLE_RATIO * r)) return
   const table = tabulated && vs <= TABLE_TOP_SPEED ? tableFor(w, R / r, j) : null
   // beyond the table's speeds (a fast ball, rare), a geometry with no table, or a hero ball: a live run
-  if (table === null) referenceToOut(simulateScaled(R / r, ds, vs, j, null), R / r, ds)
+  if (table === null) referenceToOut(simulateScaled(R / r, ds, vs, j, null, LIVE_STEP_BUDGET), R / r, ds)
   else outcomeAt(table, ds, vs, vs <= captureSpeedAt(table, ds))
   if (rimOut.kind === RimKind.Guarded) return
   applyRimOutcome(w, eid, hole, cross)

@@ -6,7 +6,7 @@ export { singleImpactDeadCentreLimit } from './singleImpact.js'
 export { brentRoot, dopri5, singleImpactEscapes } from './checked.js'
 export { lipEnergy, rollOnLip } from './lipRoll.js'
 export { validateReferenceInput } from './types.js'
-export { LIP_RTOL, LIP_ATOL, MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME } from './tolerances.js'
+export { LIP_RTOL, LIP_ATOL, MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME, LIVE_STEP_BUDGET } from './tolerances.js'
 export type {
   ReferenceInput,
   ReferenceOutcome,

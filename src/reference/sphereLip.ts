@@ -25,7 +25,7 @@
 // would run straight back into the lip (see HELD_EVENTS in lipRoll.ts).
 
 import { impact, lipToCartesian } from './contact.js'
-import { dopri5 } from './dopri5.js'
+import { dopri5, type Dopri5Options } from './dopri5.js'
 import { fly } from './flight.js'
 import {
   EVENT_CLEAR,
@@ -40,7 +40,7 @@ import {
   ws,
 } from './lipRoll.js'
 import { G, P, V, W, lip } from './state.js'
-import { MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME } from './tolerances.js'
+import { LIP_MAX_STEPS, MAX_PHASES, MAX_RATIO, MAX_SCALED_SPEED, MAX_TIME } from './tolerances.js'
 import {
   validateReferenceInput,
   type PhaseEnd,
@@ -53,10 +53,19 @@ import {
 import { atan2, hypot } from '../math.js'
 
 /**
- * Runs the model in scaled units (r = g = 1): rs = R/r, ds = δ/r, vs = v/√(g r). `trace` (optional) receives
- * the phases in scaled units; the caller converts.
+ * The lip phases' options, LIP_OPTIONS with maxSteps rewritten per phase under a step budget (one object, no
+ * allocation; every phase passes it, so the integrator sees one shape of options)
  */
-export function simulateScaled(rs: number, ds: number, vs: number, j: number, trace: PhaseRecord[] | null): ReferenceOutcome {
+const BUDGETED: Dopri5Options & { maxSteps: number } = { rtol: LIP_OPTIONS.rtol, atol: LIP_OPTIONS.atol, hMax: LIP_OPTIONS.hMax, maxSteps: LIP_MAX_STEPS }
+
+/**
+ * Runs the model in scaled units (r = g = 1): rs = R/r, ds = δ/r, vs = v/√(g r). `trace` (optional) receives
+ * the phases in scaled units; the caller converts. `stepBudget` (optional) bounds the integrator steps of all
+ * lip phases together: a run that needs more ends 'integratorLimit' (the engine's live runs pass
+ * LIVE_STEP_BUDGET; a run that decides takes far fewer, one that rolls round the lip to MAX_TIME far more).
+ * Under the budget the run is the same, bit for bit.
+ */
+export function simulateScaled(rs: number, ds: number, vs: number, j: number, trace: PhaseRecord[] | null, stepBudget = Infinity): ReferenceOutcome {
   if (!(rs <= MAX_RATIO) || !(vs <= MAX_SCALED_SPEED)) {
     return { captured: false, turnAngle: 0, ending: 'outOfDomain', impacts: 0, phases: 0, duration: 0 }
   }
@@ -67,6 +76,7 @@ export function simulateScaled(rs: number, ds: number, vs: number, j: number, tr
   let phases = 0
   let impacts = 0
   let turn = 0
+  let used = 0
   let mode: 'lip' | 'held' | 'flight'
   const y = lip
   // lip state at the crossing (also the state a held roll starts from if the flight below cannot clear)
@@ -110,7 +120,11 @@ export function simulateScaled(rs: number, ds: number, vs: number, j: number, tr
       const th0 = y[1]!
       const e0 = trace ? lipEnergyScaled(y, rs, j) : 0
       const t0 = t
-      const res = dopri5(ws, lipRhs, t, y, MAX_TIME, LIP_OPTIONS, held ? HELD_EVENTS : LIP_EVENTS)
+      const left = stepBudget - used
+      if (!(left >= 1)) return result('integratorLimit', false)
+      BUDGETED.maxSteps = left < LIP_MAX_STEPS ? left : LIP_MAX_STEPS
+      const res = dopri5(ws, lipRhs, t, y, MAX_TIME, BUDGETED, held ? HELD_EVENTS : LIP_EVENTS)
+      used += res.accepted + res.rejected
       t = res.t
       turn += y[0]! - psi0
       let end: PhaseEnd
