@@ -168,6 +168,13 @@ export class Game {
     return this.playerMoving
   }
 
+  /** Why a throw of the player's cannot be made now (no ball left, a replay playing), or null. */
+  get throwBlocked(): string | null {
+    if (this.ballsLeft <= 0) return 'No balls left: start a new game.'
+    if (this.replaying !== null) return 'A replay is playing: throw when it ends.'
+    return null
+  }
+
   /** Why a call of a shot cannot be made now (no ball left, a replay playing, a method without snapshots), or null. */
   get callBlocked(): string | null {
     if (this.ballsLeft <= 0) return 'No balls left: start a new game.'
@@ -418,8 +425,9 @@ export class Game {
       if (this.roundKinds !== null) this.recordingEvents.push([e.type, e.ball, e.time])
       this.eventsSeen++
       this.eventCounts[e.type] = (this.eventCounts[e.type] ?? 0) + 1
-      // the player's throws and the multi-ball bursts score (the stress mode's recycled balls do not)
-      const scores = player || this.DemoBall.kind[e.ball] === Kind.Burst
+      // the player's throws and the multi-ball bursts score (the stress mode's recycled balls do not), until
+      // the game is over: then the score stands, and bursts play for show
+      const scores = (player || this.DemoBall.kind[e.ball] === Kind.Burst) && !this.gameOver
       if (e.type === 'capture' && scores && holeIndex >= 0) {
         this.score += this.sim.holeState(e.hole!).value
         if (player) this.gameCaptures[holeIndex] = (this.gameCaptures[holeIndex] ?? 0) + 1

@@ -130,14 +130,16 @@ async function main(): Promise<void> {
   }
   syncOpts()
 
-  el('mode-legend').innerHTML = (BALL_MODE_NAMES as readonly string[]).filter((m) => m !== 'out')
+  el('mode-legend').innerHTML = (BALL_MODE_NAMES as readonly string[]).filter((m) => m !== 'out' && m !== 'held') // held balls wait unseen in the launcher
     .map((m) => `<span><i style="background:${hex(modeColor(m))}"></i>${m}</span>`)
     .join('')
 
   // ---- input: pointer, keyboard and the test hook all drive the same ThrowInput ----
   const now = (): number => performance.now() / 1000
   const input = new ThrowInput((request) => {
-    game.throwPlayer(request)
+    // a throw that cannot be made says why on the status line (it was dropped without a word)
+    const blocked = game.throwBlocked
+    if (!game.throwPlayer(request) && blocked !== null) callStatus.textContent = blocked
   })
   const canvas = app.canvas
   const launch = game.panel.launch
@@ -294,13 +296,13 @@ async function main(): Promise<void> {
         newGame()
         break
       case 'Digit1':
-        game.burst(10)
+        burst(10)
         break
       case 'Digit2':
-        game.burst(100)
+        burst(100)
         break
       case 'Digit3':
-        game.burst(1000)
+        burst(1000)
         break
       case 'KeyS':
         setStress(game.stressTarget === 0)
@@ -327,6 +329,11 @@ async function main(): Promise<void> {
   window.addEventListener('keyup', onKey(false))
   window.addEventListener('blur', () => input.blur())
 
+  // a burst after the game is over plays for show: the score stands (the status line says so)
+  function burst(n: number): void {
+    if (game.gameOver && game.replaying === null) callStatus.textContent = 'Game over: the score stands, and bursts play for show. Start a new game to score.'
+    game.burst(n)
+  }
   const button = (id: string, fn: () => void): void => {
     const b = el<HTMLButtonElement>(id)
     b.addEventListener('click', () => {
@@ -335,7 +342,7 @@ async function main(): Promise<void> {
     })
   }
   button('reset', newGame)
-  for (const n of [10, 100, 1000]) button(`multi-${n}`, () => game.burst(n))
+  for (const n of [10, 100, 1000]) button(`multi-${n}`, () => burst(n))
   button('stress', () => setStress(game.stressTarget === 0))
   button('clear-balls', () => {
     game.clearExtra()
@@ -516,6 +523,10 @@ async function main(): Promise<void> {
     get heldBalls() {
       const B = game.sim.world.Ball
       return game.live.filter((b) => B.mode[b] === BallMode.Held).length
+    },
+    /** held balls drawn visible in the last frame (they wait unseen in the launcher) */
+    get heldDrawn() {
+      return panel.heldVisible
     },
     /** the balls on the panel (rolling, on a rim or resting) whose centres are over 30 px from the launch point */
     get awayFromLauncher() {

@@ -81,6 +81,8 @@ export class PanelView {
   private readonly labelsLayer = new Container()
   private readonly tallyLayer = new Container()
   private readonly balls: ParticleContainer
+  /** held balls drawn visible in the last frame (the page's test hook reads it; 0: they wait unseen in the launcher) */
+  heldVisible = 0
   private readonly vectors = new Graphics()
   private readonly flashG = new Graphics()
   private readonly flashLayer = new Container()
@@ -271,6 +273,7 @@ export class PanelView {
     }
     const scale = (2 * r) / TEXTURE_SIZE
     const modeColors = BALL_MODE_NAMES.map(modeColor)
+    let heldVisible = 0
     for (let i = 0; i < n; i++) {
       const id = live[i]!
       const p = kids[i]!
@@ -284,9 +287,13 @@ export class PanelView {
         pc.update()
       }
       const m = M[id]!
-      const a = g.opacity(id) * (m === BallMode.Captured ? 0.9 : 1)
+      // a held ball waits inside the launcher (the stats count it as waiting): drawn, a queue of them stacked
+      // on the launch spot looked like balls inside one another
+      const a = m === BallMode.Held ? 0 : g.opacity(id) * (m === BallMode.Captured ? 0.9 : 1)
       p.color = packColor(opt.modeColors ? (modeColors[m] ?? PLAIN_BALL) : g.kind[id] === Kind.Player ? 0xfbe7a1 : PLAIN_BALL, a)
+      if (m === BallMode.Held && p.color >>> 24 !== 0) heldVisible++
     }
+    this.heldVisible = heldVisible
 
     // velocity vectors for moving balls, grouped by mode (one stroke per colour)
     const vg = this.vectors.clear()

@@ -54,6 +54,8 @@ interface DemoHook {
   worstOverlap: number
   burstFrom: 'edge' | 'launcher'
   heldBalls: number
+  heldDrawn: number
+  gameOver: boolean
   awayFromLauncher: number
   lipRiders: { ball: number; distance: number; angle: number }[]
   roundsRecorded: number
@@ -373,8 +375,12 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.click('#multi-1000')
       await expect.poll(() => page.evaluate(() => window.__demo.config.BALL_COLLISIONS)).toBe(mode)
       const t0 = await page.evaluate(() => window.__demo.simTime)
-      // every ball was put down on the launch point: all but the first wait there
+      // every ball was put down on the launch point: all but the first wait there, unseen in the launcher
+      // (drawn, they were a stack of balls inside one another on the spot)
       expect(await page.evaluate(() => window.__demo.heldBalls), mode).toBeGreaterThan(900)
+      const frame = await page.evaluate(() => window.__demo.frames)
+      await page.waitForFunction((f) => window.__demo.frames > f + 1, frame, { timeout: 5_000 })
+      expect(await page.evaluate(() => window.__demo.heldDrawn), mode).toBe(0)
       // the stat says how many of the balls in play are waiting
       await expect.poll(() => page.textContent('label[for="ball-count"]')).toMatch(/^Balls in play · [\d,]+ waiting$/)
       await page.waitForFunction((t) => window.__demo.simTime > t + 0.5, t0, { timeout: 30_000 })
@@ -420,6 +426,15 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     // one then threw in the frame loop, which stopped for good); the replay plays on to the same events
     await page.waitForTimeout(700)
     await page.click('#clear-balls')
+    // a throw while it plays is not made, and the status line says why (it was dropped without a word)
+    const left = await page.evaluate(() => window.__demo.ballsLeft)
+    await page.evaluate(() => {
+      window.__demo.aim(0.1)
+      window.__demo.charge(0.5)
+      window.__demo.release()
+    })
+    expect(await page.textContent('#call-status')).toMatch(/A replay is playing: throw when it ends/)
+    expect(await page.evaluate(() => window.__demo.ballsLeft)).toBe(left)
     const during = await page.evaluate(() => window.__demo.frames)
     await page.waitForFunction((f) => window.__demo.frames > f + 5, during, { timeout: 10_000 })
     await page.waitForFunction(() => !window.__demo.replaying, null, { timeout: 60_000 })
@@ -431,6 +446,38 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     expect(replayed).toEqual(recorded)
     // back to contacts off for the tests after this one
     await contactsOffFromExact()
+    expect(problems).toEqual([])
+  })
+
+  it('the game over: the score stands, a burst then plays for show and scores nothing, and a throw says no ball is left', async () => {
+    await page.click('#reset')
+    await page.waitForFunction(() => window.__demo.score === 0 && window.__demo.ballsLeft === 10)
+    for (let i = 0; i < 10; i++) {
+      await page.evaluate((a) => {
+        window.__demo.aim(a)
+        window.__demo.charge(0.6)
+        window.__demo.release()
+      }, -0.5 + 0.1 * i)
+      await page.waitForFunction((n) => window.__demo.ballsLeft === n, 9 - i, { timeout: 5_000 })
+    }
+    await page.waitForFunction(() => window.__demo.gameOver, null, { timeout: 60_000 })
+    const score = await page.evaluate(() => window.__demo.score)
+    const captures = await page.evaluate(() => window.__demo.eventCounts.capture ?? 0)
+    await page.click('#multi-100')
+    expect(await page.textContent('#call-status')).toMatch(/Game over: the score stands/)
+    // the burst's balls drop in (bursts scored after the game was over), and the score stands
+    await page.waitForFunction((c) => (window.__demo.eventCounts.capture ?? 0) > c + 10, captures, { timeout: 30_000 })
+    expect(await page.evaluate(() => window.__demo.score)).toBe(score)
+    expect(await num(page, '#score')).toBe(score)
+    await page.evaluate(() => {
+      window.__demo.aim(0)
+      window.__demo.charge(0.5)
+      window.__demo.release()
+    })
+    expect(await page.textContent('#call-status')).toMatch(/No balls left: start a new game/)
+    await page.click('#clear-balls')
+    await page.click('#reset')
+    await page.waitForFunction(() => window.__demo.score === 0 && window.__demo.ballsLeft === 10)
     expect(problems).toEqual([])
   })
 
