@@ -243,6 +243,16 @@ describe('a ball at a tabulated crossing', () => {
     }
   })
 
+  it("a world's own table has every capture row when the world is made: no step builds one", () => {
+    // BALL_RADIUS 3: a geometry no test builds before (the table cache is the process's); its rows were found
+    // inside the steps whose crossings first needed them (128 first crossings at radius 16.66: one step of 11 s)
+    const sim = createBallPhysics({ ...TABULATED_CONFIG, BALL_RADIUS: 3 })
+    const t = sim.world.rimTables[0]!
+    expect(t.ratio).toBe(R / 3)
+    expect(t.vc.length).toBe(TABLE_ROWS)
+    expect(Array.from(t.vc).filter((v) => !Number.isFinite(v))).toEqual([])
+  })
+
   it('another ball size: the live reference decides until prepareRimTable gives the world its table', () => {
     const small = 7
     const cases: Array<[number, number]> = [

@@ -7,6 +7,7 @@ import { adoptBall, forgetBall } from '../world/balls.js'
 import { createWorldData, gridThreshold, type BallWorld, type BallWorldOptions } from '../world/createWorld.js'
 import { forgetHole } from './holes.js'
 import { rimTableFor } from '../reference/rimTables.js'
+import { fillCaptureRows } from '../reference/rimTable.js'
 import { describe, readSpec } from './validate.js'
 import { forgetWalls } from './walls.js'
 
@@ -30,10 +31,14 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     throw new RangeError(`options.capacity must be an integer in [1, ${MAX_CAPACITY}], got ${describe(capacity)}`)
   }
   const world = createWorldData(config, capacity, gridThreshold(broadphase))
-  // the tabulated rim model's table for the config's ball and hole, built now (once per process, about
-  // 100 ms) rather than at the first crossing; other sizes: prepareRimTable
+  // the tabulated rim model's table for the config's ball and hole, built now with every capture row (once
+  // per process: shipped for the design's geometry; 0.4-0.5 s for balls of radius 5-9 in an 18-px hole,
+  // seconds near the hole's size) rather than row by row inside the steps whose crossings need them (a step
+  // with 128 first crossings at radius 16.66 took 11 s); other sizes: prepareRimTable
   if (config.RIM_MODEL === 'tabulated' && config.BALL_RADIUS < config.HOLE_RADIUS) {
-    world.rimTables.push(rimTableFor(config.HOLE_RADIUS / config.BALL_RADIUS, config.BALL_INERTIA))
+    const table = rimTableFor(config.HOLE_RADIUS / config.BALL_RADIUS, config.BALL_INERTIA)
+    fillCaptureRows(table)
+    world.rimTables.push(table)
   }
   observe(world, onAdd(world.Ball), (eid: number) => adoptBall(world, eid))
   observe(world, onRemove(world.Ball), (eid: number) => forgetBall(world, eid))

@@ -12,8 +12,9 @@ import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
  * Lets `world` decide crossings of a ball of radius `ballRadius` in a hole of radius `holeRadius` (inertia
  * j) from a table, built now if no world has built it yet: with every capture row (`rows: 'now'`, the
  * default: 0.4–0.5 s for balls of radius 5–9 in an 18-px hole, 4–8 s for radius 13–16) or with the rows
- * found as crossings need them (`rows: 'lazy'`, 35–70 ms now and about 15 ms per row later). A world with
- * RIM_MODEL 'tabulated' has its config's BALL_RADIUS and HOLE_RADIUS table from the start; a crossing of
+ * found as crossings need them (`rows: 'lazy'`, 35–70 ms now and about 15 ms per row later, inside the step
+ * that needs it). A world with RIM_MODEL 'tabulated' has its config's BALL_RADIUS and HOLE_RADIUS table from
+ * the start, every row found when the world is made; a crossing of
  * any other sizes without one is decided by the live reference (tens of µs each). A world's decisions
  * depend only on which tables it was given, never on what other worlds built. Returns the time taken, ms.
  */
