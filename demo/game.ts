@@ -8,7 +8,7 @@
 // step at the same 120 Hz, and then the live game resumes where it was. The demo's own per-ball state (whose ball, when it stopped) is a bitECS
 // component of its own, DemoBall, on the simulation's ball entities: its balls are query([Ball, DemoBall]).
 import { addComponent, hasComponent, query } from 'bitecs'
-import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, MIN_OUTCOME_STEP, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, mulberry32, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
+import { BALL_MODE_NAMES, DEFAULT_PANEL, EVENT_TYPE_NAMES, MIN_OUTCOME_STEP, addPanel, createBallPhysics, createFixedStepClock, createReplayPlayer, mulberry32, resolveConfig, solveThrow, type ThrowFailure, type ThrowSolution, type BallEvent, type BallPhysics, type BallPhysicsConfig, type ConfigOverrides, type FixedStepClock, type PanelLayout, type Replay, type ReplayPlayer } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ThrowRequest } from './input'
 import type { ShotCall } from './shotCall'
@@ -186,15 +186,18 @@ export class Game {
   /** Checks overrides the way a new simulation would use them (config and the panel's holes). */
   static validate(overrides: ConfigOverrides): Validation {
     try {
-      const probe = createBallPhysics(overrides)
+      // every rule of the config, the tabulated model's included, without building a rim table (a world of
+      // that model finds every row of its table when it is made: seconds near the hole's size, and each value
+      // typed into the panel on the way to one would have built its own)
+      const c = resolveConfig(overrides)
+      const probe = createBallPhysics({ ...overrides, RIM_MODEL: 'stages' })
       addPanel(probe, DEFAULT_PANEL)
       probe.setWalls(wallsFor(DEFAULT_PANEL))
       // what the demo itself needs beyond the core's ranges: its outcome map and Call your shot step each
       // throw at MAX_STEP for up to 30 s, and its panel is drawn at a fixed scale
-      const c = probe.config
       if (c.MAX_STEP < MIN_OUTCOME_STEP) return { ok: false, error: `RangeError: config.MAX_STEP must be at least ${MIN_OUTCOME_STEP} s in the demo (its outcome map and Call your shot step each throw at it), got ${c.MAX_STEP}` }
       if (c.BALL_RADIUS > MAX_DEMO_RADIUS) return { ok: false, error: `RangeError: config.BALL_RADIUS must be at most ${MAX_DEMO_RADIUS} px in the demo (its panel is ${DEFAULT_PANEL.width} px wide), got ${c.BALL_RADIUS}` }
-      return { ok: true, config: probe.config }
+      return { ok: true, config: c }
     } catch (e) {
       const err = e instanceof Error ? e : new Error(String(e))
       return { ok: false, error: `${err.name}: ${err.message}` }

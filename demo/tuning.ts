@@ -2,7 +2,7 @@
 // simulation with it (createBallPhysics + addPanel), so the message shown is the core's own RangeError;
 // a valid set waits in game.pending and takes effect at the next throw, burst or new game.
 import GUI, { type Controller } from 'lil-gui'
-import { CONFIG_CHOICES, DEFAULT_CONFIG, PHYSICAL_CONFIG, TABULATED_CONFIG, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
+import { CONFIG_CHOICES, DEFAULT_CONFIG, PHYSICAL_CONFIG, TABULATED_CONFIG, resolveConfig, type BallPhysicsConfig, type ConfigOverrides } from '../src/index'
 import { Game } from './game'
 
 type Key = keyof BallPhysicsConfig
@@ -45,7 +45,15 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
     status.classList.toggle('error', error !== '')
     status.classList.toggle('pending', error === '' && game.pending !== null)
     if (error) status.textContent = error
-    else if (game.pending !== null) status.textContent = 'Valid. Applies to the next throw (the panel is cleared then).'
+    else if (game.pending !== null) {
+      status.textContent = 'Valid. Applies to the next throw (the panel is cleared then).'
+      // a tabulated world of another ball or hole size or inertia finds its rim table's rows when it is made
+      const c = resolveConfig(game.pending)
+      const d = DEFAULT_CONFIG
+      if (c.RIM_MODEL === 'tabulated' && (c.BALL_RADIUS !== d.BALL_RADIUS || c.HOLE_RADIUS !== d.HOLE_RADIUS || c.BALL_INERTIA !== d.BALL_INERTIA)) {
+        status.textContent += ' The tabulated model builds its rim table for these sizes first: about a second for small balls, up to 15 s near the hole\'s size (once per page).'
+      }
+    }
     else if (Object.keys(game.overrides).length === 0) status.textContent = 'Design values.'
     else status.textContent = `Running with: ${Object.keys(game.overrides).join(', ')}.`
   }
