@@ -6,8 +6,8 @@
 //   - onRemove(Ball): fired by removeEntity (ours or the game's) and by removeComponent(Ball). The
 //     simulation forgets the ball: it leaves the moving set, gives back its RimContact slot, leaves the
 //     resting grid and the step's lists of balls stopped at an event (a game's system may remove a ball
-//     mid-step), its pending contacts go stale, its rows are zeroed and the events buffered for it are
-//     dropped at the next drain (its id may be handed to a new entity before then).
+//     mid-step), its pending contacts go stale, its rows are zeroed and, removed between steps, the events
+//     buffered for it are dropped at the next drain (its id may be handed to a new entity before then).
 import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
 import { BallMode, clearBallRow } from '../../components/Ball.js'
 import { clearPathRow } from '../../components/Path.js'
@@ -63,7 +63,10 @@ export function forgetBall(world: BallWorld, eid: number): void {
   releaseRim(world, eid)
   restingRemove(world, eid)
   forgetPredictions(world, eid)
-  cutEvents(world.events, eid)
+  // between steps, the events buffered for it are dropped (its id may be handed to a new entity before the
+  // next drain); removed mid-step by a game's system, it keeps those it had until then, which are history at
+  // any frame rate (a finer rate drains them before the removal: dropping them made the events depend on it)
+  if (!world.stepping) cutEvents(world.events, eid)
   clearBallRows(world, eid)
   // a Ball removed by removeComponent leaves an entity the game keeps: it is no longer a ball at all
   if (hasComponent(world, eid, world.Path)) removeComponent(world, eid, world.Path)

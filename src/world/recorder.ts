@@ -15,6 +15,10 @@ export interface Recorder {
 
 /** Appends an input (the caller has checked that the world records). */
 export function record(w: BallWorld, input: ReplayInput): void {
+  // a command a game's system gives during a step is part of that system, which the replay does not hold:
+  // played with the same schedule, the system gives it again at the same instant (recorded, it came after the
+  // step, for a ball the playback's system had already removed)
+  if (w.stepping) return
   w.recorder?.inputs.push(input)
 }
 
