@@ -3,6 +3,7 @@
 import { describe, expect, it } from 'vitest'
 import {
   DEFAULT_PANEL,
+  TABULATED_CONFIG,
   addPanel,
   createBallPhysics,
   createFixedStepClock,
@@ -163,7 +164,7 @@ describe('an optional field given as undefined is as if it were absent (the type
     const clock = createFixedStepClock(opt({ hz: none, maxStepsPerFrame: none }))
     clock.advance(0.1, (dt) => sim.step(dt))
     const shot = solveThrow(sim, opt({ from: { x: 210, y: 450 }, hole, along: none, outcome: none }))
-    prepareRimTable(sim, 18, 11, opt({ inertia: none, rows: none }))
+    prepareRimTable(createBallPhysics(TABULATED_CONFIG), 18, 11, opt({ inertia: none, rows: none }))
     const scene = opt({ config: none, holes: [{ x: 210, y: 300 }], walls: none })
     const tally = sampleThrows(scene, { power: opt({ mean: 0.4, sd: none }), angle: opt({ mean: 0, sd: none }), from: opt({ x: 210, y: 450, sdX: none, sdY: none }) }, 20, 1)
     return JSON.stringify([sim.config, w.config, sim.snapshot().join(), shot, tally, clock.steps, clock.stepSeconds])

@@ -243,6 +243,17 @@ describe('a ball at a tabulated crossing', () => {
     }
   })
 
+  it('tabulatedCaptureSpeed beyond the table\'s top speed is the live reference\'s (as the engine decides there); below it, the table\'s', async () => {
+    const { referenceCaptureSpeed } = await import('../src/reference/index')
+    // a ball of radius 0.01 in an 18-px hole: the rows only say the capture speed lies past the table's top
+    // (they stop at 64 times it); this gave that cap, 3,842 px/s at every δ, against the reference's 21,221
+    for (const d of [0, 9]) expect(tabulatedCaptureSpeed(d, 18, 0.01, g)).toBe(referenceCaptureSpeed(d, 18, 0.01, g, 0.4))
+    expect(tabulatedCaptureSpeed(0, 18, 0.01, g)).toBeGreaterThan(20_000)
+    // the design geometry: the table's row, within a px/s of the reference
+    const table = tabulatedCaptureSpeed(5, R, r, g)
+    expect(Math.abs(table - referenceCaptureSpeed(5, R, r, g, cfg.BALL_INERTIA))).toBeLessThan(1)
+  })
+
   it("a world's own table has every capture row when the world is made: no step builds one", () => {
     // BALL_RADIUS 3: a geometry no test builds before (the table cache is the process's); its rows were found
     // inside the steps whose crossings first needed them (128 first crossings at radius 16.66: one step of 11 s)
@@ -283,6 +294,11 @@ describe('a ball at a tabulated crossing', () => {
     expect(() => prepareRimTable(sim, 18, 5, { inertia: 1 })).toThrow(RangeError)
     expect(() => prepareRimTable(sim, 1e4, 1e-5)).toThrow(/ballRadius must be in \[holeRadius \/ 100000000, holeRadius \/ 1\.08\] = \[0\.0001, 9259\.25925925926\] \(closer to the hole's size a table's rows take minutes\), got 0\.00001/)
     expect(() => prepareRimTable(null as never, 18, 5)).toThrow(/prepareRimTable: world must be/)
+    // only a tabulated world reads its tables (a hero ball runs the reference live): in another, one was
+    // built and did nothing
+    const stages = createBallPhysics()
+    expect(() => prepareRimTable(stages, 18, 8, { rows: 'lazy' })).toThrow(/config\.RIM_MODEL is 'stages'; its tables are read only with RIM_MODEL 'tabulated'/)
+    expect(stages.world.rimTables).toEqual([])
     expect(() => tabulatedCaptureSpeed(3, 18, 11, Number.NaN)).toThrow(/gravity must be a finite number in \(0, ∞\), got NaN/)
     expect(() => tabulatedCaptureSpeed(3, 18, 11, -1)).toThrow(RangeError)
     // near the hole's size (R/r under 1.08) a table's rows take minutes (R/r 1.059: 117 s): refused, and such a

@@ -5,7 +5,8 @@ import type { BallWorld } from '../world/createWorld.js'
 import { checkWorld, describe, readSpec } from '../check.js'
 import { MAX_RATIO } from './tolerances.js'
 import { MIN_TABLE_RATIO } from '../config/limits.js'
-import { buildRimTable, captureSpeedAt, fillCaptureRows, type RimTable } from './rimTable.js'
+import { TABLE_TOP_SPEED, buildRimTable, captureSpeedAt, fillCaptureRows, type RimTable } from './rimTable.js'
+import { referenceCaptureSpeed } from './captureSearch.js'
 import { SHIPPED_INERTIA, SHIPPED_RATIO, SHIPPED_ROWS } from './rimTableRows.js'
 
 /**
@@ -30,6 +31,11 @@ export function prepareRimTable(
   const inertia = o.inertia === undefined ? w.config.BALL_INERTIA : checkInertia('options.inertia', o.inertia as number)
   const rows = o.rows ?? 'now'
   if (rows !== 'now' && rows !== 'lazy') throw new RangeError(`options.rows must be 'now' or 'lazy', got ${String(rows)}`)
+  // only the tabulated model reads a world's tables (a hero ball runs the reference live): given to another
+  // world, one was built and did nothing
+  if (w.config.RIM_MODEL !== 'tabulated') {
+    throw new Error(`prepareRimTable: the world's config.RIM_MODEL is '${w.config.RIM_MODEL}'; its tables are read only with RIM_MODEL 'tabulated' (TABULATED_CONFIG)`)
+  }
   const t0 = performance.now()
   const t = rimTableFor(holeRadius / ballRadius, inertia)
   if (rows === 'now') fillCaptureRows(t)
@@ -51,8 +57,14 @@ export function tabulatedCaptureSpeed(delta: number, holeRadius: number, ballRad
   if (!(delta >= 0 && delta < holeRadius)) throw new RangeError(`delta must be in [0, holeRadius), got ${delta}`)
   if (typeof gravity !== 'number') throw new TypeError(`gravity must be a finite number in (0, ∞), got ${describe(gravity)}`)
   if (!(gravity > 0) || !Number.isFinite(gravity)) throw new RangeError(`gravity must be a finite number in (0, ∞), got ${gravity}`)
-  const t = rimTableFor(holeRadius / ballRadius, checkInertia('inertia', inertia))
-  return captureSpeedAt(t, delta / ballRadius) * Math.sqrt(gravity * ballRadius)
+  const j = checkInertia('inertia', inertia)
+  const t = rimTableFor(holeRadius / ballRadius, j)
+  const vs = captureSpeedAt(t, delta / ballRadius)
+  // beyond the table's top speed the live reference decides (as in the engine); its rows only say the capture
+  // speed lies beyond it (a small ball, R/r above about 1,000: they stop at 64 times the top, and this gave
+  // that cap at every δ, a sixth of the reference's speed at R/r 1,800)
+  if (vs >= TABLE_TOP_SPEED) return referenceCaptureSpeed(delta, holeRadius, ballRadius, gravity, j)
+  return vs * Math.sqrt(gravity * ballRadius)
 }
 
 /** A table's hole and ball radii: numbers (TypeError), finite, and R/r in [MIN_TABLE_RATIO, MAX_RATIO] (RangeError). */
