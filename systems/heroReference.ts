@@ -8,7 +8,7 @@
 // The outcome is applied as the tabulated model applies its table's (src/motion/rimOutcome.ts): a roll round
 // the lip is ridden for the reference's time to its exit or drop ('rimRoll', then 'lipOut' or 'capture' via
 // 'rimRoll'), a bounce or a skip is carried to the reference's exit point ('bounce' + 'nearMiss' or 'skip'
-// at the crossing), a clean drop is captured at the crossing; no jump. Costs one reference run (~35 µs on
+// at the crossing), a clean drop is captured at the crossing; no jump. Costs one reference run (~40 µs on
 // average, at most LIVE_STEP_BUDGET lip steps: about 10 ms) per hero lip crossing; allocates only the
 // reference's result object, once per crossing.
 // Reads Path, Ball, Hole, config; writes Ball, Path, RimContact (takes the ball's slot); emits the events above.
