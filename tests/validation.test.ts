@@ -1,7 +1,7 @@
 // Every entry point validates its input, says what it got, and leaves the world as it was.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics, type PanelLayout } from '../src/index'
-import { HOT, H_V0, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, runSchedule, throwBall, type BallWorld } from '../src/ecs'
+import { HOT, H_V0, addBall, addHole, addHoles, clearWalls, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, removeHole, runSchedule, setWalls, throwBall, type BallWorld } from '../src/ecs'
 
 /** Everything a failed call could have touched. */
 function snapshot(w: BallWorld): string {
@@ -75,6 +75,44 @@ describe('steps', () => {
     expect(seen.length).toBeGreaterThan(0)
     expect(seen).toEqual(listBalls(sim.world))
     expect(seen.every((b) => isBall(sim.world, b))).toBe(true)
+  })
+
+  it('addHole, addHoles, removeHole, setWalls and clearWalls from a system during a step throw, naming the command, and change nothing (a hole removed at a ball\'s lip crossing gave it a skip at the step\'s end)', () => {
+    const calls: Record<string, (w: BallWorld, hole: number) => void> = {
+      addHole: (w) => void addHole(w, { x: 300, y: 140 }),
+      addHoles: (w) => void addHoles(w, [{ x: 300, y: 140 }]),
+      removeHole: (w, hole) => removeHole(w, hole),
+      setWalls: (w) => setWalls(w, { minX: 0, minY: 0, maxX: 250, maxY: 300 }),
+      clearWalls: (w) => clearWalls(w),
+    }
+    for (const [name, call] of Object.entries(calls)) {
+      const w = createBallWorld()
+      const hole = addHole(w, { x: 200, y: 100 })
+      setWalls(w, { minX: 0, minY: 0, maxX: 420, maxY: 480 })
+      addBall(w, { x: 100, y: 100, vx: 300, vy: 0 })
+      const schedule = createSchedule(w.config)
+      let tried = false
+      schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
+        name: 'edit',
+        run: (ww) => {
+          if (tried || ww.marked.count === 0) return
+          tried = true
+          call(ww, hole)
+        },
+      })
+      const holes = listHoles(w)
+      let error: unknown
+      try {
+        for (let i = 0; i < 60; i++) runSchedule(w, schedule, 1 / 60)
+      } catch (e) {
+        error = e
+      }
+      expect(tried, name).toBe(true)
+      expect(String(error), name).toMatch(new RegExp(`${name}: the world is in the middle of a step \\(called from a system\\?\\); change holes and walls between steps`))
+      expect(listHoles(w), name).toEqual(holes)
+      expect(w.walls, name).not.toBe(0)
+      expect(w.Walls.maxX[w.walls], name).toBe(420)
+    }
   })
 
   it('createSchedule refuses what is not a world\'s config, naming the field and its allowed values (it returned an empty schedule, and steps moved no ball)', () => {

@@ -32,3 +32,14 @@ export function checkHole(world: BallWorld, field: string, eid: unknown): number
   }
   return h
 }
+
+/**
+ * Holes and walls change between steps only: re-planned from the world's time, the balls of a step under
+ * way (each at its own instant within it) took events at wrong times (a hole a system removed at a ball's lip
+ * crossing gave that ball a 'skip' at the step's end). A ball may still be removed mid-step.
+ */
+export function betweenSteps(w: BallWorld, command: string): void {
+  if (w.stepping) {
+    throw new Error(`${command}: the world is in the middle of a step (called from a system?); change holes and walls between steps`)
+  }
+}

@@ -5,7 +5,7 @@ import { WallEdge } from '../../components/Walls.js'
 import { MAX_COORDINATE } from '../config/limits.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { replanRolling } from './replan.js'
-import { checkWorld, describe, finite, readSpec, within } from './validate.js'
+import { betweenSteps, checkWorld, describe, finite, readSpec, within } from './validate.js'
 import { record } from '../world/recorder.js'
 
 export interface WallsSpec {
@@ -47,6 +47,7 @@ function openMask(value: unknown): number {
 /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
 export function setWalls(world: BallWorld, spec: WallsSpec): void {
   const w = checkWorld('setWalls', world)
+  betweenSteps(w, 'setWalls')
   const s = readSpec('setWalls spec', spec, ['minX', 'minY', 'maxX', 'maxY', 'restitution', 'open'] as const, 'walls')
   const minX = finite('walls.minX', s.minX, MAX_COORDINATE)
   const minY = finite('walls.minY', s.minY, MAX_COORDINATE)
@@ -76,6 +77,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
 /** Removes the walls (a no-op without walls). */
 export function clearWalls(world: BallWorld): void {
   const w = checkWorld('clearWalls', world)
+  betweenSteps(w, 'clearWalls')
   if (w.recorder !== null) record(w, ['clearWalls'])
   if (w.walls !== 0) removeEntity(w, w.walls) // forgetWalls runs here
 }
