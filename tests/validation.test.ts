@@ -1,7 +1,7 @@
 // Every entry point validates its input, says what it got, and leaves the world as it was.
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics, type PanelLayout } from '../src/index'
-import { HOT, H_V0, addBall, addHole, addHoles, clearWalls, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, removeHole, runSchedule, setWalls, throwBall, type BallWorld } from '../src/ecs'
+import { HOT, H_V0, addBall, addHole, addHoles, clearWalls, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, removeHole, runSchedule, setBallVelocity, setWalls, throwBall, type BallWorld } from '../src/ecs'
 
 /** Everything a failed call could have touched. */
 function snapshot(w: BallWorld): string {
@@ -112,6 +112,40 @@ describe('steps', () => {
       expect(listHoles(w), name).toEqual(holes)
       expect(w.walls, name).not.toBe(0)
       expect(w.Walls.maxX[w.walls], name).toBe(420)
+    }
+  })
+
+  it('addBall, throwBall and setBallVelocity from a system during a step throw, naming the command (they started at the step\'s start: a ball added at a lip crossing went where the frame rate put it)', () => {
+    const calls: Record<string, (w: BallWorld, ball: number) => void> = {
+      addBall: (w) => void addBall(w, { x: 100, y: 200, vx: 300, vy: 0 }),
+      throwBall: (w) => void throwBall(w, { x: 100, y: 200, power: 0.5, angle: 0 }),
+      setBallVelocity: (w, ball) => setBallVelocity(w, ball, 0, 300),
+    }
+    for (const [name, call] of Object.entries(calls)) {
+      const w = createBallWorld({ BALL_COLLISIONS: 'on' })
+      addHole(w, { x: 200, y: 100 })
+      const ball = addBall(w, { x: 100, y: 100, vx: 300, vy: 0 })
+      const schedule = createSchedule(w.config)
+      let tried = false
+      schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
+        name: 'edit',
+        run: (ww) => {
+          if (tried || ww.marked.count === 0) return
+          tried = true
+          call(ww, ball)
+        },
+      })
+      let error: unknown
+      try {
+        for (let i = 0; i < 60; i++) runSchedule(w, schedule, 1 / 60)
+      } catch (e) {
+        error = e
+      }
+      expect(tried, name).toBe(true)
+      expect(String(error), name).toMatch(new RegExp(`${name}: the world is in the middle of a step \\(called from a system\\?\\); put balls down and set their velocities between steps`))
+      expect(listBalls(w), name).toEqual([ball])
+      // between steps the same call works
+      call(w, ball)
     }
   })
 

@@ -43,3 +43,14 @@ export function betweenSteps(w: BallWorld, command: string): void {
     throw new Error(`${command}: the world is in the middle of a step (called from a system?); change holes and walls between steps`)
   }
 }
+
+/**
+ * Balls are put down and given velocities between steps only (a system may remove one): mid-step they started
+ * at the world's time, the step's start, so where and when they went depended on the frame rate, and a ball
+ * given a new velocity at its lip crossing took its 'skip' at the step's end.
+ */
+export function ballsBetweenSteps(w: BallWorld, command: string): void {
+  if (w.stepping) {
+    throw new Error(`${command}: the world is in the middle of a step (called from a system?); put balls down and set their velocities between steps (a system may remove a ball)`)
+  }
+}
