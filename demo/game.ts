@@ -217,6 +217,8 @@ export class Game {
     this.endReplay()
     this.roundKinds = null
     const sim = createBallPhysics(this.overrides)
+    // a method without snapshots records no rounds: the last one (of another method) is not offered either
+    if (sim.config.METHOD !== 'exact') this.lastRound = null
     this.holes = addPanel(sim, this.panel)
     sim.setWalls(wallsFor(this.panel))
     this.holeIndexById = new Map(this.holes.map((id, i) => [id, i]))

@@ -139,7 +139,9 @@ async function main(): Promise<void> {
   const input = new ThrowInput((request) => {
     // a throw that cannot be made says why on the status line (it was dropped without a word)
     const blocked = game.throwBlocked
-    if (!game.throwPlayer(request) && blocked !== null) callStatus.textContent = blocked
+    if (!game.throwPlayer(request)) {
+      if (blocked !== null) callStatus.textContent = blocked
+    } else if (!calling && awaiting < 0) callStatus.textContent = '' // a refusal shown before is stale now
   })
   const canvas = app.canvas
   const launch = game.panel.launch
@@ -241,8 +243,11 @@ async function main(): Promise<void> {
   canvas.addEventListener('pointerdown', (e) => {
     if (e.button !== 0) return
     const p = local(e)
-    if (calling && inPanel(p) && callAt(p)) {
+    if (calling && inPanel(p)) {
+      // a click off the holes while calling throws nothing (a quick click there threw a weak ball and used up
+      // one of the ten); the meter and the keys still throw
       e.preventDefault()
+      if (!callAt(p)) callStatus.textContent = 'Not on a hole: click a hole to call your shot (or turn Call your shot off to throw with the pointer).'
       return
     }
     if (!inPanel(p) && !inMeter(p)) return
@@ -274,6 +279,10 @@ async function main(): Promise<void> {
     if (stressBtn.getAttribute('aria-pressed') !== on) stressBtn.setAttribute('aria-pressed', on)
   }
   const setStress = (on: boolean): void => {
+    if (game.replaying !== null) {
+      callStatus.textContent = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
+      return
+    }
     game.setStress(on ? stressN : 0)
     syncStress()
   }
@@ -281,6 +290,7 @@ async function main(): Promise<void> {
     input.cancel()
     game.reset()
     syncStress()
+    if (!calling) callStatus.textContent = '' // a refusal or an answer of the game before
   }
   const typing = (t: EventTarget | null): boolean =>
     t instanceof HTMLElement && (t.tagName === 'INPUT' || t.tagName === 'TEXTAREA' || t.tagName === 'SELECT')
@@ -331,7 +341,8 @@ async function main(): Promise<void> {
 
   // a burst after the game is over plays for show: the score stands (the status line says so)
   function burst(n: number): void {
-    if (game.gameOver && game.replaying === null) callStatus.textContent = 'Game over: the score stands, and bursts play for show. Start a new game to score.'
+    if (game.replaying !== null) callStatus.textContent = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
+    else if (game.gameOver) callStatus.textContent = 'Game over: the score stands, and bursts play for show. Start a new game to score.'
     game.burst(n)
   }
   const button = (id: string, fn: () => void): void => {
@@ -345,6 +356,7 @@ async function main(): Promise<void> {
   for (const n of [10, 100, 1000]) button(`multi-${n}`, () => burst(n))
   button('stress', () => setStress(game.stressTarget === 0))
   button('clear-balls', () => {
+    if (game.replaying !== null) callStatus.textContent = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
     game.clearExtra()
     syncStress()
   })
@@ -352,6 +364,8 @@ async function main(): Promise<void> {
   const replayBtn = el<HTMLButtonElement>('replay')
   button('replay', () => game.replayLastRound())
   const syncReplay = (): void => {
+    // the refusals a replay gave go with it
+    if (game.replaying === null && callStatus.textContent?.startsWith('A replay is playing')) callStatus.textContent = ''
     const can = game.lastRound !== null && game.replaying === null
     if (replayBtn.disabled === can) replayBtn.disabled = !can
     const pressed = String(game.replaying !== null)

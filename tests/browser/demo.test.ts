@@ -449,9 +449,16 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     })
     expect(await page.textContent('#call-status')).toMatch(/A replay is playing: throw when it ends/)
     expect(await page.evaluate(() => window.__demo.ballsLeft)).toBe(left)
+    // a burst is refused too, and says so (it did nothing without a word)
+    const liveNow = await page.evaluate(() => window.__demo.liveBalls)
+    await page.click('#multi-10')
+    expect(await page.textContent('#call-status')).toMatch(/A replay is playing: bursts, Clear and Stress wait until it ends/)
+    expect(await page.evaluate(() => window.__demo.liveBalls)).toBeLessThanOrEqual(liveNow)
     const during = await page.evaluate(() => window.__demo.frames)
     await page.waitForFunction((f) => window.__demo.frames > f + 5, during, { timeout: 10_000 })
     await page.waitForFunction(() => !window.__demo.replaying, null, { timeout: 60_000 })
+    // the replay's refusals go with it
+    await expect.poll(() => page.textContent('#call-status')).toBe('')
     const replayed = await page.evaluate(() => window.__demo.replayEvents)
     // where they part, if they do (a readable failure): the same events, in the same order, at the same times
     let first = -1
@@ -492,6 +499,8 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await page.click('#clear-balls')
     await page.click('#reset')
     await page.waitForFunction(() => window.__demo.score === 0 && window.__demo.ballsLeft === 10)
+    // the new game drops the old game's refusal (it stayed beside ten new balls)
+    expect(await page.textContent('#call-status')).toBe('')
     expect(problems).toEqual([])
   })
 
@@ -499,6 +508,12 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await page.click('#reset')
     await page.click('#call-shot')
     expect(await page.getAttribute('#call-shot', 'aria-pressed')).toBe('true')
+    // a click between holes throws nothing (a quick click there threw a weak ball and used one of the ten)
+    const between = await page.evaluate(({ x, y }) => window.__demo.toPage(x, y), { x: (DEFAULT_PANEL.holes[0]!.x + DEFAULT_PANEL.holes[1]!.x) / 2, y: DEFAULT_PANEL.holes[0]!.y + 30 })
+    await page.mouse.click(between.x, between.y)
+    await expect.poll(() => page.textContent('#call-status')).toMatch(/Not on a hole: click a hole/)
+    await page.waitForTimeout(300)
+    expect(await page.evaluate(() => window.__demo.ballsLeft)).toBe(10)
     // the middle of the middle row (behind two holes in line with the launch point) and a corner of the top row
     for (const i of [12, 20]) {
       const hole = DEFAULT_PANEL.holes[i]!
@@ -662,6 +677,8 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await page.selectOption('[data-key="METHOD"] select', 'naive')
     await page.locator('[data-key="applyNow"] button, [data-key="applyNow"]').first().click()
     await expect.poll(() => page.evaluate(() => window.__demo.config.METHOD)).toBe('naive')
+    // no round to replay: the last one, of the exact method, is not offered (it replayed it)
+    expect(await page.isDisabled('#replay')).toBe(true)
     const live = await page.evaluate(() => window.__demo.liveBalls)
     await page.keyboard.press('Digit1')
     await expect.poll(() => page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThanOrEqual(live + 10)
@@ -694,6 +711,27 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await page.click('#multi-10') // scrolled into view by the click
       await expect.poll(() => page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThanOrEqual(live + 10)
       await page.click('#clear-balls')
+    } finally {
+      await page.setViewportSize(size)
+    }
+    expect(problems).toEqual([])
+  })
+
+  it('a short wide window (1400 × 450): the stage fits the window above the footer, its drawing scaled down', async () => {
+    const size = page.viewportSize()!
+    await page.setViewportSize({ width: 1400, height: 450 })
+    try {
+      // the stage kept 560 px: in a 450-px window it ran under the footer and past the window
+      await expect
+        .poll(() => page.evaluate(() => document.querySelector('#stage canvas')!.getBoundingClientRect().bottom))
+        .toBeLessThanOrEqual(450)
+      const box = await page.evaluate(() => {
+        const r = (q: string) => document.querySelector(q)!.getBoundingClientRect()
+        return { stage: r('#stage').bottom, canvas: r('#stage canvas').bottom, footer: r('footer').top, scroll: document.documentElement.scrollHeight }
+      })
+      expect(box.canvas).toBeLessThanOrEqual(box.footer + 1)
+      expect(box.stage).toBeLessThanOrEqual(box.footer + 1)
+      expect(box.scroll).toBeLessThanOrEqual(451)
     } finally {
       await page.setViewportSize(size)
     }
