@@ -14,7 +14,7 @@ import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
 import { spotTaken } from '../contacts/spot.js'
-import { ballsBetweenSteps, checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
+import { betweenSteps, checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
 import { cos, sin } from '../math.js'
 import { record, specOf } from '../world/recorder.js'
 
@@ -102,7 +102,7 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
 /** Puts a ball down at (x, y) with velocity (vx, vy) (default 0, at rest), now; returns its entity id. */
 export function addBall(world: BallWorld, spec: BallSpec): number {
   const w = checkWorld('addBall', world)
-  ballsBetweenSteps(w, 'addBall')
+  betweenSteps(w, 'addBall', 'put balls down and set their velocities between steps (a system may remove a ball)')
   // each field read once, into locals (a ball added in a burst allocates nothing here)
   const s = specObject('addBall spec', spec, BALL_KEYS, 'ball')
   const sx = s.x
@@ -133,7 +133,7 @@ export function throwVelocity(world: BallWorld, power: number, angle: number): {
 /** Throws a ball from (x, y) with the meter's power and an aim; returns its entity id. */
 export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const w = checkWorld('throwBall', world)
-  ballsBetweenSteps(w, 'throwBall')
+  betweenSteps(w, 'throwBall', 'put balls down and set their velocities between steps (a system may remove a ball)')
   const s = specObject('throwBall spec', spec, THROW_KEYS, 'throw')
   const sx = s.x
   const sy = s.y
@@ -174,7 +174,7 @@ export function removeBall(world: BallWorld, ball: number): void {
  */
 export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: number): void {
   const w = checkWorld('setBallVelocity', world)
-  ballsBetweenSteps(w, 'setBallVelocity')
+  betweenSteps(w, 'setBallVelocity', 'put balls down and set their velocities between steps (a system may remove a ball)')
   const b = checkBall(w, 'ball', ball)
   const nvx = finite('vx', vx, MAX_SPEED)
   const nvy = finite('vy', vy, MAX_SPEED)

@@ -127,7 +127,7 @@ function placeHole(w: BallWorld, h: CheckedHole): number {
 /** Adds a hole; returns its entity id. Lip circles may not overlap. Rolling balls are re-planned. */
 export function addHole(world: BallWorld, spec: HoleSpec): number {
   const w = checkWorld('addHole', world)
-  betweenSteps(w, 'addHole')
+  betweenSteps(w, 'addHole', 'change holes and walls between steps')
   const h = readHole(w, 'hole', spec)
   checkClear(w, h)
   if (w.recorder !== null) record(w, ['addHole', { ...h }])
@@ -142,7 +142,7 @@ export function addHole(world: BallWorld, spec: HoleSpec): number {
  */
 export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[] {
   const w = checkWorld('addHoles', world)
-  betweenSteps(w, 'addHoles')
+  betweenSteps(w, 'addHoles', 'change holes and walls between steps')
   if (!Array.isArray(specs)) throw new TypeError(`holes must be an array of hole specs, got ${describe(specs)}`)
   const list: CheckedHole[] = []
   for (let i = 0; i < specs.length; i++) list.push(readHole(w, `holes[${i}]`, specs[i]))
@@ -157,7 +157,7 @@ export function addHoles(world: BallWorld, specs: readonly HoleSpec[]): number[]
 /** Removes a hole (see the top of this file for the balls it holds). */
 export function removeHole(world: BallWorld, hole: number): void {
   const w = checkWorld('removeHole', world)
-  betweenSteps(w, 'removeHole')
+  betweenSteps(w, 'removeHole', 'change holes and walls between steps')
   const h = checkHole(w, 'hole', hole)
   if (w.recorder !== null) record(w, ['removeHole', h])
   removeEntity(w, h) // forgetHole runs here

@@ -34,23 +34,12 @@ export function checkHole(world: BallWorld, field: string, eid: unknown): number
 }
 
 /**
- * Holes and walls change between steps only: re-planned from the world's time, the balls of a step under
- * way (each at its own instant within it) took events at wrong times (a hole a system removed at a ball's lip
- * crossing gave that ball a 'skip' at the step's end). A ball may still be removed mid-step.
+ * Holes and walls change, and balls are put down or given velocities, between steps only (a game's system
+ * may remove a ball mid-step): re-planned or started from the world's time, the step's start, while the
+ * step's balls were each at their own instant within it, they took events at wrong times (a hole a system
+ * removed at a ball's lip crossing gave that ball a 'skip' at the step's end) or went where the frame rate
+ * put them. `what` says what to do instead.
  */
-export function betweenSteps(w: BallWorld, command: string): void {
-  if (w.stepping) {
-    throw new Error(`${command}: the world is in the middle of a step (called from a system?); change holes and walls between steps`)
-  }
-}
-
-/**
- * Balls are put down and given velocities between steps only (a system may remove one): mid-step they started
- * at the world's time, the step's start, so where and when they went depended on the frame rate, and a ball
- * given a new velocity at its lip crossing took its 'skip' at the step's end.
- */
-export function ballsBetweenSteps(w: BallWorld, command: string): void {
-  if (w.stepping) {
-    throw new Error(`${command}: the world is in the middle of a step (called from a system?); put balls down and set their velocities between steps (a system may remove a ball)`)
-  }
+export function betweenSteps(w: BallWorld, command: string, what: string): void {
+  if (w.stepping) throw new Error(`${command}: the world is in the middle of a step (called from a system?); ${what}`)
 }

@@ -47,7 +47,7 @@ function openMask(value: unknown): number {
 /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
 export function setWalls(world: BallWorld, spec: WallsSpec): void {
   const w = checkWorld('setWalls', world)
-  betweenSteps(w, 'setWalls')
+  betweenSteps(w, 'setWalls', 'change holes and walls between steps')
   const s = readSpec('setWalls spec', spec, ['minX', 'minY', 'maxX', 'maxY', 'restitution', 'open'] as const, 'walls')
   const minX = finite('walls.minX', s.minX, MAX_COORDINATE)
   const minY = finite('walls.minY', s.minY, MAX_COORDINATE)
@@ -77,7 +77,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
 /** Removes the walls (a no-op without walls). */
 export function clearWalls(world: BallWorld): void {
   const w = checkWorld('clearWalls', world)
-  betweenSteps(w, 'clearWalls')
+  betweenSteps(w, 'clearWalls', 'change holes and walls between steps')
   if (w.recorder !== null) record(w, ['clearWalls'])
   if (w.walls !== 0) removeEntity(w, w.walls) // forgetWalls runs here
 }

@@ -1,5 +1,6 @@
-// Replay recording (src/commands/replay.ts): while a world records, every command that changes it appends
-// one input — its name and its checked arguments — after its checks pass, and every step its dt. Callers
+// Replay recording (src/commands/replay.ts): while a world records, every command that changes it between
+// steps appends one input — its name and its checked arguments — after its checks pass, and every step its
+// dt (a command a game's system gives during a step is the system's, and is not recorded). Callers
 // test w.recorder before they build the input, so a world that does not record pays one null test per
 // command and allocates nothing for it.
 import type { BallWorld } from './createWorld.js'
