@@ -77,6 +77,34 @@ describe('steps', () => {
     expect(seen.every((b) => isBall(sim.world, b))).toBe(true)
   })
 
+  /**
+   * A world with a hole at (200, 100) and walls, a ball rolling into the hole; `call` runs from a system at
+   * the first event marked in a step (with the hole's and the ball's ids). Returns whether it ran, and what
+   * the steps threw.
+   */
+  function callMidStep(w: BallWorld, call: (w: BallWorld, hole: number, ball: number) => void): { tried: boolean; error: unknown; hole: number; ball: number } {
+    const hole = addHole(w, { x: 200, y: 100 })
+    setWalls(w, { minX: 0, minY: 0, maxX: 420, maxY: 480 })
+    const ball = addBall(w, { x: 100, y: 100, vx: 300, vy: 0 })
+    const schedule = createSchedule(w.config)
+    let tried = false
+    schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
+      name: 'edit',
+      run: (ww) => {
+        if (tried || ww.marked.count === 0) return
+        tried = true
+        call(ww, hole, ball)
+      },
+    })
+    let error: unknown
+    try {
+      for (let i = 0; i < 60; i++) runSchedule(w, schedule, 1 / 60)
+    } catch (e) {
+      error = e
+    }
+    return { tried, error, hole, ball }
+  }
+
   it('addHole, addHoles, removeHole, setWalls and clearWalls from a system during a step throw, naming the command, and change nothing (a hole removed at a ball\'s lip crossing gave it a skip at the step\'s end)', () => {
     const calls: Record<string, (w: BallWorld, hole: number) => void> = {
       addHole: (w) => void addHole(w, { x: 300, y: 140 }),
@@ -87,65 +115,29 @@ describe('steps', () => {
     }
     for (const [name, call] of Object.entries(calls)) {
       const w = createBallWorld()
-      const hole = addHole(w, { x: 200, y: 100 })
-      setWalls(w, { minX: 0, minY: 0, maxX: 420, maxY: 480 })
-      addBall(w, { x: 100, y: 100, vx: 300, vy: 0 })
-      const schedule = createSchedule(w.config)
-      let tried = false
-      schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
-        name: 'edit',
-        run: (ww) => {
-          if (tried || ww.marked.count === 0) return
-          tried = true
-          call(ww, hole)
-        },
-      })
-      const holes = listHoles(w)
-      let error: unknown
-      try {
-        for (let i = 0; i < 60; i++) runSchedule(w, schedule, 1 / 60)
-      } catch (e) {
-        error = e
-      }
-      expect(tried, name).toBe(true)
-      expect(String(error), name).toMatch(new RegExp(`${name}: the world is in the middle of a step \\(called from a system\\?\\); change holes and walls between steps`))
-      expect(listHoles(w), name).toEqual(holes)
+      const r = callMidStep(w, call)
+      expect(r.tried, name).toBe(true)
+      expect(String(r.error), name).toMatch(new RegExp(`${name}: the world is in the middle of a step \\(called from a system\\?\\); change holes and walls between steps`))
+      expect(listHoles(w), name).toEqual([r.hole])
       expect(w.walls, name).not.toBe(0)
       expect(w.Walls.maxX[w.walls], name).toBe(420)
     }
   })
 
   it('addBall, throwBall and setBallVelocity from a system during a step throw, naming the command (they started at the step\'s start: a ball added at a lip crossing went where the frame rate put it)', () => {
-    const calls: Record<string, (w: BallWorld, ball: number) => void> = {
+    const calls: Record<string, (w: BallWorld, hole: number, ball: number) => void> = {
       addBall: (w) => void addBall(w, { x: 100, y: 200, vx: 300, vy: 0 }),
       throwBall: (w) => void throwBall(w, { x: 100, y: 200, power: 0.5, angle: 0 }),
-      setBallVelocity: (w, ball) => setBallVelocity(w, ball, 0, 300),
+      setBallVelocity: (w, _hole, ball) => setBallVelocity(w, ball, 0, 300),
     }
     for (const [name, call] of Object.entries(calls)) {
       const w = createBallWorld({ BALL_COLLISIONS: 'on' })
-      addHole(w, { x: 200, y: 100 })
-      const ball = addBall(w, { x: 100, y: 100, vx: 300, vy: 0 })
-      const schedule = createSchedule(w.config)
-      let tried = false
-      schedule.splice(schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
-        name: 'edit',
-        run: (ww) => {
-          if (tried || ww.marked.count === 0) return
-          tried = true
-          call(ww, ball)
-        },
-      })
-      let error: unknown
-      try {
-        for (let i = 0; i < 60; i++) runSchedule(w, schedule, 1 / 60)
-      } catch (e) {
-        error = e
-      }
-      expect(tried, name).toBe(true)
-      expect(String(error), name).toMatch(new RegExp(`${name}: the world is in the middle of a step \\(called from a system\\?\\); put balls down and set their velocities between steps`))
-      expect(listBalls(w), name).toEqual([ball])
+      const r = callMidStep(w, call)
+      expect(r.tried, name).toBe(true)
+      expect(String(r.error), name).toMatch(new RegExp(`${name}: the world is in the middle of a step \\(called from a system\\?\\); put balls down and set their velocities between steps`))
+      expect(listBalls(w), name).toEqual([r.ball])
       // between steps the same call works
-      call(w, ball)
+      call(w, r.hole, r.ball)
     }
   })
 
