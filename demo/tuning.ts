@@ -80,7 +80,14 @@ export function createTuning(container: HTMLElement, status: HTMLElement, game: 
     const result = Game.validate(next)
     if (!result.ok) {
       error = result.error
-      controllers.get(key)?.domElement.classList.add('invalid')
+      const c = controllers.get(key)
+      // the refused value stays readable in its field (a MAX_STEP of 1e-5 showed as 0.000)
+      const d = DECIMALS[key]
+      if (c !== undefined && d !== undefined && typeof value === 'number') {
+        c.decimals(shownDecimals(value, d))
+        c.updateDisplay()
+      }
+      c?.domElement.classList.add('invalid')
       show()
       return
     }

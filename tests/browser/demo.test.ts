@@ -659,6 +659,8 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       await field.press('Enter')
       await field.blur()
       await expect.poll(() => page.textContent('#tuning-status')).toMatch(message)
+      // the refused value stays readable in its field (1e-5 showed as 0.000)
+      if (key === 'MAX_STEP') expect(await field.inputValue()).toBe('0.0000100')
       await page.locator('[data-key="designValues"] button, [data-key="designValues"]').first().click()
       await expect.poll(() => page.textContent('#tuning-status')).not.toMatch(/Error/)
     }
