@@ -160,6 +160,8 @@ async function main(): Promise<void> {
   let calling = false
   const callBtn = el<HTMLButtonElement>('call-shot')
   const callStatus = el('call-status')
+  /** what the status line says to a burst, Clear or Stress while a replay plays (they do nothing then) */
+  const REPLAY_WAITS = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
   const setCalling = (on: boolean): void => {
     calling = on
     callBtn.setAttribute('aria-pressed', String(on))
@@ -280,7 +282,7 @@ async function main(): Promise<void> {
   }
   const setStress = (on: boolean): void => {
     if (game.replaying !== null) {
-      callStatus.textContent = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
+      callStatus.textContent = REPLAY_WAITS
       return
     }
     game.setStress(on ? stressN : 0)
@@ -341,7 +343,7 @@ async function main(): Promise<void> {
 
   // a burst after the game is over plays for show: the score stands (the status line says so)
   function burst(n: number): void {
-    if (game.replaying !== null) callStatus.textContent = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
+    if (game.replaying !== null) callStatus.textContent = REPLAY_WAITS
     else if (game.gameOver) callStatus.textContent = 'Game over: the score stands, and bursts play for show. Start a new game to score.'
     game.burst(n)
   }
@@ -356,7 +358,7 @@ async function main(): Promise<void> {
   for (const n of [10, 100, 1000]) button(`multi-${n}`, () => burst(n))
   button('stress', () => setStress(game.stressTarget === 0))
   button('clear-balls', () => {
-    if (game.replaying !== null) callStatus.textContent = 'A replay is playing: bursts, Clear and Stress wait until it ends (press them then).'
+    if (game.replaying !== null) callStatus.textContent = REPLAY_WAITS
     game.clearExtra()
     syncStress()
   })
