@@ -12,11 +12,13 @@ import { rimBounce } from '../src/geometry.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import { hotNextT } from '../src/world/pathHot.js'
 import { hypot } from '../src/math.js'
+import { outsideStep } from '../src/world/system.js'
 
 /** the bounced velocity, reused for every ball */
 const out = new Float64Array(2)
 
 export function bounceSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('bounceSystem')
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

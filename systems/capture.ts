@@ -11,8 +11,10 @@ import { capturesClean } from '../src/geometry.js'
 import { captureBall, restBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import { hotNextT } from '../src/world/pathHot.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function captureSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('captureSystem')
   const P = w.Path
   const RC = w.RimContact
   const vMax = w.config.V_MAX

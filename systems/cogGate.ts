@@ -12,8 +12,10 @@ import { RimMode } from '../components/RimContact.js'
 import { cogRadius } from '../src/geometry.js'
 import { planRolling } from '../src/motion/rolling.js'
 import type { BallWorld } from '../src/world/createWorld.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function cogGateSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('cogGateSystem')
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

@@ -31,8 +31,10 @@ import { contactTickKey, countContacts } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
 import { HOT, H_NEXT_T, setNextT } from '../src/world/pathHot.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function collisionsSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('collisionsSystem')
   const C = w.collide
   if (C === null) return
   const P = w.Path

@@ -40,8 +40,10 @@ import { iterationsNow, lean, meterTick, skipRest, spend } from '../src/contacts
 import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('fixedContactsSystem')
   const F = w.fixed
   if (F === null || !F.due || w.pass !== 0) return
   F.due = false

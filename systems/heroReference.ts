@@ -16,11 +16,13 @@ import { PathEvent } from '../components/Path.js'
 import { decideByReference } from '../src/motion/rimOutcome.js'
 import { ROLL_TURN } from '../src/reference/rimTable.js'
 import { type BallWorld } from '../src/world/createWorld.js'
+import { outsideStep } from '../src/world/system.js'
 
 /** Turn on the lip (rad) from which a hero's outcome counts as a rim roll (docs/reference-model.md: about 20°). */
 export const HERO_ROLL_TURN = ROLL_TURN
 
 export function heroReferenceSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('heroReferenceSystem')
   const P = w.Path
   const B = w.Ball
   const list = w.marked

@@ -29,8 +29,10 @@ import { releaseRim } from '../src/world/rimSlots.js'
 import { endRide, landCrossing } from '../src/motion/rimOutcome.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function integrationSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('integrationSystem')
   if (w.collide !== null) {
     orderedIntegration(w)
     return

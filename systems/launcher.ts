@@ -28,8 +28,10 @@ import { placeBall } from '../src/motion/ballFate.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import { createIdList } from '../src/world/idLists.js'
 import { hypot } from '../src/math.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function launcherSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('launcherSystem')
   // no ball held (all launched or removed): the next held ball's kicks start without a wait
   if (w.held.count === 0 && w.kickStreak !== 0) endKickStreak(w)
   if (w.pass !== 0 || w.held.count === 0 || !w.launchDue) return

@@ -13,8 +13,10 @@ import { captureBall, emitHoleEvent } from '../src/motion/ballFate.js'
 import { leaveRim, planRimRoll, rollPopsOff, sampleRimRoll, startRimRoll } from '../src/motion/rimRoll.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import { hotNextT } from '../src/world/pathHot.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function rimRollSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('rimRollSystem')
   const P = w.Path
   const B = w.Ball
   const list = w.marked

@@ -13,8 +13,10 @@ import { pathOffset, planRolling } from '../src/motion/rolling.js'
 import { lockAtLip } from '../src/world/rimSlots.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hotNextT } from '../src/world/pathHot.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function skipOverSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('skipOverSystem')
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

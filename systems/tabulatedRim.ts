@@ -14,8 +14,10 @@
 import { PathEvent } from '../components/Path.js'
 import { decideByReference, endRide, landCrossing } from '../src/motion/rimOutcome.js'
 import { type BallWorld } from '../src/world/createWorld.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function tabulatedRimSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('tabulatedRimSystem')
   // (rides and carries also end here for hero balls, whose crossings the reference decided live)
   const tabulated = w.config.RIM_MODEL === 'tabulated'
   const P = w.Path

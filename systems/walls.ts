@@ -14,8 +14,10 @@ import { removeMoving } from '../src/world/idLists.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { setBallMode } from '../src/world/ballMode.js'
 import { hotNextT, setNextT } from '../src/world/pathHot.js'
+import { outsideStep } from '../src/world/system.js'
 
 export function wallsSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('wallsSystem')
   if (w.walls === 0) return
   const P = w.Path
   const B = w.Ball

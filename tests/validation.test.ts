@@ -213,6 +213,22 @@ describe('steps', () => {
     expect(() => sim.step(1 / 60)).not.toThrow()
     expect(sim.time).toBe(t + 1 / 60)
   })
+
+  it('a system called outside a step (a game running the systems itself) throws, naming the system, and changes nothing', () => {
+    for (const method of ['exact', 'naive', 'v1'] as const) {
+      for (const contacts of method === 'exact' ? (['off', 'on', 'fixed'] as const) : (['off'] as const)) {
+        const sim = createBallPhysics({ METHOD: method, BALL_COLLISIONS: contacts })
+        addPanel(sim)
+        sim.throwBall({ x: DEFAULT_PANEL.launch.x, y: DEFAULT_PANEL.launch.y, power: 0.5, angle: 0.1 })
+        sim.step(1 / 60)
+        for (const entry of createSchedule(sim.world.config)) {
+          expectRefused(sim, () => entry.run(sim.world), Error, `${entry.run.name}: a system runs inside a step`, 'runSchedule(world, schedule, dt)')
+        }
+        // the same systems in a schedule step as ever
+        expect(() => sim.step(1 / 60)).not.toThrow()
+      }
+    }
+  })
 })
 
 describe('addPanel is all or nothing', () => {

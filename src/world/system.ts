@@ -7,3 +7,15 @@ export interface ScheduleEntry {
   readonly name: string
   readonly run: System
 }
+
+/**
+ * Refuses a system called outside a step. A system acts on the step's window (the balls due before its end,
+ * the pass's marked balls), which only runSchedule opens: called between steps it would find nothing to do
+ * and return, the world unchanged, so a game that ran the systems in its own pipeline instead of through
+ * runSchedule saw no ball move and no error.
+ */
+export function outsideStep(system: string): never {
+  throw new Error(
+    `${system}: a system runs inside a step, which runSchedule(world, schedule, dt) (or sim.step) opens: put it in a schedule (createSchedule(world.config), with systems of your own spliced in) and run that; called between steps it would do nothing`,
+  )
+}

@@ -11,8 +11,10 @@ import { planRolling } from '../../src/motion/rolling.js'
 import { lockAtLip } from '../../src/world/rimSlots.js'
 import { type BallWorld } from '../../src/world/createWorld.js'
 import { HOT, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0 } from '../../src/world/pathHot.js'
+import { outsideStep } from '../../src/world/system.js'
 
 export function v1RuleSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('v1RuleSystem')
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

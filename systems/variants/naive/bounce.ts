@@ -11,11 +11,13 @@ import { rimBounce } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { hypot } from '../../../src/math.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 /** the bounced velocity, reused for every ball */
 const out = new Float64Array(2)
 
 export function naiveBounceSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveBounceSystem')
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

@@ -7,8 +7,10 @@ import { capturesClean } from '../../../src/geometry.js'
 import { captureBall, restBall } from '../../../src/motion/ballFate.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveCaptureSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveCaptureSystem')
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

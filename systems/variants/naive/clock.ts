@@ -4,8 +4,10 @@
 // Reads world.time, world.tickEnd; writes the naive state's h, t, index; clears its marked list.
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveClockSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveClockSystem')
   const st = naiveState(w)
   if (st.stepEnd !== w.tickEnd || st.index >= st.substeps) {
     st.stepEnd = w.tickEnd

@@ -8,8 +8,10 @@ import { RimMode } from '../../../components/RimContact.js'
 import { cogRadius } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveCogGateSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveCogGateSystem')
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

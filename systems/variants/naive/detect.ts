@@ -19,8 +19,10 @@ import { pushId } from '../../../src/world/idLists.js'
 import { type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { hypot } from '../../../src/math.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveDetectSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveDetectSystem')
   const st = naiveState(w)
   const t = st.t
   const S = st.store

@@ -9,6 +9,7 @@ import { cogRadius } from '../../../src/geometry.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { cos, hypot, sin } from '../../../src/math.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 /** One first-order step of the rim-roll decay: v·(1 − μ·h). Exported for the stability tests. */
 export function naiveRollDecay(v: number, friction: number, h: number): number {
@@ -16,6 +17,7 @@ export function naiveRollDecay(v: number, friction: number, h: number): number {
 }
 
 export function naiveMoveSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveMoveSystem')
   const st = naiveState(w)
   const h = st.h
   const S = st.store

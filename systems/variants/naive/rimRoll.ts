@@ -15,8 +15,10 @@ import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { setBallMode } from '../../../src/world/ballMode.js'
 import { cos, sin } from '../../../src/math.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveRimRollSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveRimRollSystem')
   const st = naiveState(w)
   const S = st.store
   const P = w.Path

@@ -7,8 +7,10 @@ import { vSkip } from '../../../src/geometry.js'
 import { emitHoleEvent } from '../../../src/motion/ballFate.js'
 import type { BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveSkipOverSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('naiveSkipOverSystem')
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

@@ -11,8 +11,10 @@ import { lockAtLip } from '../../../src/world/rimSlots.js'
 import { type BallWorld } from '../../../src/world/createWorld.js'
 import { naiveState } from './state.js'
 import { hypot } from '../../../src/math.js'
+import { outsideStep } from '../../../src/world/system.js'
 
 export function v1CaptureSystem(w: BallWorld): void {
+  if (!w.stepping) outsideStep('v1CaptureSystem')
   const st = naiveState(w)
   const S = st.store
   const B = w.Ball
