@@ -95,6 +95,12 @@ export function checkWorld(caller: string, world: unknown): BallWorld {
   if (w === null || typeof w !== 'object' || !('Ball' in w) || !('holes' in w) || !('config' in w)) {
     throw new TypeError(`${caller}: world must be a world made by createBallWorld, got ${describe(world)}`)
   }
-  if (!(BITECS_INTERNAL in w)) throw new Error(`${caller}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
+  const internal = (w as unknown as Record<symbol, { entityIndex?: unknown } | undefined>)[BITECS_INTERNAL]
+  if (internal === undefined) throw new Error(`${caller}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
+  // bitECS's resetWorld gives the world a fresh entity index and forgets every entity and component, while
+  // the simulation's stores still hold its balls, holes and walls: new ids would be handed out over them
+  if (internal.entityIndex !== w.entityIndex) {
+    throw new Error(`${caller}: the world was reset (bitECS resetWorld), which is not supported: bitECS forgot its balls, holes and walls but the simulation did not; make a new world (createBallWorld) instead`)
+  }
   return w
 }

@@ -276,3 +276,25 @@ describe('a world deleted by bitECS deleteWorld (not supported)', () => {
     for (const [name, call] of calls) expect(call).toThrow(`${name}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
   })
 })
+
+describe('a world reset by bitECS resetWorld (not supported)', () => {
+  it('every command then throws a clear error, instead of simulating balls bitECS forgot and handing their ids out again', async () => {
+    const { resetWorld, addEntity } = await import('bitecs')
+    const sim = scene()
+    const ball = sim.balls()[0]!
+    resetWorld(sim.world)
+    addEntity(sim.world) // bitECS hands out id 1 again: a hole's id in the simulation's stores
+    const calls: [string, () => unknown][] = [
+      ['runSchedule', () => sim.step(1 / 60)],
+      ['addBall', () => sim.addBall({ x: 0, y: 0, vx: 0, vy: 0 })],
+      ['throwBall', () => sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0 })],
+      ['removeBall', () => sim.removeBall(ball)],
+      ['addHole', () => sim.addHole({ x: 0, y: 0 })],
+      ['drainEvents', () => sim.drainEvents()],
+      ['snapshotWorld', () => sim.snapshot()],
+      ['forEachBall', () => forEachBall(sim.world, () => {})],
+      ['isBall', () => isBall(sim.world, ball)],
+    ]
+    for (const [name, call] of calls) expect(call).toThrow(`${name}: the world was reset (bitECS resetWorld), which is not supported`)
+  })
+})
