@@ -2,7 +2,8 @@
 // captures it; a ball inside its lip circle when it is added is in transit through it. Removing a hole
 // frees the balls it holds: a ball rolling on its rim leaves on the tangent at the rim speed, a ball in
 // transit, skipping or entering rolls on; captured balls stay captured. Rolling balls are re-planned.
-import { addComponent, addEntity, removeEntity } from 'bitecs'
+import { addEntity, removeEntity } from 'bitecs'
+import { addOwn } from '../world/owned.js'
 import { BallMode } from '../../components/Ball.js'
 import { RimMode } from '../../components/RimContact.js'
 import { clearSlot, fitStore } from '../../components/store.js'
@@ -97,8 +98,8 @@ function checkApart(list: readonly CheckedHole[]): void {
 function placeHole(w: BallWorld, h: CheckedHole): number {
   const eid = addEntity(w)
   fitStore(w.Hole, eid)
-  addComponent(w, eid, w.IsHole)
-  addComponent(w, eid, w.Hole)
+  addOwn(w, eid, w.IsHole)
+  addOwn(w, eid, w.Hole)
   w.Hole.x[eid] = h.x
   w.Hole.y[eid] = h.y
   w.Hole.radius[eid] = h.radius

@@ -1,5 +1,6 @@
 // The panel's frame: an optional rectangle with restitution, whose edges may be open (the gutter).
-import { addComponent, addEntity, removeEntity } from 'bitecs'
+import { addEntity, removeEntity } from 'bitecs'
+import { addOwn } from '../world/owned.js'
 import { clearSlot, fitStore } from '../../components/store.js'
 import { WallEdge } from '../../components/Walls.js'
 import { MAX_COORDINATE } from '../config/limits.js'
@@ -61,7 +62,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
   if (w.walls === 0) {
     const eid = addEntity(w)
     fitStore(w.Walls, eid)
-    addComponent(w, eid, w.Walls)
+    addOwn(w, eid, w.Walls)
     w.walls = eid
   }
   const W = w.Walls

@@ -19,6 +19,7 @@ import { dropId, removeMoving } from './idLists.js'
 import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
+import { addOwn } from './owned.js'
 import { checkWorld, describe } from '../check.js'
 
 /** Makes a ball entity (Ball and Path), out of play at the origin; a command then places and launches it. */
@@ -31,7 +32,7 @@ export function addBallEntity(world: BallWorld): number {
 /** onAdd(Ball): the entity becomes a live ball (with Path) with zeroed rows, default radius and mass, out of play. */
 export function adoptBall(world: BallWorld, eid: number): void {
   ensureCapacity(world, eid)
-  if (!hasComponent(world, eid, world.Path)) addComponent(world, eid, world.Path)
+  if (!hasComponent(world, eid, world.Path)) addOwn(world, eid, world.Path)
   if (world.Ball.live[eid] !== 1) world.ballCount++
   clearBallRows(world, eid)
   const B = world.Ball
