@@ -20,18 +20,25 @@ export interface FixedStepClock {
 }
 
 export interface FixedStepClockOptions {
-  /** steps per second, (0, 10000]; default 120 */
+  /**
+   * steps per second, [0.1, 10000]; default 120. A step longer than the world's MAX_STEP (0.25 s by default:
+   * below 4 Hz) is cut to it by sim.step, and the simulation then runs slower than the frames' time.
+   */
   hz?: number | undefined
   /** integer in [1, 1000]; default 8 */
   maxStepsPerFrame?: number | undefined
 }
 
+/** the slowest clock: a step of 10 s, the largest MAX_STEP (a subnormal hz once gave a step of 1/hz = Infinity) */
+const MIN_HZ = 0.1
+const MAX_HZ = 10000
+
 export function createFixedStepClock(options: FixedStepClockOptions = {}): FixedStepClock {
   const o = readSpec('clock options', options, ['hz', 'maxStepsPerFrame'] as const, 'options')
   const hz = o.hz ?? 120
   const maxSteps = o.maxStepsPerFrame ?? 8
-  if (typeof hz !== 'number') throw new TypeError(`hz must be a number in (0, 10000], got ${describe(hz)}`)
-  if (!Number.isFinite(hz) || hz <= 0 || hz > 10000) throw new RangeError(`hz must be in (0, 10000], got ${hz}`)
+  if (typeof hz !== 'number') throw new TypeError(`hz must be a number in [${MIN_HZ}, ${MAX_HZ}], got ${describe(hz)}`)
+  if (!Number.isFinite(hz) || hz < MIN_HZ || hz > MAX_HZ) throw new RangeError(`hz must be in [${MIN_HZ}, ${MAX_HZ}], got ${hz}`)
   if (typeof maxSteps !== 'number') throw new TypeError(`maxStepsPerFrame must be an integer in [1, 1000], got ${describe(maxSteps)}`)
   if (!Number.isInteger(maxSteps) || maxSteps < 1 || maxSteps > 1000) {
     throw new RangeError(`maxStepsPerFrame must be an integer in [1, 1000], got ${maxSteps}`)

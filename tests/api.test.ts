@@ -206,7 +206,7 @@ describe('waking and moving balls through the API', () => {
     sim.addHole({ x: 0, y: 0 })
     const b = sim.addBall({ x: 1, y: 0, vx: 0, vy: 0 })
     sim.step(0.01)
-    expect(() => sim.setBallVelocity(b, 1, 1)).toThrow(/is captured: only rolling, rimRoll or resting balls can be moved/)
+    expect(() => sim.setBallVelocity(b, 1, 1)).toThrow(/is captured: only rolling, rimRoll, resting or held balls can be given a velocity/)
     expect(() => sim.setBallVelocity(b, NaN, 1)).toThrow(/vx/)
   })
 

@@ -178,9 +178,12 @@ describe('an optional field given as undefined is as if it were absent (the type
 describe('error messages say what was wrong, in the caller\'s terms', () => {
   it("createFixedStepClock({ hz: '60' }) is a TypeError saying it got a string; advance('1') too", () => {
     expect(() => createFixedStepClock({ hz: '60' as never })).toThrow(TypeError)
-    expect(() => createFixedStepClock({ hz: '60' as never })).toThrow('hz must be a number in (0, 10000], got the string "60"')
+    expect(() => createFixedStepClock({ hz: '60' as never })).toThrow('hz must be a number in [0.1, 10000], got the string "60"')
     expect(() => createFixedStepClock({ maxStepsPerFrame: '8' as never })).toThrow(TypeError)
     expect(() => createFixedStepClock({ hz: 0 })).toThrow(RangeError)
+    // a subnormal rate passed a check of hz > 0 and gave a step of Infinity: a clock that never stepped
+    expect(() => createFixedStepClock({ hz: 1e-320 })).toThrow('hz must be in [0.1, 10000], got 1e-320')
+    expect(createFixedStepClock({ hz: 0.1 }).stepSeconds).toBe(10)
     expect(() => createFixedStepClock().advance('1' as never, () => {})).toThrow(/frameSeconds must be a finite number ≥ 0, got the string "1"/)
   })
 

@@ -213,8 +213,16 @@ describe('snapshot and restore', () => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
       sim.addHole({ x: 10, y: 10 })
       const before = sim.snapshot()
-      expect(() => sim.restore(good)).toThrow(/already has entities/)
+      expect(() => sim.restore(good)).toThrow(/the world has had entities/)
       expect(same(sim.snapshot(), before)).toBe(true)
+    })
+
+    it('a world whose entities were all removed: the message says why emptying it does not do', () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      sim.removeHole(sim.addHole({ x: 10, y: 10 }))
+      sim.removeBall(sim.addBall({ x: 100, y: 100 }))
+      expect(sim.balls().length + sim.holes().length).toBe(0)
+      expect(() => sim.restore(good)).toThrow(/the world has had entities \(bitECS has handed out ids up to \d+, removed or not\), and a snapshot restores the ids too/)
     })
 
     it('the tick-sampled comparison methods, whose sub-step state is outside the world', () => {

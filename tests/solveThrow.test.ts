@@ -60,6 +60,13 @@ describe('solveThrow', () => {
       expect(s.trials).toBeGreaterThan(1000)
       expect(s.power).toBeNull()
     }
+    // the reason names the ways tried: with walls, bank shots off them too; without, direct throws only
+    if (!s.found) expect(s.reason).toMatch(/throws tried, (direct and off the closed walls|direct only \(no bank shot off the walls toward it\)), over/)
+    const bare = createBallPhysics()
+    const bareHoles = addPanel(bare)
+    const none = solveThrow(bare, { from: DEFAULT_PANEL.launch, hole: bareHoles[12]! })
+    expect(none.found).toBe(false)
+    if (!none.found) expect(none.reason).toMatch(/throws tried, direct only \(no walls\), over the powers and aims that reach it/)
     // and a hole of the first row is
     const first = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[1]! })
     expect(first.found).toBe(true)

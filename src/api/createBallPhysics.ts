@@ -48,7 +48,8 @@ export interface BallPhysics {
    * Events since the last drain, in the same order, passed to `visit` one at a time through one reused view
    * (copy what you keep); returns how many it passed. Allocates nothing: for games with many balls. `visit`
    * may command or step the world; what that records waits for the next drain. A ball or hole it removes is
-   * named by none of the events the drain goes on to pass (its id may already be a new ball's).
+   * named by none of the events the drain goes on to pass (its id may already be a new ball's). If `visit`
+   * throws, the drain ends there and the events not yet given to it are dropped.
    */
   drainEventsWith(visit: (e: EventView) => void): number
   ballState(ball: number): BallState

@@ -128,12 +128,17 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
     // enough: a throw with room on every side, or any throw once three points have been searched
     if (found.some((c) => c.depth >= 2) || (found.length > 0 && n >= 2)) break
   }
+  let banked = false
   if (found.length === 0 && hypot(hx - fx, hy - fy) > R) {
-    for (const cone of bankCones(world, fx, fy, hx, hy, R)) searchCone(trial, fx, fy, outcome, cone, found)
+    for (const cone of bankCones(world, fx, fy, hx, hy, R)) {
+      banked = true
+      searchCone(trial, fx, fy, outcome, cone, found)
+    }
   }
   if (found.length === 0) {
     const where = along > 0 ? `anywhere on (${fx} ± ${along}, ${fy})` : `from (${fx}, ${fy})`
-    return fail(`no throw ${where} gives ${outcome} at hole ${hole}: ${trial.count} throws tried, direct and off the closed walls, over the powers and aims that reach it`, trial.count)
+    const ways = banked ? 'direct and off the closed walls' : world.walls === 0 ? 'direct only (no walls)' : 'direct only (no bank shot off the walls toward it)'
+    return fail(`no throw ${where} gives ${outcome} at hole ${hole}: ${trial.count} throws tried, ${ways}, over the powers and aims that reach it`, trial.count)
   }
   found.sort((a, b) => b.depth - a.depth || a.order - b.order)
   const exact = new ExactCheck(world, hole, step)

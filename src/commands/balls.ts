@@ -187,7 +187,7 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
     return
   }
   if (mode === BallMode.Captured || mode === BallMode.Out) {
-    throw new RangeError(`ball ${b} is ${BALL_MODE_NAMES[mode]}: only rolling, rimRoll or resting balls can be moved`)
+    throw new RangeError(`ball ${b} is ${BALL_MODE_NAMES[mode]}: only rolling, rimRoll, resting or held balls can be given a velocity`)
   }
   if (mode === BallMode.RimRoll) {
     sampleRimRoll(w, b, w.time)

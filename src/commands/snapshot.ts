@@ -306,7 +306,8 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   if (w.recorder !== null) throw new Error('restore: the world is recording; restore first, then start the recording (a replay starts from the state its recording started in)')
   exactOnly('restore', w)
   if (w.entityIndex.maxId !== 0) {
-    throw new Error('restore: the world already has entities; restore into a world just made with the snapshot\'s config (createBallPhysics(config)), then add the game\'s own components')
+    // (removing them does not do: bitECS's entity index, which the snapshot sets, has handed ids out)
+    throw new Error(`restore: the world has had entities (bitECS has handed out ids up to ${w.entityIndex.maxId}, removed or not), and a snapshot restores the ids too; restore into a world just made with the snapshot's config (createBallPhysics(config)), then add the game's own components`)
   }
   const d = decode(bytes, configText(w.config))
   const keys = bodyKeys(w)
