@@ -10,7 +10,6 @@ import { rimTableFor } from '../reference/rimTables.js'
 import { fillCaptureRows } from '../reference/rimTable.js'
 import { describe, readSpec } from './validate.js'
 import { forgetWalls } from './walls.js'
-import { refuseBallOnFixture, refuseForeignAdd } from '../world/owned.js'
 
 /** Largest `options.capacity`. */
 const MAX_CAPACITY = 1 << 26
@@ -41,15 +40,7 @@ export function createBallWorld(overrides: ConfigOverrides = {}, options: BallWo
     fillCaptureRows(table)
     world.rimTables.push(table)
   }
-  observe(world, onAdd(world.Ball), (eid: number) => {
-    refuseBallOnFixture(world, eid)
-    adoptBall(world, eid)
-  })
-  observe(world, onAdd(world.Path), (eid: number) => refuseForeignAdd(world, eid, world.Path, 'Path', 'a ball gets its Path with Ball: addBall, throwBall or addComponent(world, eid, world.Ball)'))
-  observe(world, onAdd(world.RimContact), (eid: number) => refuseForeignAdd(world, eid, world.RimContact, 'RimContact', 'a ball carries it while a hole holds it on its rim'))
-  observe(world, onAdd(world.Hole), (eid: number) => refuseForeignAdd(world, eid, world.Hole, 'Hole', 'make holes with addHole or addHoles'))
-  observe(world, onAdd(world.IsHole), (eid: number) => refuseForeignAdd(world, eid, world.IsHole, 'IsHole', 'make holes with addHole or addHoles'))
-  observe(world, onAdd(world.Walls), (eid: number) => refuseForeignAdd(world, eid, world.Walls, 'Walls', 'set the walls with setWalls'))
+  observe(world, onAdd(world.Ball), (eid: number) => adoptBall(world, eid))
   observe(world, onRemove(world.Ball), (eid: number) => forgetBall(world, eid))
   observe(world, onRemove(world.Hole), (eid: number) => forgetHole(world, eid))
   observe(world, onRemove(world.Walls), (eid: number) => forgetWalls(world, eid))

@@ -2,8 +2,7 @@
 // captures it; a ball inside its lip circle when it is added is in transit through it. Removing a hole
 // frees the balls it holds: a ball rolling on its rim leaves on the tangent at the rim speed, a ball in
 // transit, skipping or entering rolls on; captured balls stay captured. Rolling balls are re-planned.
-import { addEntity, removeEntity } from 'bitecs'
-import { addOwn } from '../world/owned.js'
+import { addComponent, addEntity, removeEntity } from 'bitecs'
 import { BallMode } from '../../components/Ball.js'
 import { RimMode } from '../../components/RimContact.js'
 import { clearSlot, fitStore } from '../../components/store.js'
@@ -14,7 +13,7 @@ import { sampleRimRoll } from '../motion/rimRoll.js'
 import { startAt, sampleRolling } from '../motion/rolling.js'
 import { forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { addHoleToTable, cellKey, overlappingHole, removeHoleFromTable } from '../world/holeTable.js'
+import { addHoleToTable, cellKey, isLiveHole, overlappingHole, removeHoleFromTable } from '../world/holeTable.js'
 import { acquireRim, releaseRim } from '../world/rimSlots.js'
 import { replanRolling } from './replan.js'
 import { betweenSteps, checkHole, checkWorld, describe, finite, positive, readSpec } from './validate.js'
@@ -98,8 +97,8 @@ function checkApart(list: readonly CheckedHole[]): void {
 function placeHole(w: BallWorld, h: CheckedHole): number {
   const eid = addEntity(w)
   fitStore(w.Hole, eid)
-  addOwn(w, eid, w.IsHole)
-  addOwn(w, eid, w.Hole)
+  addComponent(w, eid, w.IsHole)
+  addComponent(w, eid, w.Hole)
   w.Hole.x[eid] = h.x
   w.Hole.y[eid] = h.y
   w.Hole.radius[eid] = h.radius
@@ -166,6 +165,7 @@ export function removeHole(world: BallWorld, hole: number): void {
 
 /** onRemove(Hole): the simulation forgets the hole and frees the balls it holds. */
 export function forgetHole(w: BallWorld, eid: number): void {
+  if (!isLiveHole(w, eid)) return // a Hole a game added by hand, and removed: never a hole
   removeHoleFromTable(w, eid)
   forEachBall(w, (b) => {
     const slot = w.Ball.rim[b]!

@@ -18,7 +18,6 @@
 // Snapshots need METHOD 'exact': the tick-sampled comparison methods ('naive', 'v1') keep their sub-step
 // state outside the world, and are refused.
 import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
-import { addOwn } from '../world/owned.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { MIN_TABLE_RATIO } from '../config/limits.js'
 import { MAX_RATIO } from '../reference/tolerances.js'
@@ -245,15 +244,7 @@ function checkFinite(name: string, store: Record<string, unknown>): void {
  */
 function checkLists(d: Decoded): void {
   const balls = new Set<number>()
-  for (let i = 0; i < d.aliveCount; i++) {
-    const m = d.members[i]!
-    // a ball is never a hole or the walls, and only a ball has a Path or a RimContact (restoreWorld adds them
-    // as the commands do; a hand-made mix is refused there too: src/world/owned.ts)
-    if ((m & BALL) !== 0 ? (m & (HOLE | IS_HOLE | WALLS)) !== 0 : (m & (PATH | RIM)) !== 0) {
-      throw new SnapshotError(`restore: entity ${d.dense[i]!} has components no entity of a world can have together (malformed bytes)`)
-    }
-    if ((m & BALL) !== 0) balls.add(d.dense[i]!)
-  }
+  for (let i = 0; i < d.aliveCount; i++) if ((d.members[i]! & BALL) !== 0) balls.add(d.dense[i]!)
   const f = d.fields as Record<string, Record<string, unknown>>
   const mode = f['Ball']!['mode'] as ArrayLike<number>
   for (const b of balls) {
@@ -333,12 +324,12 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   for (let i = 0; i < d.aliveCount; i++) {
     const e = d.dense[i]!
     const m = d.members[i]!
-    if ((m & IS_HOLE) !== 0) addOwn(w, e, w.IsHole)
-    if ((m & HOLE) !== 0) addOwn(w, e, w.Hole)
-    if ((m & WALLS) !== 0) addOwn(w, e, w.Walls)
+    if ((m & IS_HOLE) !== 0) addComponent(w, e, w.IsHole)
+    if ((m & HOLE) !== 0) addComponent(w, e, w.Hole)
+    if ((m & WALLS) !== 0) addComponent(w, e, w.Walls)
     if ((m & BALL) !== 0) addComponent(w, e, w.Ball) // adoptBall runs (and adds Path); its rows are overwritten below
-    if ((m & PATH) !== 0 && !hasComponent(w, e, w.Path)) addOwn(w, e, w.Path)
-    if ((m & RIM) !== 0) addOwn(w, e, w.RimContact)
+    if ((m & PATH) !== 0 && !hasComponent(w, e, w.Path)) addComponent(w, e, w.Path)
+    if ((m & RIM) !== 0) addComponent(w, e, w.RimContact)
   }
   w.rimTables.length = 0
   for (const t of tables) w.rimTables.push(t)

@@ -3,6 +3,7 @@ import { entityExists, hasComponent } from 'bitecs'
 import { describe } from '../check.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { isLiveBall } from '../world/balls.js'
+import { isLiveHole } from '../world/holeTable.js'
 
 export { checkWorld, describe, finite, flag, positive, readSpec, specObject, within } from '../check.js'
 
@@ -27,7 +28,8 @@ export function checkBall(world: BallWorld, field: string, eid: unknown): number
 export function checkHole(world: BallWorld, field: string, eid: unknown): number {
   const h = checkId(field, eid, 'hole')
   if (isLiveBall(world, h)) throw new RangeError(`${field} ${h} is not a live hole of this world: it is a ball`)
-  if (!entityExists(world, h) || !hasComponent(world, h, world.Hole)) {
+  // a Hole component a game added by hand is not a hole: it has no row, and removeHole would remove its entity
+  if (!entityExists(world, h) || !hasComponent(world, h, world.Hole) || !isLiveHole(world, h)) {
     throw new RangeError(`${field} ${h} is not a live hole of this world (unknown or removed)`)
   }
   return h

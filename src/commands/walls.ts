@@ -1,6 +1,5 @@
 // The panel's frame: an optional rectangle with restitution, whose edges may be open (the gutter).
-import { addEntity, removeEntity } from 'bitecs'
-import { addOwn } from '../world/owned.js'
+import { addComponent, addEntity, removeEntity } from 'bitecs'
 import { clearSlot, fitStore } from '../../components/store.js'
 import { WallEdge } from '../../components/Walls.js'
 import { MAX_COORDINATE } from '../config/limits.js'
@@ -62,7 +61,7 @@ export function setWalls(world: BallWorld, spec: WallsSpec): void {
   if (w.walls === 0) {
     const eid = addEntity(w)
     fitStore(w.Walls, eid)
-    addOwn(w, eid, w.Walls)
+    addComponent(w, eid, w.Walls)
     w.walls = eid
   }
   const W = w.Walls

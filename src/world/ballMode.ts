@@ -3,10 +3,9 @@
 // (The pooled RimContact row, at Ball.rim, also carries the hole lock of a ball that is inside a lip circle
 // without touching the rim: skipping, entering, in transit. Adding the bitECS component at every lip
 // crossing cost about a fifth of a dense panel's step: bitECS updates a Set per entity.)
-import { removeComponent } from 'bitecs'
+import { addComponent, removeComponent } from 'bitecs'
 import { BallMode, type BallModeCode } from '../../components/Ball.js'
 import type { BallWorld } from './createWorld.js'
-import { addOwn } from './owned.js'
 
 /** Sets a ball's mode, adding or removing its RimContact component when it starts or stops rolling on a rim. */
 export function setBallMode(world: BallWorld, eid: number, mode: BallModeCode): void {
@@ -14,6 +13,6 @@ export function setBallMode(world: BallWorld, eid: number, mode: BallModeCode): 
   const was = B.mode[eid]
   if (was === mode) return
   B.mode[eid] = mode
-  if (mode === BallMode.RimRoll) addOwn(world, eid, world.RimContact)
+  if (mode === BallMode.RimRoll) addComponent(world, eid, world.RimContact)
   else if (was === BallMode.RimRoll) removeComponent(world, eid, world.RimContact)
 }

@@ -19,7 +19,7 @@ import { dropId, removeMoving } from './idLists.js'
 import { clearPathHot } from './pathHot.js'
 import { restingRemove } from './restingGrid.js'
 import { releaseRim } from './rimSlots.js'
-import { addOwn } from './owned.js'
+import { isLiveHole } from './holeTable.js'
 import { checkWorld, describe } from '../check.js'
 
 /** Makes a ball entity (Ball and Path), out of play at the origin; a command then places and launches it. */
@@ -29,10 +29,18 @@ export function addBallEntity(world: BallWorld): number {
   return eid
 }
 
-/** onAdd(Ball): the entity becomes a live ball (with Path) with zeroed rows, default radius and mass, out of play. */
+/**
+ * onAdd(Ball): the entity becomes a live ball (with Path) with zeroed rows, default radius and mass, out of
+ * play. A hole or the walls cannot also be a ball (a hole given Ball by hand was listed as both, and could
+ * not be removed): the Ball is taken off again and the game's addComponent throws.
+ */
 export function adoptBall(world: BallWorld, eid: number): void {
+  if (isLiveHole(world, eid) || eid === world.walls) {
+    removeComponent(world, eid, world.Ball) // forgetBall returns at once: not a ball yet
+    throw new Error(`addComponent(world, ${eid}, world.Ball): entity ${eid} is ${eid === world.walls ? 'the walls' : 'a hole'}, which cannot also be a ball; make balls with addBall or throwBall (the entity is left as it was)`)
+  }
   ensureCapacity(world, eid)
-  if (!hasComponent(world, eid, world.Path)) addOwn(world, eid, world.Path)
+  if (!hasComponent(world, eid, world.Path)) addComponent(world, eid, world.Path)
   if (world.Ball.live[eid] !== 1) world.ballCount++
   clearBallRows(world, eid)
   const B = world.Ball
