@@ -41,6 +41,7 @@ import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 import { outsideStep } from '../src/world/system.js'
+import { keepWallTurns } from '../src/contacts/fixedWallTurn.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
   if (!w.stepping) outsideStep('fixedContactsSystem')
@@ -125,6 +126,8 @@ export function fixedContactsSystem(w: BallWorld): void {
   }
   if (lean(F)) F.lean++
   recordGrowth(F, true)
+  // a candidate only a wall turned goes on to meet the wall at its instant (src/contacts/fixedWallTurn.ts)
+  keepWallTurns(w, F, t)
   countTickContacts(w, F, t)
   applyChanges(w, F, t)
 }

@@ -34,9 +34,8 @@ import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, face, pushed, wallAhead } from './fixedAhead.js'
 import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
+import { STRUCK, WALL_DUE, WALL_REPORTED, WALL_TURNED } from './fixedWallTurn.js'
 
-/** changed bit of a candidate whose wall hit this tick was reported */
-const WALL_REPORTED = 4
 /**
  * A sweep's impulses: pairs met past RESTITUTION_VISITS whose one ball is SQUEEZE_MASS_RATIO times lighter
  * than the other or more (by their own masses: a ball at rest held like a wall is not a heavier one, or a slow
@@ -133,14 +132,14 @@ function settle(w: BallWorld, F: FixedContactState): void {
     const i = list[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
-    F.changed[i]! |= 1
+    F.changed[i]! |= STRUCK
   }
   const held = heldBalls()
   for (let k = 0, n = holdRows(w, F, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
     const i = held[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
-    F.changed[i]! |= 1
+    F.changed[i]! |= STRUCK
   }
 }
 
@@ -253,14 +252,14 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     capBall(F, o)
     noteChange(F, o)
     changedAt[o] = ++clock
-    F.changed[o]! |= 1
+    F.changed[o]! |= STRUCK
     // the light balls in a row after the pair's own (src/contacts/fixedSqueeze.ts)
     for (let k = 1, n = squeeze[SQ_CHAIN]!; k < n; k++) {
       const c = squeezeChain[k]!
       capBall(F, c)
       noteChange(F, c)
       changedAt[c] = ++clock
-      F.changed[c]! |= 1
+      F.changed[c]! |= STRUCK
     }
     // the second pair as the sweeps take a pair they meet: a visit, an inelastic meeting counted, reported
     const hit2 = F.pairHit[second]!
@@ -293,8 +292,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   noteChange(F, b)
   changedAt[a] = ++clock
   changedAt[b] = clock
-  F.changed[a]! |= 1
-  F.changed[b]! |= 1
+  F.changed[a]! |= STRUCK
+  F.changed[b]! |= STRUCK
   S[S_APPROACH] = approach
   S[S_J] = j
   reportPair(w, F, p, a, b)
@@ -403,15 +402,12 @@ function wallVelocity(w: BallWorld, F: FixedContactState, i: number): number {
   let vy = F.vy[i]!
   if ((into & 1) !== 0) vx = Math.abs(vx) < settle ? 0 : -walls.e * vx
   if ((into & 2) !== 0) vy = Math.abs(vy) < settle ? 0 : -walls.e * vy
-  if ((F.changed[i]! & WALL_REPORTED) === 0 && Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) {
-    const ev = appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)
-    w.events.time[ev] = S[S_T]!
-    F.changed[i]! |= WALL_REPORTED
-  }
+  // its 'wall' event is written once the tick is solved, if it keeps the turn (src/contacts/fixedWallTurn.ts)
+  if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) F.changed[i]! |= WALL_DUE
   F.vx[i] = vx
   F.vy[i] = vy
   noteChange(F, i)
   changedAt[i] = ++clock
-  F.changed[i]! |= 1
+  F.changed[i]! |= 1 | WALL_TURNED
   return bouncesBetween(F, i, into) ? 2 : 1
 }

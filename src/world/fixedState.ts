@@ -113,7 +113,7 @@ export interface FixedContactState {
   widenedCount: number
   /** grid cell of a packed ball in the grid that orders the pairs (fixedOrder.ts); scratch for the solve after */
   next: Int32Array
-  /** what the solve changed: 1 velocity, 2 position */
+  /** what the solve changed: 1 velocity, 2 position; the wall's bits (4, 8, 16) and a pair's (32): src/contacts/fixedWallTurn.ts */
   changed: Uint8Array
   /** packed balls too wide or too fast for the ordering grid (its "big" balls) */
   big: Int32Array

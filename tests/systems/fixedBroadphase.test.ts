@@ -56,7 +56,9 @@ describe('fixed-tick broadphases', () => {
   })
 
   it('light balls at rest and heavy ones at 1,000 px/s in closed walls of restitution 0: the projection pushes balls into moving ones it was not paired with, paired in the same tick', () => {
-    for (const seed of [4, 27, 30]) {
+    // seeds whose scene makes such a pairing (4 of the first 40 seeds; 9 before a ball only a wall turned kept
+    // its path to the wall, src/contacts/fixedWallTurn.ts, when these were 4, 27 and 30)
+    for (const seed of [12, 24, 34]) {
       // by broadphase: the sweep's (0), the dense one's (1)
       const joins = [0, 0]
       const make = () => {

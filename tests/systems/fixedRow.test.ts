@@ -409,11 +409,11 @@ function strikeRowAtWall(n: number, gap: number, mass: number, speed: number, hz
  * the balls' travel (CONTACT_TRAVEL_HALVINGS 0, the default), solving a tick again; and with that rule at 4,
  * which halves these ticks before they need it.
  */
-function holdsWithRedo(n: number, gap: number, mass: number, speed: number): void {
+function holdsWithRedo(n: number, gap: number, mass: number, speed: number, redone = true): void {
   const before = ticksRedone()
   const a = strikeRowAtWall(n, gap, mass, speed, 60, 1, 0)
   expect(a.passed).toBe(-1)
-  expect(ticksRedone()).toBeGreaterThan(before)
+  if (redone) expect(ticksRedone()).toBeGreaterThan(before)
   expect(strikeRowAtWall(n, gap, mass, speed, 120, 1, 0)).toEqual(a)
   const b = strikeRowAtWall(n, gap, mass, speed, 60, 1, 4)
   expect(b.passed).toBe(-1)
@@ -436,10 +436,12 @@ describe('fixed tick: a tick of many pairs a candidate that leaves a push front 
   // candidate after its widening rounds, more than CHAIN_PAIRS_PER_BALL, and its sweeps leave one or two
   // pairs closing deep (the push's front, the wall ahead); left to the projection, a ball passed its
   // neighbour before the next tick
-  const cases: Array<[n: number, gap: number, speed: number]> = [[55, 2, 3000], [55, 2, 1e4], [55, 0.05, 1e4], [120, 2, 3000]]
-  for (const [n, gap, speed] of cases) {
+  // (the 120-ball row holds without a tick solved again since a ball only the wall turned in a tick keeps its
+  // path to the wall, src/contacts/fixedWallTurn.ts; the 80-ball row still needs one)
+  const cases: Array<[n: number, gap: number, speed: number, redone: boolean]> = [[55, 2, 3000, true], [55, 2, 1e4, true], [55, 0.05, 1e4, true], [80, 2, 3000, true], [120, 2, 3000, false]]
+  for (const [n, gap, speed, redone] of cases) {
     it(`${n} radius-0.5 balls ${gap} px apart struck end on by a mass-3 ball at ${speed} px/s, e = 1, a wall 5 px past the row: no ball passes another for 1 s, the same bits at 60 and 120 Hz`, () => {
-      holdsWithRedo(n, gap, 3, speed)
+      holdsWithRedo(n, gap, 3, speed, redone)
     })
   }
 })

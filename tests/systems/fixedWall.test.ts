@@ -120,6 +120,58 @@ describe('fixed-tick contacts at a closed wall', () => {
   })
 })
 
+describe('fixed-tick contacts: a ball only the wall turns in a tick meets the wall at its instant (src/contacts/fixedWallTurn.ts)', () => {
+  /** ball a's wall events and state after `steps` steps of 1/120 s, with ball b put down beside it (or not) */
+  function run(mode: 'off' | 'fixed', a: { x: number; y: number; vx: number }, b: { x: number; y: number } | null, steps: number) {
+    const sim = createBallPhysics({ BALL_COLLISIONS: mode, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 1 })
+    const ia = sim.addBall({ ...a, vy: 0, radius: 5 })
+    const ib = b === null ? -1 : sim.addBall({ ...b, radius: 5 })
+    const events: string[] = []
+    for (let i = 0; i < steps; i++) {
+      sim.step(1 / 120)
+      // b's own 'rest' (put down still) aside: any event of b's, or of the pair, shows
+      for (const e of sim.drainEvents()) if (e.ball === ia || (e.ball === ib && e.type !== 'rest') || e.other === ia) events.push(`${e.type} ${e.ball === ia ? 'a' : 'b'} ${e.time}`)
+    }
+    const s = sim.ballState(ia)
+    return { events, a: [s.x, s.y, s.vx, s.vy] }
+  }
+
+  // a ball 5 px short of its wall at 700 px/s (the panel's fastest throw), 3,000 and 1e5 px/s, with a ball at
+  // rest within reach that it never touches: it was turned at the tick, short of the wall (10 px off its path
+  // at 700 px/s; at 1e5 px/s, 87 px from the wall), its 'wall' event stamped with the tick's time
+  const cases: Array<[string, { x: number; y: number; vx: number }, { x: number; y: number }, number]> = [
+    ['700 px/s, 5 px short of the wall', { x: 390, y: 200, vx: 700 }, { x: 390, y: 215 }, 1],
+    ['3,000 px/s, 20 px short', { x: 375, y: 200, vx: 3000 }, { x: 375, y: 230 }, 1],
+    ['1e5 px/s, across the box many times a step', { x: 100, y: 200, vx: 1e5 }, { x: 380, y: 380 }, 2],
+  ]
+  for (const [what, a, b, steps] of cases) {
+    it(`${what}: the same wall events and bits as with contacts off, and as with no other ball`, () => {
+      const off = run('off', a, null, steps)
+      expect(off.events.length).toBeGreaterThan(0)
+      expect(run('fixed', a, null, steps)).toEqual(off)
+      expect(run('fixed', a, b, steps)).toEqual(off)
+    })
+  }
+
+  it('a ball the wall turns and that then meets another within the tick keeps the turn: the two rows of a struck pair at a wall', () => {
+    // a at the wall's reach, b close behind it closing faster: turned at the tick, a meets b within it
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 1 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 1 })
+    const a = sim.addBall({ x: 392, y: 200, vx: 600, vy: 0, radius: 5 })
+    const b = sim.addBall({ x: 380, y: 200, vx: 900, vy: 0, radius: 5 })
+    sim.step(1 / 120)
+    const events = sim.drainEvents()
+    expect(events.some((e) => e.type === 'collision')).toBe(true)
+    expect(events.some((e) => e.type === 'wall' && e.ball === a)).toBe(true)
+    // no overlap, and the pair ends moving back from the wall, b ahead of a's way
+    const sa = sim.ballState(a)
+    const sb = sim.ballState(b)
+    expect(sa.x - sb.x).toBeGreaterThanOrEqual(10 - 1e-9)
+    expect(sb.vx).toBeLessThan(0)
+  })
+})
+
 describe('fixed-tick contacts: a fast light ball between a heavy ball and a wall', () => {
   // a ball of mass 1e-6 crossing the 250 px between a wall and a ball of mass 1 within a tick was taken for
   // one squeezed between them: past its restitution visits the pair was solved inelastically with the wall,

@@ -1,0 +1,93 @@
+// A closed wall within reach turns a candidate at the contact tick (src/contacts/fixedSolve.ts), so that the
+// solve meets what the wall sends back within the same tick: a row pressed into a wall is held by it, a ball
+// turned there meets the ball behind it. A candidate that only the wall turned, and that no pair, row or
+// projection then touched, met nothing: it is given back the velocity it had, and the walls system turns
+// it at the wall itself, at its instant, as with contacts off. (Turned at the tick, such a ball left the
+// tick short of its wall, up to a tick's travel: a ball at 700 px/s 5 px from its wall was sent back from
+// there, 10 px off its path, its 'wall' event stamped with the tick's time, whenever another ball was within
+// reach.) The 'wall' event of a candidate that keeps its turn is written here, at the tick.
+import { EventType, appendEvent } from '../events.js'
+import type { BallWorld } from '../world/createWorld.js'
+import type { FixedContactState } from '../world/fixedState.js'
+import { meetsWithinTick } from './fixedPairs.js'
+
+/** changed bit of a candidate whose wall hit this tick was reported */
+export const WALL_REPORTED = 4
+/** changed bit of a candidate a closed wall turned in this tick's solve */
+export const WALL_TURNED = 8
+/** changed bit of a candidate the wall turned by BALL_SETTLE_SPEED or more: a 'wall' event if it keeps the turn */
+export const WALL_DUE = 16
+/** changed bits of a candidate whose velocity a pair, a squeeze, a jam or a held row changed */
+export const STRUCK = 1 | 32
+
+/** changed bit of a candidate keepWallTurns gives back its velocity (within the call) */
+const LONE = 64
+
+/** the turned velocities of the lone candidates, for those a pair keeps turned (grown, never shrunk) */
+let turnedVx = new Float64Array(64)
+let turnedVy = new Float64Array(64)
+
+/**
+ * Gives back their velocities to the candidates only a wall turned (see above), unless one of its pairs
+ * would meet within the tick at that velocity (on straight lines, the swept test), or its partner is such a
+ * candidate too (both reach the wall within the tick: the first back would meet the other on its way in,
+ * between the ticks): those keep the turn. Reports the kept turns' 'wall' events at t.
+ */
+export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): void {
+  const B = w.Ball
+  // grown before the loop: grown within it, it dropped the turns already kept there (which then read 0, and
+  // depended on the worlds stepped before in the process)
+  if (turnedVx.length < F.n) {
+    turnedVx = new Float64Array(2 * F.n)
+    turnedVy = new Float64Array(2 * F.n)
+  }
+  let lone = 0
+  for (let k = 0; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    const c = F.changed[i]!
+    if ((c & WALL_TURNED) === 0 || (c & (32 | 2)) !== 0) continue
+    turnedVx[i] = F.vx[i]!
+    turnedVy[i] = F.vy[i]!
+    // gathered at rest, a candidate has velocity 0 and no wall turns it: its gathered velocity is its own
+    const eid = F.id[i]!
+    F.vx[i] = B.vx[eid]!
+    F.vy[i] = B.vy[eid]!
+    F.changed[i] = c | LONE
+    lone++
+  }
+  if (lone > 0) {
+    const overlap = F.overlap
+    for (let p = 0; p < F.pairCount; p++) {
+      const a = F.pairA[p]!
+      const b = F.pairB[p]!
+      const la = (F.changed[a]! & LONE) !== 0
+      const lb = (F.changed[b]! & LONE) !== 0
+      if (!la && !lb) continue
+      if ((la && lb) || meetsWithinTick(F, a, b)) {
+        if (la) keepTurn(F, a)
+        if (lb) keepTurn(F, b)
+      }
+    }
+    F.overlap = overlap
+  }
+  for (let k = 0; k < F.nearWallCount; k++) {
+    const i = F.nearWall[k]!
+    const c = F.changed[i]!
+    if ((c & LONE) !== 0) {
+      F.changed[i] = 0
+      continue
+    }
+    if ((c & (WALL_TURNED | WALL_DUE | WALL_REPORTED)) === (WALL_TURNED | WALL_DUE)) {
+      const ev = appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)
+      w.events.time[ev] = t
+      F.changed[i] = c | WALL_REPORTED
+    }
+  }
+}
+
+/** A lone candidate a pair keeps turned: its turned velocity back. */
+function keepTurn(F: FixedContactState, i: number): void {
+  F.vx[i] = turnedVx[i]!
+  F.vy[i] = turnedVy[i]!
+  F.changed[i]! &= ~LONE
+}
