@@ -1,5 +1,4 @@
 // Entity checks for the commands (the field checks are in src/check.ts).
-import { entityExists, hasComponent } from 'bitecs'
 import { describe } from '../check.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { isLiveBall } from '../world/balls.js'
@@ -18,7 +17,7 @@ function checkId(field: string, eid: unknown, kind: string): number {
 export function checkBall(world: BallWorld, field: string, eid: unknown): number {
   const b = checkId(field, eid, 'ball')
   if (!isLiveBall(world, b)) {
-    if (entityExists(world, b) && hasComponent(world, b, world.Hole)) throw new RangeError(`${field} ${b} is not a live ball of this world: it is a hole`)
+    if (isLiveHole(world, b)) throw new RangeError(`${field} ${b} is not a live ball of this world: it is a hole`)
     throw new RangeError(`${field} ${b} is not a live ball of this world (unknown or removed)`)
   }
   return b
@@ -28,8 +27,9 @@ export function checkBall(world: BallWorld, field: string, eid: unknown): number
 export function checkHole(world: BallWorld, field: string, eid: unknown): number {
   const h = checkId(field, eid, 'hole')
   if (isLiveBall(world, h)) throw new RangeError(`${field} ${h} is not a live hole of this world: it is a ball`)
-  // a Hole component a game added by hand is not a hole: it has no row, and removeHole would remove its entity
-  if (!entityExists(world, h) || !hasComponent(world, h, world.Hole) || !isLiveHole(world, h)) {
+  // a hole is one with a row in the table (a Hole component a game added by hand has none: removeHole would
+  // remove the game's entity)
+  if (!isLiveHole(world, h)) {
     throw new RangeError(`${field} ${h} is not a live hole of this world (unknown or removed)`)
   }
   return h

@@ -17,8 +17,12 @@ export const WALL_REPORTED = 4
 export const WALL_TURNED = 8
 /** changed bit of a candidate the wall turned by BALL_SETTLE_SPEED or more: a 'wall' event if it keeps the turn */
 export const WALL_DUE = 16
-/** changed bits of a candidate whose velocity a pair, a squeeze, a jam or a held row changed */
-export const STRUCK = 1 | 32
+/** changed bit of a candidate whose velocity a pair, a squeeze, a jam or a held row changed */
+const HIT = 32
+/** changed bits a pair, a squeeze, a jam or a held row sets: the velocity's (1) and HIT */
+export const STRUCK = 1 | HIT
+/** changed bit of a candidate the projection moved (src/contacts/fixedPush.ts) */
+const MOVED = 2
 
 /** changed bit of a candidate keepWallTurns gives back its velocity (within the call) */
 const LONE = 64
@@ -45,7 +49,7 @@ export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): vo
   for (let k = 0; k < F.nearWallCount; k++) {
     const i = F.nearWall[k]!
     const c = F.changed[i]!
-    if ((c & WALL_TURNED) === 0 || (c & (32 | 2)) !== 0) continue
+    if ((c & WALL_TURNED) === 0 || (c & (HIT | MOVED)) !== 0) continue
     turnedVx[i] = F.vx[i]!
     turnedVy[i] = F.vy[i]!
     // gathered at rest, a candidate has velocity 0 and no wall turns it: its gathered velocity is its own
