@@ -251,7 +251,9 @@ export const ROW_MIN_BALLS = 3
  * all its normals on one line, the pairs a tick's swept test finds between balls that are not neighbours
  * too (a fast striker meets a dozen balls ahead of it on straight lines); a pile has normals 60° or 90°
  * apart, and is left to the sweeps (unless, with restitution below 1, a ball SQUEEZE_MASS_RATIO times heavier
- * than another presses it: src/contacts/fixedShock.ts).
+ * than another presses it: src/contacts/fixedShock.ts). The projection's pass (src/contacts/fixedLayered.ts)
+ * judges a group by its pairs that touch or overlap: a train pressed within itself that the tick paired with
+ * a pile apart from it is a row.
  */
 export const ROW_LINE_COS = Math.sqrt(3) / 2
 

@@ -154,8 +154,8 @@ let wallFace = 0
  * through the tick's pairs): its ball nearest a closed wall when that one can reach the wall within the tick,
  * or is nearer it than the group's overlaps add up to (a push toward the wall would be held there:
  * anchorAtWall), else its heaviest (the one the sweeps move least), on a tie the one nearer a wall, then the
- * lower index. Sets groupIsRow: at least ROW_MIN_BALLS balls, every pair's normal within ROW_LINE_COS of the
- * first one's; a group that is not a row is marked taken (the sweeps' work, not this pass's). A row of 55
+ * lower index. Sets groupIsRow: at least ROW_MIN_BALLS balls, the normal of every pair that touches or
+ * overlaps (closer than PROJECTION_SLOP) within ROW_LINE_COS of the first one's; a group that is not a row is marked taken (the sweeps' work, not this pass's). A row of 55
  * balls of radius 11 struck by a ball 1e4 times heavier and pressed within itself, clear of the walls, was
  * taken out by the sweeps at about half its depth a tick: 0.36 px deep, more than 1e-3 px for 0.2 s.
  */
@@ -204,9 +204,12 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
       const p = F.adjPairs[q]!
       const u = F.pairA[p] === v ? F.pairB[p]! : F.pairA[p]!
       if (state[u] === 2) continue
-      // a row: every pair along one line
+      // a row: every pair that touches or overlaps along one line (a row pressed within itself that the
+      // tick paired with a pile apart from it is still a row)
       normal(F, v, u)
-      if (lineX === 0 && lineY === 0) {
+      if (!(nrm.gap < PROJECTION_SLOP)) {
+        // apart: not part of the line
+      } else if (lineX === 0 && lineY === 0) {
         lineX = nrm.x
         lineY = nrm.y
       } else if (Math.abs(lineX * nrm.x + lineY * nrm.y) < ROW_LINE_COS) row = false

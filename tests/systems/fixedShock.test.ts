@@ -210,4 +210,16 @@ describe('fixed tick: a long row pressed within itself, clear of the walls, is t
     // ball's centre plus its radius less the gap
     expect(run({ n: 54, gap: 1, dist: 29, mass: 10, speed: 1000, off: 0, e: 0.5 }, 60, 1, 0.25).deepest).toBeLessThan(1e-3)
   })
+
+  // struck 2 px off its line, the row buckles into a pile against the far wall, comes back from it and
+  // buckles again against the near one; the train behind that pile, pressed within itself, was paired by the
+  // tick with balls of the pile 0.05–9 px from it, and their normals (40–110° off the row's line) made the
+  // whole group a pile, left to the sweeps: 0.0114 px deep at 0.92 s, 3.1e-3 and 8.4e-4 px the two steps
+  // after (npm run bench:rows's one pressed row over 1e-3 px). A pair apart takes no part in the line test
+  it('62 radius-11 balls 1 px apart, the far wall touching the row, struck 2 px off their line by a ball of mass 1e4 at 1,000 px/s, e = 0.5: from 0.5 s no two balls more than 1e-3 px deep', () => {
+    const before = anchoredCount()
+    const { deepest } = run({ n: 62, gap: 1, dist: 0, mass: 1e4, speed: 1000, off: 2, e: 0.5 }, 60, 1, 0.5)
+    expect(anchoredCount()).toBeGreaterThan(before)
+    expect(deepest).toBeLessThan(1e-3)
+  })
 })
