@@ -1,7 +1,8 @@
 // A closed wall within reach turns a candidate at the contact tick (src/contacts/fixedSolve.ts), so that the
 // solve meets what the wall sends back within the same tick: a row pressed into a wall is held by it, a ball
 // turned there meets the ball behind it. A candidate that only the wall turned, and that no pair, row or
-// projection then touched, met nothing: it is given back the velocity it had, and the walls system turns
+// projection then touched, met nothing: unless a pair could meet it on its own way to the wall or back from
+// it within the tick, it is given back the velocity it had, and the walls system turns
 // it at the wall itself, at its instant, as with contacts off. (Turned at the tick, such a ball left the
 // tick short of its wall, up to a tick's travel: a ball at 700 px/s 5 px from its wall was sent back from
 // there, 10 px off its path, its 'wall' event stamped with the tick's time, whenever another ball was within
@@ -9,6 +10,7 @@
 import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
+import { walls } from './fixedGrid.js'
 import { meetsWithinTick } from './fixedPairs.js'
 
 /** changed bit of a candidate whose wall hit this tick was reported */
@@ -33,8 +35,8 @@ let turnedVy = new Float64Array(64)
 
 /**
  * Gives back their velocities to the candidates only a wall turned (see above), unless one of its pairs
- * would meet within the tick at that velocity (on straight lines, the swept test), or its partner is such a
- * candidate too (both reach the wall within the tick: the first back would meet the other on its way in,
+ * would meet within the tick at that velocity (on straight lines, the swept test) or on its way back from
+ * the wall (meetsAfterWall), or its partner is such a candidate too (both reach the wall within the tick: the first back would meet the other on its way in,
  * between the ticks): those keep the turn. Reports the kept turns' 'wall' events at t.
  */
 export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): void {
@@ -67,7 +69,7 @@ export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): vo
       const la = (F.changed[a]! & LONE) !== 0
       const lb = (F.changed[b]! & LONE) !== 0
       if (!la && !lb) continue
-      if ((la && lb) || meetsWithinTick(F, a, b)) {
+      if ((la && lb) || meetsWithinTick(F, a, b) || (la ? meetsAfterWall(F, a, b) : meetsAfterWall(F, b, a))) {
         if (la) keepTurn(F, a)
         if (lb) keepTurn(F, b)
       }
@@ -94,4 +96,44 @@ function keepTurn(F: FixedContactState, i: number): void {
   F.vx[i] = turnedVx[i]!
   F.vy[i] = turnedVy[i]!
   F.changed[i]! &= ~LONE
+}
+
+/**
+ * Whether lone candidate a, at its own velocity, meets candidate b (on its solved velocity) on its way back
+ * from its first closed wall within the tick (straight lines: to the wall, then turned by the walls'
+ * restitution), or would reach another wall before the tick's end (a second turn: not followed, as if it
+ * met). Given back its velocity, a ball turned at the tick follows the path the walls system gives it, and
+ * the solve only met the path it was turned on at the tick: a ball at 26,545 px/s that turned at a wall
+ * 2 ms into the tick went through a ball at rest 4.7 px deep, its turned path from the tick clear of it.
+ */
+function meetsAfterWall(F: FixedContactState, a: number, b: number): boolean {
+  const r = F.r[a]!
+  let vx = F.vx[a]!
+  let vy = F.vy[a]!
+  const hitX = vx < 0 ? (walls.minX + r - F.x[a]!) / vx : vx > 0 ? (walls.maxX - r - F.x[a]!) / vx : Infinity
+  const hitY = vy < 0 ? (walls.minY + r - F.y[a]!) / vy : vy > 0 ? (walls.maxY - r - F.y[a]!) / vy : Infinity
+  const tw = Math.max(0, Math.min(hitX, hitY))
+  if (!(tw < F.tick)) return false
+  // where a meets the wall, and its velocity back from it (both axes at a corner)
+  const ax = F.x[a]! + vx * tw
+  const ay = F.y[a]! + vy * tw
+  if (hitX <= hitY) vx = -walls.e * vx
+  if (hitY <= hitX) vy = -walls.e * vy
+  const rest = F.tick - tw
+  // a second wall within the tick
+  if ((vx < 0 && ax - r - walls.minX < -vx * rest) || (vx > 0 && walls.maxX - ax - r < vx * rest)) return true
+  if ((vy < 0 && ay - r - walls.minY < -vy * rest) || (vy > 0 && walls.maxY - ay - r < vy * rest)) return true
+  // the swept test from the wall on, b where it is then
+  const dx = F.x[b]! + F.vx[b]! * tw - ax
+  const dy = F.y[b]! + F.vy[b]! * tw - ay
+  const S = r + F.r[b]!
+  const c = dx * dx + dy * dy - S * S
+  if (c <= 0) return true
+  const ux = F.vx[b]! - vx
+  const uy = F.vy[b]! - vy
+  const half = dx * ux + dy * uy
+  if (half >= 0) return false
+  const disc = half * half - (ux * ux + uy * uy) * c
+  if (disc < 0) return false
+  return c / (-half + Math.sqrt(disc)) <= rest
 }
