@@ -37,7 +37,7 @@ import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
 import { iterationsNow, lean, meterTick, skipRest, spend } from '../src/contacts/fixedBudget.js'
-import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP } from '../src/config/tolerances.js'
+import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP, SMALL_TICK_BALLS } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 import { outsideStep } from '../src/world/system.js'
@@ -79,7 +79,7 @@ export function fixedContactsSystem(w: BallWorld): void {
     // them when it had at most one pair a candidate before those rounds (a push along a row at a fine tick
     // leaves three fronts: a crowd's tick that leaves as many has about four pairs a candidate)
     if (h === SOLVED) {
-      const dense = F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
+      const dense = F.n > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
       if (dense && !fewPairs(F)) break
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
       if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? fronts : Infinity)) break

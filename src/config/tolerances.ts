@@ -194,6 +194,14 @@ export const MAX_TICK_REDOS = 4
  */
 export const DEEP_FRONTS = 2
 /**
+ * ... but a tick of at most SMALL_TICK_BALLS candidates is solved again halved however many pairs it has:
+ * a try costs little there. Twelve balls in a closed elastic box, some at 2e4–1e5 px/s, all paired with
+ * all after the first tick's rounds: the solve left two closing on straight lines 26 px into each other
+ * before the next tick, and they went through each other between the ticks (6 and 10 of 200 such scenes
+ * of 3–12 balls on two seeds, seen every 1/3,840 s; none solved again so).
+ */
+export const SMALL_TICK_BALLS = 32
+/**
  * Fixed-tick contacts: as DEEP_FRONTS, for a tick that had at most one pair a candidate before its widening
  * rounds (a push along a row). At a tick of 1/1,920 s a mass-100 ball striking 120 radius-0.5 balls 0.3 px
  * apart at 3,000 px/s leaves three (the push part-way along the row, balls at its speed behind balls at
