@@ -198,9 +198,10 @@ export const DEEP_FRONTS = 2
  * a try costs little there. Twelve balls in a closed elastic box, some at 2e4–1e5 px/s, all paired with
  * all after the first tick's rounds: the solve left two closing on straight lines 26 px into each other
  * before the next tick, and they went through each other between the ticks (6 and 10 of 200 such scenes
- * of 3–12 balls on two seeds, seen every 1/3,840 s; none solved again so).
+ * of 3–12 balls on two seeds, seen every 1/3,840 s; none solved again so; of 33–60 balls, 27 of 120 with
+ * this at 32, 5 at 64; 64 fast balls in a box cost 2.2× the step time at 1e5 px/s, 1.1× at 3e4).
  */
-export const SMALL_TICK_BALLS = 32
+export const SMALL_TICK_BALLS = 64
 /**
  * Fixed-tick contacts: as DEEP_FRONTS, for a tick that had at most one pair a candidate before its widening
  * rounds (a push along a row). At a tick of 1/1,920 s a mass-100 ball striking 120 radius-0.5 balls 0.3 px
