@@ -155,9 +155,10 @@ let wallFace = 0
  * or is nearer it than the group's overlaps add up to (a push toward the wall would be held there:
  * anchorAtWall), else its heaviest (the one the sweeps move least), on a tie the one nearer a wall, then the
  * lower index. Sets groupIsRow: at least ROW_MIN_BALLS balls, the normal of every pair that touches or
- * overlaps (closer than PROJECTION_SLOP) within ROW_LINE_COS of the first one's; a group that is not a row is marked taken (the sweeps' work, not this pass's). A row of 55
- * balls of radius 11 struck by a ball 1e4 times heavier and pressed within itself, clear of the walls, was
- * taken out by the sweeps at about half its depth a tick: 0.36 px deep, more than 1e-3 px for 0.2 s.
+ * overlaps (closer than PROJECTION_SLOP) within ROW_LINE_COS of the first one's; a group that is not a row
+ * is marked taken (the sweeps' work, not this pass's). A row of 55 balls of radius 11 struck by a ball 1e4
+ * times heavier and pressed within itself, clear of the walls, was taken out by the sweeps at about half
+ * its depth a tick: 0.36 px deep, more than 1e-3 px for 0.2 s.
  */
 function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
   let near = s

@@ -2,8 +2,8 @@
 // solve meets what the wall sends back within the same tick: a row pressed into a wall is held by it, a ball
 // turned there meets the ball behind it. A candidate that only the wall turned, and that no pair, row or
 // projection then touched, met nothing: unless a pair could meet it on its own way to the wall or back from
-// it within the tick, it is given back the velocity it had, and the walls system turns
-// it at the wall itself, at its instant, as with contacts off. (Turned at the tick, such a ball left the
+// it within the tick, it is given back the velocity it had, and the walls system turns it at the wall
+// itself, at its instant, as with contacts off. (Turned at the tick, such a ball left the
 // tick short of its wall, up to a tick's travel: a ball at 700 px/s 5 px from its wall was sent back from
 // there, 10 px off its path, its 'wall' event stamped with the tick's time, whenever another ball was within
 // reach.) The 'wall' event of a candidate that keeps its turn is written here, at the tick.
@@ -36,8 +36,9 @@ let turnedVy = new Float64Array(64)
 /**
  * Gives back their velocities to the candidates only a wall turned (see above), unless one of its pairs
  * would meet within the tick at that velocity (on straight lines, the swept test) or on its way back from
- * the wall (meetsAfterWall), or its partner is such a candidate too (both reach the wall within the tick: the first back would meet the other on its way in,
- * between the ticks): those keep the turn. Reports the kept turns' 'wall' events at t.
+ * the wall (meetsAfterWall), or its partner is such a candidate too (both reach the wall within the tick:
+ * the first back would meet the other on its way in, between the ticks): those keep the turn. Reports the
+ * kept turns' 'wall' events at t.
  */
 export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): void {
   const B = w.Ball
