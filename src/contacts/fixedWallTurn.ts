@@ -11,7 +11,7 @@ import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'
-import { meetsWithinTick } from './fixedPairs.js'
+import { meetsWithinTick, swept } from './fixedPairs.js'
 
 /** changed bit of a candidate whose wall hit this tick was reported */
 export const WALL_REPORTED = 4
@@ -125,16 +125,5 @@ function meetsAfterWall(F: FixedContactState, a: number, b: number): boolean {
   if ((vx < 0 && ax - r - walls.minX < -vx * rest) || (vx > 0 && walls.maxX - ax - r < vx * rest)) return true
   if ((vy < 0 && ay - r - walls.minY < -vy * rest) || (vy > 0 && walls.maxY - ay - r < vy * rest)) return true
   // the swept test from the wall on, b where it is then
-  const dx = F.x[b]! + F.vx[b]! * tw - ax
-  const dy = F.y[b]! + F.vy[b]! * tw - ay
-  const S = r + F.r[b]!
-  const c = dx * dx + dy * dy - S * S
-  if (c <= 0) return true
-  const ux = F.vx[b]! - vx
-  const uy = F.vy[b]! - vy
-  const half = dx * ux + dy * uy
-  if (half >= 0) return false
-  const disc = half * half - (ux * ux + uy * uy) * c
-  if (disc < 0) return false
-  return c / (-half + Math.sqrt(disc)) <= rest
+  return swept(F.x[b]! + F.vx[b]! * tw - ax, F.y[b]! + F.vy[b]! * tw - ay, F.vx[b]! - vx, F.vy[b]! - vy, r + F.r[b]!, rest)
 }

@@ -68,7 +68,6 @@ export function addHoleToTable(world: BallWorld, eid: number): void {
   world.holeGrid.dirty = true
 }
 
-/** Takes a hole out of the planner's table, keeping the others in order; a no-op if it is not there. */
 /**
  * True when `eid` is a hole of the simulation: one addHole (or a restore) put in the table, whose row holds its
  * radius (> 0) until it is removed. A Hole component a game adds by hand makes no such row, and no hole.
@@ -78,6 +77,7 @@ export function isLiveHole(world: BallWorld, eid: number): boolean {
   return eid > 0 && eid < r.length && r[eid]! > 0
 }
 
+/** Takes a hole out of the planner's table, keeping the others in order; a no-op if it is not there. */
 export function removeHoleFromTable(world: BallWorld, eid: number): void {
   const t = world.holes
   let i = 0
