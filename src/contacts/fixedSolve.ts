@@ -119,8 +119,13 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // from half way on, a sweep whose only impulses met light balls again past their restitution with
     // heavier ones (or, with restitution 1, met a ball such a meeting turned earlier in the call) ends the
     // sweeps too: each turns a light ball between heavy ones it reaches within the tick, as between two
-    // walls, and the next sweep would turn it back (pumped crowds: docs/decisions.md §12)
-    if (it >= mid && remet > 0 && plain === 0) return false
+    // walls, and the next sweep would turn it back (pumped crowds: docs/decisions.md §12). Before half way,
+    // such a sweep brings half way forward: the jam and wall rules, then a sweep that ends them if it too
+    // is one (the sweeps between would only have turned those balls to and fro)
+    if (remet > 0 && plain === 0) {
+      if (it >= mid) return false
+      it = mid - 1
+    }
   }
   return false
 }
