@@ -874,7 +874,7 @@ describe('shrunk counterexamples of the long run', () => {
   // to the configured spacing (the scene then cost what it did before halving, about 0.3 s a step: its run
   // is near the run budget either way, so here only each step is held to its budget). Most of that speed was
   // squeezes squirting light balls along the walls; since a squeeze sends no ball further than its wall's
-  // length in a tick (src/contacts/fixedSolve.ts, pairWithWall), the scene keeps 1,000–8,800 pairs for its
+  // length in a tick (src/contacts/fixedWallPair.ts, pairWithWall), the scene keeps 1,000–8,800 pairs for its
   // 215 candidates instead of all 22,500, a finer tick does thin them, and it ends halved once after 4
   // halvings at the most (a squeezed crowd whose finer tick would not thin its pairs: the test below)
   it('fixed-tick contacts: 67 heavy radius-0.24 balls at 1e5 px/s and 147 light ones thrown at 3e4 px/s: no squeeze squirts the light balls across the box, and the halved tick goes back as the crowd spreads, every step within its budget', () => {

@@ -268,7 +268,7 @@ export const ROW_LINE_COS = Math.sqrt(3) / 2
 
 /**
  * Fixed-tick contacts: how many times lighter than its partner a ball must be for the pair to be solved
- * together with the closed wall the ball is driven into (src/contacts/fixedSolve.ts, pairWithWall). Against a partner less
+ * together with the closed wall the ball is driven into (src/contacts/fixedWallPair.ts, pairWithWall). Against a partner less
  * than this much heavier, the push runs down by m/(M + m) a sweep between the wall and the pair, and the
  * sweeps settle it; solved with the wall, a ball lost the part of its motion the wall would send back, and
  * an elastic gas drained (docs/decisions.md §12).

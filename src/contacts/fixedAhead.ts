@@ -1,5 +1,6 @@
 // The fixed-tick method's velocity solve (src/contacts/fixedSolve.ts): whether an impulse drives the lighter
-// ball of a pair into a closed wall, so that the pair and the wall are solved together (pairWithWall there).
+// ball of a pair into a closed wall, so that the pair and the wall are solved together
+// (src/contacts/fixedWallPair.ts).
 import { PROJECTION_SLOP } from '../config/tolerances.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'

@@ -12,6 +12,7 @@
 import type { FixedContactState } from '../world/fixedState.js'
 import { grownTo } from '../world/fixedState.js'
 import { packings } from './fixedOrder.js'
+import { VELOCITY } from './fixedWallTurn.js'
 
 let callN = 0
 let callPacking = -1
@@ -71,7 +72,7 @@ export function lastCallN(): number {
 
 /** Candidate i's velocity changes (first: the first time in the call); listed in F.hit the first time in the tick. */
 export function listChange(F: FixedContactState, i: number, first: boolean): void {
-  if ((F.changed[i]! & 1) === 0) {
+  if ((F.changed[i]! & VELOCITY) === 0) {
     hitPos[i] = F.hitCount
     F.hit[F.hitCount++] = i
   }

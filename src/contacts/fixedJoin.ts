@@ -20,6 +20,7 @@ import { box, boxRange, gridBox } from './fixedDense.js'
 import { unpackedJoin } from './fixedOrder.js'
 import { QR, QX, QY, queried, queryBox, sortByKeys } from './fixedSweep.js'
 import { nextSeenStamp } from '../world/contactState.js'
+import { MOVED } from './fixedWallTurn.js'
 
 /** Pairs the balls the projection moved with the unpaired balls they overlap; true when it paired any. */
 export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
@@ -33,7 +34,7 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   if (far.length < n0) far = new Int32Array(2 * n0)
   farCount = 0
   for (let k = 0; k < n0; k++) {
-    if ((F.changed[k]! & 2) === 0) continue
+    if ((F.changed[k]! & MOVED) === 0) continue
     const e = F.id[k]!
     const dx = F.x[k]! - B.x[e]!
     const dy = F.y[k]! - B.y[e]!

@@ -9,6 +9,7 @@ import type { FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'
 import { buildAdjacency, normal, nrm } from './fixedPairs.js'
 import { keepInside, pushApart } from './fixedPush.js'
+import { MOVED } from './fixedWallTurn.js'
 
 /**
  * The sweeps ran out with overlaps left: a row or a pile pressed into a closed wall, or a row pressed
@@ -106,7 +107,7 @@ function spread(w: BallWorld, F: FixedContactState, size: number, anyPair: boole
       F.x[v] = F.x[v]! - gap * lay[L_X]!
       F.y[v] = F.y[v]! - gap * lay[L_Y]!
       keepInside(w, F, v)
-      F.changed[v]! |= 2
+      F.changed[v]! |= MOVED
     }
     state[v] = 2
     for (let q = F.adjStart[v]!, e = F.adjStart[v + 1]!; q < e; q++) {

@@ -7,6 +7,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'
 import { nrm } from './fixedPairs.js'
+import { MOVED } from './fixedWallTurn.js'
 
 /** whether the last pushApart() moved ball a, ball b of its pair */
 export let movedA = false
@@ -41,8 +42,8 @@ export function pushApart(w: BallWorld, F: FixedContactState, p: number, gap: nu
     F.y[a] = F.y[a]! - left * ny
     keepInside(w, F, a)
   }
-  F.changed[a]! |= 2
-  F.changed[b]! |= 2
+  F.changed[a]! |= MOVED
+  F.changed[b]! |= MOVED
   movedA = F.x[a] !== ax || F.y[a] !== ay
   movedB = F.x[b] !== bx || F.y[b] !== by
 }

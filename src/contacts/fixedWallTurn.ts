@@ -19,12 +19,14 @@ export const WALL_REPORTED = 4
 export const WALL_TURNED = 8
 /** changed bit of a candidate the wall turned by BALL_SETTLE_SPEED or more: a 'wall' event if it keeps the turn */
 export const WALL_DUE = 16
+/** changed bit of a candidate whose velocity the solve changed (a pair, a squeeze, a jam, a held row, a wall) */
+export const VELOCITY = 1
 /** changed bit of a candidate whose velocity a pair, a squeeze, a jam or a held row changed */
 const HIT = 32
-/** changed bits a pair, a squeeze, a jam or a held row sets: the velocity's (1) and HIT */
-export const STRUCK = 1 | HIT
+/** changed bits a pair, a squeeze, a jam or a held row sets: VELOCITY and HIT */
+export const STRUCK = VELOCITY | HIT
 /** changed bit of a candidate the projection moved (src/contacts/fixedPush.ts) */
-const MOVED = 2
+export const MOVED = 2
 
 /** changed bit of a candidate keepWallTurns gives back its velocity (within the call) */
 const LONE = 64

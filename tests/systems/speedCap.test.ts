@@ -79,7 +79,7 @@ describe('contacts never leave a velocity beyond MAX_SPEED', () => {
   it('fixed: 12 balls of mass 1e9 at 3e5 px/s pumping 12 of mass 1e-8 in a closed elastic box, 1 s: every velocity read goes back through setBallVelocity', () => {
     // at 1e5 px/s this seed's light balls passed MAX_SPEED at the 57th step (2.5e7 px/s within 10 s) before
     // the cap; that was a squeeze's squirt along a wall, which a tick now leaves to the sweeps beyond the
-    // wall's length a tick (src/contacts/fixedSolve.ts, pairWithWall), and 1e5 px/s pumps them to 3.2e6–3.5e6
+    // wall's length a tick (src/contacts/fixedWallPair.ts, pairWithWall), and 1e5 px/s pumps them to 3.2e6–3.5e6
     // px/s in 10 s (seeds 7–9); at 3e5, 8.1e6 within 1 s with seed 8 (seed 7 took 8.8e6 until a ball only
     // a wall turned in a tick kept its path to the wall, src/contacts/fixedWallTurn.ts; 4.8e6 since)
     let seed = 8
