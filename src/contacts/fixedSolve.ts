@@ -109,7 +109,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     plain = 0
     if (listed) {
       for (let p = nextPair(); p >= 0; p = nextPair()) if (impulse(w, F, p)) moved = true
-    } else for (let k = 0; k < F.pairCount; k++) if (impulse(w, F, back ? F.pairCount - 1 - k : k)) moved = true
+    } else if (walkAll(w, F, back)) moved = true
     turned |= wallVelocities(w, F)
     if ((turned & 1) !== 0) moved = true
     // a sweep whose only changes were balls turned between two walls they both reach within the tick ends
@@ -158,10 +158,32 @@ function noteChange(F: FixedContactState, i: number): void {
  * whether it did.
  */
 function impulse(w: BallWorld, F: FixedContactState, p: number): boolean {
+  const at = testedAt[p]!
+  if (changedAt[F.pairA[p]!]! <= at && changedAt[F.pairB[p]!]! <= at) return false
+  return test(w, F, p)
+}
+
+/** A sweep over every pair, forward or backward (impulse on each): whether any took an impulse. */
+function walkAll(w: BallWorld, F: FixedContactState, back: boolean): boolean {
+  const n = F.pairCount
+  const A = F.pairA
+  const B = F.pairB
+  const T = testedAt
+  const C = changedAt
+  let moved = false
+  for (let k = 0; k < n; k++) {
+    const p = back ? n - 1 - k : k
+    const at = T[p]!
+    if (C[A[p]!]! <= at && C[B[p]!]! <= at) continue
+    if (test(w, F, p)) moved = true
+  }
+  return moved
+}
+
+/** impulse past its stamps: pair p tested now. */
+function test(w: BallWorld, F: FixedContactState, p: number): boolean {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
-  const at = testedAt[p]!
-  if (changedAt[a]! <= at && changedAt[b]! <= at) return false
   testedAt[p] = clock
   if (!meetsWithinTick(F, a, b)) return false
   const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
