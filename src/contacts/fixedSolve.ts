@@ -120,8 +120,8 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // heavier ones (or, with restitution 1, met a ball such a meeting turned earlier in the call) ends the
     // sweeps too: each turns a light ball between heavy ones it reaches within the tick, as between two
     // walls, and the next sweep would turn it back (pumped crowds: docs/decisions.md §12). Before half way,
-    // such a sweep brings half way forward: the jam and wall rules, then a sweep that ends them if it too
-    // is one (the sweeps between would only have turned those balls to and fro)
+    // such a sweep brings half way forward: the jam and wall rules, then a sweep that ends the call if it
+    // too is one (the sweeps between would only have turned those balls to and fro)
     if (remet > 0 && plain === 0) {
       if (it >= mid) return false
       it = mid - 1
@@ -160,7 +160,7 @@ function noteChange(F: FixedContactState, i: number): void {
 function impulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   const at = testedAt[p]!
   if (changedAt[F.pairA[p]!]! <= at && changedAt[F.pairB[p]!]! <= at) return false
-  return test(w, F, p)
+  return impulseNow(w, F, p)
 }
 
 /** A sweep over every pair, forward or backward (impulse on each): whether any took an impulse. */
@@ -175,13 +175,13 @@ function walkAll(w: BallWorld, F: FixedContactState, back: boolean): boolean {
     const p = back ? n - 1 - k : k
     const at = T[p]!
     if (C[A[p]!]! <= at && C[B[p]!]! <= at) continue
-    if (test(w, F, p)) moved = true
+    if (impulseNow(w, F, p)) moved = true
   }
   return moved
 }
 
-/** impulse past its stamps: pair p tested now. */
-function test(w: BallWorld, F: FixedContactState, p: number): boolean {
+/** impulse without its stamp check: pair p is tested now (its stamp set), and takes the impulse if it meets. */
+function impulseNow(w: BallWorld, F: FixedContactState, p: number): boolean {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   testedAt[p] = clock
