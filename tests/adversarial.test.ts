@@ -1289,10 +1289,12 @@ describe('shrunk counterexamples of the long run', () => {
     // A pair or two left closing at the end is what such piles leave: over 72 variants of this scene (the two
     // bursts' seeds + 0…35, both restitutions), 36 end with one or more (144 pair sides in all) with the code
     // before a ball only a wall turns in a tick kept its path to the wall (src/contacts/fixedWallTurn.ts), 44
-    // (154) since; this one ends with 2 pairs (e = 0) and 1 (e = 0.5) since, none before
+    // (154) since; this one ends with 2 pairs (e = 0) and 1 (e = 0.5) since, none before. At e = 0.5 the
+    // tick is also halved for the heavy balls' travel (CONTACT_TRAVEL_HALVINGS, 4 by default) while they
+    // close on the pile: 372 ticks
     expect(pressing).toBeLessThanOrEqual(4)
     expect(halvings).toBe(0)
-    expect(ticks).toBeLessThan(300)
+    expect(ticks).toBeLessThan(e === 0 ? 300 : 450)
   })
 
   // the contact normal from the swept test was d + u·τ over the radii's sum: a difference of two lengths of a

@@ -84,8 +84,9 @@ export interface BallPhysicsConfig {
   /**
    * With BALL_COLLISIONS 'fixed' and BALL_RESTITUTION above 0: most halvings of CONTACT_TICK taken where
    * balls close on their nearest partner by more than half their size a tick, which would otherwise lose an
-   * elastic crowd's energy to the solve's inelastic bounds (README: Ball-ball contacts); 0 (the default)
-   * leaves it off; at 4 the tick goes down to CONTACT_TICK / 16 on this account.
+   * elastic crowd's energy to the solve's inelastic bounds, and let a fast ball in a crowd of more than
+   * SMALL_TICK_BALLS pass through its neighbours (README: Ball-ball contacts); at 4 (the default) the tick
+   * goes down to CONTACT_TICK / 16 on this account; 0 leaves it off.
    */
   CONTACT_TRAVEL_HALVINGS: number
   /** With BALL_COLLISIONS 'fixed': most sweeps per tick of the velocity solve and of the overlap projection. */
@@ -154,7 +155,7 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   BALL_COLLISIONS: 'off',
   PREDICTION_HORIZON: 0.1,
   CONTACT_TICK: 1 / 120,
-  CONTACT_TRAVEL_HALVINGS: 0,
+  CONTACT_TRAVEL_HALVINGS: 4,
   CONTACT_ITERATIONS: 32,
   CONTACT_WORK_BUDGET: 0,
   BALL_RESTITUTION: 0.9,
