@@ -209,12 +209,12 @@ function anchorOfGroup(w: BallWorld, F: FixedContactState, s: number): number {
       // a row: every pair that touches or overlaps along one line (a row pressed within itself that the
       // tick paired with a pile apart from it is still a row)
       normal(F, v, u)
-      if (!(nrm.gap < PROJECTION_SLOP)) {
-        // apart: not part of the line
-      } else if (lineX === 0 && lineY === 0) {
-        lineX = nrm.x
-        lineY = nrm.y
-      } else if (Math.abs(lineX * nrm.x + lineY * nrm.y) < ROW_LINE_COS) row = false
+      if (nrm.gap < PROJECTION_SLOP) {
+        if (lineX === 0 && lineY === 0) {
+          lineX = nrm.x
+          lineY = nrm.y
+        } else if (Math.abs(lineX * nrm.x + lineY * nrm.y) < ROW_LINE_COS) row = false
+      }
       if (nrm.gap < 0) depth2 -= nrm.gap
       if (state[u] !== 0) continue
       state[u] = 3
