@@ -5,8 +5,12 @@
 // 1e4 px/s, a push that runs the length of a row and back off a wall within one tick), a pair left closing
 // goes through itself before the next tick, and the projection then parts it on the far side. A pair closes
 // deep when, on straight lines at its present velocities, it closes within the tick by more than its gap
-// (none when it overlaps) and half the sum of its radii; a ball near a closed wall that still moves into it
-// within the tick turns there between ticks, back into whatever is behind it. A try of a tick of at most
+// (none when it overlaps) and its smaller radius: the smaller ball's centre would come inside the other
+// ball. (Half the sum of the radii, the same for like balls, let a small ball bounced between a big one and a
+// wall within the tick end it closing at 6,600 px/s, 5.2 px deep: a radius-2.3 ball wholly inside a
+// radius-8.6 one, out through its far side before the next tick; tests/systems/fixedDeep.test.ts.) A ball
+// near a closed wall that still moves into it within the tick turns there between ticks, back into whatever
+// is behind it. A try of a tick of at most
 // CHAIN_PAIRS_PER_BALL pairs a candidate that leaves either, where the finest spacing
 // (MAX_TICK_HALVINGS) would not, is solved again halved (systems/fixedContacts.ts, fixedRedo.ts): at a
 // finer tick each push runs through fewer balls. A tick of more pairs a candidate is solved again only
@@ -19,7 +23,7 @@ import { intoWalls } from './fixedGrid.js'
 
 /**
  * Whether pair (a, b) closes within `tick`, on straight lines at the present velocities, by more than its gap
- * (none when overlapping) and half its radii (a boolean, not the amount: a returned double is boxed).
+ * (none when overlapping) and its smaller radius (a boolean, not the amount: a returned double is boxed).
  */
 function closesDeep(F: FixedContactState, a: number, b: number, tick: number): boolean {
   const dx = F.x[b]! - F.x[a]!
@@ -35,7 +39,9 @@ function closesDeep(F: FixedContactState, a: number, b: number, tick: number): b
   const my = dy + uy * tau
   const d = Math.sqrt(dx * dx + dy * dy)
   const s = F.r[a]! + F.r[b]!
-  const allow = (d > s ? d - s : 0) + 0.5 * s
+  const ra = F.r[a]!
+  const rb = F.r[b]!
+  const allow = (d > s ? d - s : 0) + (ra < rb ? ra : rb)
   return d - Math.sqrt(mx * mx + my * my) > allow
 }
 

@@ -304,7 +304,9 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     // never halved for the balls' travel (CONTACT_TRAVEL_HALVINGS 0, the default); with that rule (4) the light
     // balls, at 1e5 px/s covering about 38 times the two radii of a pair a tick at 1/120 s, hold the tick at its
     // 4 halvings or more: 450-490 ticks, 0.98-0.99 of the energy kept (441-520 ticks, 0.94-0.99, since a
-    // meeting of a ball pumped earlier in a call counts as pumped: src/contacts/fixedSolve.ts)
+    // meeting of a ball pumped earlier in a call counts as pumped: src/contacts/fixedSolve.ts; 591-733 ticks,
+    // 0.95-0.99, in the same time, since a tick is solved again for a tiny ball left closing into a big one
+    // by more than its radius: src/contacts/fixedDeep.ts)
     for (const travel of [0, 4]) {
       const kept: number[] = []
       for (const seed of [1, 2, 3, 4, 5]) {
@@ -313,8 +315,8 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
         const energy = () => sim.balls().reduce((e, b) => e + F.mass[b]! * (sim.ballState(b).vx ** 2 + sim.ballState(b).vy ** 2), 0)
         const start = energy()
         for (let i = 0; i < 12; i++) sim.step(1 / 60)
-        // 24 ticks at 1/120 s, 16 times that at 4 halvings
-        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 560)
+        // 24 ticks at 1/120 s, 16 times that (384) at 4 halvings
+        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 800)
         const share = energy() / start
         expect(share).toBeLessThanOrEqual(1)
         kept.push(share)

@@ -1,0 +1,101 @@
+// The fixed-tick method: a tick whose solve leaves a pair closing through itself is solved again finer
+// (src/contacts/fixedDeep.ts). A small ball struck by a big one toward a wall it reaches within the tick is
+// bounced between the two, sweep by sweep, and the call can end with the wall's last turn sending it back
+// into the big ball. Judged by half the sum of the radii, that pair did not close "deep", yet the small ball
+// went wholly inside the big one and out through its far side before the next tick (found by
+// `npm run bench:first-contact`). Judged by the smaller radius, the tick is solved again and the two part.
+import fc from 'fast-check'
+import { describe, expect, it } from 'vitest'
+import { createBallPhysics } from '../../src/index'
+
+interface Ball {
+  x: number
+  y: number
+  vx: number
+  vy: number
+  r: number
+}
+interface Scene {
+  w: number
+  h: number
+  e: number
+  a: Ball
+  b: Ball
+}
+
+/** The deepest overlap of the two balls at the end of any step of 1/7,680 s over `seconds`. */
+function deepest(sc: Scene, halvings: number, seconds = 0.05): number {
+  const sim = createBallPhysics({ ROLLING_DECEL: 0, BALL_RESTITUTION: sc.e, BALL_COLLISIONS: 'fixed', CONTACT_TRAVEL_HALVINGS: halvings })
+  sim.setWalls({ minX: 0, minY: 0, maxX: sc.w, maxY: sc.h, restitution: sc.e })
+  const ia = sim.addBall({ x: sc.a.x, y: sc.a.y, vx: sc.a.vx, vy: sc.a.vy, radius: sc.a.r })
+  const ib = sim.addBall({ x: sc.b.x, y: sc.b.y, vx: sc.b.vx, vy: sc.b.vy, radius: sc.b.r })
+  let worst = 0
+  for (let s = 0; s < Math.round(seconds * 7680); s++) {
+    sim.step(1 / 7680)
+    const p = sim.ballState(ia)
+    const q = sim.ballState(ib)
+    worst = Math.max(worst, sc.a.r + sc.b.r - Math.hypot(q.x - p.x, q.y - p.y))
+  }
+  return worst
+}
+
+describe('fixed-tick contacts: a small ball bounced between a big one and a wall within a tick', () => {
+  // radius 2.3 at rest 27 px from the wall, struck by a radius-8.6 ball at 4,900 px/s: it went 5.2 px into
+  // the big ball (its centre inside it) at the default tick with the travel halving off
+  const wedged: Scene = {
+    w: 75.97406951341075,
+    h: 84.4430979654292,
+    e: 0.4370653872257707,
+    a: { x: 40.60596694385359, y: 11.35175985792997, vx: 8112.974197901782, vy: 3854.9900482929597, r: 8.624786450344931 },
+    b: { x: 44.755172002549806, y: 55.0864399510798, vx: 0, vy: 0, r: 2.3093111259138563 },
+  }
+  // radius 1.7 struck by a radius-10 ball at 68,000 px/s: 4.0 px deep with the travel halving on (the default)
+  const fast: Scene = {
+    w: 246.66545199099428,
+    h: 110.16453960367458,
+    e: 0.962168201629229,
+    a: { x: 147.23370156981576, y: 48.15281858261479, vx: 56721.30211591167, vy: -37616.5421417772, r: 9.980267587475344 },
+    b: { x: 16.829953630493197, y: 61.12480102290801, vx: 172.56380404611338, vy: 815.6647913229297, r: 1.7125423282310932 },
+  }
+
+  for (const [name, sc] of [['wedged', wedged], ['fast', fast]] as const) {
+    for (const halvings of [0, 4]) {
+      it(`${name} scene, CONTACT_TRAVEL_HALVINGS ${halvings}: never more than 1e-3 px deep at a step's end`, () => {
+        expect(deepest(sc, halvings)).toBeLessThanOrEqual(1e-3)
+      })
+    }
+  }
+
+  // judged by half the radii, the 418th run failed: radius 3.5 at rest 40.7 px from the wall, struck head on
+  // by a radius-14.4 ball at 21,762 px/s, e = 0.39
+  it('a small ball at rest (radius 0.5–5) struck toward a wall by a big one (5–25) at 1e3–3e4 px/s: its centre never inside the big ball at a step end (fast-check, default halvings)', () => {
+    fc.assert(
+      fc.property(
+        fc.record({
+          small: fc.double({ min: 0.5, max: 5, noNaN: true }),
+          big: fc.double({ min: 5, max: 25, noNaN: true }),
+          speed: fc.double({ min: 1e3, max: 3e4, noNaN: true }),
+          angle: fc.double({ min: -0.6, max: 0.6, noNaN: true }),
+          gap: fc.double({ min: 0.5, max: 40, noNaN: true }),
+          room: fc.double({ min: 0.5, max: 60, noNaN: true }),
+          e: fc.double({ min: 0.3, max: 1, noNaN: true }),
+        }),
+        ({ small, big, speed, angle, gap, room, e }) => {
+          // the small ball `room` px above the bottom wall, the big one `gap` px from it and driving it there
+          const h = 200
+          const by = h - small - room
+          const d = small + big + gap
+          const sc: Scene = {
+            w: 300,
+            h,
+            e,
+            a: { x: 150 - d * Math.sin(angle), y: by - d * Math.cos(angle), vx: speed * Math.sin(angle), vy: speed * Math.cos(angle), r: big },
+            b: { x: 150, y: by, vx: 0, vy: 0, r: small },
+          }
+          expect(deepest(sc, 4, 0.02)).toBeLessThan(small)
+        },
+      ),
+      { seed: 4242, numRuns: 1000 },
+    )
+  })
+})
