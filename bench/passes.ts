@@ -1,0 +1,117 @@
+// Fast balls of unlike sizes in small closed boxes, under the fixed tick: how often one ball goes into
+// another by more than half the smaller radius between the looks (every 1/3,840 s), which no tick's
+// projection would part on the side it came from. Counts, not times.
+//
+// Each scene (seeded): 13–42 balls in a closed square box of 200–600 px, radii 0.5–25 px (log-uniform;
+// masses by the default, as the cube of the radius), put down apart; 40 % of them at 1e3–1e5 px/s
+// (log-uniform), the rest at a twentieth of that, in random directions; restitution 1 or 0.9 (balls and
+// walls), no rolling deceleration; 0.5 s. Run at the default CONTACT_TRAVEL_HALVINGS (4) and at 0. For each
+// scene that has such a look, the deepest one: the two radii and speeds at that look. A ball the heavy ones
+// pump to several times 1e5 px/s covers more than its size even at the finest tick (CONTACT_TICK / 2^10),
+// where no solve can part it in time (src/contacts/fixedDeep.ts). Writes docs/results/passes.json.
+//
+//   npm run bench:passes [-- --scenes 600] [--seed N]
+import { createBallPhysics, type ConfigOverrides } from '../src/index'
+import { argValue, writeResult } from './lib'
+
+const SCENES = Number(argValue('--scenes') ?? 600)
+const SEED = Number(argValue('--seed') ?? 1)
+const LOOK = 1 / 3840
+const SECONDS = 0.5
+
+function random(seed: number): () => number {
+  let s = seed
+  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+}
+
+interface Ball {
+  x: number
+  y: number
+  vx: number
+  vy: number
+  radius: number
+}
+
+function draw(r: () => number): { box: number; e: number; balls: Ball[] } {
+  const n = 13 + Math.floor(30 * r())
+  const box = 200 + 400 * r()
+  const e = r() < 0.5 ? 1 : 0.9
+  const balls: Ball[] = []
+  for (let i = 0; i < n; i++) {
+    const radius = 0.5 * Math.exp(r() * Math.log(50))
+    for (let tries = 0; tries < 200; tries++) {
+      const x = radius + r() * (box - 2 * radius)
+      const y = radius + r() * (box - 2 * radius)
+      if (balls.some((b) => Math.hypot(b.x - x, b.y - y) < b.radius + radius + 0.5)) continue
+      const speed = 1e3 * Math.exp(r() * Math.log(100)) * (r() < 0.4 ? 1 : 0.05)
+      const a = 2 * Math.PI * r()
+      balls.push({ x, y, vx: speed * Math.cos(a), vy: speed * Math.sin(a), radius })
+      break
+    }
+  }
+  return { box, e, balls }
+}
+
+interface Deep {
+  scene: number
+  depth: number
+  t: number
+  radii: [number, number]
+  speeds: [number, number]
+}
+
+function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): Deep | null {
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: sc.e, ROLLING_DECEL: 0, ...config }, { capacity: sc.balls.length + 8 })
+  sim.setWalls({ minX: 0, minY: 0, maxX: sc.box, maxY: sc.box, restitution: sc.e })
+  const ids = sc.balls.map((b) => sim.addBall(b))
+  let worst: Deep | null = null
+  for (let s = 0; s < Math.round(SECONDS / LOOK); s++) {
+    sim.step(LOOK)
+    sim.drainEvents()
+    const st = ids.map((b) => sim.ballState(b))
+    for (let i = 0; i < st.length; i++) {
+      for (let j = i + 1; j < st.length; j++) {
+        const p = st[i]!
+        const q = st[j]!
+        const depth = p.radius + q.radius - Math.hypot(p.x - q.x, p.y - q.y)
+        if (depth > 0.5 * Math.min(p.radius, q.radius) && depth > (worst?.depth ?? 0)) {
+          worst = { scene: k, depth, t: sim.time, radii: [p.radius, q.radius], speeds: [Math.hypot(p.vx, p.vy), Math.hypot(q.vx, q.vy)] }
+        }
+      }
+    }
+  }
+  return worst
+}
+
+const SETTINGS: { name: string; config: ConfigOverrides }[] = [
+  { name: 'default (CONTACT_TRAVEL_HALVINGS 4)', config: {} },
+  { name: 'CONTACT_TRAVEL_HALVINGS 0', config: { CONTACT_TRAVEL_HALVINGS: 0 } },
+]
+const results: Record<string, { scenesWithPass: number; deepest: Deep[] }> = {}
+const t0 = performance.now()
+for (const setting of SETTINGS) {
+  const r = random(SEED * 7919 + 17)
+  const found: Deep[] = []
+  for (let k = 0; k < SCENES; k++) {
+    const d = play(k, draw(r), setting.config)
+    if (d !== null) found.push(d)
+  }
+  found.sort((a, b) => b.depth - a.depth)
+  results[setting.name] = { scenesWithPass: found.length, deepest: found }
+  console.log(`${setting.name.padEnd(36)} a ball more than half the smaller radius into another in ${found.length} of ${SCENES} scenes`)
+  for (const d of found.slice(0, 8)) {
+    console.log(`    scene ${d.scene}: ${d.depth.toFixed(2)} px at t ${d.t.toFixed(4)}, radii ${d.radii.map((x) => x.toFixed(1)).join(' / ')}, speeds ${d.speeds.map((x) => x.toFixed(0)).join(' / ')} px/s`)
+  }
+}
+const seconds = (performance.now() - t0) / 1000
+console.log(`${seconds.toFixed(0)} s`)
+const file = writeResult('passes', {
+  scenes: SCENES,
+  seed: SEED,
+  look: LOOK,
+  seconds: SECONDS,
+  runSeconds: seconds,
+  definition: 'a scene counts when, at the end of any step of 1/3,840 s, two balls are more than half the smaller radius into each other; deepest lists each such scene\'s deepest look (radii and speeds of the two balls there)',
+  settings: results,
+})
+console.log(`wrote ${file}`)
