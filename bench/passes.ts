@@ -5,7 +5,8 @@
 // Each scene (seeded): 13–42 balls in a closed square box of 200–600 px, radii 0.5–25 px (log-uniform;
 // masses by the default, as the cube of the radius), put down apart; 40 % of them at 1e3–1e5 px/s
 // (log-uniform), the rest at a twentieth of that, in random directions; restitution 1 or 0.9 (balls and
-// walls), no rolling deceleration; 0.5 s. Run at the default CONTACT_TRAVEL_HALVINGS (4) and at 0. For each
+// walls), no rolling deceleration; 0.5 s. Run at the default CONTACT_TRAVEL_HALVINGS (4), at 0, and with the
+// same scenes at restitution 0 (where the tick is not halved for travel). For each
 // scene that has such a look, the deepest one: the two radii and speeds at that look. A ball the heavy ones
 // pump to several times 1e5 px/s covers more than its size even at the finest tick (CONTACT_TICK / 2^10),
 // where no solve can part it in time (src/contacts/fixedDeep.ts). Writes docs/results/passes.json.
@@ -60,11 +61,15 @@ interface Deep {
   speeds: [number, number]
 }
 
+/** the deepest overlap at a look on a tick of 1/120 s (what a game stepping at 60 or 120 Hz draws), over the last play */
+let onTick = 0
+
 function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): Deep | null {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: sc.e, ROLLING_DECEL: 0, ...config }, { capacity: sc.balls.length + 8 })
   sim.setWalls({ minX: 0, minY: 0, maxX: sc.box, maxY: sc.box, restitution: sc.e })
   const ids = sc.balls.map((b) => sim.addBall(b))
   let worst: Deep | null = null
+  onTick = 0
   for (let s = 0; s < Math.round(SECONDS / LOOK); s++) {
     sim.step(LOOK)
     sim.drainEvents()
@@ -74,6 +79,7 @@ function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): 
         const p = st[i]!
         const q = st[j]!
         const depth = p.radius + q.radius - Math.hypot(p.x - q.x, p.y - q.y)
+        if ((s + 1) % 32 === 0 && depth > onTick) onTick = depth
         if (depth > 0.5 * Math.min(p.radius, q.radius) && depth > (worst?.depth ?? 0)) {
           worst = { scene: k, depth, t: sim.time, radii: [p.radius, q.radius], speeds: [Math.hypot(p.vx, p.vy), Math.hypot(q.vx, q.vy)] }
         }
@@ -83,22 +89,29 @@ function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): 
   return worst
 }
 
-const SETTINGS: { name: string; config: ConfigOverrides }[] = [
+const SETTINGS: { name: string; config: ConfigOverrides; e?: number }[] = [
   { name: 'default (CONTACT_TRAVEL_HALVINGS 4)', config: {} },
   { name: 'CONTACT_TRAVEL_HALVINGS 0', config: { CONTACT_TRAVEL_HALVINGS: 0 } },
+  // the same scenes with restitution 0 (balls and walls), where the tick is not halved for travel
+  { name: 'restitution 0', config: {}, e: 0 },
 ]
-const results: Record<string, { scenesWithPass: number; deepest: Deep[] }> = {}
+const results: Record<string, { scenesWithPass: number; scenesOver1e3OnTicks: number; deepestOnTicks: number; deepest: Deep[] }> = {}
 const t0 = performance.now()
 for (const setting of SETTINGS) {
   const r = random(SEED * 7919 + 17)
   const found: Deep[] = []
+  let overOnTicks = 0
+  let deepestOnTicks = 0
   for (let k = 0; k < SCENES; k++) {
-    const d = play(k, draw(r), setting.config)
+    const sc = draw(r)
+    const d = play(k, setting.e === undefined ? sc : { ...sc, e: setting.e }, setting.config)
     if (d !== null) found.push(d)
+    if (onTick > 1e-3) overOnTicks++
+    deepestOnTicks = Math.max(deepestOnTicks, onTick)
   }
   found.sort((a, b) => b.depth - a.depth)
-  results[setting.name] = { scenesWithPass: found.length, deepest: found }
-  console.log(`${setting.name.padEnd(36)} a ball more than half the smaller radius into another in ${found.length} of ${SCENES} scenes`)
+  results[setting.name] = { scenesWithPass: found.length, scenesOver1e3OnTicks: overOnTicks, deepestOnTicks, deepest: found }
+  console.log(`${setting.name.padEnd(36)} a ball more than half the smaller radius into another in ${found.length} of ${SCENES} scenes; at looks on a 1/120 s tick, over 1e-3 px in ${overOnTicks} (deepest ${deepestOnTicks.toExponential(2)} px)`)
   for (const d of found.slice(0, 8)) {
     console.log(`    scene ${d.scene}: ${d.depth.toFixed(2)} px at t ${d.t.toFixed(4)}, radii ${d.radii.map((x) => x.toFixed(1)).join(' / ')}, speeds ${d.speeds.map((x) => x.toFixed(0)).join(' / ')} px/s`)
   }
@@ -111,7 +124,7 @@ const file = writeResult('passes', {
   look: LOOK,
   seconds: SECONDS,
   runSeconds: seconds,
-  definition: 'a scene counts when, at the end of any step of 1/3,840 s, two balls are more than half the smaller radius into each other; deepest lists each such scene\'s deepest look (radii and speeds of the two balls there)',
+  definition: 'a scene counts when, at the end of any step of 1/3,840 s, two balls are more than half the smaller radius into each other; deepest lists each such scene\'s deepest look (radii and speeds of the two balls there); scenesOver1e3OnTicks: scenes with two balls more than 1e-3 px into each other at a look on a tick of 1/120 s (what a game stepping at 60 or 120 Hz draws), deepestOnTicks the deepest such look',
   settings: results,
 })
 console.log(`wrote ${file}`)
