@@ -459,6 +459,28 @@ describe('fixed-tick contacts: a light ball turned between heavy ones', () => {
   }
 })
 
+describe('fixed-tick contacts: a light ball pushed along a wall by a heavy one, restitution 0', () => {
+  // The pair turns the light ball, the wall takes its motion into the wall, and the pair meets again, a
+  // little less of the push left each sweep. Its meetings past the restitution visits ended the call as a
+  // pumped light ball's do, with the heavy ball still closing on it: 1.39 px into it before a tick (0.058 s).
+  it('a ball of radius 6.07 moving into the wall at 300 px/s, 1 px from it, and one of radius 18.37 (27 times heavier) closing on it at 600 px/s: never more than 1e-3 px into each other at a look every 1/3,840 s', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 500, maxY: 500, restitution: 0 })
+    const heavy = sim.addBall({ x: 20.185, y: 54.992, vx: 0, vy: -600, radius: 18.37 })
+    const light = sim.addBall({ x: 7.146, y: 33.151, vx: -300, vy: 0, radius: 6.07 })
+    let deepest = 0
+    for (let s = 0; s < 384; s++) {
+      sim.step(1 / 3840)
+      const a = sim.ballState(heavy)
+      const b = sim.ballState(light)
+      deepest = Math.max(deepest, 18.37 + 6.07 - Math.hypot(a.x - b.x, a.y - b.y))
+    }
+    expect(deepest).toBeLessThanOrEqual(1e-3)
+    // the light ball went up along the wall, ahead of the heavy one
+    expect(sim.ballState(light).y).toBeLessThan(sim.ballState(heavy).y)
+  })
+})
+
 describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src/contacts/fixedSqueeze.ts)', () => {
   // Touching both as they close on it, the two contacts are solved together: the heavy balls meet through
   // the light one, parted at e = 1 and stopped at e = 0. Before, the sweeps turned the light ball between
