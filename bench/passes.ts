@@ -61,15 +61,16 @@ interface Deep {
   speeds: [number, number]
 }
 
-/** the deepest overlap at a look on a tick of 1/120 s (what a game stepping at 60 or 120 Hz draws), over the last play */
-let onTick = 0
-
-function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): Deep | null {
+/**
+ * One scene under `config`: its deepest look past half the smaller radius (null if none), and its deepest
+ * overlap at a look on a tick of 1/120 s (what a game stepping at 60 or 120 Hz draws).
+ */
+function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): { worst: Deep | null; onTick: number } {
   const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: sc.e, ROLLING_DECEL: 0, ...config }, { capacity: sc.balls.length + 8 })
   sim.setWalls({ minX: 0, minY: 0, maxX: sc.box, maxY: sc.box, restitution: sc.e })
   const ids = sc.balls.map((b) => sim.addBall(b))
   let worst: Deep | null = null
-  onTick = 0
+  let onTick = 0
   for (let s = 0; s < Math.round(SECONDS / LOOK); s++) {
     sim.step(LOOK)
     sim.drainEvents()
@@ -86,7 +87,7 @@ function play(k: number, sc: ReturnType<typeof draw>, config: ConfigOverrides): 
       }
     }
   }
-  return worst
+  return { worst, onTick }
 }
 
 const SETTINGS: { name: string; config: ConfigOverrides; e?: number }[] = [
@@ -104,8 +105,8 @@ for (const setting of SETTINGS) {
   let deepestOnTicks = 0
   for (let k = 0; k < SCENES; k++) {
     const sc = draw(r)
-    const d = play(k, setting.e === undefined ? sc : { ...sc, e: setting.e }, setting.config)
-    if (d !== null) found.push(d)
+    const { worst, onTick } = play(k, setting.e === undefined ? sc : { ...sc, e: setting.e }, setting.config)
+    if (worst !== null) found.push(worst)
     if (onTick > 1e-3) overOnTicks++
     deepestOnTicks = Math.max(deepestOnTicks, onTick)
   }

@@ -38,9 +38,9 @@ function closesDeep(F: FixedContactState, a: number, b: number, tick: number): b
   const mx = dx + ux * tau
   const my = dy + uy * tau
   const d = Math.sqrt(dx * dx + dy * dy)
-  const s = F.r[a]! + F.r[b]!
   const ra = F.r[a]!
   const rb = F.r[b]!
+  const s = ra + rb
   const allow = (d > s ? d - s : 0) + (ra < rb ? ra : rb)
   return d - Math.sqrt(mx * mx + my * my) > allow
 }
