@@ -6,35 +6,29 @@
 // `npm run bench:first-contact`). Judged by the smaller radius, the tick is solved again and the two part.
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics } from '../../src/index'
+import { createBallPhysics, type BallSpec } from '../../src/index'
 
-interface Ball {
-  x: number
-  y: number
-  vx: number
-  vy: number
-  r: number
-}
+/** A closed box of w × h px with restitution e (balls and walls) and two balls, each with its radius. */
 interface Scene {
   w: number
   h: number
   e: number
-  a: Ball
-  b: Ball
+  a: BallSpec & { radius: number }
+  b: BallSpec & { radius: number }
 }
 
 /** The deepest overlap of the two balls at the end of any step of 1/7,680 s over `seconds`. */
 function deepest(sc: Scene, halvings: number, seconds = 0.05): number {
   const sim = createBallPhysics({ ROLLING_DECEL: 0, BALL_RESTITUTION: sc.e, BALL_COLLISIONS: 'fixed', CONTACT_TRAVEL_HALVINGS: halvings })
   sim.setWalls({ minX: 0, minY: 0, maxX: sc.w, maxY: sc.h, restitution: sc.e })
-  const ia = sim.addBall({ x: sc.a.x, y: sc.a.y, vx: sc.a.vx, vy: sc.a.vy, radius: sc.a.r })
-  const ib = sim.addBall({ x: sc.b.x, y: sc.b.y, vx: sc.b.vx, vy: sc.b.vy, radius: sc.b.r })
+  const ia = sim.addBall(sc.a)
+  const ib = sim.addBall(sc.b)
   let worst = 0
   for (let s = 0; s < Math.round(seconds * 7680); s++) {
     sim.step(1 / 7680)
     const p = sim.ballState(ia)
     const q = sim.ballState(ib)
-    worst = Math.max(worst, sc.a.r + sc.b.r - Math.hypot(q.x - p.x, q.y - p.y))
+    worst = Math.max(worst, sc.a.radius + sc.b.radius - Math.hypot(q.x - p.x, q.y - p.y))
   }
   return worst
 }
@@ -46,16 +40,16 @@ describe('fixed-tick contacts: a small ball bounced between a big one and a wall
     w: 75.97406951341075,
     h: 84.4430979654292,
     e: 0.4370653872257707,
-    a: { x: 40.60596694385359, y: 11.35175985792997, vx: 8112.974197901782, vy: 3854.9900482929597, r: 8.624786450344931 },
-    b: { x: 44.755172002549806, y: 55.0864399510798, vx: 0, vy: 0, r: 2.3093111259138563 },
+    a: { x: 40.60596694385359, y: 11.35175985792997, vx: 8112.974197901782, vy: 3854.9900482929597, radius: 8.624786450344931 },
+    b: { x: 44.755172002549806, y: 55.0864399510798, vx: 0, vy: 0, radius: 2.3093111259138563 },
   }
   // radius 1.7 struck by a radius-10 ball at 68,000 px/s: 4.0 px deep with the travel halving on (the default)
   const fast: Scene = {
     w: 246.66545199099428,
     h: 110.16453960367458,
     e: 0.962168201629229,
-    a: { x: 147.23370156981576, y: 48.15281858261479, vx: 56721.30211591167, vy: -37616.5421417772, r: 9.980267587475344 },
-    b: { x: 16.829953630493197, y: 61.12480102290801, vx: 172.56380404611338, vy: 815.6647913229297, r: 1.7125423282310932 },
+    a: { x: 147.23370156981576, y: 48.15281858261479, vx: 56721.30211591167, vy: -37616.5421417772, radius: 9.980267587475344 },
+    b: { x: 16.829953630493197, y: 61.12480102290801, vx: 172.56380404611338, vy: 815.6647913229297, radius: 1.7125423282310932 },
   }
 
   for (const [name, sc] of [['wedged', wedged], ['fast', fast]] as const) {
@@ -89,8 +83,8 @@ describe('fixed-tick contacts: a small ball bounced between a big one and a wall
             w: 300,
             h,
             e,
-            a: { x: 150 - d * Math.sin(angle), y: by - d * Math.cos(angle), vx: speed * Math.sin(angle), vy: speed * Math.cos(angle), r: big },
-            b: { x: 150, y: by, vx: 0, vy: 0, r: small },
+            a: { x: 150 - d * Math.sin(angle), y: by - d * Math.cos(angle), vx: speed * Math.sin(angle), vy: speed * Math.cos(angle), radius: big },
+            b: { x: 150, y: by, vx: 0, vy: 0, radius: small },
           }
           expect(deepest(sc, 4, 0.02)).toBeLessThan(small)
         },
