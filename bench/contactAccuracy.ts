@@ -13,7 +13,7 @@
 //   npm run bench:contact-accuracy
 import { DEFAULT_PANEL, createBallPhysics, type ConfigOverrides } from '../src/index'
 import { contactAccuracyFigure, type AccuracyPoint } from './charts'
-import { argValue, writeFigure, writeResult } from './lib'
+import { argValue, random, writeFigure, writeResult } from './lib'
 
 const SEEDS = Number(argValue('--seeds') ?? 24)
 const DT = 1 / 60
@@ -30,11 +30,6 @@ const METHODS: Method[] = [
   ...[1 / 60, 1 / 120, 1 / 240, 1 / 480, 1 / 960].map((tick) => ({ name: `fixed, tick 1/${Math.round(1 / tick)} s`, config: { BALL_COLLISIONS: 'fixed' as const, CONTACT_TICK: tick } })),
   { name: 'contacts off', config: { BALL_COLLISIONS: 'off' } },
 ]
-
-function random(seed: number): () => number {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-}
 
 /** Ends of every ball ('h<id>', 'out', 'rest') and the run's cost, ns per ball-step. */
 function play(balls: number, seed: number, config: ConfigOverrides, jitter = 0): { ends: string[]; ns: number } {

@@ -6,6 +6,7 @@
 //          ±0.4 rad), the design's deceleration.
 // Every ball is put down apart from the others.
 import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
+import { random } from './lib'
 
 /** the balls' radius (the default) */
 export const R = 11
@@ -20,11 +21,6 @@ export interface Scene {
   decel: number
   balls: { x: number; y: number; vx: number; vy: number }[]
   holes: { x: number; y: number }[]
-}
-
-function random(seed: number): () => number {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
 }
 
 export function gas(n: number): Scene {

@@ -22,7 +22,7 @@
 //
 //   npm run bench:first-contact [-- --scenes 3000] [--seed N] [--show]
 import { createBallPhysics, type BallPhysics, type ConfigOverrides } from '../src/index'
-import { argValue, writeResult } from './lib'
+import { argValue, random, writeResult } from './lib'
 
 const SCENES = Number(argValue('--scenes') ?? 3000)
 /** print each scene in which a ball's centre came within the other ball (to replay it) */
@@ -44,11 +44,6 @@ interface Scene {
   e: number
   a: Ball
   b: Ball
-}
-
-function random(seed: number): () => number {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
 }
 
 const logUniform = (r: () => number, lo: number, hi: number) => lo * Math.exp(r() * Math.log(hi / lo))

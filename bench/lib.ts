@@ -10,6 +10,15 @@ import { renderSvg } from '../scripts/vegaSvg'
 /** Step of every benchmark scene, s. */
 export const DT = 1 / 120
 
+/**
+ * The benchmarks' seeded scenes: the Park–Miller minimal standard generator, uniform in (0, 1). Integer
+ * arithmetic exact in doubles, so a seed draws the same scene in every run and engine.
+ */
+export function random(seed: number): () => number {
+  let s = seed
+  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+}
+
 /** Value of `--name X` on the command line, or undefined. */
 export function argValue(name: string): string | undefined {
   const i = process.argv.indexOf(name)

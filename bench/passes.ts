@@ -13,17 +13,12 @@
 //
 //   npm run bench:passes [-- --scenes 600] [--seed N]
 import { createBallPhysics, type ConfigOverrides } from '../src/index'
-import { argValue, writeResult } from './lib'
+import { argValue, random, writeResult } from './lib'
 
 const SCENES = Number(argValue('--scenes') ?? 600)
 const SEED = Number(argValue('--seed') ?? 1)
 const LOOK = 1 / 3840
 const SECONDS = 0.5
-
-function random(seed: number): () => number {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-}
 
 interface Ball {
   x: number

@@ -111,7 +111,8 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
       for (let p = nextPair(); p >= 0; p = nextPair()) if (impulse(w, F, p)) moved = true
     } else if (walkAll(w, F, back)) moved = true
     turned |= wallVelocities(w, F)
-    if ((turned & 1) !== 0) moved = true
+    const walled = (turned & 1) !== 0
+    if (walled) moved = true
     // a sweep whose only changes were balls turned between two walls they both reach within the tick ends
     // the sweeps: the next would turn them back, and the one after that again, for ever (pumping light balls
     // among heavy ones: docs/known-failures.md). It ends unconverged (the next call tests every pair)
@@ -126,7 +127,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
     // turned by the pair and then loses its motion into the wall, a little less of the push left each
     // sweep, and nothing is pumped (ended early, the pair went on closing: up to 4.2 px deep before the
     // next tick, docs/known-failures.md)
-    if (remet > 0 && plain === 0 && !(S[S_E] === 0 && (turned & 1) !== 0)) {
+    if (remet > 0 && plain === 0 && !(S[S_E] === 0 && walled)) {
       if (it >= mid) return false
       it = mid - 1
     }
