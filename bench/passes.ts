@@ -12,7 +12,7 @@
 // where no solve can part it in time (src/contacts/fixedDeep.ts). Writes docs/results/passes.json.
 //
 //   npm run bench:passes [-- --scenes 600] [--seed N]
-import { createBallPhysics, type ConfigOverrides } from '../src/index'
+import { createBallPhysics, type BallSpec, type ConfigOverrides } from '../src/index'
 import { argValue, random, writeResult } from './lib'
 
 const SCENES = Number(argValue('--scenes') ?? 600)
@@ -20,13 +20,8 @@ const SEED = Number(argValue('--seed') ?? 1)
 const LOOK = 1 / 3840
 const SECONDS = 0.5
 
-interface Ball {
-  x: number
-  y: number
-  vx: number
-  vy: number
-  radius: number
-}
+/** a ball as put down, with its radius */
+type Ball = BallSpec & { radius: number }
 
 function draw(r: () => number): { box: number; e: number; balls: Ball[] } {
   const n = 13 + Math.floor(30 * r())
