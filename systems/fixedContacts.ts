@@ -201,7 +201,7 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
     }
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
-    converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0)
+    converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0, pairs)
   }
 }
 

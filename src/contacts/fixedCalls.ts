@@ -1,9 +1,14 @@
 // Fixed-tick contacts: what the velocity solve (src/contacts/fixedSolve.ts) keeps from one call to the next
 // within a tick, so that a push running along a row of thousands of balls (a widening round and a call a
 // ball, src/contacts/fixedReach.ts) costs each call its few balls, not the whole row:
-//   - which calls keep the stamps of the one before: a call after one that converged, with no candidate
-//     renumbered in between (src/contacts/fixedOrder.ts, packings). Its old pairs were all tested after
-//     their balls' last change, so only its new pairs and the balls it changes are looked at;
+//   - which calls keep the stamps of the one before: a widening round's call, with no candidate renumbered
+//     since the call before (src/contacts/fixedOrder.ts, packings). After a call that converged, its old
+//     pairs were all tested after their balls' last change, so only its new pairs and the balls it changes
+//     are looked at; after one that did not (its sweeps ran out, or ended on a pumped crowd), its first sweep
+//     walks every pair but tests only those with a ball changed since their last test, as a later sweep does
+//     (a crowd of fast heavy balls pumping light ones between them tested every pair again at each of its
+//     rounds: a third of its tests). The rounds (src/contacts/fixedRounds.ts, and the rounds' bound in
+//     systems/fixedContacts.ts) take only a call after one that converged as keeping;
 //   - the candidates a call changed (src/contacts/fixedRounds.ts) and each candidate's place in F.hit;
 //   - in a call that keeps the stamps, sweeps that visit only the pairs that can be met again: those of the
 //     balls changed since their last test, taken from a heap in the order a whole sweep visits them (by
@@ -16,7 +21,9 @@ import { VELOCITY } from './fixedWallTurn.js'
 
 let callN = 0
 let callPacking = -1
+/** the call keeps the stamps of the one before (stamped), and that one converged (kept) */
 let kept = false
+let stamped = false
 /** the candidates the last call changed, each once, in the order it did */
 let callHits = new Int32Array(64)
 let callHitCount = 0
@@ -24,20 +31,24 @@ let callHitCount = 0
 let hitPos = new Int32Array(256)
 
 /**
- * A solve call begins, with the pairs below `fresh` met by a call that converged: whether it keeps the
- * stamps of the call before (the caller then fills only the new pairs and candidates).
+ * A solve call begins, with the pairs below `fresh` met by a call that converged, or (fresh 0) the pairs
+ * below `old` those of the call before in the same tick: whether it keeps the stamps of the call before (the
+ * caller then fills only the new pairs and candidates).
  */
-export function beginCall(F: FixedContactState, fresh: number): boolean {
+export function beginCall(F: FixedContactState, fresh: number, old: number): boolean {
   if (hitPos.length < F.n) hitPos = grownTo(hitPos, 2 * F.n)
-  const keep = keeping && fresh > 0 && packings() === callPacking
-  if (keep) keptCalls++
+  const keep = keeping && (fresh > 0 || old > 0) && packings() === callPacking
+  const afterConverged = fresh > 0
+  if (keep && afterConverged) keptCalls++
+  else if (keep) continuedCalls++
   if (!keep) {
     for (let k = 0; k < F.hitCount; k++) hitPos[F.hit[k]!] = k
     linked = 0
     linkedN = 0
     linksValid = false
   }
-  kept = keep
+  kept = keep && afterConverged
+  stamped = keep
   callN = F.n
   callPacking = packings()
   callHitCount = 0
@@ -58,11 +69,16 @@ export function sweepsRun(): number {
 /** For tests: whether a call may keep the stamps (off: every call fills them and walks every pair and hit), and the calls that did. */
 let keeping = true
 let keptCalls = 0
+let continuedCalls = 0
 export function keepAcrossCalls(on: boolean): void {
   keeping = on
 }
 export function callsKept(): number {
   return keptCalls
+}
+/** For tests: the calls that kept the stamps of a call that did not converge. */
+export function callsContinued(): number {
+  return continuedCalls
 }
 
 /** The candidates of the last call (those from this index joined since). */
@@ -80,7 +96,7 @@ export function listChange(F: FixedContactState, i: number, first: boolean): voi
     if (callHitCount === callHits.length) callHits = grownTo(callHits, 2 * callHitCount)
     callHits[callHitCount++] = i
   }
-  if (!kept) return
+  if (!stamped) return
   // the pairs to look at again: this ball's, in the next sweep (until they are too many to list: the next
   // sweep walks every pair), and those still ahead in this one
   if (pendMark[i] !== sweepNo && !overflow) {
@@ -97,7 +113,7 @@ export function listChange(F: FixedContactState, i: number, first: boolean): voi
   }
 }
 
-/** The candidates whose velocity the last call changed (in lastCallChanged(), their count), or -1 when it did not keep the stamps. */
+/** The candidates whose velocity the last call changed (in lastCallChanged(), their count), or -1 unless it kept the stamps of a call that converged. */
 export function lastCallChanges(): number {
   return kept ? callHitCount : -1
 }
@@ -196,7 +212,7 @@ export function beginSweep(F: FixedContactState, backward: boolean, first: boole
   sweepNo++
   listing = false
   walking = false
-  if (!kept) return false
+  if (!stamped) return false
   const todo = first ? F.pairCount - fresh : fromPairs
   if (over || LIST_SHARE * todo > F.pairCount) return false
   listing = true

@@ -22,6 +22,7 @@ import { JAM_MIN_BALLS, PROJECTION_SLOP, RESTITUTION_VISITS } from '../config/to
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
 import { keepsLine, rootOf, unite } from './fixedUnion.js'
+import { asBefore, OTHER } from './fixedStamps.js'
 
 /**
  * Union-find over the candidates; by root: the mass, momentum and members summed, whether the group is
@@ -84,7 +85,8 @@ export function settleJams(F: FixedContactState): number {
     const b = F.pairB[p]!
     closing[p] = 0
     if (a >= F.restFrom || b >= F.restFrom) continue
-    const approach = meetsWithinTick(F, a, b) ? -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y) : 0
+    // a pair whose balls have not changed since the sweeps last found it refused or parting does not close
+    const approach = asBefore(F, p) === OTHER && meetsWithinTick(F, a, b) ? -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y) : 0
     if (approach > 0) closing[p] = approach * F.tick
     else {
       // not closing now, but met RESTITUTION_VISITS times this tick (pressed together, not bounced apart):

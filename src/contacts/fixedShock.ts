@@ -28,6 +28,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { walls } from './fixedGrid.js'
 import { meetsWithinTick, normal, nrm, reportPair, S_APPROACH, S_J, solveSlots } from './fixedPairs.js'
 import { keepsLine, rootOf, unite } from './fixedUnion.js'
+import { asBefore, PARTING, REFUSED } from './fixedStamps.js'
 
 /** Union-find over the candidates; by root: the group's closing, whether it has an anchor, whether it bends, and its line */
 let parent = new Int32Array(256)
@@ -112,7 +113,11 @@ export function holdRows(w: BallWorld, F: FixedContactState, e: number, settle: 
     const a = F.pairA[p]!
     const b = F.pairB[p]!
     approachOf[p] = -1
-    if (!meetsWithinTick(F, a, b)) {
+    // as the sweeps last found the pair, when neither ball has changed since (src/contacts/fixedStamps.ts):
+    // refused, it does not meet; parting, it touches with the line of centres for its normal
+    const was = asBefore(F, p)
+    if (was === PARTING) normal(F, a, b)
+    else if (was === REFUSED || !meetsWithinTick(F, a, b)) {
       // met this tick, or touching but for rounding, and not closing now: the row goes on through them
       if (F.pairHit[p]! < 2) {
         const dx = F.x[b]! - F.x[a]!

@@ -24,7 +24,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { bouncesBetween, intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
-import { meetsWithinTick, nrm, PAIR_VISIT_SHIFT as VISIT_SHIFT, reportPair, S_APPROACH, S_CLOCK, S_E, S_IMA, S_IMB, S_J, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
+import { meetsWithinTick, nrm, touch, PAIR_VISIT_SHIFT as VISIT_SHIFT, reportPair, S_APPROACH, S_CLOCK, S_E, S_IMA, S_IMB, S_J, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
 import { heldBalls, holdRows } from './fixedShock.js'
 import { capImpulse } from './law.js'
@@ -35,6 +35,7 @@ import { aheadOf, pushed, wallAhead } from './fixedAhead.js'
 import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
 import { STRUCK, VELOCITY, WALL_DUE, WALL_TURNED } from './fixedWallTurn.js'
 import { block, capBall, pairWithWall } from './fixedWallPair.js'
+import { changedAt, OTHER, PARTING, REFUSED, reserveStamps, testedAs, testedAt } from './fixedStamps.js'
 
 /**
  * A sweep's impulses: pairs met past RESTITUTION_VISITS whose one ball is SQUEEZE_MASS_RATIO times lighter
@@ -47,14 +48,7 @@ let plain = 0
 /** the call in which each packed ball was last the light ball of such a meeting (scratch, as testedAt) */
 let pumpedIn = new Float64Array(256)
 
-/**
- * The sweeps' stamps within one call (scratch: one solve at a time): when each pair was last tested, and
- * when each packed ball's velocity last changed, on a clock that counts the changes. A pair neither of whose
- * balls has changed since its last test would be refused again, so a later sweep passes it by: the same
- * impulses in the same order, without testing every pair at every sweep.
- */
-let testedAt = new Float64Array(256)
-let changedAt = new Float64Array(256)
+/** the stamps' clock (src/contacts/fixedStamps.ts) */
 let clock = 0
 /** the clock when the last call began (src/contacts/fixedCalls.ts: what one call keeps for the next) */
 let callFrom = 0
@@ -64,21 +58,22 @@ let calls = 0
 /**
  * The velocity sweeps over the tick's pairs; true when a sweep left every pair as it was (converged).
  * `fresh`: pairs below it were met by a call that converged, at the velocities the balls still have (a
- * widening round in between only adds pairs): they are passed by until a ball of theirs changes.
+ * widening round in between only adds pairs): they are passed by until a ball of theirs changes. `old`
+ * (with fresh 0): the pairs below it are those of the call before, in the same tick, with the positions
+ * and velocities it left (a widening round in between): their stamps are kept (src/contacts/fixedCalls.ts).
  */
-export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number, fresh = 0): boolean {
+export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number, fresh = 0, old = 0): boolean {
   S[S_T] = t
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
   S[S_CLOCK] = clockTick(w, t)
-  if (testedAt.length < F.pairCount) testedAt = grownTo(testedAt, 2 * F.pairCount)
-  if (changedAt.length < F.n) changedAt = grownTo(changedAt, 2 * F.n)
+  reserveStamps(F)
   if (pumpedIn.length < F.n) pumpedIn = grownTo(pumpedIn, 2 * F.n)
   const fromN = lastCallN()
-  if (beginCall(F, fresh)) {
+  if (beginCall(F, fresh, old)) {
     // the old pairs and candidates keep their stamps; the new pairs are tested in the first sweep, and the
     // candidates that joined have not changed
-    testedAt.fill(-1, fresh, F.pairCount)
+    testedAt.fill(-1, fresh > 0 ? fresh : old, F.pairCount)
     changedAt.fill(0, fromN, F.n)
   } else {
     // every pair is tested in the first sweep (the packed balls may have moved in the arrays since a last
@@ -190,9 +185,17 @@ function impulseNow(w: BallWorld, F: FixedContactState, p: number): boolean {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   testedAt[p] = clock
-  if (!meetsWithinTick(F, a, b)) return false
+  if (!meetsWithinTick(F, a, b)) {
+    testedAs[p] = REFUSED
+    return false
+  }
   const approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
-  if (!(approach > 0)) return false
+  // touching now, the normal is the line of centres (src/contacts/fixedPairs.ts, normal)
+  if (!(approach > 0)) {
+    testedAs[p] = touch.c <= 0 ? PARTING : OTHER
+    return false
+  }
+  testedAs[p] = OTHER
   S[S_APPROACH] = approach
   return applyImpulse(w, F, p)
 }
