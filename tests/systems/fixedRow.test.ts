@@ -555,7 +555,8 @@ describe('fixed tick: what a solve call keeps for the next within a tick (src/co
   // round's call after one that did not converge keeps its stamps too (its first sweep walks every pair but
   // tests only those with a ball changed since), and the jam and wall rules half way through a call take a
   // pair whose balls have not changed since the sweeps found it refused or parting as found
-  // (src/contacts/fixedStamps.ts): a third of the tests of such a crowd were those first sweeps
+  // (src/contacts/fixedStamps.ts). In the long adversarial run's 1,348th sequence, such a crowd, a third
+  // of the sweeps' swept tests were in those first sweeps
   it('heavy balls pumping light ones in a closed box: calls continue with their stamps, the rules take pairs as found, and give the same events and states as calls that keep nothing', () => {
     const setup = (sim: Sim): void => {
       sim.setWalls({ minX: 0, minY: 0, maxX: 200, maxY: 160, restitution: 1 })
