@@ -21,7 +21,7 @@
 import { JAM_MIN_BALLS, PROJECTION_SLOP, RESTITUTION_VISITS } from '../config/tolerances.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
-import { keepsLine, rootOf, unite } from './fixedUnion.js'
+import { keepsLine, rootOf, uniteSized } from './fixedUnion.js'
 import { asBefore, OTHER } from './fixedStamps.js'
 
 /**
@@ -77,8 +77,12 @@ export function settleJams(F: FixedContactState): number {
     normalX = grownTo(normalX, 2 * F.pairCount)
     normalY = grownTo(normalY, 2 * F.pairCount)
   }
-  for (let i = 0; i < n; i++) parent[i] = i
-  let joined = 0
+  // members: each group's size while the pairs join them (no row of JAM_MIN_BALLS: nothing to settle)
+  for (let i = 0; i < n; i++) {
+    parent[i] = i
+    members[i] = 1
+  }
+  let largest = 1
   const pairs = F.pairCount
   for (let p = 0; p < pairs; p++) {
     const a = F.pairA[p]!
@@ -97,9 +101,10 @@ export function settleJams(F: FixedContactState): number {
     }
     normalX[p] = nrm.x
     normalY[p] = nrm.y
-    if (unite(parent, a, b)) joined++
+    const size = uniteSized(parent, members, a, b)
+    if (size > largest) largest = size
   }
-  if (joined === 0) return 0
+  if (largest < JAM_MIN_BALLS) return 0
   for (let i = 0; i < n; i++) {
     mass[i] = 0
     px[i] = 0

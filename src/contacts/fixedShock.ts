@@ -176,6 +176,13 @@ export function holdRows(w: BallWorld, F: FixedContactState, e: number, settle: 
     const i = F.nearWall[k]!
     if (anchorAt[i] === mark) anchored[root(i)] = 1
   }
+  // only an anchor's group can be held: none is, nothing to link
+  let any = false
+  for (let k = 0; k < F.nearWallCount && !any; k++) {
+    const i = F.nearWall[k]!
+    any = anchorAt[i] === mark && holds(root(i))
+  }
+  if (!any) return 0
   // the linked pairs of the groups held, by candidate, in pair order
   start.fill(0, 0, n + 1)
   for (let p = 0; p < pairs; p++) {

@@ -25,6 +25,21 @@ export function unite(parent: Int32Array, a: number, b: number): boolean {
 }
 
 /**
+ * unite, keeping each root's group size in `size` (1 for a candidate alone): the joined group's size, or 0
+ * when a and b were in one group already.
+ */
+export function uniteSized(parent: Int32Array, size: Int32Array, a: number, b: number): number {
+  const ra = rootOf(parent, a)
+  const rb = rootOf(parent, b)
+  if (ra === rb) return 0
+  const r = ra < rb ? ra : rb
+  const o = ra < rb ? rb : ra
+  parent[o] = r
+  size[r] = size[r]! + size[o]!
+  return size[r]!
+}
+
+/**
  * Whether pair p's normal (normalX/normalY[p]) keeps to the line of the group rooted at r, to within
  * ROW_LINE_COS; the group's first pair sets its line (lineX/lineY[r], 0 and 0 until then). Indices in: no
  * double crosses the call.
