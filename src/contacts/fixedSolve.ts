@@ -130,17 +130,24 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   return false
 }
 
-/** The solve's account of the velocities settleJams and holdRows changed. */
+/**
+ * The solve's account of the velocities settleJams and holdRows changed. Each rule's list is read after it
+ * ran: a rule grows its scratch arrays (the list among them) when the tick has more candidates than they
+ * hold, and the list read before was the old array (the balls changed then went unstamped, and others were
+ * stamped in their place).
+ */
 function settle(w: BallWorld, F: FixedContactState): void {
+  const jams = settleJams(F)
   const list = jammed()
-  for (let k = 0, n = settleJams(F); k < n; k++) {
+  for (let k = 0; k < jams; k++) {
     const i = list[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
     F.changed[i]! |= STRUCK
   }
+  const holds = holdRows(w, F, S[S_E]!, S[S_SETTLE]!, wallVelocity)
   const held = heldBalls()
-  for (let k = 0, n = holdRows(w, F, S[S_E]!, S[S_SETTLE]!, wallVelocity); k < n; k++) {
+  for (let k = 0; k < holds; k++) {
     const i = held[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
