@@ -8,15 +8,14 @@
 //
 //   npm run bench:dense
 import { createBallPhysics } from '../src/index'
-import { collectGarbage, writeResult } from './lib'
+import { collectGarbage, random, writeResult } from './lib'
 
 const SIZES = [1_000, 10_000, 100_000]
 const STEPS = 600
 const FROM = 200
 
 function run(n: number, ordered: boolean): number {
-  let s = 5
-  const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+  const r = random(5)
   const sim = createBallPhysics({ ROLLING_DECEL: 300 }, { capacity: n + 64 })
   for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) sim.addHole({ x: 40 + 80 * i, y: 40 + 80 * j })
   const spawn = () => {

@@ -19,7 +19,7 @@ import RAPIER from '@dimforge/rapier2d-compat'
 import Matter from 'matter-js'
 import * as planck from 'planck'
 import { createBallPhysics } from '../src/index'
-import { DT, argValue, collectGarbage, median, medianStepMs, writeFigure, writeResult } from './lib'
+import { DT, argValue, collectGarbage, median, medianStepMs, random, writeFigure, writeResult } from './lib'
 import { spawnSync } from 'node:child_process'
 import { fileURLToPath } from 'node:url'
 import { peersFigure, type PeerRow } from './charts'
@@ -42,8 +42,7 @@ interface Scene {
 
 /** n balls at random over the field; with `separated`, a ball that would overlap an earlier one is drawn again. */
 function scene(n: number, separated = false): Scene {
-  let s = 12345
-  const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+  const r = random(12345)
   const holes = []
   for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) holes.push({ x: 200 + 400 * i, y: 200 + 400 * j })
   const balls: Scene['balls'] = []

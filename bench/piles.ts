@@ -15,17 +15,12 @@
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics } from '../src/index'
 import { BallMode } from '../components/Ball'
 import type { PileRow } from './charts'
-import { argValue, cellGrid, cellKey, writeResult } from './lib'
+import { argValue, cellGrid, cellKey, random, writeResult } from './lib'
 
 const DT = 1 / 60
 const STEP_LIMIT_MS = 5_000
 const BALLS = Number(argValue('--balls') ?? 10_000)
 
-
-function random(seed: number): () => number {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-}
 
 /** How far apart two ball ids are in a pair's key (ids stay below it). */
 const PAIR_KEY = 1 << 24

@@ -6,7 +6,7 @@
 //
 //   npm run bench:recycling [-- --throws N] [-- --out DIR]
 import { DEFAULT_PANEL, addPanel, createBallPhysics } from '../src/index'
-import { writeResult } from './lib'
+import { random, writeResult } from './lib'
 
 const arg = process.argv.indexOf('--throws')
 const THROWS = arg >= 0 ? Number(process.argv[arg + 1]) : 1_000_000
@@ -22,8 +22,7 @@ function heap(): number {
   return m.heapUsed + m.arrayBuffers
 }
 
-let s = 77
-const rand = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+const rand = random(77)
 
 const base = heap()
 const sim = createBallPhysics()

@@ -13,7 +13,7 @@
 //   npm run bench:resting            npm run bench:resting -- --resting 100000   (fewer resting balls)
 import { BallMode } from '../src/ecs'
 import { createBallPhysics, type BallPhysics } from '../src/index'
-import { DT, argValue, collectGarbage, median, medianStepMs, writeResult } from './lib'
+import { DT, argValue, collectGarbage, median, medianStepMs, random, writeResult } from './lib'
 
 const MOVING = 1000
 const RESTING = Number(argValue('--resting') ?? 1_000_000)
@@ -28,10 +28,6 @@ const FIELD = 2000
 const REACH = 400
 const BALL_R = 11
 
-function rand(seed: number) {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-}
 
 /** Lattice points (100 + 200·i, 100 + 200·j) round the field's centre, `count` of them, row by row. */
 function lattice(count: number): Float64Array {
@@ -56,7 +52,7 @@ const nearXY = Float64Array.from(near)
 /** The moving balls: 150–350 px/s in random directions, put down clear of each other and of the lattice. */
 const moving: { x: number; y: number; vx: number; vy: number }[] = []
 {
-  const r = rand(7)
+  const r = random(7)
   const clear = (2 * BALL_R + 1) ** 2
   while (moving.length < MOVING) {
     const a = r() * 2 * Math.PI

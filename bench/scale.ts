@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process'
 import { fileURLToPath } from 'node:url'
 import { createBallPhysics, type BallPhysics } from '../src/index'
 import { scaleFigure, type ScaleRow } from './charts'
-import { DT, argValue, collectGarbage, median, medianStepMs, plainStep, writeFigure, writeResult } from './lib'
+import { DT, argValue, collectGarbage, median, medianStepMs, plainStep, random, writeFigure, writeResult } from './lib'
 
 const STEPS = 60
 const ROUNDS = 3
@@ -19,16 +19,12 @@ const MAX_N = Number(argValue('--max') ?? 1_000_000)
 const SIZES = [1_000, 10_000, 100_000, 1_000_000].filter((n) => n <= MAX_N)
 const HOLES = [25, 10_000]
 
-function rand(seed: number) {
-  let s = seed
-  return () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-}
 
 function build(n: number, holes: number): BallPhysics {
   const side = Math.round(Math.sqrt(holes))
   const sim = createBallPhysics({ ROLLING_DECEL: DECEL }, { capacity: n + holes + 64 })
   for (let i = 0; i < side; i++) for (let j = 0; j < side; j++) sim.addHole({ x: 200 + 400 * i, y: 200 + 400 * j })
-  const r = rand(7)
+  const r = random(7)
   const field = side * 400
   for (let i = 0; i < n; i++) {
     const a = r() * 2 * Math.PI
@@ -40,7 +36,7 @@ function build(n: number, holes: number): BallPhysics {
 
 /** The limit: the same balls moved by a bare loop over four Float64Array columns, with the deceleration. */
 function plain(n: number) {
-  const r = rand(7)
+  const r = random(7)
   const x = new Float64Array(n)
   const y = new Float64Array(n)
   const vx = new Float64Array(n)
