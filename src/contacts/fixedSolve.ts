@@ -138,17 +138,15 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
  */
 function settle(w: BallWorld, F: FixedContactState): void {
   const jams = settleJams(F)
-  const list = jammed()
-  for (let k = 0; k < jams; k++) {
-    const i = list[k]!
-    noteChange(F, i)
-    changedAt[i] = ++clock
-    F.changed[i]! |= STRUCK
-  }
+  struckAll(F, jammed(), jams)
   const holds = holdRows(w, F, S[S_E]!, S[S_SETTLE]!, wallVelocity)
-  const held = heldBalls()
-  for (let k = 0; k < holds; k++) {
-    const i = held[k]!
+  struckAll(F, heldBalls(), holds)
+}
+
+/** The first `count` candidates of `list` were struck by a rule: each change noted and stamped. */
+function struckAll(F: FixedContactState, list: Int32Array, count: number): void {
+  for (let k = 0; k < count; k++) {
+    const i = list[k]!
     noteChange(F, i)
     changedAt[i] = ++clock
     F.changed[i]! |= STRUCK

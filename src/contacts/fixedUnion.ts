@@ -19,9 +19,15 @@ export function unite(parent: Int32Array, a: number, b: number): boolean {
   const ra = rootOf(parent, a)
   const rb = rootOf(parent, b)
   if (ra === rb) return false
-  if (ra < rb) parent[rb] = ra
-  else parent[ra] = rb
+  join(parent, ra, rb)
   return true
+}
+
+/** Joins the groups of roots ra ≠ rb, the higher root under the lower; the joined group's root. */
+function join(parent: Int32Array, ra: number, rb: number): number {
+  const r = ra < rb ? ra : rb
+  parent[ra < rb ? rb : ra] = r
+  return r
 }
 
 /**
@@ -32,11 +38,9 @@ export function uniteSized(parent: Int32Array, size: Int32Array, a: number, b: n
   const ra = rootOf(parent, a)
   const rb = rootOf(parent, b)
   if (ra === rb) return 0
-  const r = ra < rb ? ra : rb
-  const o = ra < rb ? rb : ra
-  parent[o] = r
-  size[r] = size[r]! + size[o]!
-  return size[r]!
+  const joined = size[ra]! + size[rb]!
+  size[join(parent, ra, rb)] = joined
+  return joined
 }
 
 /**
