@@ -1,4 +1,5 @@
-// The published package, as a consumer gets it: `npm run build`, `npm pack`, the tarball unpacked into a
+// The published package, as a consumer gets it: `npm pack` from a tree without `dist/` (as a fresh clone
+// is: the `prepack` script builds it; without one the tarball held no code), the tarball unpacked into a
 // fixture project's node_modules (bitecs, the one runtime dependency, symlinked from the repo), then
 //  - a consumer importing from all three entry points (`.`, `./ecs`, `./reference`) typechecks with the
 //    repo's tsc under NodeNext, Node16 and Bundler resolution, strict and with skipLibCheck off (so the
@@ -191,8 +192,8 @@ describe('published package', () => {
   let pkgJson: { dependencies?: Record<string, string> }
 
   beforeAll(async () => {
-    const build = await sh('npm', ['run', 'build'], root)
-    if (build.code !== 0) throw new Error(`npm run build failed:\n${build.stdout}\n${build.stderr}`)
+    // no build of a run before: what `npm pack` packs, it builds
+    await rm(join(root, 'dist'), { recursive: true, force: true })
     await mkdir(join(root, 'test-artifacts'), { recursive: true })
     work = await mkdtemp(join(root, 'test-artifacts', 'package-types-'))
     const pack = await sh('npm', ['pack', '--pack-destination', work, '--json'], root)
