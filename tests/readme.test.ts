@@ -26,11 +26,18 @@ async function run(code: string, name: string): Promise<unknown[][]> {
 }
 
 describe('README examples', () => {
-  it('has the three examples (the game API, snapshots and replays, the ecs entry)', () => {
-    expect(blocks.length).toBe(3)
+  it('has the four examples (the game API, snapshots and replays, the throw solver, the ecs entry)', () => {
+    expect(blocks.length).toBe(4)
     expect(blocks[0]).toContain('createBallPhysics')
     expect(blocks[1]).toContain('createReplayPlayer')
-    expect(blocks[2]).toContain("from 'positron-ball-physics/ecs'")
+    expect(blocks[2]).toContain('solveThrow')
+    expect(blocks[3]).toContain("from 'positron-ball-physics/ecs'")
+  })
+
+  it('the throw solver example runs and finds a throw that captures at the middle hole', async () => {
+    const logs = await run(blocks[2]!, 'solver')
+    expect(logs).toHaveLength(1)
+    expect(String(logs[0]![0])).toMatch(/^capture at hole 13: power 0\.\d{3}, angle -?\d\.\d{3}$/)
   })
 
   it('the snapshot and replay example runs: the replay and the restored copy give the recorded events', async () => {
@@ -54,7 +61,7 @@ describe('README examples', () => {
   })
 
   it('the ecs example runs: its own system counts lip crossings, its own component is queried with Ball', async () => {
-    const logs = await run(blocks[2]!, 'ecs')
+    const logs = await run(blocks[3]!, 'ecs')
     expect(logs).toHaveLength(1)
     const [lipCrossings, trail] = logs[0] as [number, number]
     expect(lipCrossings).toBeGreaterThan(0)
@@ -64,7 +71,8 @@ describe('README examples', () => {
   it('the examples typecheck (strict, the names resolved to the sources)', async () => {
     await run(blocks[0]!, 'use')
     await run(blocks[1]!, 'replay')
-    await run(blocks[2]!, 'ecs')
+    await run(blocks[2]!, 'solver')
+    await run(blocks[3]!, 'ecs')
     const dir = resolve(root, 'test-artifacts/readme')
     writeFileSync(
       resolve(dir, 'tsconfig.json'),
@@ -81,7 +89,7 @@ describe('README examples', () => {
             'positron-ball-physics/reference': ['../../src/reference/index.ts'],
           },
         },
-        include: ['use.ts', 'replay.ts', 'ecs.ts'],
+        include: ['use.ts', 'replay.ts', 'solver.ts', 'ecs.ts'],
       }),
     )
     let out = ''
