@@ -4,7 +4,7 @@
 // lower rows fast enough to skip them for most aims (docs/design.md §1).
 import type { BallPhysics } from './api/createBallPhysics.js'
 import { addHoles } from './commands/holes.js'
-import { describe, readSpec } from './check.js'
+import { checkWorld, describe, readSpec } from './check.js'
 import type { BallWorld } from './world/createWorld.js'
 
 export interface PanelHole {
@@ -41,7 +41,8 @@ export const DEFAULT_PANEL: Readonly<PanelLayout> = Object.freeze({
  */
 export function addPanel(target: BallPhysics | BallWorld, layout: PanelLayout = DEFAULT_PANEL): number[] {
   if (target === null || typeof target !== 'object') throw new TypeError(`addPanel: target must be a simulation or a world, got ${describe(target)}`)
-  const world = 'step' in target && 'world' in target ? target.world : (target as BallWorld)
+  // a target that is neither is refused in addPanel's name (addHoles named itself)
+  const world = checkWorld('addPanel', 'step' in target && 'world' in target ? target.world : target)
   if (layout === null || typeof layout !== 'object') throw new TypeError(`addPanel: layout must be a panel layout, got ${describe(layout)}`)
   const holes = readSpec('layout', layout, ['width', 'height', 'launch', 'holes'] as const).holes
   if (!Array.isArray(holes)) throw new TypeError(`layout.holes must be an array, got ${describe(holes)}`)

@@ -73,7 +73,8 @@ export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEn
 
 /**
  * Advances the world by exactly dt seconds with the given schedule. dt is not capped here (the public
- * API's step does that); it must be finite and > 0.
+ * API's step does that); it must be finite and > 0, and with the fixed tick at most MAX_STEP (its work
+ * grows with dt: every contact tick of the step is solved).
  */
 export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   checkWorld('runSchedule', world)
@@ -86,6 +87,11 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
   }
   if (typeof dt !== 'number') throw new TypeError(`dt must be a number of seconds > 0, got ${describe(dt)}`)
   if (!Number.isFinite(dt) || dt <= 0) throw new RangeError(`dt must be a finite number of seconds > 0, got ${dt}`)
+  // the fixed tick solves every tick of the step (its work grows with dt, moving balls or not: 1e9 s ran
+  // for minutes); the exact method's work per step is bounded by its passes, whatever dt
+  if (world.fixed !== null && dt > world.config.MAX_STEP) {
+    throw new RangeError(`runSchedule: with BALL_COLLISIONS 'fixed', dt must be in (0, MAX_STEP = ${world.config.MAX_STEP}] s, got ${dt} (each contact tick of the step is solved; run a longer span as several steps)`)
+  }
   if (world.stepping) {
     throw new Error('step (runSchedule): the world is already stepping (called from inside a system or an observer?); a step cannot run inside a step')
   }

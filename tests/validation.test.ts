@@ -57,6 +57,20 @@ describe('steps', () => {
     })
   }
 
+  it('with the fixed tick, runSchedule refuses a dt over MAX_STEP (every contact tick of it is solved: 1e9 s ran for minutes with one ball at rest); the exact method takes it', () => {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed' })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480 })
+    sim.addBall({ x: 100, y: 100 })
+    sim.step(1 / 60)
+    for (const dt of [0.25 + 1e-9, 10, 1e9]) expectRefused(sim, () => runSchedule(sim.world, sim.schedule, dt), RangeError, `dt must be in (0, MAX_STEP = 0.25] s, got ${dt}`, /MAX_STEP/)
+    runSchedule(sim.world, sim.schedule, 0.25)
+    expect(sim.time).toBeCloseTo(1 / 60 + 0.25, 12)
+    const exact = createBallPhysics({ BALL_COLLISIONS: 'on' })
+    exact.addBall({ x: 100, y: 100 })
+    runSchedule(exact.world, exact.schedule, 1e9)
+    expect(exact.time).toBe(1e9)
+  })
+
   it('runSchedule refuses a schedule that is not an array, and a world that is not one', () => {
     const sim = scene()
     for (const bad of [{}, null, 'integration', { length: 1, 0: sim.schedule[0] }]) {
@@ -261,6 +275,8 @@ describe('addPanel is all or nothing', () => {
   it('a hole that is not an object is a TypeError naming its index, and adds none', () => {
     const sim = createBallPhysics()
     expectRefused(sim, () => addPanel(sim, layout([h0, h1, null, h3])), TypeError, /holes\[2\]/)
+    // a target that is not a world made by createBallWorld is refused in addPanel's name
+    expect(() => addPanel({} as never)).toThrow(/^addPanel: world must be a world made by createBallWorld/)
   })
 })
 
