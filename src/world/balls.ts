@@ -55,6 +55,8 @@ export function adoptBall(world: BallWorld, eid: number): void {
     C.lastContact[eid] = NO_CONTACT
   }
   if (world.fixed !== null) world.fixed.mass[eid] = 1
+  world.kickStreak[eid] = 0
+  world.kickAfter[eid] = 0
   for (let i = 0; i < world.ballStores.length; i++) clearSlot(world.ballStores[i]!, eid)
 }
 

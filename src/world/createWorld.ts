@@ -104,11 +104,13 @@ export interface BallWorldData {
   /** balls the launcher has knocked off its spots since the world was made (systems/launcher.ts) */
   kicks: number
   /**
-   * the launcher's kicks since it last launched a ball, and the world time before which it kicks no more
-   * (systems/launcher.ts: a spot its kicks do not clear is kicked less and less often)
+   * by ball id, for a ball the launcher has knocked off a spot: its kicks in a row, and the world time
+   * before which it is kicked no more (systems/launcher.ts: a
+   * ball jammed on a spot is kicked less and less often; the kicked ball's own, so such a spot delays no
+   * other); zeroed when an id becomes a ball
    */
-  kickStreak: number
-  kickAfter: number
+  kickStreak: Uint8Array
+  kickAfter: Float64Array
   /** the inputs recorded for a replay while the world records (src/commands/replay.ts), else null */
   recorder: Recorder | null
 }
@@ -171,8 +173,8 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     held: createIdList(16),
     launchDue: false,
     kicks: 0,
-    kickStreak: 0,
-    kickAfter: 0,
+    kickStreak: new Uint8Array(capacity),
+    kickAfter: new Float64Array(capacity),
     recorder: null,
   }
   return createWorld<BallWorldData>(data, entityIndex)
@@ -194,6 +196,12 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   const sparse = new Uint32Array(cap)
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse
+  const streak = new Uint8Array(cap)
+  streak.set(world.kickStreak)
+  world.kickStreak = streak
+  const after = new Float64Array(cap)
+  after.set(world.kickAfter)
+  world.kickAfter = after
   if (world.collide !== null) growCollisionState(world.collide, cap)
   if (world.fixed !== null) {
     growFixedMass(world.fixed, cap)
