@@ -39,6 +39,7 @@ export { mergeTallies, outcomeMap, sampleThrows, summarizeOutcomes } from './api
 export type { OutcomeMapSpec, OutcomeScene, OutcomeSummary, OutcomeTally, ThrowDistribution } from './api/outcomes.js'
 export type { ThrowFailure, ThrowOutcome, ThrowRequest, ThrowSolution } from './api/solveThrow.js'
 export type { ReplayPlayer } from './api/replayPlayer.js'
+export type { ScheduleEntry, System } from './schedule.js'
 export { EVENT_TYPE_NAMES } from './events.js'
 export type { BallEvent, BallEventType, BallOnlyEvent, CaptureEvent, CaptureViaName, CollisionEvent, EventView, HoleEvent } from './events.js'
 export { BALL_MODE_NAMES } from '../components/Ball.js'

@@ -88,6 +88,7 @@ export interface ReplayPlayer {
  */
 export function createReplayPlayer(replay: Replay, schedule?: readonly ScheduleEntry[]): ReplayPlayer {
   checkReplay(replay)
+  if (schedule !== undefined && !Array.isArray(schedule)) throw new TypeError(`createReplayPlayer: schedule must be an array of { name, run } entries (or absent: the config's), got ${describe(schedule)}`)
   const world = createBallWorld(replay.config as ConfigOverrides, replay.options)
   if (replay.start !== undefined) restoreWorld(world, fromBase64(replay.start))
   const run = schedule ?? createSchedule(world.config)
