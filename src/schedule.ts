@@ -17,6 +17,7 @@ import { skipOverSystem } from '../systems/skipOver.js'
 import { orderMoving } from './world/idLists.js'
 import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN, TICK_SNAP } from './config/tolerances.js'
 import { nearTick } from './contacts/fixedHalve.js'
+import { gridInstant } from './world/gridTime.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
@@ -130,7 +131,8 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
   // fixedContacts system); a solve asked for between steps (a ball put down or given a new velocity) runs in
   // the next step's first pass
   for (;;) {
-    const tick = F.nextTick * F.tick
+    const L = world.config.CONTACT_TICK
+    const tick = gridInstant(L, F.halvings, F.nextTick)
     if (tick <= world.time) {
       F.due = true
       F.nextTick++
@@ -144,13 +146,13 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     // held balls leave at the ticks, the halved ones too (ticks of the world's clock, decided from its state,
     // so the same at every frame rate; k·CONTACT_TICK = (k·2^h)·(CONTACT_TICK / 2^h), the same double, is
     // among them): a window that starts on one
-    world.launchDue = world.held.count > 0 && world.time === (F.nextTick - 1) * F.tick
+    world.launchDue = world.held.count > 0 && world.time === gridInstant(L, F.halvings, F.nextTick - 1)
     runWindow(world, schedule, stop)
     F.due = false
     // the window reached the next tick: `tick`, or, when a solve at its start (one a command asked for)
     // halved the tick, the next tick of the finer spacing, where the window then ended (or ends anyway:
     // src/contacts/fixedHalve.ts)
-    if (world.time === F.nextTick * F.tick) {
+    if (world.time === gridInstant(L, F.halvings, F.nextTick)) {
       // the tick's solve right at the end of the window that reaches it: a step that ends on a tick ends
       // solved (what the game draws), and the next window starts from the solved state
       F.nextTick++
@@ -177,7 +179,7 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
 function clockEnd(world: BallWorld, end: number, dt: number): number {
   if (world.config.METHOD !== 'exact') return end
   const L = world.config.CONTACT_TICK
-  const at = Math.round(end / L) * L
+  const at = gridInstant(L, 0, Math.round(end / L))
   return nearTick(at, end, dt) ? at : rateEnd(end, dt)
 }
 
@@ -212,10 +214,10 @@ function launchInstant(world: BallWorld): number {
   const L = world.config.CONTACT_TICK
   const t = world.time
   let k = Math.ceil(t / L)
-  while (k > 0 && (k - 1) * L >= t) k--
-  while (k * L < t) k++
-  const due = k * L === t
-  const next = (due ? k + 1 : k) * L
+  while (k > 0 && gridInstant(L, 0, k - 1) >= t) k--
+  while (gridInstant(L, 0, k) < t) k++
+  const due = gridInstant(L, 0, k) === t
+  const next = gridInstant(L, 0, due ? k + 1 : k)
   if (!(next > t)) {
     world.launchDue = true
     return Infinity

@@ -731,7 +731,7 @@ describe('a launcher firing many balls from one point', () => {
   // 50 Hz frames one in five (every 0.1 s), of the 48 Hz ones one in two, of the 25 Hz ones one in five (every
   // 0.2 s); the rest only on their rates' grids
   const clocks: [number, number, number][] = [[30, 240, 8], [50, 100, 4], [48, 144, 4], [25, 200, 4]]
-  it("the clock keeps to k·CONTACT_TICK and to each rate's grid: the same simulated time is the same double at 30 and 240 Hz, 50 and 100, 48 and 144, 25 and 200, so throws given at their shared frames act at the same instants (contacts off, on and fixed)", () => {
+  it("the clock keeps to each rate's grid and to CONTACT_TICK's: the same simulated time is the same double at 30 and 240 Hz, 50 and 100, 48 and 144, 25 and 200, so throws given at their shared frames act at the same instants (contacts off, on and fixed)", () => {
     for (const [base, fast, seconds] of clocks) {
       for (const mode of ['off', 'on', 'fixed'] as const) {
         const run = (hz: number) => {
@@ -752,11 +752,41 @@ describe('a launcher firing many balls from one point', () => {
         const b = run(fast)
         const label = `${mode}, ${base} and ${fast} Hz`
         expect(b.times, label).toEqual(a.times)
-        // each frame's time is the double nearest its rational time (k·CONTACT_TICK where it is on that grid)
-        a.times.forEach((t, s) => expect(t === (s + 1) / base || t === Math.round(((s + 1) / base) * 120) * (1 / 120), `${label}, frame ${s + 1}`).toBe(true))
+        // each frame's time is the double nearest its rational time, on the 1/120 s grid too (there it was
+        // the product k·CONTACT_TICK, up to an ulp from it)
+        a.times.forEach((t, s) => expect(t, `${label}, frame ${s + 1}`).toBe((s + 1) / base))
         expect(b.events.length, label).toBeGreaterThan(5 * seconds)
         expect(b.events, label).toEqual(a.events)
       }
+    }
+  })
+
+  it('a game that gives a command once the clock reaches a time of its own (sim.time >= 23 / 60) gives it at the same instant at 60 and 240 Hz', () => {
+    // found by a trial of a server and a browser: the clock read k·CONTACT_TICK on the 1/120 s grid,
+    // 0.3833333333333333 after 23 steps of 1/60 s, an ulp short of 23 / 60, so the 60 Hz run threw at 0.4 s
+    // and the 240 Hz run at 0.3875 s, and the two parted there
+    for (const mode of ['off', 'on', 'fixed'] as const) {
+      const run = (hz: number) => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+        addPanel(sim)
+        const events: string[] = []
+        let thrownAt = -1
+        for (let i = 0; i < hz; i++) {
+          sim.step(1 / hz)
+          if (thrownAt < 0 && sim.time >= 23 / 60) {
+            thrownAt = sim.time
+            sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.6, angle: 0.1 })
+          }
+          for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.time}`)
+        }
+        return { events, thrownAt }
+      }
+      const a = run(60)
+      const b = run(240)
+      expect(a.thrownAt, mode).toBe(23 / 60)
+      expect(b.thrownAt, mode).toBe(23 / 60)
+      expect(a.events.length, mode).toBeGreaterThan(0)
+      expect(b.events, mode).toEqual(a.events)
     }
   })
 

@@ -25,6 +25,7 @@ import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, T
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { countTravelHalving, holdsForTravel, travelApplies, travelHalvings } from './fixedTravel.js'
+import { gridInstant } from '../world/gridTime.js'
 
 /** Per packed candidate: its speed, and its reach at each further halving (level h at [h·n + k]; scratch). */
 let speed = new Float64Array(64)
@@ -46,7 +47,7 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
   // only at a tick's own solve, which runs at the end of the window that reaches it (not at a solve a command
   // asked for at a window's start, whose window ends at the tick of this spacing)
   const k = F.nextTick - 1
-  if (w.time !== w.tickEnd || k % 2 !== 0 || w.time !== k * F.tick) return
+  if (w.time !== w.tickEnd || k % 2 !== 0 || w.time !== gridInstant(w.config.CONTACT_TICK, F.halvings, k)) return
   if (!fewPairs(F, sustainedGrowth(F))) return
   if (F.coarsenWait > 0) {
     F.coarsenWait--
@@ -255,12 +256,12 @@ function halve(w: BallWorld, F: FixedContactState, h: number): void {
   // the next tick of the finer spacing after now: the one after this tick, or after now when the solve runs
   // between ticks (one a command asked for)
   let next = (1 << h) * (F.nextTick - 1) + 1
-  while (next * F.tick <= w.time) next++
+  while (gridInstant(w.config.CONTACT_TICK, F.halvings, next) <= w.time) next++
   F.nextTick = next
   // a solve at a window's start: the window ends at that tick at the latest, or on it when the window would
   // end a few ulps short of it (TICK_SNAP, as a step does at a tick); src/schedule.ts solves a window that
   // ends on the next tick
-  const at = next * F.tick
+  const at = gridInstant(w.config.CONTACT_TICK, F.halvings, next)
   if (at <= w.tickEnd || nearTick(at, w.tickEnd, w.tickEnd - w.time)) w.tickEnd = at
 }
 

@@ -1,0 +1,20 @@
+// The instants of the world's contact grid, k·CONTACT_TICK / 2^h (the exact method's launch instants, the
+// fixed tick's ticks at h halvings, the ends a step snaps to): the double nearest the rational time. Where
+// CONTACT_TICK is 1/N s for a whole N (1/120 s, the default), the instant is the division k / (N·2^h),
+// rounded once: the same double as m / n for every rate n whose step boundary m/n it is (src/schedule.ts,
+// rateEnd), and the same at every spacing (k·2^h / (N·2^h) is k / N). Elsewhere the product k·(CONTACT_TICK
+// / 2^h), itself the same double at every spacing (a power of two scales it exactly). As a product on
+// the 1/N grid, 23 steps of 1/60 s read 0.3833333333333333, an ulp short of 23/60, and a game comparing the
+// clock with 23 / 60 fired a step late at 60 Hz and not at 240 Hz.
+
+/** N when `tick` is the double nearest 1/N for a whole N (up to 2^30), else 0. */
+export function wholeRate(tick: number): number {
+  const n = Math.round(1 / tick)
+  return n >= 1 && n <= 0x40000000 && 1 / n === tick ? n : 0
+}
+
+/** The k-th instant of the grid of spacing `tick` / 2^h, `tick` being CONTACT_TICK (see above). */
+export function gridInstant(tick: number, h: number, k: number): number {
+  const n = wholeRate(tick)
+  return n > 0 ? k / (n * (1 << h)) : k * (tick / (1 << h))
+}
