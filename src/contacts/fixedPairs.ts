@@ -146,18 +146,20 @@ export function buildAdjacency(F: FixedContactState): void {
 
 /**
  * Queues the pairs of candidate i, whose velocity or position changed while the pair with key `key` was met:
- * a pair ahead in this sweep joins the heap, one behind (or this one) the next sweep's list (F.active,
- * F.activeCount). Returns the heap's new size.
+ * a pair ahead in this sweep joins it (its key's bit in F.dueKeys), one behind (or this one) the next sweep's
+ * list (F.active, F.activeCount). Returns the sweep's new count of pairs due.
  */
 export function activate(F: FixedContactState, i: number, key: number, back: boolean, stamp: number, size: number): number {
   const pairs = F.pairCount
+  const due = F.dueKeys
   for (let q = F.adjStart[i]!, e = F.adjStart[i + 1]!; q < e; q++) {
     const r = F.adjPairs[q]!
     const kr = back ? pairs - 1 - r : r
     if (kr > key) {
       if (F.pairStamp[r] === stamp) continue
       F.pairStamp[r] = stamp
-      size = heapPush(F.heap, size, kr)
+      due[kr >> 5] = due[kr >> 5]! | (1 << (kr & 31))
+      size++
     } else if (F.nextStamp[r] !== stamp) {
       F.nextStamp[r] = stamp
       F.active[F.activeCount++] = r
@@ -166,20 +168,47 @@ export function activate(F: FixedContactState, i: number, key: number, back: boo
   return size
 }
 
+/** the word of F.dueKeys the sweep has reached (scratch: one projection at a time) */
+let dueWord = 0
+
 /**
- * Starts a sweep over the pairs listed in F.active (for the next sweep): stamps them and builds the heap of
- * their keys (pair order, reversed for a backward sweep); empties the list. Returns the heap's size.
+ * Starts a sweep over the pairs listed in F.active (for the next sweep): stamps them and marks their keys
+ * due (pair order, reversed for a backward sweep); empties the list. Returns the count of pairs due. The
+ * sweep takes them by nextDue in key order, as a heap of the keys gave them (the same bits; a binary heap's
+ * pops were a twentieth of a pumped crowd's stepping).
  */
 export function startSweep(F: FixedContactState, back: boolean, stamp: number): number {
   const pairs = F.pairCount
+  const due = F.dueKeys
+  // a sweep its budget cut short left keys due
+  due.fill(0, 0, (pairs >> 5) + 1)
+  dueWord = 0
   let size = 0
   for (let k = 0; k < F.activeCount; k++) {
     const p = F.active[k]!
     F.pairStamp[p] = stamp
-    size = heapPush(F.heap, size, back ? pairs - 1 - p : p)
+    const key = back ? pairs - 1 - p : p
+    due[key >> 5] = due[key >> 5]! | (1 << (key & 31))
+    size++
   }
   F.activeCount = 0
   return size
+}
+
+/**
+ * The least key due in the sweep, taken off (there is one: the sweep's count of pairs due is above 0). Keys
+ * join a sweep only ahead of the one it has reached (activate), so the search goes on from the word it
+ * reached.
+ */
+export function nextDue(F: FixedContactState): number {
+  const due = F.dueKeys
+  let w = dueWord
+  while (due[w] === 0) w++
+  dueWord = w
+  const bits = due[w]!
+  const low = bits & -bits
+  due[w] = bits ^ low
+  return (w << 5) + 31 - Math.clz32(low)
 }
 
 /** A fresh stamp for the sweeps' marks (the marks are cleared when the stamps wrap). */
@@ -193,31 +222,3 @@ export function nextStamp(F: FixedContactState): number {
   return ++F.stamp
 }
 
-/** Binary min-heap of keys in h[0..size): push, pop (the least key leaves h[0]); return the new size. */
-export function heapPush(h: Int32Array, size: number, key: number): number {
-  let i = size
-  while (i > 0) {
-    const up = (i - 1) >> 1
-    if (h[up]! <= key) break
-    h[i] = h[up]!
-    i = up
-  }
-  h[i] = key
-  return size + 1
-}
-
-export function heapPop(h: Int32Array, size: number): number {
-  const n = size - 1
-  const key = h[n]!
-  let i = 0
-  for (;;) {
-    let c = 2 * i + 1
-    if (c >= n) break
-    if (c + 1 < n && h[c + 1]! < h[c]!) c++
-    if (h[c]! >= key) break
-    h[i] = h[c]!
-    i = c
-  }
-  h[i] = key
-  return n
-}

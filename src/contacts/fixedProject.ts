@@ -12,7 +12,7 @@
 import { LEAN_PROJECTION_BUDGET, MAX_LISTED_SWEEPS, PROJECTION_BUDGET, PROJECTION_QUEUE_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
-import { activate, buildAdjacency, heapPop, nextStamp, normal, nrm, startSweep } from './fixedPairs.js'
+import { activate, buildAdjacency, nextDue, nextStamp, normal, nrm, startSweep } from './fixedPairs.js'
 import { layered } from './fixedLayered.js'
 import { lean, spend } from './fixedBudget.js'
 import { movedA, movedB, pushApart } from './fixedPush.js'
@@ -83,8 +83,8 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
       F.active[F.activeCount++] = p
     }
   }
-  // Gauss-Seidel sweeps over the pairs whose balls moved since the pair was last met: in pair order (a
-  // heap), a pair ahead of the sweep joins it when one of its balls moves, a pair behind joins the next
+  // Gauss-Seidel sweeps over the pairs whose balls moved since the pair was last met: in pair order (the
+  // keys due, as bits), a pair ahead of the sweep joins it when one of its balls moves, a pair behind joins the next
   // sweep; so each sweep does what a full sweep would, less the pairs whose gap cannot have changed
   // (a push queues again every pair of the balls it moved: in a crowd where each ball touches many, that
   // reading, not the visits, is the work, so it has a budget of its own)
@@ -95,8 +95,8 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
     let size = startSweep(F, back, stamp)
     let worst = 0
     while (size > 0 && budget > 0 && queue > 0) {
-      const key = F.heap[0]!
-      size = heapPop(F.heap, size)
+      const key = nextDue(F)
+      size--
       const p = back ? pairs - 1 - key : key
       budget--
       left = budget

@@ -142,8 +142,8 @@ export interface FixedContactState {
   active: Int32Array
   activeCount: number
   moved: Int32Array
-  /** the heap of pair keys of a sweep over listed pairs */
-  heap: Int32Array
+  /** a sweep over listed pairs: its keys due, as bits (key k: bit k & 31 of word k >> 5; fixedPairs.ts) */
+  dueKeys: Int32Array
   /** stamps of the sweeps over listed pairs: a pair in the sweep, a pair in the next sweep, a candidate moved */
   pairStamp: Uint32Array
   nextStamp: Uint32Array
@@ -225,7 +225,7 @@ export function createFixedState(capacity: number, config: Readonly<BallPhysicsC
     active: new Int32Array(n),
     activeCount: 0,
     moved: new Int32Array(n),
-    heap: new Int32Array(n),
+    dueKeys: new Int32Array((n >> 5) + 1),
     pairStamp: new Uint32Array(n),
     nextStamp: new Uint32Array(n),
     ballStamp: new Uint32Array(n),
@@ -288,7 +288,7 @@ export function reserveSweeps(F: FixedContactState, n: number, pairs: number): v
   if (F.active.length < pairs) {
     F.adjPairs = new Int32Array(4 * pairs)
     F.active = new Int32Array(2 * pairs)
-    F.heap = new Int32Array(2 * pairs)
+    F.dueKeys = new Int32Array(((2 * pairs) >> 5) + 1)
     F.pairStamp = new Uint32Array(2 * pairs)
     F.nextStamp = new Uint32Array(2 * pairs)
     F.stamp = 0
