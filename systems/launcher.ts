@@ -71,9 +71,10 @@ export function launcherSystem(w: BallWorld): void {
 const blockers = createIdList(8)
 
 /**
- * Each resting ball on held ball h's spot (x, y) whose back-off is out (backOff) leaves it toward the nearest place off the spot that the
- * closed walls leave it (see wayOff: straight away from the spot's centre unless a wall is in the way, else
- * along that wall), at the speed a head-on strike by h at its launch velocity would give it,
+ * Each resting ball on held ball h's spot (x, y) whose back-off is out (backOff) leaves it toward the
+ * nearest place off the spot that the closed walls leave it (see wayOff: straight away from the spot's
+ * centre unless a wall is in the way, else along that wall), at the speed a head-on strike by h at its
+ * launch velocity would give it,
  * (1 + e)·m_h/(m_h + m_b)·|v_h|, or, if that is less, at the speed that rolls it there against
  * ROLLING_DECEL, √(2·a·s) for a way of length s (with no deceleration, BALL_SETTLE_SPEED); at most
  * MAX_SPEED. The launcher does the work, whatever the masses: kinetic energy is added, as by a throw, and h
