@@ -6,9 +6,14 @@
 export const CHARGE_SECONDS = 1.1
 /** Largest aim, radians either side of straight up. */
 export const MAX_AIM = 1.25
-/** Aim speed while an arrow key is held, rad/s, and the nudge of a single press. */
-const AIM_RATE = 0.7
-const AIM_NUDGE = 0.01
+/**
+ * Aim speed while an arrow key is held, rad/s, from AIM_HOLD s after the press on; the nudge of a single
+ * press. A tap is one nudge at any frame rate (the sweep once began at the press, and a tap of a tenth of a
+ * second turned the aim 3–4 nudges, more at a lower frame rate).
+ */
+export const AIM_RATE = 0.7
+export const AIM_NUDGE = 0.01
+export const AIM_HOLD = 0.25
 
 export interface ThrowRequest {
   /** 0..1 */
@@ -25,6 +30,8 @@ export class ThrowInput {
   private held: number | null = null
   private left = false
   private right = false
+  /** when the arrow key held now was pressed, s */
+  private pressedAt = 0
 
   constructor(private readonly onThrow: (request: ThrowRequest) => void) {}
 
@@ -74,7 +81,11 @@ export class ThrowInput {
 
   /** Advances the meter and the held arrow keys. `now` and `dt` in seconds. */
   update(now: number, dt: number): void {
-    if (this.left !== this.right) this.setAim(this.angle + (this.right ? 1 : -1) * AIM_RATE * dt)
+    if (this.left !== this.right) {
+      // the part of this frame past the hold delay
+      const from = Math.max(now - dt, this.pressedAt + AIM_HOLD)
+      if (now > from) this.setAim(this.angle + (this.right ? 1 : -1) * AIM_RATE * (now - from))
+    }
     if (!this.charging) return
     if (this.held !== null) {
       this.power = this.held
@@ -88,11 +99,11 @@ export class ThrowInput {
   key(code: string, down: boolean, repeat: boolean, now: number): boolean {
     switch (code) {
       case 'ArrowLeft':
-        if (down && !repeat && !this.left) this.setAim(this.angle - AIM_NUDGE)
+        if (down && !repeat && !this.left) this.press(now, -1)
         this.left = down
         return true
       case 'ArrowRight':
-        if (down && !repeat && !this.right) this.setAim(this.angle + AIM_NUDGE)
+        if (down && !repeat && !this.right) this.press(now, 1)
         this.right = down
         return true
       case 'Space':
@@ -102,6 +113,12 @@ export class ThrowInput {
       default:
         return false
     }
+  }
+
+  /** An arrow key pressed: one nudge now, a sweep if it is held past AIM_HOLD. */
+  private press(now: number, sign: number): void {
+    this.setAim(this.angle + sign * AIM_NUDGE)
+    this.pressedAt = now
   }
 
   /** Clears held keys (the window lost focus). */
