@@ -20,7 +20,7 @@ import { createWallsStore, type WallsStore } from '../../components/Walls.js'
 import type { BallPhysicsConfig } from '../config/design.js'
 import { createEventBuffer, type EventBuffer } from '../events.js'
 import { createCollisionState, growCollisionState, type CollisionState } from './contactState.js'
-import { createFixedState, growFixedMass, type FixedContactState } from './fixedState.js'
+import { createFixedState, growFixedMass, grownTo, type FixedContactState } from './fixedState.js'
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { createHoleTable, type HoleCells, type HoleTable } from './holeTable.js'
@@ -105,9 +105,8 @@ export interface BallWorldData {
   kicks: number
   /**
    * by ball id, for a ball the launcher has knocked off a spot: its kicks in a row, and the world time
-   * before which it is kicked no more (systems/launcher.ts: a
-   * ball jammed on a spot is kicked less and less often; the kicked ball's own, so such a spot delays no
-   * other); zeroed when an id becomes a ball
+   * before which it is kicked no more (systems/launcher.ts: a ball jammed on a spot is kicked less and less
+   * often; the kicked ball's own, so such a spot delays no other); zeroed when an id becomes a ball
    */
   kickStreak: Uint8Array
   kickAfter: Float64Array
@@ -196,12 +195,8 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   const sparse = new Uint32Array(cap)
   sparse.set(world.moving.sparse)
   world.moving.sparse = sparse
-  const streak = new Uint8Array(cap)
-  streak.set(world.kickStreak)
-  world.kickStreak = streak
-  const after = new Float64Array(cap)
-  after.set(world.kickAfter)
-  world.kickAfter = after
+  world.kickStreak = grownTo(world.kickStreak, cap)
+  world.kickAfter = grownTo(world.kickAfter, cap)
   if (world.collide !== null) growCollisionState(world.collide, cap)
   if (world.fixed !== null) {
     growFixedMass(world.fixed, cap)

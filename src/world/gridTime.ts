@@ -8,7 +8,7 @@
 // clock with 23 / 60 fired a step late at 60 Hz and not at 240 Hz.
 
 /** N when `tick` is the double nearest 1/N for a whole N (up to 2^30), else 0. */
-export function wholeRate(tick: number): number {
+function wholeRate(tick: number): number {
   const n = Math.round(1 / tick)
   return n >= 1 && n <= 0x40000000 && 1 / n === tick ? n : 0
 }
