@@ -436,24 +436,36 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await page.waitForFunction(() => window.__demo.replaying, null, { timeout: 5_000 })
     expect(await page.textContent('#replay')).toBe('Replaying…')
     expect(await page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThan(0)
-    // Clear while it plays: refused (it once removed the replay's balls, and the recording's own removal of
-    // one then threw in the frame loop, which stopped for good); the replay plays on to the same events
+    // Clear, a throw and a burst while it plays: refused, each with its status line. They run in one task of
+    // the page, checked to start while the replay plays, so that no frame ends the replay between them: a
+    // round of a 100-ball burst lasts 2-5 s, and the replay of a short one once ended before the test's burst.
+    // Clear once removed the replay's balls, and the recording's own removal of one then threw in the frame
+    // loop, which stopped for good; the replay plays on to the same events.
     await page.waitForTimeout(700)
-    await page.click('#clear-balls')
-    // a throw while it plays is not made, and the status line says why (it was dropped without a word)
-    const left = await page.evaluate(() => window.__demo.ballsLeft)
-    await page.evaluate(() => {
-      window.__demo.aim(0.1)
-      window.__demo.charge(0.5)
-      window.__demo.release()
+    const refusals = await page.evaluate(() => {
+      const d = window.__demo
+      const status = (): string => document.getElementById('call-status')!.textContent ?? ''
+      const playing = d.replaying
+      const live = d.liveBalls
+      document.getElementById('clear-balls')!.click()
+      const afterClear = { status: status(), live: d.liveBalls }
+      // a throw is not made, and the status line says why (it was dropped without a word)
+      const left = d.ballsLeft
+      d.aim(0.1)
+      d.charge(0.5)
+      d.release()
+      const afterThrow = { status: status(), used: left - d.ballsLeft }
+      // a burst is refused too, and says so (it did nothing without a word)
+      document.getElementById('multi-10')!.click()
+      return { playing, live, afterClear, afterThrow, afterBurst: { status: status(), live: d.liveBalls } }
     })
-    expect(await page.textContent('#call-status')).toMatch(/A replay is playing: throw when it ends/)
-    expect(await page.evaluate(() => window.__demo.ballsLeft)).toBe(left)
-    // a burst is refused too, and says so (it did nothing without a word)
-    const liveNow = await page.evaluate(() => window.__demo.liveBalls)
-    await page.click('#multi-10')
-    expect(await page.textContent('#call-status')).toMatch(/A replay is playing: bursts, Clear and Stress wait until it ends/)
-    expect(await page.evaluate(() => window.__demo.liveBalls)).toBeLessThanOrEqual(liveNow)
+    expect(refusals.playing).toBe(true)
+    expect(refusals.afterClear.status).toMatch(/A replay is playing: bursts, Clear and Stress wait until it ends/)
+    expect(refusals.afterClear.live).toBe(refusals.live)
+    expect(refusals.afterThrow.status).toMatch(/A replay is playing: throw when it ends/)
+    expect(refusals.afterThrow.used).toBe(0)
+    expect(refusals.afterBurst.status).toMatch(/A replay is playing: bursts, Clear and Stress wait until it ends/)
+    expect(refusals.afterBurst.live).toBe(refusals.live)
     const during = await page.evaluate(() => window.__demo.frames)
     await page.waitForFunction((f) => window.__demo.frames > f + 5, during, { timeout: 10_000 })
     await page.waitForFunction(() => !window.__demo.replaying, null, { timeout: 60_000 })
