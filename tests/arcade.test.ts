@@ -801,6 +801,32 @@ describe('a launcher firing many balls from one point', () => {
     expect(balls.filter((b) => sim.ballState(b).mode !== 'held').length).toBeGreaterThan(5)
   })
 
+  it('a ball thrown at the launch point while a burst waits there queues behind it, even when the spot is clear for a moment', () => {
+    // held balls do not occupy their spot: a ball put down while the last ball launched had just left it was
+    // placed at once (the fixed tick, 1.5 s into a 300-ball burst: it left 27th of 301, not last)
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+      addPanel(sim)
+      sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
+      const r = mulberry32(5)
+      const burst = Array.from({ length: 300 }, () => sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.3 + 0.6 * r(), angle: r() - 0.5 }))
+      const left = new Map<number, number>()
+      let late = -1
+      for (let f = 0; f < 60 * 25 && left.size < 301; f++) {
+        sim.step(1 / 60)
+        sim.drainEvents()
+        for (const b of late > 0 ? [...burst, late] : burst) if (!left.has(b) && sim.ballState(b).mode !== 'held') left.set(b, sim.time)
+        if (f === 90) {
+          expect(sim.world.held.count, mode).toBeGreaterThan(200)
+          late = sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.5, angle: 0 })
+          expect(sim.ballState(late).mode, mode).toBe('held')
+        }
+      }
+      expect(left.size, mode).toBe(301)
+      for (const b of burst) expect(left.get(b)!, `${mode} ${b}`).toBeLessThan(left.get(late)!)
+    }
+  })
+
   it('a held ball removed while it waits leaves the queue; its id, reused, starts clean', () => {
     const { sim, balls } = burst(3)
     sim.removeBall(balls[1]!)

@@ -13,7 +13,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
-import { spotTaken } from '../contacts/spot.js'
+import { heldOn, spotTaken } from '../contacts/spot.js'
 import { betweenSteps, checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
 import { cos, sin } from '../math.js'
 import { record, specOf } from '../world/recorder.js'
@@ -84,8 +84,9 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
   w.Ball.hero[eid] = hero ? 1 : 0
   if (w.collide !== null) w.collide.mass[eid] = mass
   if (w.fixed !== null) w.fixed.mass[eid] = mass
-  // with contacts on, a ball put down where another is waits there until its spot is clear (systems/launcher.ts)
-  if ((w.collide !== null || w.fixed !== null) && spotTaken(w, eid, x, y, radius)) {
+  // with contacts on, a ball put down where another is, or waits, waits there until its spot is clear and the
+  // balls that came before it have left (systems/launcher.ts)
+  if ((w.collide !== null || w.fixed !== null) && (heldOn(w, eid, x, y, radius) || spotTaken(w, eid, x, y, radius))) {
     const B = w.Ball
     B.x[eid] = x
     B.y[eid] = y

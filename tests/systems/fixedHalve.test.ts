@@ -306,7 +306,9 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     // 4 halvings or more: 450-490 ticks, 0.98-0.99 of the energy kept (441-520 ticks, 0.94-0.99, since a
     // meeting of a ball pumped earlier in a call counts as pumped: src/contacts/fixedSolve.ts; 591-733 ticks,
     // 0.95-0.99, in the same time, since a tick is solved again for a tiny ball left closing into a big one
-    // by more than its radius: src/contacts/fixedDeep.ts)
+    // by more than its radius: src/contacts/fixedDeep.ts; 592-816 since a ball put down on a held one is held
+    // behind it: 2-4 more of the 138 wait at the start, and seed 5's crowd, released otherwise, takes 816
+    // ticks against 658)
     for (const travel of [0, 4]) {
       const kept: number[] = []
       for (const seed of [1, 2, 3, 4, 5]) {
@@ -316,7 +318,7 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
         const start = energy()
         for (let i = 0; i < 12; i++) sim.step(1 / 60)
         // 24 ticks at 1/120 s, 16 times that (384) at 4 halvings
-        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 800)
+        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 850)
         const share = energy() / start
         expect(share).toBeLessThanOrEqual(1)
         kept.push(share)
