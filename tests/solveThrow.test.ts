@@ -1,6 +1,6 @@
 // The throw solver (src/api/solveThrow.ts): every answer checked by simulating it in a world of its own.
 import { describe, expect, it } from 'vitest'
-import { addPanel, createBallPhysics, DEFAULT_PANEL, solveThrow, type BallPhysics, type ConfigOverrides, type ThrowOutcome, type ThrowSolution } from '../src/index.js'
+import { addPanel, createBallPhysics, DEFAULT_PANEL, mulberry32, solveThrow, type BallPhysics, type ConfigOverrides, type ThrowOutcome, type ThrowSolution } from '../src/index.js'
 
 const WALLS = { minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5, open: { bottom: true } }
 
@@ -156,5 +156,25 @@ describe('solveThrow', () => {
       for (const dt of [1 / 60, 1 / 240, 0.25]) expect(outcomeOf(sim, holes[i]!, shot, dt), `hole ${i}, step ${dt}`).toBe('capture')
     }
     expect(found).toBeGreaterThanOrEqual(12)
+  })
+
+  it('a throw that would wait at a busy launcher past the 20 s it is followed: the reason says so (it said the other balls spoil the throw); with fewer queued it leaves in time and solves', () => {
+    for (const method of ['on', 'fixed'] as const) {
+      const solve = (n: number, hole: number) => {
+        const { sim, holes } = panel({ BALL_COLLISIONS: method })
+        const rand = mulberry32(3)
+        const L = DEFAULT_PANEL.launch
+        for (let i = 0; i < n; i++) sim.throwBall({ x: L.x, y: L.y, power: 0.5 + 0.5 * rand(), angle: (rand() - 0.5) * 2 })
+        sim.step(1 / 60)
+        return solveThrow(sim, { from: L, hole: holes[hole]!, outcome: 'capture' })
+      }
+      for (const hole of [0, 5, 20]) {
+        const busy = solve(600, hole)
+        expect(busy.found, `${method}, hole ${hole}`).toBe(false)
+        if (!busy.found) expect(busy.reason, method).toMatch(/^a ball thrown from \(210, 450\) now waits held at its spot behind the balls queued there \(599 held\) for longer than the 20 s a throw is followed/)
+      }
+      // behind 99 balls it waits too, but leaves within the 20 s
+      expect(solve(100, 5).found, method).toBe(true)
+    }
   })
 })

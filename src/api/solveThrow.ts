@@ -154,6 +154,10 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
     }
     return { found: true, from: { x: c.x, y: fy }, power: c.power, angle: c.angle, margin, time, trials: trial.count + exact.count }
   }
+  // every one waited at a launcher's queue past the horizon: say so (the throw is not wrong, only late)
+  if (exact.heldThrough === tries) {
+    return fail(`a ball thrown from (${found[0]!.x}, ${fy}) now waits held at its spot behind the balls queued there (${world.held.count} held) for longer than the ${HORIZON} s a throw is followed: try again when the launcher has room`, trial.count + exact.count)
+  }
   return fail(`throws that give ${outcome} at hole ${hole} with the panel alone do not with the world's other balls (${tries} tried)`, trial.count + exact.count)
 }
 

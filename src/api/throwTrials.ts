@@ -25,10 +25,11 @@ function outcomeAt(type: number, eventHole: number, hole: number): ThrowOutcome 
 
 /**
  * Steps `sim` (MAX_STEP at a time, up to HORIZON) until ball `b` meets `hole` decisively or stops; the
- * outcome there (null: none) and its time after `t0`, s.
+ * outcome there (null: none), its time after `t0`, s, and whether the ball was still held at its spot at
+ * the end (queued at a launcher the whole time).
  */
-function follow(sim: BallPhysics, b: number, hole: number, t0: number, dt: number): { outcome: ThrowOutcome | null; at: number } {
-  const found = { outcome: null as ThrowOutcome | null, at: -1 }
+function follow(sim: BallPhysics, b: number, hole: number, t0: number, dt: number): { outcome: ThrowOutcome | null; at: number; held: boolean } {
+  const found = { outcome: null as ThrowOutcome | null, at: -1, held: false }
   const visit = (e: { code: number; ball: number; hole: number; time: number }): void => {
     if (found.outcome !== null || e.ball !== b) return
     found.outcome = outcomeAt(e.code, e.hole, hole)
@@ -41,6 +42,7 @@ function follow(sim: BallPhysics, b: number, hole: number, t0: number, dt: numbe
     const m = mode[b]
     if (m === BallMode.Captured || m === BallMode.Out || m === BallMode.Resting) break
   }
+  found.held = mode[b] === BallMode.Held
   return found
 }
 
@@ -86,6 +88,8 @@ export class Trial {
 /** The throw simulated in an exact copy of the world (a snapshot restored into a fresh one). */
 export class ExactCheck {
   count = 0
+  /** runs whose ball was still held at its spot when the check stopped following it (HORIZON s) */
+  heldThrough = 0
   private readonly bytes: Uint8Array
   constructor(
     private readonly world: BallWorld,
@@ -103,6 +107,7 @@ export class ExactCheck {
     copy.restore(this.bytes)
     copy.drainEvents()
     const found = follow(copy, copy.throwBall({ x, y, power, angle }), this.hole, copy.time, this.dt)
+    if (found.held) this.heldThrough++
     return found.outcome === outcome ? found.at : -1
   }
 }
