@@ -108,7 +108,7 @@ export class Game {
   ballsLeft = BALLS_PER_GAME
   /** captures of the player's balls per hole (layout order), this game */
   gameCaptures: number[] = []
-  /** events seen since the page loaded (never reset), and by type */
+  /** events seen this game (a new game starts them at 0), and by type */
   eventsSeen = 0
   readonly eventCounts: Record<string, number> = Object.fromEntries(EVENT_TYPE_NAMES.map((t) => [t, 0]))
   /** the last events (newest last), for the log and the test hook */
@@ -161,6 +161,29 @@ export class Game {
 
   get gameOver(): boolean {
     return this.ballsLeft === 0 && this.playerMoving === 0
+  }
+
+  /**
+   * The player's ball waiting at its spot (held: contacts on, thrown where other balls are or wait), and how
+   * many held balls on that spot are ahead of it in the queue; null when no ball of the player's waits.
+   */
+  get playerWaiting(): { id: number; ahead: number } | null {
+    const w = this.sim.world
+    const q = w.held
+    const B = w.Ball
+    const D = this.DemoBall
+    for (let i = 0; i < q.count; i++) {
+      const p = q.ids[i]!
+      if (B.mode[p] !== BallMode.Held || !hasComponent(w, p, D) || D.kind[p] !== Kind.Player) continue
+      let ahead = 0
+      for (let j = 0; j < i; j++) {
+        const h = q.ids[j]!
+        const s = B.radius[h]! + B.radius[p]!
+        if (B.mode[h] === BallMode.Held && (B.x[h]! - B.x[p]!) ** 2 + (B.y[h]! - B.y[p]!) ** 2 < s * s) ahead++
+      }
+      return { id: p, ahead }
+    }
+    return null
   }
 
   /** Balls of the player still rolling or on a rim. */
@@ -240,7 +263,7 @@ export class Game {
     return true
   }
 
-  /** A new game: pending overrides applied, panel cleared, score 0, ten balls. */
+  /** A new game: pending overrides applied, panel cleared, score 0, ten balls, the event counts at 0. */
   reset(): void {
     if (!this.applyPending()) this.rebuild()
     this.score = 0
@@ -249,6 +272,8 @@ export class Game {
     this.stressTarget = 0
     this.recent.length = 0
     this.lastThrow = null
+    this.eventsSeen = 0
+    for (const t of EVENT_TYPE_NAMES) this.eventCounts[t] = 0
   }
 
   holeIndex(hole: number | undefined): number {

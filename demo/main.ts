@@ -10,7 +10,7 @@ import { MAP_SPEC, OutcomeView } from './outcomeView'
 import { BALL_MODE_NAMES, EVENT_TYPE_NAMES, type ThrowFailure, type ThrowSolution } from '../src/index'
 import { BallMode } from '../src/ecs'
 import type { ShotReply } from './shotCall'
-import { eventColor, hex, modeColor } from './theme'
+import { PLAIN_BALL, PLAYER_BALL, eventColor, hex, modeColor } from './theme'
 import { createTuning } from './tuning'
 
 /** Logical size of the drawing; it is scaled to fit the stage element. */
@@ -130,9 +130,15 @@ async function main(): Promise<void> {
   }
   syncOpts()
 
-  el('mode-legend').innerHTML = (BALL_MODE_NAMES as readonly string[]).filter((m) => m !== 'out' && m !== 'held') // held balls wait unseen in the launcher
-    .map((m) => `<span><i style="background:${hex(modeColor(m))}"></i>${m}</span>`)
-    .join('')
+  // the legend names the colours the balls are drawn in: by mode, or (colouring off) the player's and the rest
+  const legend = (): void => {
+    const keys: Array<[string, number]> = showModes.checked
+      ? (BALL_MODE_NAMES as readonly string[]).filter((m) => m !== 'out' && m !== 'held').map((m) => [m, modeColor(m)]) // held balls wait unseen in the launcher
+      : [['your ball', PLAYER_BALL], ['other balls', PLAIN_BALL]]
+    el('mode-legend').innerHTML = keys.map(([m, c]) => `<span><i style="background:${hex(c)}"></i>${m}</span>`).join('')
+  }
+  showModes.addEventListener('change', legend)
+  legend()
 
   // ---- input: pointer, keyboard and the test hook all drive the same ThrowInput ----
   const now = (): number => performance.now() / 1000
@@ -141,7 +147,10 @@ async function main(): Promise<void> {
     const blocked = game.throwBlocked
     if (!game.throwPlayer(request)) {
       if (blocked !== null) callStatus.textContent = blocked
-    } else if (!calling && awaiting < 0) callStatus.textContent = '' // a refusal shown before is stale now
+    } else if (!calling && awaiting < 0) {
+      callStatus.textContent = '' // a refusal shown before is stale now
+      syncWaiting() // the ball waits at the launcher: say so now, not a frame later
+    }
   })
   const canvas = app.canvas
   const launch = game.panel.launch
@@ -288,9 +297,23 @@ async function main(): Promise<void> {
     game.setStress(on ? stressN : 0)
     syncStress()
   }
+  // the player's ball held at its spot (contacts on: thrown where other balls are or wait) says so, and how
+  // many wait there ahead of it; the line clears when it leaves (it waited unseen behind a burst)
+  const WAITING = 'Your ball waits at the launcher'
+  const syncWaiting = (): void => {
+    const waiting = game.playerWaiting
+    const text = callStatus.textContent ?? ''
+    const shown = text.startsWith(WAITING)
+    if (waiting === null) {
+      if (shown) callStatus.textContent = ''
+    } else if (text === '' || shown) {
+      setText(callStatus, waiting.ahead === 0 ? `${WAITING} until its spot is clear.` : `${WAITING} behind ${waiting.ahead.toLocaleString('en-US')} ${waiting.ahead === 1 ? 'ball' : 'balls'}: it leaves after them.`)
+    }
+  }
   const newGame = (): void => {
     input.cancel()
     game.reset()
+    regime.clear() // the regime map's dots are of the game before
     syncStress()
     if (!calling) callStatus.textContent = '' // a refusal or an answer of the game before
   }
@@ -403,6 +426,27 @@ async function main(): Promise<void> {
     fromBtn.textContent = from === 'launcher' ? 'From: launcher' : 'From: bottom edge'
   }
   button('burst-from', () => setBurstFrom(game.burstFrom === 'edge' ? 'launcher' : 'edge'))
+  // a button whose label changes keeps the width of its widest label, so the row never reflows (a press
+  // of Contacts or From moved the buttons after it, to another line at some widths)
+  const steadyWidth = (b: HTMLButtonElement, labels: readonly string[]): void => {
+    const shown = b.textContent
+    b.style.minWidth = ''
+    b.style.boxSizing = 'border-box'
+    let widest = 0
+    for (const l of labels) {
+      b.textContent = l
+      widest = Math.max(widest, b.getBoundingClientRect().width)
+    }
+    b.textContent = shown
+    if (widest > 0) b.style.minWidth = `${Math.ceil(widest)}px`
+  }
+  const steadyButtons = (): void => {
+    steadyWidth(contactsBtn, Object.values(CONTACT_LABEL).map((l) => `Contacts: ${l}`))
+    steadyWidth(fromBtn, ['From: bottom edge', 'From: launcher'])
+    steadyWidth(replayBtn, ['Replay round', 'Replaying…'])
+  }
+  steadyButtons()
+  void document.fonts.ready.then(steadyButtons)
   // lil-gui keeps key events from leaving its controls: a tuning button keeps no focus, so the keys go on
   // working after it (as after the demo's own buttons)
   el('gui').addEventListener('click', (e) => {
@@ -485,6 +529,7 @@ async function main(): Promise<void> {
     const held = game.sim.world.held.count
     setText(ballCountLabel, held > 0 ? `Balls in play · ${held.toLocaleString('en-US')} waiting` : 'Balls in play')
     syncReplay()
+    syncWaiting()
     syncCall()
     syncContacts()
     syncStress()
@@ -634,6 +679,10 @@ async function main(): Promise<void> {
     },
     get renderer() {
       return { type: app.renderer.name, software, antialias: aa === null ? !software : aa !== '0' }
+    },
+    /** dots on the regime map now */
+    get regimeDots() {
+      return regime.shown
     },
     get plotted() {
       return regime.plotted

@@ -6,7 +6,7 @@ import { BALL_MODE_NAMES, cogRadius } from '../src/index'
 import { BallMode } from '../src/ecs'
 import { BALLS_PER_GAME, Kind, type DemoEvent, type Game } from './game'
 import type { ThrowInput } from './input'
-import { COLORS, FONT, MONO, PLAIN_BALL, eventColor, modeColor, valueColor } from './theme'
+import { COLORS, FONT, MONO, PLAIN_BALL, PLAYER_BALL, eventColor, modeColor, valueColor } from './theme'
 
 export interface InspectorOptions {
   modeColors: boolean
@@ -14,6 +14,8 @@ export interface InspectorOptions {
   labels: boolean
 }
 
+/** Opacity of the player's ball while it waits at the launcher. */
+export const HELD_PLAYER_ALPHA = 0.35
 /** Most velocity vectors drawn per frame (the rest are skipped, so stress mode stays fast). */
 const MAX_VECTORS = 2500
 /** Seconds a velocity vector spans. */
@@ -81,7 +83,7 @@ export class PanelView {
   private readonly labelsLayer = new Container()
   private readonly tallyLayer = new Container()
   private readonly balls: ParticleContainer
-  /** held balls drawn visible in the last frame (the page's test hook reads it; 0: they wait unseen in the launcher) */
+  /** held balls drawn visible in the last frame (the page's test hook reads it): the player's, faint; the others wait unseen in the launcher */
   heldVisible = 0
   private readonly vectors = new Graphics()
   private readonly flashG = new Graphics()
@@ -288,9 +290,10 @@ export class PanelView {
       }
       const m = M[id]!
       // a held ball waits inside the launcher (the stats count it as waiting): drawn, a queue of them stacked
-      // on the launch spot looked like balls inside one another
-      const a = m === BallMode.Held ? 0 : g.opacity(id) * (m === BallMode.Captured ? 0.9 : 1)
-      p.color = packColor(opt.modeColors ? (modeColors[m] ?? PLAIN_BALL) : g.kind[id] === Kind.Player ? 0xfbe7a1 : PLAIN_BALL, a)
+      // on the launch spot looked like balls inside one another. The player's own is drawn faint, so that a
+      // throw queued behind a burst is seen waiting (the status line says how many are ahead of it)
+      const a = m === BallMode.Held ? (g.kind[id] === Kind.Player ? HELD_PLAYER_ALPHA : 0) : g.opacity(id) * (m === BallMode.Captured ? 0.9 : 1)
+      p.color = packColor(opt.modeColors ? (modeColors[m] ?? PLAIN_BALL) : g.kind[id] === Kind.Player ? PLAYER_BALL : PLAIN_BALL, a)
       if (m === BallMode.Held && p.color >>> 24 !== 0) heldVisible++
     }
     this.heldVisible = heldVisible
@@ -434,7 +437,7 @@ export class PanelView {
     const trayY = g.panel.height + 16
     for (let i = 0; i < BALLS_PER_GAME; i++) {
       const x = 12 + i * 15
-      if (i < g.ballsLeft) tg.circle(x, trayY, 5.5).fill({ color: 0xfbe7a1 })
+      if (i < g.ballsLeft) tg.circle(x, trayY, 5.5).fill({ color: PLAYER_BALL })
       else tg.circle(x, trayY, 5).stroke({ width: 1, color: 0x4a5878 })
     }
 

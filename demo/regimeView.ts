@@ -68,6 +68,11 @@ export class RegimeView {
   private lastPlayer: DemoEvent | null = null
   plotted = 0
 
+  /** dots on the map now (at most DOTS; cleared for a new game or config) */
+  get shown(): number {
+    return this.count
+  }
+
   constructor() {
     this.dots = new ParticleContainer({
       texture: this.texture,

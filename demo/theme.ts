@@ -54,6 +54,8 @@ export function modeColor(mode: string): number {
 }
 /** Ball colour when "colour by mode" is off. */
 export const PLAIN_BALL = 0xd8dee9
+/** The player's balls when "colour by mode" is off, and the tray of balls left. */
+export const PLAYER_BALL = 0xfbe7a1
 
 /** Colour of a hole's value label by points. */
 export function valueColor(value: number): number {

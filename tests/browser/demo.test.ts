@@ -37,6 +37,7 @@ interface DemoHook {
   playerInPlay: number
   throwsMade: number
   plotted: number
+  regimeDots: number
   fps: number
   physicsMs: number
   eventCounts: Record<string, number>
@@ -408,9 +409,26 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       expect(state.away, mode).toBeGreaterThanOrEqual(8)
       expect(state.held, mode).toBeLessThan(1000 - 30)
       expect(state.held, mode).toBeGreaterThan(500)
+      // the player's throw now queues behind the burst's held balls (it left ahead of most of them): drawn
+      // faint at the launcher, and the status line says how many wait ahead of it (it waited unseen)
+      // (one task of the page: no frame launches a ball between the count and the throw)
+      const queued = await page.evaluate(() => {
+        const held = window.__demo.heldBalls
+        window.__demo.aim(0)
+        window.__demo.charge(0.5)
+        window.__demo.release()
+        return { held, status: document.getElementById('call-status')!.textContent ?? '' }
+      })
+      expect(queued.held, mode).toBeGreaterThan(400)
+      expect(queued.status, mode).toBe(`Your ball waits at the launcher behind ${queued.held.toLocaleString('en-US')} balls: it leaves after them.`)
+      const thrown = await page.evaluate(() => window.__demo.frames)
+      await page.waitForFunction((f) => window.__demo.frames > f + 1, thrown, { timeout: 5_000 })
+      expect(await page.evaluate(() => window.__demo.heldDrawn), mode).toBe(1)
       await page.waitForFunction((s) => window.__demo.score > s, score0, { timeout: 30_000 })
+      // Clear takes the burst's balls: the player's leaves the launcher, and the line clears
       await page.click('#clear-balls')
-      expect(await page.evaluate(() => window.__demo.heldBalls)).toBe(0)
+      await expect.poll(() => page.evaluate(() => window.__demo.heldBalls)).toBe(0)
+      await expect.poll(() => page.textContent('#call-status')).toBe('')
     }
     await page.click('#burst-from')
     expect(await page.textContent('#burst-from')).toBe('From: bottom edge')
@@ -509,10 +527,15 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     })
     expect(await page.textContent('#call-status')).toMatch(/No balls left: start a new game/)
     await page.click('#clear-balls')
+    expect(await page.evaluate(() => window.__demo.regimeDots)).toBeGreaterThan(0)
     await page.click('#reset')
     await page.waitForFunction(() => window.__demo.score === 0 && window.__demo.ballsLeft === 10)
-    // the new game drops the old game's refusal (it stayed beside ten new balls)
+    // the new game drops the old game's refusal (it stayed beside ten new balls), its event counts and the
+    // regime map's dots (they stayed from the game before)
     expect(await page.textContent('#call-status')).toBe('')
+    const fresh = await page.evaluate(() => ({ seen: window.__demo.eventsSeen, counts: Object.values(window.__demo.eventCounts).reduce((a, b) => a + b, 0), dots: window.__demo.regimeDots }))
+    expect(fresh).toEqual({ seen: 0, counts: 0, dots: 0 })
+    expect(await page.textContent('#events-seen')).toBe('0')
     expect(problems).toEqual([])
   })
 
@@ -768,6 +791,34 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
     await page.keyboard.press('Digit2')
     await expect.poll(() => page.evaluate(() => window.__demo.liveBalls)).toBeGreaterThanOrEqual(live + 100)
     await page.click('#clear-balls')
+    expect(problems).toEqual([])
+  })
+
+  it('the buttons whose labels change (Contacts, From, Replay) keep their width: a press moves no other button', async () => {
+    for (const width of [1400, 1000, 800]) {
+      await page.setViewportSize({ width, height: 860 })
+      const boxes = () =>
+        page.evaluate(() =>
+          [...document.querySelectorAll('.buttons button')].map((b) => {
+            const r = b.getBoundingClientRect()
+            return `${b.id} ${r.x.toFixed(1)},${r.y.toFixed(1)} ${r.width.toFixed(1)}`
+          }),
+        )
+      const before = await boxes()
+      const seen: string[][] = []
+      for (let i = 0; i < 3; i++) {
+        await page.click('#contacts')
+        seen.push(await boxes())
+      }
+      for (let i = 0; i < 2; i++) {
+        await page.click('#burst-from')
+        seen.push(await boxes())
+      }
+      for (const s of seen) expect(s, `${width} px`).toEqual(before)
+    }
+    await page.setViewportSize({ width: 1400, height: 860 })
+    expect(await page.textContent('#contacts')).toBe('Contacts: off')
+    expect(await page.textContent('#burst-from')).toBe('From: bottom edge')
     expect(problems).toEqual([])
   })
 })
