@@ -103,12 +103,35 @@ async function main(): Promise<void> {
   world.addChild(panel.root, regime.root)
   app.stage.addChild(world)
 
+  // Two arrangements of the drawing: side by side (the regime map right of the panel), or stacked (the map
+  // under the panel) where that draws the panel larger: a portrait phone drew the panel side by side at
+  // about 185 px wide. The stacked size is measured from the two views once they are first drawn.
+  let stackedAt: { x: number; y: number; W: number; H: number } | null = null
+  const measureStacked = (): void => {
+    const box = (c: Container): { x: number; y: number; width: number; height: number } => {
+      const b = c.getLocalBounds() // a bounds object pixi reuses: copied at once
+      return { x: b.x, y: b.y, width: b.width, height: b.height }
+    }
+    const pb = box(panel.root)
+    const rb = box(regime.root)
+    const x = PANEL_AT.x + pb.x + Math.max(0, (pb.width - rb.width) / 2) - rb.x
+    const y = PANEL_AT.y + pb.y + pb.height + 16 - rb.y
+    const W = Math.ceil(Math.max(PANEL_AT.x + pb.x + pb.width, x + rb.x + rb.width) + PANEL_AT.x + pb.x)
+    stackedAt = { x, y, W, H: Math.ceil(y + rb.y + rb.height + 12) }
+  }
+  let stacked = false
   const layout = (): void => {
     const w = app.screen.width
     const h = app.screen.height
-    const s = Math.min(w / STAGE_W, h / STAGE_H)
+    const side = Math.min(w / STAGE_W, h / STAGE_H)
+    const S = stackedAt
+    const tall = S === null ? 0 : Math.min(w / S.W, h / S.H)
+    stacked = S !== null && tall > side * 1.1
+    const [W, H, s] = S !== null && stacked ? [S.W, S.H, tall] : [STAGE_W, STAGE_H, side]
+    if (S !== null && stacked) regime.root.position.set(S.x, S.y)
+    else regime.root.position.set(REGIME_AT.x, REGIME_AT.y)
     world.scale.set(s)
-    world.position.set(Math.round((w - STAGE_W * s) / 2), Math.round(Math.min(12 * s, (h - STAGE_H * s) / 2)))
+    world.position.set(Math.round((w - W * s) / 2), Math.round(Math.min(12 * s, (h - H * s) / 2)))
   }
   app.renderer.on('resize', layout)
   layout()
@@ -520,6 +543,10 @@ async function main(): Promise<void> {
     regime.onEvents(result.events)
     panel.draw(game.clock.alpha, input, opts)
     regime.draw()
+    if (stackedAt === null) {
+      measureStacked()
+      layout()
+    }
     outcomes.frame(input.power, input.angle)
     frames++
     setText(hud.score, String(game.score))
@@ -679,6 +706,10 @@ async function main(): Promise<void> {
     },
     get renderer() {
       return { type: app.renderer.name, software, antialias: aa === null ? !software : aa !== '0' }
+    },
+    /** how the drawing is arranged: the regime map beside the panel, or under it (narrow, tall stages) */
+    get stageLayout() {
+      return stacked ? 'stacked' : 'side by side'
     },
     /** dots on the regime map now */
     get regimeDots() {

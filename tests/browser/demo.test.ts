@@ -38,6 +38,7 @@ interface DemoHook {
   throwsMade: number
   plotted: number
   regimeDots: number
+  stageLayout: 'stacked' | 'side by side'
   fps: number
   physicsMs: number
   eventCounts: Record<string, number>
@@ -650,8 +651,15 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
         if (width <= 900) expect(m.aside.top, `${width} px`).toBeGreaterThanOrEqual(m.stage.bottom - 1)
         else expect(m.aside.left, `${width} px`).toBeGreaterThanOrEqual(m.stage.right - 1)
         // in one column the stage is as tall as on a fresh load, the wider window's height not kept (it kept
-        // the canvas's last size: 887 px at 390 px wide after 1400 × 1000, an empty band under the drawing)
-        if (width <= 900) expect(m.stage.height, `${width} px`).toBeCloseTo(560, 0)
+        // the canvas's last size: 887 px at 390 px wide after 1400 × 1000, an empty band under the drawing):
+        // 560 px, and on a phone as tall as the drawing stacked (the regime map under the panel) needs
+        if (width <= 600) expect(m.stage.height, `${width} px`).toBeCloseTo((width * 9) / 5, 0)
+        else if (width <= 900) expect(m.stage.height, `${width} px`).toBeCloseTo(560, 0)
+        // the arrangement that draws the panel larger: stacked on a phone (side by side, the panel was drawn
+        // 185 px wide at 390 px), side by side in a wide window (in between, whichever is larger there)
+        if (width <= 600 || width >= 1000) await expect.poll(() => page.evaluate(() => window.__demo.stageLayout), { message: `${width} px` }).toBe(width <= 600 ? 'stacked' : 'side by side')
+        const drawn = await page.evaluate((pw) => window.__demo.toPage(pw, 0).x - window.__demo.toPage(0, 0).x, DEFAULT_PANEL.width)
+        if (width <= 600) expect(drawn, `${width} px`).toBeGreaterThan(0.75 * width)
       }
     } finally {
       await page.setViewportSize({ width: 1400, height: 860 })
