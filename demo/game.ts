@@ -168,6 +168,7 @@ export class Game {
    * many held balls on that spot are ahead of it in the queue; null when no ball of the player's waits.
    */
   get playerWaiting(): { id: number; ahead: number } | null {
+    if (this.playerMoving === 0) return null // a held ball of the player's is one in play (cheap: most frames)
     const w = this.sim.world
     const q = w.held
     const B = w.Ball
