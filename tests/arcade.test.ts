@@ -853,6 +853,28 @@ describe('a launcher firing many balls from one point', () => {
     }
   })
 
+  it('putting down 80,000 balls, half of them held at spots of their own, costs time linear in the balls (a held grid, not a scan of the queue per ball)', () => {
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode }, { capacity: 80_100 })
+      const t0 = performance.now()
+      const first: number[] = []
+      for (let i = 0; i < 40_000; i++) {
+        const at = { x: 30 * (i % 200), y: 30 * Math.floor(i / 200), vx: 10, vy: 0 }
+        first.push(sim.addBall(at))
+        sim.addBall(at)
+      }
+      const ms = performance.now() - t0
+      expect(sim.world.held.count, mode).toBe(40_000)
+      // a scan of the queue per ball was 8·10⁸ distance tests here (2.3 s at half the balls); the grid is 80,000 lookups
+      expect(ms, mode).toBeLessThan(timeBudget(3000))
+      // a spot whose moving ball is gone, with a ball still held on it: a ball put down there queues behind
+      // the held one (the spot is clear of moving balls); one put down beside every spot is not held
+      sim.removeBall(first[777]!)
+      expect(sim.ballState(sim.addBall({ x: 30 * 177 + 3, y: 30 * 3, vx: 0, vy: 0 })).mode, mode).toBe('held')
+      expect(sim.ballState(sim.addBall({ x: 30 * 200 + 20, y: 30 * 13, vx: 0, vy: 0 })).mode, mode).toBe('rolling')
+    }
+  })
+
   it('a resting ball set moving by a command is found by the next spot check at the same time (adversarial counterexample)', () => {
     for (const mode of ['on', 'fixed'] as const) {
       const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })

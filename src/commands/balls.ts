@@ -14,6 +14,7 @@ import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
 import { heldOn, spotTaken } from '../contacts/spot.js'
+import { heldJoin } from '../world/heldGrid.js'
 import { betweenSteps, checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
 import { cos, sin } from '../math.js'
 import { record, specOf } from '../world/recorder.js'
@@ -94,6 +95,7 @@ function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, rad
     B.vy[eid] = vy
     setBallMode(w, eid, BallMode.Held)
     pushId(w.held, eid)
+    heldJoin(w, eid)
     return eid
   }
   placeBall(w, eid, x, y, vx, vy)

@@ -26,8 +26,8 @@ import { checkWorld } from './validate.js'
 import { BALL_MODE_NAMES } from '../../components/Ball.js'
 import { checksum, configText, kindOf, readValue, Reader, SnapshotError, writeValue, Writer } from './snapshotCodec.js'
 
-/** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps; 3: the path's origin and next event in world.pathHot; 4: the contact state keeps where each path may change next and what each prediction covered; 5: and the planner's distance to that change, with the path it was found for; the event heap as times and pool entries; 6: the fixed tick's halvings and its last tick's pairs; 7: and its coarsening back-off; 8: the exact method's contact counts per contact tick of the clock, not per step; 9: each buffered event's phase at its instant; 10: instead, the start of the window that recorded it; 11: the fixed tick's growth of its pairs over its last ticks; 12: the fixed tick's work meter; 13: and the spans whose last ticks it skipped; 14: the launcher's kick back-off; 15: that back-off per held ball, by id). */
-export const SNAPSHOT_VERSION = 15
+/** Version of the byte format; restore refuses any other (2: the contact state keeps predictions across steps; 3: the path's origin and next event in world.pathHot; 4: the contact state keeps where each path may change next and what each prediction covered; 5: and the planner's distance to that change, with the path it was found for; the event heap as times and pool entries; 6: the fixed tick's halvings and its last tick's pairs; 7: and its coarsening back-off; 8: the exact method's contact counts per contact tick of the clock, not per step; 9: each buffered event's phase at its instant; 10: instead, the start of the window that recorded it; 11: the fixed tick's growth of its pairs over its last ticks; 12: the fixed tick's work meter; 13: and the spans whose last ticks it skipped; 14: the launcher's kick back-off; 15: that back-off per held ball, by id; 16: the held balls' grid). */
+export const SNAPSHOT_VERSION = 16
 
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 

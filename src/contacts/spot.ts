@@ -9,6 +9,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { isMoving, pushId, type IdList } from '../world/idLists.js'
 import { restingState } from '../world/restingGrid.js'
 import { buildSpotGrid } from '../world/spotGrid.js'
+import { buildHeldGrid } from '../world/heldGrid.js'
 import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
@@ -23,20 +24,34 @@ export function spotTaken(w: BallWorld, self: number, x: number, y: number, r: n
  * `self` aside: a ball put down there queues behind it, held too. Without this, a ball put down while the
  * spot was clear for a moment (the ball launched last had just left it) was placed at once, ahead of every
  * ball waiting there: one thrown at the launch point 1.5 s into a 300-ball burst left 27th of 301, not last.
- * The queue is read from its end, where a burst's balls overlap the one put down after them at once.
+ * Through the held grid (src/world/heldGrid.ts); a lookup wider than the grid's table reads the queue.
  */
 export function heldOn(w: BallWorld, self: number, x: number, y: number, r: number): boolean {
   const q = w.held
-  const B = w.Ball
-  for (let i = q.count - 1; i >= 0; i--) {
-    const h = q.ids[i]!
-    if (h === self || B.live[h] !== 1 || B.mode[h] !== BallMode.Held) continue
-    const dx = B.x[h]! - x
-    const dy = B.y[h]! - y
-    const s = B.radius[h]! + r
-    if (dx * dx + dy * dy < s * s) return true
+  if (q.count === 0) return false
+  const C = restingState(w)
+  if (C === null) return false
+  if (!C.heldBuilt || C.heldTime !== w.time) buildHeldGrid(w, C)
+  const reach = r + C.heldMaxR
+  if (capsuleCellsOver(C, pointQuery(x, y, reach), q.count)) {
+    for (let i = q.count - 1; i >= 0; i--) if (heldAt(w, q.ids[i]!, self, x, y, r)) return true
+    return false
+  }
+  const k = capsuleCells(C, pointQuery(x, y, reach), C.heldHead.length - 1)
+  for (let i = 0; i < k; i++) {
+    for (let b = C.heldHead[C.cells[i]!]!; b !== 0; b = C.heldNext[b]!) if (heldAt(w, b, self, x, y, r)) return true
   }
   return false
+}
+
+/** A ball h other than `self`, live and held, overlapping the circle (x, y, r). */
+function heldAt(w: BallWorld, h: number, self: number, x: number, y: number, r: number): boolean {
+  const B = w.Ball
+  if (h === self || B.live[h] !== 1 || B.mode[h] !== BallMode.Held) return false
+  const dx = B.x[h]! - x
+  const dy = B.y[h]! - y
+  const s = B.radius[h]! + r
+  return dx * dx + dy * dy < s * s
 }
 
 /**

@@ -128,6 +128,19 @@ export interface CollisionState {
   spotMaxR: number
   spotBuilt: boolean
   /**
+   * held grid (src/world/heldGrid.ts): the balls held at their spots, hashed by the cell of their spot at the
+   * world's time `heldTime`, built as the spot grid is; links by ball id (0: end), the build each ball was
+   * linked in, the balls linked, the largest radius in it, whether it is built
+   */
+  heldHead: Uint32Array
+  heldNext: Uint32Array
+  heldIn: Uint32Array
+  heldGen: number
+  heldLinked: number
+  heldTime: number
+  heldMaxR: number
+  heldBuilt: boolean
+  /**
    * contacts each ball took within one contact tick of the world's clock, [k·CONTACT_TICK, (k + 1)·CONTACT_TICK)
    * (valid where tickContactsAt[ball] === k + 1; 0: none yet)
    */
@@ -213,6 +226,14 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     spotTime: 0,
     spotMaxR: 0,
     spotBuilt: false,
+    heldHead: new Uint32Array(1 << 4),
+    heldNext: new Uint32Array(capacity),
+    heldIn: new Uint32Array(capacity),
+    heldGen: 0,
+    heldLinked: 0,
+    heldTime: 0,
+    heldMaxR: 0,
+    heldBuilt: false,
     now: 0,
     contacts: 0,
     predictions: 0,
@@ -274,6 +295,8 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.seen = grown(C.seen, capacity)
   C.spotNext = grown(C.spotNext, capacity)
   C.spotIn = grown(C.spotIn, capacity)
+  C.heldNext = grown(C.heldNext, capacity)
+  C.heldIn = grown(C.heldIn, capacity)
   C.entStart = grown(C.entStart, capacity)
   C.entLen = grown(C.entLen, capacity)
   C.entStep = grown(C.entStep, capacity)
