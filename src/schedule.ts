@@ -231,13 +231,20 @@ function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: n
   world.tickEnd = tEnd
   // events at this instant from here on come after those of the window that ended here (src/events.ts)
   world.events.windowFrom = world.time
-  // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball
-  const maxPasses = world.collide === null ? world.config.MAX_EVENT_PASSES : world.config.MAX_EVENT_PASSES * (world.moving.count + 1)
-  setLipBatching(world.collide !== null && world.config.RIM_MODEL !== 'tabulated' && isDefault(schedule))
+  // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball,
+  // the most that have moved in the step: counted at its start alone, a step that began with none moving and
+  // a held ball launched into a resting crowd ran out at 256 passes and waited out the rest (a cascade that
+  // set 30 balls moving), where the steps of a higher rate, starting amid the cascade, did not (their events
+  // parted from 56 s into a launcher run)
+  const perBall = world.config.MAX_EVENT_PASSES
+  const contacts = world.collide !== null
+  let maxPasses = contacts ? perBall * (world.moving.count + 1) : perBall
+  setLipBatching(contacts && world.config.RIM_MODEL !== 'tabulated' && isDefault(schedule))
   try {
     for (world.pass = 0; world.pass < maxPasses; world.pass++) {
       for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
       if (world.marked.count === 0) break
+      if (contacts && perBall * (world.moving.count + 1) > maxPasses) maxPasses = perBall * (world.moving.count + 1)
     }
   } finally {
     setLipBatching(false)

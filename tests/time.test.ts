@@ -156,4 +156,35 @@ describe('determinism and the clock', () => {
     expect(fewEvents.length).toBeGreaterThanOrEqual(20)
     expect(fewEvents.at(-1)!.time).toBeGreaterThan(manyEvents.at(-1)!.time)
   })
+
+  it('a ball fired into a resting crowd (exact contacts) sets a cascade going that needs more passes than the balls moving at the step start allow: the bound grows with the balls set moving, and 30, 60, 120 and 240 Hz give the same events', () => {
+    // the bound was MAX_EVENT_PASSES × (balls moving at the step's start + 1) = 512 here: every rate ran out
+    // at the 512th event and waited out the rest of its step, and the rates parted there (in a launcher run
+    // in a closed box, 240 Hz parted from the others 56 s in)
+    const run = (hz: number) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'on' })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5 })
+      const d = 22 + 1e-3 // touching but for 1e-3 px, hexagonally
+      for (let j = 0; j < 12; j++) for (let i = 0; i < 17; i++) sim.addBall({ x: 12 + i * d + ((j % 2) * d) / 2, y: 468 - (j * d * Math.sqrt(3)) / 2, vx: 0, vy: 0 })
+      sim.step(1 / 30) // every one comes to rest
+      sim.drainEvents()
+      sim.addBall({ x: 200, y: 20, vx: 30, vy: 3000 })
+      const events: string[] = []
+      let mostPasses = 0
+      for (let k = 0; k < hz; k++) {
+        sim.step(1 / hz)
+        mostPasses = Math.max(mostPasses, sim.world.pass)
+        for (const e of sim.drainEvents()) events.push(`${e.type} ${e.ball} ${e.type === 'collision' ? e.other : ''} ${e.time}`)
+      }
+      return { events, mostPasses }
+    }
+    const at30 = run(30)
+    expect(at30.events.length).toBeGreaterThan(2000)
+    expect(at30.mostPasses).toBeGreaterThan(512)
+    for (const hz of [60, 120, 240]) {
+      const other = run(hz)
+      const first = other.events.findIndex((e, i) => e !== at30.events[i])
+      expect({ hz, first, count: other.events.length }).toEqual({ hz, first: -1, count: at30.events.length })
+    }
+  })
 })
