@@ -231,11 +231,10 @@ function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: n
   world.tickEnd = tEnd
   // events at this instant from here on come after those of the window that ended here (src/events.ts)
   world.events.windowFrom = world.time
-  // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball,
-  // the most that have moved in the step: counted at its start alone, a step that began with none moving and
-  // a held ball launched into a resting crowd ran out at 256 passes and waited out the rest (a cascade that
-  // set 30 balls moving), where the steps of a higher rate, starting amid the cascade, did not (their events
-  // parted from 56 s into a launcher run)
+  // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball:
+  // the most moving at once in the step, grown as passes set balls moving. Counted at the step's start alone,
+  // a held ball launched into a resting crowd at the start of a step ran out of passes at one frame rate and
+  // not at another, and their events parted (docs/known-failures.md)
   const perBall = world.config.MAX_EVENT_PASSES
   const contacts = world.collide !== null
   let maxPasses = contacts ? perBall * (world.moving.count + 1) : perBall
