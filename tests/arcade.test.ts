@@ -904,6 +904,43 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.ballState(sim.addBall({ x: 301, y: 1, vx: 0, vy: 0 })).mode).toBe('rolling')
   })
 
+  it('a ball put down is held exactly when it overlaps a ball on the panel or a held one (fast-check: puts, removals and steps at a few spots, freed ids reused in the same frame; the spot and held grids against a scan of every ball)', () => {
+    const op = fc.oneof(
+      { weight: 6, arbitrary: fc.record({ t: fc.constant('put' as const), n: fc.constantFrom(1, 1, 30), spot: fc.integer({ min: 0, max: 5 }), dx: fc.integer({ min: -30, max: 30 }), dy: fc.integer({ min: -30, max: 30 }), r: fc.constantFrom(2, 11, 40), v: fc.constantFrom(0, 50, 400) }) },
+      { weight: 2, arbitrary: fc.record({ t: fc.constant('remove' as const), k: fc.nat() }) },
+      { weight: 1, arbitrary: fc.record({ t: fc.constant('step' as const), dt: fc.constantFrom(1e-3, 1 / 60, 0.25) }) },
+    )
+    fc.assert(
+      fc.property(fc.constantFrom('on' as const, 'fixed' as const), fc.array(op, { minLength: 1, maxLength: 60 }), (mode, ops) => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 0.5 })
+        sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 0.5 })
+        const spots = [[60, 400], [62, 405], [210, 450], [300, 100], [330, 120], [200, 240]] as const
+        for (const o of ops) {
+          if (o.t === 'step') sim.step(o.dt)
+          else if (o.t === 'remove') {
+            const balls = sim.balls()
+            if (balls.length > 0) sim.removeBall(balls[o.k % balls.length]!)
+          } else for (let i = 0; i < o.n; i++) {
+            // a burst of 30 spreads over the box: enough held balls that the lookups go through the grids
+            const x = o.n === 1 ? spots[o.spot]![0] + o.dx : 20 + ((o.dx + 37 * i) % 19) * 20
+            const y = o.n === 1 ? spots[o.spot]![1] + o.dy : 20 + ((o.dy + 53 * i) % 23) * 20
+            // what the rule says, from every ball's state: held when it overlaps one that waits, rolls, rides a
+            // rim or rests (captured and gone-out balls aside)
+            const expected = sim.balls().some((b) => {
+              const s = sim.ballState(b)
+              if (s.mode === 'captured' || s.mode === 'out') return false
+              const reach = s.radius + o.r
+              return (s.x - x) ** 2 + (s.y - y) ** 2 < reach * reach
+            })
+            const b = sim.addBall({ x, y, vx: 0, vy: -o.v, radius: o.r })
+            expect(sim.ballState(b).mode === 'held', `${mode}: ball ${b} put down at (${x}, ${y})`).toBe(expected)
+          }
+        }
+      }),
+      { numRuns: 150, seed: 4242 },
+    )
+  })
+
   it('a ball resting on the launcher\'s spot is knocked off it as a head-on strike would, and the held balls come out (it once held them for good)', () => {
     for (const mode of ['on', 'fixed'] as const) {
       const e = 0.5
