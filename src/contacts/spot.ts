@@ -10,6 +10,7 @@ import { isMoving, pushId, type IdList } from '../world/idLists.js'
 import { restingState } from '../world/restingGrid.js'
 import { buildSpotGrid } from '../world/spotGrid.js'
 import { buildHeldGrid } from '../world/heldGrid.js'
+import { hashCurrent } from '../world/ballHash.js'
 import { capsuleCellsOver, capsuleCells, pointQuery } from './sweepGrid.js'
 
 /** True when a ball of radius r at (x, y) would overlap a moving or resting ball other than `self`. */
@@ -31,15 +32,16 @@ export function heldOn(w: BallWorld, self: number, x: number, y: number, r: numb
   if (q.count === 0) return false
   const C = restingState(w)
   if (C === null) return false
-  if (!C.heldBuilt || C.heldTime !== w.time) buildHeldGrid(w, C)
-  const reach = r + C.heldMaxR
+  const H = C.held
+  if (!hashCurrent(w, H)) buildHeldGrid(w, C)
+  const reach = r + H.maxR
   if (capsuleCellsOver(C, pointQuery(x, y, reach), q.count)) {
     for (let i = q.count - 1; i >= 0; i--) if (heldAt(w, q.ids[i]!, self, x, y, r)) return true
     return false
   }
-  const k = capsuleCells(C, pointQuery(x, y, reach), C.heldHead.length - 1)
+  const k = capsuleCells(C, pointQuery(x, y, reach), H.head.length - 1)
   for (let i = 0; i < k; i++) {
-    for (let b = C.heldHead[C.cells[i]!]!; b !== 0; b = C.heldNext[b]!) if (heldAt(w, b, self, x, y, r)) return true
+    for (let b = H.head[C.cells[i]!]!; b !== 0; b = H.next[b]!) if (heldAt(w, b, self, x, y, r)) return true
   }
   return false
 }
@@ -101,9 +103,10 @@ function found(C: CollisionState, out: IdList | null, b: number): boolean {
  * moving set.
  */
 function movingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: number, r: number): boolean {
-  if (!C.spotBuilt || C.spotTime !== w.time) buildSpotGrid(w, C)
-  const reach = r + C.spotMaxR
-  const mask = C.spotHead.length - 1
+  const H = C.spot
+  if (!hashCurrent(w, H)) buildSpotGrid(w, C)
+  const reach = r + H.maxR
+  const mask = H.head.length - 1
   if (capsuleCellsOver(C, pointQuery(x, y, reach), w.moving.count)) {
     const balls = w.moving.dense
     for (let i = 0, n = w.moving.count; i < n; i++) if (overlapsMoving(w, balls[i]!, self, x, y, r)) return true
@@ -111,7 +114,7 @@ function movingAt(w: BallWorld, C: CollisionState, self: number, x: number, y: n
   }
   const k = capsuleCells(C, pointQuery(x, y, reach), mask)
   for (let i = 0; i < k; i++) {
-    for (let b = C.spotHead[C.cells[i]!]!; b !== 0; b = C.spotNext[b]!) if (overlapsMoving(w, b, self, x, y, r)) return true
+    for (let b = H.head[C.cells[i]!]!; b !== 0; b = H.next[b]!) if (overlapsMoving(w, b, self, x, y, r)) return true
   }
   return false
 }

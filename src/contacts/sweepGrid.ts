@@ -4,7 +4,7 @@ import { BallMode } from '../../components/Ball.js'
 import { grown, type CollisionState } from '../world/contactState.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { cogRadius } from '../geometry.js'
-import { bucketOf } from '../world/restingGrid.js'
+import { bucketOf } from '../world/ballHash.js'
 import { heapClear } from './eventHeap.js'
 import { AT, E, MT, X, Y, evalBall, motionEnd } from './evalMotion.js'
 

@@ -2,6 +2,7 @@
 // links, the swept-capsule hash, the event heap and scratch lists, all in typed arrays that grow by
 // doubling, so nothing is allocated per ball per tick. A world with contacts off has none of it (null).
 // The algorithms that use it are in src/contacts/.
+import { createBallHash, type BallHash } from './ballHash.js'
 import { MAX_CLUSTER } from '../config/tolerances.js'
 import type { BallWorld } from './createWorld.js'
 
@@ -114,32 +115,10 @@ export interface CollisionState {
   eFree: Uint32Array
   eFreeCount: number
   eCount: number
-  /**
-   * spot grid (src/contacts/spot.ts): the moving balls hashed by the cell of their centre at the world's
-   * time `spotTime`, built when a spot is first checked at that time and kept while balls are put down;
-   * links by ball id (0: end), the largest radius in it, whether it is built
-   */
-  spotHead: Uint32Array
-  spotNext: Uint32Array
-  /** the build a ball was linked in (a reused id linked again would corrupt a chain: the grid is rebuilt) */
-  spotIn: Uint32Array
-  spotGen: number
-  spotTime: number
-  spotMaxR: number
-  spotBuilt: boolean
-  /**
-   * held grid (src/world/heldGrid.ts): the balls held at their spots, hashed by the cell of their spot at the
-   * world's time `heldTime`, built as the spot grid is; links by ball id (0: end), the build each ball was
-   * linked in, the balls linked, the largest radius in it, whether it is built
-   */
-  heldHead: Uint32Array
-  heldNext: Uint32Array
-  heldIn: Uint32Array
-  heldGen: number
-  heldLinked: number
-  heldTime: number
-  heldMaxR: number
-  heldBuilt: boolean
+  /** the moving balls by the cell of their centre at one world time (src/world/spotGrid.ts) */
+  spot: BallHash
+  /** the balls held at their spots, likewise (src/world/heldGrid.ts) */
+  held: BallHash
   /**
    * contacts each ball took within one contact tick of the world's clock, [k·CONTACT_TICK, (k + 1)·CONTACT_TICK)
    * (valid where tickContactsAt[ball] === k + 1; 0: none yet)
@@ -219,21 +198,8 @@ export function createCollisionState(capacity: number, ballRadius: number): Coll
     eCount: 0,
     tickContacts: new Uint32Array(capacity),
     tickContactsAt: new Float64Array(capacity),
-    spotHead: new Uint32Array(1 << 8),
-    spotNext: new Uint32Array(capacity),
-    spotIn: new Uint32Array(capacity),
-    spotGen: 0,
-    spotTime: 0,
-    spotMaxR: 0,
-    spotBuilt: false,
-    heldHead: new Uint32Array(1 << 4),
-    heldNext: new Uint32Array(capacity),
-    heldIn: new Uint32Array(capacity),
-    heldGen: 0,
-    heldLinked: 0,
-    heldTime: 0,
-    heldMaxR: 0,
-    heldBuilt: false,
+    spot: createBallHash(capacity, 1 << 8),
+    held: createBallHash(capacity, 1 << 4),
     now: 0,
     contacts: 0,
     predictions: 0,
@@ -293,10 +259,10 @@ export function growCollisionState(C: CollisionState, capacity: number): void {
   C.changeGen = grown(C.changeGen, capacity)
   C.isDirty = grown(C.isDirty, capacity)
   C.seen = grown(C.seen, capacity)
-  C.spotNext = grown(C.spotNext, capacity)
-  C.spotIn = grown(C.spotIn, capacity)
-  C.heldNext = grown(C.heldNext, capacity)
-  C.heldIn = grown(C.heldIn, capacity)
+  C.spot.next = grown(C.spot.next, capacity)
+  C.spot.linkedIn = grown(C.spot.linkedIn, capacity)
+  C.held.next = grown(C.held.next, capacity)
+  C.held.linkedIn = grown(C.held.linkedIn, capacity)
   C.entStart = grown(C.entStart, capacity)
   C.entLen = grown(C.entLen, capacity)
   C.entStep = grown(C.entStep, capacity)

@@ -1,5 +1,6 @@
 // The resting grid (ball-ball contacts 'on' or 'fixed'): resting balls hashed by the grid cell of their centre, kept
 // across steps and updated when a ball comes to rest or wakes, so resting balls cost nothing until struck.
+import { bucketOf } from './ballHash.js'
 import { MAX_RESTING_CELLS } from '../config/tolerances.js'
 import { BESIDE_GRID, RADIUS_CLASSES, appendId, type CollisionState } from './contactState.js'
 import type { BallWorld } from './createWorld.js'
@@ -45,10 +46,6 @@ function countOut(C: CollisionState, eid: number): void {
   C.maxRadius = top >= 0 ? classBound(top) : 0
 }
 
-/** Hash bucket of grid cell (ix, iy) in a table of mask + 1 buckets. */
-export function bucketOf(ix: number, iy: number, mask: number): number {
-  return (Math.imul(ix, 73856093) ^ Math.imul(iy, 19349663)) & mask
-}
 
 /** The world's resting grid: the exact method's, or the fixed-tick method's; null with contacts off. */
 export function restingState(w: BallWorld): CollisionState | null {
