@@ -175,14 +175,8 @@ export class Game {
     const D = this.DemoBall
     for (let i = 0; i < q.count; i++) {
       const p = q.ids[i]!
-      if (B.mode[p] !== BallMode.Held || !hasComponent(w, p, D) || D.kind[p] !== Kind.Player) continue
-      let ahead = 0
-      for (let j = 0; j < i; j++) {
-        const h = q.ids[j]!
-        const s = B.radius[h]! + B.radius[p]!
-        if (B.mode[h] === BallMode.Held && (B.x[h]! - B.x[p]!) ** 2 + (B.y[h]! - B.y[p]!) ** 2 < s * s) ahead++
-      }
-      return { id: p, ahead }
+      if (B.live[p] !== 1 || B.mode[p] !== BallMode.Held || !hasComponent(w, p, D) || D.kind[p] !== Kind.Player) continue
+      return { id: p, ahead: this.sim.heldAhead(p) }
     }
     return null
   }

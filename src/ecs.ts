@@ -17,6 +17,7 @@ export type { ScheduleEntry, System } from './schedule.js'
 export {
   addBall,
   ballState,
+  heldAhead,
   holeState,
   isHeroBall,
   listBalls,

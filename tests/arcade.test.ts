@@ -812,16 +812,30 @@ describe('a launcher firing many balls from one point', () => {
       const burst = Array.from({ length: 300 }, () => sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.3 + 0.6 * r(), angle: r() - 0.5 }))
       const left = new Map<number, number>()
       let late = -1
+      // heldAhead counts the balls waiting ahead of the late one: all that wait when it is thrown, then fewer
+      // each time one leaves, and -1 once it has left
+      let ahead = -1
       for (let f = 0; f < 60 * 25 && left.size < 301; f++) {
         sim.step(1 / 60)
         sim.drainEvents()
         for (const b of late > 0 ? [...burst, late] : burst) if (!left.has(b) && sim.ballState(b).mode !== 'held') left.set(b, sim.time)
+        if (late > 0) {
+          const now = sim.heldAhead(late)
+          if (now >= 0) expect(now, mode).toBe(sim.world.held.count - 1)
+          expect(now <= ahead || (now === -1 && ahead === 0), `${mode}: ${ahead} then ${now}`).toBe(true)
+          ahead = now
+        }
         if (f === 90) {
           expect(sim.world.held.count, mode).toBeGreaterThan(200)
           late = sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.5, angle: 0 })
           expect(sim.ballState(late).mode, mode).toBe('held')
+          ahead = sim.heldAhead(late)
+          expect(ahead, mode).toBe(sim.world.held.count - 1)
+          expect(sim.heldAhead(burst[0]!), mode).toBe(-1) // the first of the burst left long ago
         }
       }
+      expect(ahead, mode).toBe(-1)
+      expect(() => sim.heldAhead(1e6)).toThrow(/ball/)
       expect(left.size, mode).toBe(301)
       for (const b of burst) expect(left.get(b)!, `${mode} ${b}`).toBeLessThan(left.get(late)!)
     }

@@ -5,6 +5,7 @@ import type { BallEvent, EventView } from '../events.js'
 import {
   addBall,
   ballState,
+  heldAhead,
   holeState,
   isHeroBall,
   listBalls,
@@ -53,6 +54,8 @@ export interface BallPhysics {
    */
   drainEventsWith(visit: (e: EventView) => void): number
   ballState(ball: number): BallState
+  /** For a held ball, the held balls waiting ahead of it on its spot (they leave first); -1 for a ball not held. */
+  heldAhead(ball: number): number
   holeState(hole: number): HoleState
   /** Removes a ball (as bitECS removeEntity does): the simulation forgets it; its buffered events are dropped. */
   removeBall(ball: number): void
@@ -128,6 +131,7 @@ export function physicsFor(w: BallWorld): BallPhysics {
     drainEvents: () => drainEvents(w),
     drainEventsWith: (visit) => drainEventsWith(w, visit),
     ballState: (ball) => ballState(w, ball),
+    heldAhead: (ball) => heldAhead(w, ball),
     holeState: (hole) => holeState(w, hole),
     removeBall: (ball) => removeBall(w, ball),
     setBallVelocity: (ball, vx, vy) => setBallVelocity(w, ball, vx, vy),

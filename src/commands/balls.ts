@@ -230,6 +230,30 @@ export function ballState(world: BallWorld, ball: number): BallState {
   return { x: B.x[b]!, y: B.y[b]!, vx: B.vx[b]!, vy: B.vy[b]!, radius: B.radius[b]!, mode: BALL_MODE_NAMES[B.mode[b]!]! }
 }
 
+/**
+ * For a ball held at its spot (mode 'held': contacts on, put down where another ball is or waits), how many
+ * held balls wait ahead of it on that spot: those before it in the launcher's queue that overlap it, which
+ * leave before it does. -1 for a ball that is not held. For a game's "your ball waits behind n balls".
+ */
+export function heldAhead(world: BallWorld, ball: number): number {
+  const w = checkWorld('heldAhead', world)
+  const b = checkBall(w, 'ball', ball)
+  const B = w.Ball
+  if (B.mode[b] !== BallMode.Held) return -1
+  const q = w.held
+  let ahead = 0
+  for (let i = 0; i < q.count; i++) {
+    const h = q.ids[i]!
+    if (h === b) break
+    if (B.live[h] !== 1 || B.mode[h] !== BallMode.Held) continue
+    const dx = B.x[h]! - B.x[b]!
+    const dy = B.y[h]! - B.y[b]!
+    const s = B.radius[h]! + B.radius[b]!
+    if (dx * dx + dy * dy < s * s) ahead++
+  }
+  return ahead
+}
+
 /** A hole's geometry and value (a new object). */
 export function holeState(world: BallWorld, hole: number): HoleState {
   const w = checkWorld('holeState', world)
