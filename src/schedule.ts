@@ -243,7 +243,7 @@ function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: n
     for (world.pass = 0; world.pass < maxPasses; world.pass++) {
       for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
       if (world.marked.count === 0) break
-      if (contacts && perBall * (world.moving.count + 1) > maxPasses) maxPasses = perBall * (world.moving.count + 1)
+      if (contacts) maxPasses = Math.max(maxPasses, perBall * (world.moving.count + 1))
     }
   } finally {
     setLipBatching(false)

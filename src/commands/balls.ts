@@ -13,7 +13,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
 import { pushId } from '../world/idLists.js'
-import { heldOn, spotTaken } from '../contacts/spot.js'
+import { heldAt, heldOn, spotTaken } from '../contacts/spot.js'
 import { heldJoin } from '../world/heldGrid.js'
 import { betweenSteps, checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
 import { cos, sin } from '../math.js'
@@ -242,15 +242,7 @@ export function heldAhead(world: BallWorld, ball: number): number {
   if (B.mode[b] !== BallMode.Held) return -1
   const q = w.held
   let ahead = 0
-  for (let i = 0; i < q.count; i++) {
-    const h = q.ids[i]!
-    if (h === b) break
-    if (B.live[h] !== 1 || B.mode[h] !== BallMode.Held) continue
-    const dx = B.x[h]! - B.x[b]!
-    const dy = B.y[h]! - B.y[b]!
-    const s = B.radius[h]! + B.radius[b]!
-    if (dx * dx + dy * dy < s * s) ahead++
-  }
+  for (let i = 0; i < q.count && q.ids[i] !== b; i++) if (heldAt(w, q.ids[i]!, b, B.x[b]!, B.y[b]!, B.radius[b]!)) ahead++
   return ahead
 }
 

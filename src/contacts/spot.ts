@@ -47,7 +47,7 @@ export function heldOn(w: BallWorld, self: number, x: number, y: number, r: numb
 }
 
 /** A ball h other than `self`, live and held, overlapping the circle (x, y, r). */
-function heldAt(w: BallWorld, h: number, self: number, x: number, y: number, r: number): boolean {
+export function heldAt(w: BallWorld, h: number, self: number, x: number, y: number, r: number): boolean {
   const B = w.Ball
   if (h === self || B.live[h] !== 1 || B.mode[h] !== BallMode.Held) return false
   const dx = B.x[h]! - x
