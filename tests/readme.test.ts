@@ -2,8 +2,8 @@
 // the docs cannot drift from the API. Each block is written to a module and imported; its console output
 // is captured and checked for what the example promises.
 import { execFileSync } from 'node:child_process'
-import { mkdirSync, readFileSync, writeFileSync } from 'node:fs'
-import { resolve } from 'node:path'
+import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs'
+import { dirname, resolve } from 'node:path'
 import { describe, expect, it, vi } from 'vitest'
 
 const root = resolve(import.meta.dirname, '..')
@@ -114,5 +114,48 @@ describe('README benchmark tables', () => {
     expect(differing).toEqual([])
     // and the check can fail: a changed figure is caught
     expect(regenerate(readme.replace(/\| 100,000 \| ([0-9.]+) \(/, '| 100,000 | 999.9 ('))).not.toBe(readme.replace(/\| 100,000 \| ([0-9.]+) \(/, '| 100,000 | 999.9 ('))
+  })
+})
+
+/** GitHub's anchor for a heading: lower case, punctuation dropped, spaces to hyphens, repeats numbered. */
+function anchorsOf(text: string): Set<string> {
+  const out = new Set<string>()
+  const seen = new Map<string, number>()
+  for (const line of text.split('\n')) {
+    const m = /^#{1,6}\s+(.*)$/.exec(line)
+    if (!m) continue
+    const slug = m[1]!.trim().toLowerCase().replace(/[^\p{L}\p{N}\s_-]/gu, '').replace(/\s/g, '-')
+    const n = seen.get(slug) ?? 0
+    seen.set(slug, n + 1)
+    out.add(n === 0 ? slug : `${slug}-${n}`)
+  }
+  return out
+}
+
+/** The links of a markdown file (outside code blocks) that point at no file of the repository, or at no heading of it. */
+function brokenLinks(file: string, text: string): string[] {
+  const bad: string[] = []
+  for (const m of text.replace(/```[\s\S]*?```/g, '').matchAll(/\]\(([^)\s]+)\)/g)) {
+    const link = m[1]!
+    if (/^(https?:|mailto:)/.test(link)) continue
+    const [path, anchor] = link.split('#') as [string, string | undefined]
+    const target = path === '' ? file : resolve(dirname(file), path)
+    if (!existsSync(target)) bad.push(`${link}: no such file`)
+    else if (anchor && target.endsWith('.md') && !anchorsOf(readFileSync(target, 'utf8')).has(anchor)) bad.push(`${link}: no such heading`)
+  }
+  return bad
+}
+
+describe('README and docs links', () => {
+  it('every relative link in README.md and docs/*.md names a file of the repository, and a heading of it where it names one', () => {
+    const files = [resolve(root, 'README.md'), ...readdirSync(resolve(root, 'docs')).filter((f) => f.endsWith('.md')).map((f) => resolve(root, 'docs', f))]
+    const bad = files.flatMap((f) => brokenLinks(f, readFileSync(f, 'utf8')).map((b) => `${f.slice(root.length + 1)}: ${b}`))
+    expect(bad).toEqual([])
+    // and the check can fail: a moved file and a renamed heading are caught
+    const readmePath = resolve(root, 'README.md')
+    expect(brokenLinks(readmePath, '[a](docs/no-such-page.md) [b](docs/benchmarks.md#no-such-heading) [c](docs/benchmarks.md#peers-npm-run-benchpeers)')).toEqual([
+      'docs/no-such-page.md: no such file',
+      'docs/benchmarks.md#no-such-heading: no such heading',
+    ])
   })
 })

@@ -85,7 +85,7 @@ export interface BallPhysicsConfig {
    * With BALL_COLLISIONS 'fixed' and BALL_RESTITUTION above 0: most halvings of CONTACT_TICK taken where
    * balls close on their nearest partner by more than half their size a tick, which would otherwise lose an
    * elastic crowd's energy to the solve's inelastic bounds, and let a fast ball in a crowd of more than
-   * SMALL_TICK_BALLS pass through its neighbours (README: Ball-ball contacts); at 4 (the default) the tick
+   * SMALL_TICK_BALLS pass through its neighbours (docs/fixed-tick.md); at 4 (the default) the tick
    * goes down to CONTACT_TICK / 16 on this account; 0 leaves it off.
    */
   CONTACT_TRAVEL_HALVINGS: number
@@ -94,7 +94,7 @@ export interface BallPhysicsConfig {
   /**
    * With BALL_COLLISIONS 'fixed': the work one CONTACT_TICK of the clock may spend on contacts, in visits to
    * every pair of its balls (n·(n − 1)/2 pairs of the n balls on the panel, n counted as at least 64): past
-   * it, the span's remaining ticks are solved by a cheaper rule (README: Ball-ball contacts). Ordinary
+   * it, the span's remaining ticks are solved by a cheaper rule (docs/fixed-tick.md). Ordinary
    * scenes stay far within it; a pumped elastic crowd does not.
    */
   CONTACT_WORK_BUDGET: number
