@@ -362,7 +362,8 @@ export class Game {
   }
 
   private spawn(kind: KindCode, x: number, y: number, power: number, angle: number): number {
-    const id = this.sim.throwBall({ x, y, power, angle })
+    // the player's ball goes ahead of the balls a burst left waiting at the launcher: it waits only for the spot
+    const id = this.sim.throwBall({ x, y, power, angle, queue: kind === Kind.Player ? 'front' : 'back' })
     const D = this.DemoBall
     if (D.kind.length < id + 1) {
       D.kind = grow(D.kind, id + 1)
@@ -563,7 +564,7 @@ export class Game {
     const token = ++this.calls
     this.solving = { holeIndex, token }
     // checked at the demo's own step (the outcome is the same at every step; the cost is not)
-    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160, step: Math.min(1 / PHYSICS_HZ, this.sim.config.MAX_STEP) }
+    const request = { from: { ...this.panel.launch }, hole: this.holes[holeIndex]!, outcome: 'capture' as const, along: 160, step: Math.min(1 / PHYSICS_HZ, this.sim.config.MAX_STEP), queue: 'front' as const }
     return { token, config: { ...this.sim.config }, snapshot: this.sim.snapshot(), request }
   }
 

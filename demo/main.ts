@@ -612,6 +612,10 @@ async function main(): Promise<void> {
       const B = game.sim.world.Ball
       return game.live.filter((b) => B.mode[b] === BallMode.Held).length
     },
+    /** the player's ball waiting at the launcher (its id, and the held balls ahead of it), or null */
+    get playerWaiting() {
+      return game.playerWaiting
+    },
     /** held balls drawn visible in the last frame (they wait unseen in the launcher) */
     get heldDrawn() {
       return panel.heldVisible

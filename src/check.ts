@@ -79,6 +79,15 @@ export function within(field: string, value: unknown, lo: number, hi: number): n
   return value
 }
 
+/** An optional choice among `allowed` (undefined: the first of them). */
+export function choice<T extends string>(field: string, value: unknown, allowed: readonly T[]): T {
+  if (value === undefined) return allowed[0]!
+  const names = allowed.map((a) => `'${a}'`).join(' or ')
+  if (typeof value !== 'string') throw new TypeError(`${field} must be ${names}, got ${describe(value)}`)
+  if (!(allowed as readonly string[]).includes(value)) throw new RangeError(`${field} must be ${names}, got ${describe(value)}`)
+  return value as T
+}
+
 /** An optional boolean (undefined: false). */
 export function flag(field: string, value: unknown): boolean {
   if (value === undefined) return false

@@ -841,6 +841,107 @@ describe('a launcher firing many balls from one point', () => {
     }
   })
 
+  it("a ball thrown with queue: 'front' while a burst waits at the launch point leaves ahead of every ball waiting there", () => {
+    // the player's throw during a launcher's burst: with the default ('back') it leaves after the whole
+    // burst (the test above); at the front, at the first launch instant its spot is clear
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+      addPanel(sim)
+      sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
+      const r = mulberry32(5)
+      const burst = Array.from({ length: 300 }, () => sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.3 + 0.6 * r(), angle: r() - 0.5 }))
+      const left = new Map<number, number>()
+      let first = -1
+      let second = -1
+      let waiting: number[] = []
+      let firstHeld = false
+      for (let f = 0; f < 60 * 25 && left.size < 302; f++) {
+        sim.step(1 / 60)
+        sim.drainEvents()
+        for (const b of first > 0 ? [...burst, first, second] : burst) if (!left.has(b) && sim.ballState(b).mode !== 'held') left.set(b, sim.time)
+        if (f === 90) {
+          waiting = burst.filter((b) => sim.ballState(b).mode === 'held')
+          expect(waiting.length, mode).toBeGreaterThan(200)
+          // two throws at the front: the later one goes ahead of the earlier, and both ahead of the burst
+          first = sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.5, angle: 0, queue: 'front' })
+          second = sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.6, angle: 0.1, queue: 'front' })
+          expect(sim.ballState(second).mode, mode).toBe('held') // the first is on the spot, or waits on it
+          expect(sim.heldAhead(second), mode).toBe(0)
+          firstHeld = sim.ballState(first).mode === 'held'
+          if (firstHeld) expect(sim.heldAhead(first), mode).toBe(1)
+          for (const b of waiting) expect(sim.heldAhead(b), mode).toBeGreaterThanOrEqual(firstHeld ? 2 : 1)
+        }
+      }
+      expect(left.size, mode).toBe(302)
+      // held, the first waits behind the second; put down at once (the spot clear), it left first
+      if (firstHeld) expect(left.get(second)!, mode).toBeLessThan(left.get(first)!)
+      else expect(left.get(first)!, mode).toBeLessThan(left.get(second)!)
+      for (const b of waiting) expect(Math.max(left.get(first)!, left.get(second)!), `${mode} ${b}`).toBeLessThan(left.get(b)!)
+      // the burst's own order is kept behind them
+      const order = waiting.map((b) => left.get(b)!)
+      for (let i = 1; i < order.length; i++) expect(order[i]!, mode).toBeGreaterThanOrEqual(order[i - 1]!)
+    }
+  })
+
+  it("a ball put down with queue: 'front' where balls only wait (the spot clear) is placed at once; where a ball is, it is held; a bad queue is refused by name, the world unchanged", () => {
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+      const a = sim.addBall({ x: 100, y: 100, vx: 10, vy: 0 })
+      const held = sim.addBall({ x: 100, y: 100, vx: 0, vy: -50 })
+      expect(sim.ballState(held).mode, mode).toBe('held')
+      expect(sim.ballState(sim.addBall({ x: 101, y: 100, queue: 'front' })).mode, mode).toBe('held') // a is there
+      sim.removeBall(a)
+      // the spot is clear now, with balls waiting on it: 'back' waits behind them, 'front' is put down
+      expect(sim.ballState(sim.addBall({ x: 100, y: 101 })).mode, mode).toBe('held')
+      const now = sim.addBall({ x: 100, y: 101, vx: 0, vy: 30, queue: 'front' })
+      expect(sim.ballState(now).mode, mode).toBe('rolling')
+      const count = sim.world.held.count
+      const t = sim.time
+      expect(() => sim.addBall({ x: 300, y: 300, queue: 'middle' as 'front' })).toThrow(/ball\.queue must be 'back' or 'front', got the string "middle"/)
+      expect(() => sim.throwBall({ x: 300, y: 300, power: 0.5, angle: 0, queue: 1 as unknown as 'front' })).toThrow(/throw\.queue must be 'back' or 'front', got 1/)
+      expect(sim.world.held.count, mode).toBe(count)
+      expect(sim.time, mode).toBe(t)
+      expect(sim.balls().length, mode).toBe(4)
+    }
+  })
+
+  it("a replay and a snapshot keep queue: 'front': the same launch order, the same bits", async () => {
+    const { playReplay, drainEvents } = await import('../src/ecs')
+    const { replayFromJSON, replayToJSON } = await import('../src/index')
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+      sim.startRecording()
+      for (let i = 0; i < 40; i++) sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.4 + 0.01 * i, angle: 0.02 * i - 0.4 })
+      for (let i = 0; i < 30; i++) sim.step(1 / 60)
+      const front = sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.8, angle: 0.2, queue: 'front' })
+      expect(sim.heldAhead(front), mode).toBe(0)
+      const copy = createBallPhysics({ BALL_COLLISIONS: mode })
+      copy.restore(sim.snapshot())
+      const live: string[] = []
+      const restored: string[] = []
+      const heldAtThrow = sim.world.held.count
+      expect(heldAtThrow, mode).toBeGreaterThan(10)
+      let outWith = -1 // balls still held when the front ball left
+      for (let i = 0; i < 240; i++) {
+        sim.step(1 / 60)
+        copy.step(1 / 60)
+        if (outWith < 0 && sim.ballState(front).mode !== 'held') outWith = sim.world.held.count
+        for (const e of sim.drainEvents()) live.push(`${e.type} ${e.ball} ${e.time}`)
+        for (const e of copy.drainEvents()) restored.push(`${e.type} ${e.ball} ${e.time}`)
+      }
+      const replay = replayFromJSON(replayToJSON(sim.stopRecording()))
+      const replayed: string[] = []
+      const w = playReplay(replay, (world) => {
+        for (const e of drainEvents(world)) replayed.push(`${e.type} ${e.ball} ${e.time}`)
+      })
+      for (const e of drainEvents(w)) replayed.push(`${e.type} ${e.ball} ${e.time}`)
+      expect(restored, mode).toEqual(live.slice(live.length - restored.length))
+      expect(replayed.slice(replayed.length - live.length), mode).toEqual(live)
+      // the front ball left with nearly all the burst's held balls still waiting (it waited for the spot, not for them)
+      expect(outWith, mode).toBeGreaterThanOrEqual(heldAtThrow - 2)
+    }
+  })
+
   it('a held ball removed while it waits leaves the queue; its id, reused, starts clean', () => {
     const { sim, balls } = burst(3)
     sim.removeBall(balls[1]!)
@@ -918,9 +1019,9 @@ describe('a launcher firing many balls from one point', () => {
     expect(sim.ballState(sim.addBall({ x: 301, y: 1, vx: 0, vy: 0 })).mode).toBe('rolling')
   })
 
-  it('a ball put down is held exactly when it overlaps a ball on the panel or a held one (fast-check: puts, removals and steps at a few spots, freed ids reused in the same frame; the spot and held grids against a scan of every ball)', () => {
+  it("a ball put down is held exactly when it overlaps a ball on the panel or a held one, or with queue: 'front' a ball on the panel, and then waits behind none (fast-check: puts, removals and steps at a few spots, freed ids reused in the same frame; the spot and held grids against a scan of every ball)", () => {
     const op = fc.oneof(
-      { weight: 6, arbitrary: fc.record({ t: fc.constant('put' as const), n: fc.constantFrom(1, 1, 30), spot: fc.integer({ min: 0, max: 5 }), dx: fc.integer({ min: -30, max: 30 }), dy: fc.integer({ min: -30, max: 30 }), r: fc.constantFrom(2, 11, 40), v: fc.constantFrom(0, 50, 400) }) },
+      { weight: 6, arbitrary: fc.record({ t: fc.constant('put' as const), n: fc.constantFrom(1, 1, 30), spot: fc.integer({ min: 0, max: 5 }), dx: fc.integer({ min: -30, max: 30 }), dy: fc.integer({ min: -30, max: 30 }), r: fc.constantFrom(2, 11, 40), v: fc.constantFrom(0, 50, 400), front: fc.boolean() }) },
       { weight: 2, arbitrary: fc.record({ t: fc.constant('remove' as const), k: fc.nat() }) },
       { weight: 1, arbitrary: fc.record({ t: fc.constant('step' as const), dt: fc.constantFrom(1e-3, 1 / 60, 0.25) }) },
     )
@@ -939,15 +1040,16 @@ describe('a launcher firing many balls from one point', () => {
             const x = o.n === 1 ? spots[o.spot]![0] + o.dx : 20 + ((o.dx + 37 * i) % 19) * 20
             const y = o.n === 1 ? spots[o.spot]![1] + o.dy : 20 + ((o.dy + 53 * i) % 23) * 20
             // what the rule says, from every ball's state: held when it overlaps one that waits, rolls, rides a
-            // rim or rests (captured and gone-out balls aside)
+            // rim or rests (captured and gone-out balls aside); at the front of the queue, held balls aside too
             const expected = sim.balls().some((b) => {
               const s = sim.ballState(b)
-              if (s.mode === 'captured' || s.mode === 'out') return false
+              if (s.mode === 'captured' || s.mode === 'out' || (o.front && s.mode === 'held')) return false
               const reach = s.radius + o.r
               return (s.x - x) ** 2 + (s.y - y) ** 2 < reach * reach
             })
-            const b = sim.addBall({ x, y, vx: 0, vy: -o.v, radius: o.r })
+            const b = sim.addBall({ x, y, vx: 0, vy: -o.v, radius: o.r, queue: o.front ? 'front' : 'back' })
             expect(sim.ballState(b).mode === 'held', `${mode}: ball ${b} put down at (${x}, ${y})`).toBe(expected)
+            if (o.front && expected) expect(sim.heldAhead(b), `${mode}: ball ${b} at the front`).toBe(0)
           }
         }
       }),

@@ -12,11 +12,11 @@ function panel(config: ConfigOverrides = {}): { sim: BallPhysics; holes: number[
 }
 
 /** The first decisive event (capture, skip, lipOut, bounce) of the thrown ball at `hole`, in a copy of `sim` made by snapshot. */
-function outcomeOf(sim: BallPhysics, hole: number, s: { from: { x: number; y: number }; power: number; angle: number }, dt = 1 / 60): ThrowOutcome | null {
+function outcomeOf(sim: BallPhysics, hole: number, s: { from: { x: number; y: number }; power: number; angle: number }, dt = 1 / 60, queue: 'back' | 'front' = 'back'): ThrowOutcome | null {
   const copy = createBallPhysics(sim.config)
   copy.restore(sim.snapshot())
   copy.drainEvents()
-  const b = copy.throwBall({ x: s.from.x, y: s.from.y, power: s.power, angle: s.angle })
+  const b = copy.throwBall({ x: s.from.x, y: s.from.y, power: s.power, angle: s.angle, queue })
   for (let t = 0; t < 20; t += dt) {
     copy.step(dt) // another step than the solver's: the outcome does not depend on it
     for (const e of copy.drainEvents()) {
@@ -160,19 +160,33 @@ describe('solveThrow', () => {
 
   it('a throw that would wait at a busy launcher past the 20 s it is followed: the reason says so (it said the other balls spoil the throw); with fewer queued it leaves in time and solves', () => {
     for (const method of ['on', 'fixed'] as const) {
-      const solve = (n: number, hole: number) => {
+      const busyPanel = (n: number) => {
         const { sim, holes } = panel({ BALL_COLLISIONS: method })
         const rand = mulberry32(3)
         const L = DEFAULT_PANEL.launch
         for (let i = 0; i < n; i++) sim.throwBall({ x: L.x, y: L.y, power: 0.5 + 0.5 * rand(), angle: (rand() - 0.5) * 2 })
         sim.step(1 / 60)
-        return solveThrow(sim, { from: L, hole: holes[hole]!, outcome: 'capture' })
+        return { sim, holes }
+      }
+      const solve = (n: number, hole: number) => {
+        const { sim, holes } = busyPanel(n)
+        return solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[hole]!, outcome: 'capture' })
       }
       for (const hole of [0, 5, 20]) {
         const busy = solve(600, hole)
         expect(busy.found, `${method}, hole ${hole}`).toBe(false)
-        if (!busy.found) expect(busy.reason, method).toMatch(/^a ball thrown from \(210, 450\) now waits held at its spot behind the balls queued there \(599 held\) for longer than the 20 s a throw is followed/)
+        if (!busy.found) expect(busy.reason, method).toMatch(/^a ball thrown from \(210, 450\) now waits held at its spot behind the balls queued there \(599 held\) for longer than the 20 s a throw is followed: try again when the launcher has room, or ask for a throw at the front of the queue \(request.queue 'front'\)$/)
       }
+      // asked for at the front of the queue, the throw waits only for the spot: found, and it captures when
+      // thrown so (thrown at the back, it would wait behind the 599)
+      const { sim, holes } = busyPanel(600)
+      const front = solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[5]!, outcome: 'capture', queue: 'front' })
+      expect(front.found, method).toBe(true)
+      if (front.found) {
+        expect(outcomeOf(sim, holes[5]!, front, 1 / 60, 'front'), method).toBe('capture')
+        expect(outcomeOf(sim, holes[5]!, front, 1 / 60, 'back'), method).toBe(null)
+      }
+      expect(() => solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: holes[5]!, queue: 'first' as 'front' })).toThrow(/request\.queue must be 'back' or 'front', got the string "first"/)
       // behind 99 balls it waits too, but leaves within the 20 s
       expect(solve(100, 5).found, method).toBe(true)
     }

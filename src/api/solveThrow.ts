@@ -21,7 +21,7 @@
 import type { BallWorld } from '../world/createWorld.js'
 import { checkHole, checkWorld, describe, finite, readSpec } from '../commands/validate.js'
 import { MAX_COORDINATE, MIN_OUTCOME_STEP } from '../config/limits.js'
-import { within } from '../check.js'
+import { choice, within } from '../check.js'
 import { atan2, hypot } from '../math.js'
 import type { BallPhysics } from './createBallPhysics.js'
 import { WallEdge } from '../../components/Walls.js'
@@ -47,6 +47,11 @@ export interface ThrowRequest {
    * starts), so this changes only the check's cost. Default: MAX_STEP
    */
   step?: number | undefined
+  /**
+   * where the throw waits if it is held at a busy launcher (contacts on), as throwBall's `queue`: the answer
+   * is for a throw made with the same. Default 'back'
+   */
+  queue?: 'back' | 'front' | undefined
 }
 
 export interface ThrowSolution {
@@ -87,7 +92,7 @@ const SPEEDS = 24
  */
 export function solveThrow(target: BallPhysics | BallWorld, request: ThrowRequest): ThrowSolution | ThrowFailure {
   const world = checkWorld('solveThrow', 'world' in target && 'step' in target ? target.world : (target as BallWorld))
-  const s = readSpec('solveThrow request', request, ['from', 'hole', 'outcome', 'along', 'step'] as const)
+  const s = readSpec('solveThrow request', request, ['from', 'hole', 'outcome', 'along', 'step', 'queue'] as const)
   const f = readSpec('request.from', s.from, ['x', 'y'] as const)
   const fx = finite('request.from.x', f.x, MAX_COORDINATE)
   const fy = finite('request.from.y', f.y, MAX_COORDINATE)
@@ -106,6 +111,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   // the throws are stepped for up to HORIZON seconds: at MAX_STEP (the grid) and at request.step (the answer)
   if (maxStep < MIN_OUTCOME_STEP) throw new RangeError(`solveThrow: the world's MAX_STEP must be at least ${MIN_OUTCOME_STEP} s (its throws are stepped at it for up to ${HORIZON} s), got ${maxStep}`)
   const step = s.step === undefined ? maxStep : within('request.step', s.step, MIN_OUTCOME_STEP, maxStep)
+  const queue = choice('request.queue', s.queue, ['back', 'front'] as const)
   if (world.stepping) throw new Error('solveThrow: the world is in the middle of a step')
   if (world.events.draining) throw new Error('solveThrow: called from a drainEventsWith callback (it copies the world by snapshot); call it after the drain returns')
 
@@ -141,7 +147,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
     return fail(`no throw ${where} gives ${outcome} at hole ${hole}: ${trial.count} throws tried, ${ways}, over the powers and aims that reach it`, trial.count)
   }
   found.sort((a, b) => b.depth - a.depth || a.order - b.order)
-  const exact = new ExactCheck(world, hole, step)
+  const exact = new ExactCheck(world, hole, step, queue)
   const tries = Math.min(found.length, 4)
   for (let n = 0; n < tries; n++) {
     const c = found[n]!
@@ -156,7 +162,11 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   }
   // every one waited at a launcher's queue past the horizon: say so (the throw is not wrong, only late)
   if (exact.heldThrough === tries) {
-    return fail(`a ball thrown from (${found[0]!.x}, ${fy}) now waits held at its spot behind the balls queued there (${world.held.count} held) for longer than the ${HORIZON} s a throw is followed: try again when the launcher has room`, trial.count + exact.count)
+    const why =
+      queue === 'back'
+        ? `behind the balls queued there (${world.held.count} held) for longer than the ${HORIZON} s a throw is followed: try again when the launcher has room, or ask for a throw at the front of the queue (request.queue 'front')`
+        : `for longer than the ${HORIZON} s a throw is followed (a ball is on it all that time): try again when the launcher has room`
+    return fail(`a ball thrown from (${found[0]!.x}, ${fy}) now waits held at its spot ${why}`, trial.count + exact.count)
   }
   return fail(`throws that give ${outcome} at hole ${hole} with the panel alone do not with the world's other balls (${tries} tried)`, trial.count + exact.count)
 }

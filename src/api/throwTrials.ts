@@ -96,6 +96,8 @@ export class ExactCheck {
     private readonly hole: number,
     /** the step the copy is stepped at (the outcome is the same at every step; the cost is not) */
     private readonly dt: number,
+    /** where the throw waits if it is held (throwBall's queue) */
+    private readonly queue: 'back' | 'front',
   ) {
     this.bytes = snapshotWorld(world)
   }
@@ -106,7 +108,7 @@ export class ExactCheck {
     const copy = createBallPhysics(this.world.config)
     copy.restore(this.bytes)
     copy.drainEvents()
-    const found = follow(copy, copy.throwBall({ x, y, power, angle }), this.hole, copy.time, this.dt)
+    const found = follow(copy, copy.throwBall({ x, y, power, angle, queue: this.queue }), this.hole, copy.time, this.dt)
     if (found.held) this.heldThrough++
     return found.outcome === outcome ? found.at : -1
   }

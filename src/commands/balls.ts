@@ -12,10 +12,10 @@ import { addBallEntity, forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
-import { pushId } from '../world/idLists.js'
-import { heldAt, heldOn, spotTaken } from '../contacts/spot.js'
+import { insertId, pushId } from '../world/idLists.js'
+import { firstHeldAt, heldAt, heldOn, spotTaken } from '../contacts/spot.js'
 import { heldJoin } from '../world/heldGrid.js'
-import { betweenSteps, checkBall, checkHole, checkWorld, finite, flag, positive, specObject, within } from './validate.js'
+import { betweenSteps, checkBall, checkHole, checkWorld, choice, finite, flag, positive, specObject, within } from './validate.js'
 import { cos, sin } from '../math.js'
 import { record, specOf } from '../world/recorder.js'
 
@@ -35,6 +35,13 @@ export interface BallSpec {
    * (same density). Used only when config.BALL_COLLISIONS is 'on' or 'fixed'.
    */
   mass?: number | undefined
+  /**
+   * With contacts on, where the ball waits if it is put down where another ball is (mode 'held'; launched
+   * when its spot is clear, systems/launcher.ts): 'back' (the default) behind every ball already waiting on
+   * its spot, and held even where the spot is clear but balls wait on it; 'front' ahead of them all, and
+   * held only where a ball is on the spot now (for a player's throw during a launcher's burst)
+   */
+  queue?: 'back' | 'front' | undefined
 }
 
 export interface ThrowSpec {
@@ -50,6 +57,8 @@ export interface ThrowSpec {
   hero?: boolean | undefined
   /** as BallSpec.mass */
   mass?: number | undefined
+  /** as BallSpec.queue */
+  queue?: 'back' | 'front' | undefined
 }
 
 export interface BallState {
@@ -68,8 +77,9 @@ export interface HoleState {
   value: number
 }
 
-const BALL_KEYS = ['x', 'y', 'vx', 'vy', 'radius', 'hero', 'mass'] as const
-const THROW_KEYS = ['x', 'y', 'power', 'angle', 'radius', 'hero', 'mass'] as const
+const BALL_KEYS = ['x', 'y', 'vx', 'vy', 'radius', 'hero', 'mass', 'queue'] as const
+const THROW_KEYS = ['x', 'y', 'power', 'angle', 'radius', 'hero', 'mass', 'queue'] as const
+const QUEUES = ['back', 'front'] as const
 
 function massOf(w: BallWorld, field: string, value: unknown, radius: number): number {
   if (value === undefined) {
@@ -79,22 +89,25 @@ function massOf(w: BallWorld, field: string, value: unknown, radius: number): nu
   return positive(field, value, MAX_MASS)
 }
 
-function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number): number {
+function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number, front: boolean): number {
   const eid = addBallEntity(w)
   w.Ball.radius[eid] = radius
   w.Ball.hero[eid] = hero ? 1 : 0
   if (w.collide !== null) w.collide.mass[eid] = mass
   if (w.fixed !== null) w.fixed.mass[eid] = mass
   // with contacts on, a ball put down where another is, or waits, waits there until its spot is clear and the
-  // balls that came before it have left (systems/launcher.ts)
-  if ((w.collide !== null || w.fixed !== null) && (heldOn(w, eid, x, y, radius) || spotTaken(w, eid, x, y, radius))) {
+  // balls that came before it have left (systems/launcher.ts); one put down at the front of the queue waits
+  // only where a ball is, ahead of those waiting there
+  if ((w.collide !== null || w.fixed !== null) && ((!front && heldOn(w, eid, x, y, radius)) || spotTaken(w, eid, x, y, radius))) {
     const B = w.Ball
     B.x[eid] = x
     B.y[eid] = y
     B.vx[eid] = vx
     B.vy[eid] = vy
     setBallMode(w, eid, BallMode.Held)
-    pushId(w.held, eid)
+    const at = front ? firstHeldAt(w, eid, x, y, radius) : -1
+    if (at >= 0) insertId(w.held, at, eid)
+    else pushId(w.held, eid)
     heldJoin(w, eid)
     return eid
   }
@@ -115,6 +128,7 @@ export function addBall(world: BallWorld, spec: BallSpec): number {
   const sRadius = s.radius
   const sHero = s.hero
   const sMass = s.mass
+  const sQueue = s.queue
   const x = finite('ball.x', sx, MAX_COORDINATE)
   const y = finite('ball.y', sy, MAX_COORDINATE)
   const vx = svx === undefined ? 0 : finite('ball.vx', svx, MAX_SPEED)
@@ -122,8 +136,9 @@ export function addBall(world: BallWorld, spec: BallSpec): number {
   const radius = sRadius === undefined ? w.config.BALL_RADIUS : positive('ball.radius', sRadius, MAX_RADIUS)
   const hero = flag('ball.hero', sHero)
   const mass = massOf(w, 'ball.mass', sMass, radius)
-  if (w.recorder !== null) record(w, ['addBall', specOf({ x: sx, y: sy, vx: svx, vy: svy, radius: sRadius, hero: sHero, mass: sMass })])
-  return newBall(w, x, y, vx, vy, radius, hero, mass)
+  const front = choice('ball.queue', sQueue, QUEUES) === 'front'
+  if (w.recorder !== null) record(w, ['addBall', specOf({ x: sx, y: sy, vx: svx, vy: svy, radius: sRadius, hero: sHero, mass: sMass, queue: sQueue })])
+  return newBall(w, x, y, vx, vy, radius, hero, mass, front)
 }
 
 /** The throw's velocity: speed MIN_VY + power·(MAX_VY − MIN_VY), at `angle` from straight up the panel. */
@@ -145,6 +160,7 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const sRadius = s.radius
   const sHero = s.hero
   const sMass = s.mass
+  const sQueue = s.queue
   const x = finite('throw.x', sx, MAX_COORDINATE)
   const y = finite('throw.y', sy, MAX_COORDINATE)
   const power = within('throw.power', sPower, 0, 1)
@@ -152,12 +168,13 @@ export function throwBall(world: BallWorld, spec: ThrowSpec): number {
   const radius = sRadius === undefined ? w.config.BALL_RADIUS : positive('throw.radius', sRadius, MAX_RADIUS)
   const hero = flag('throw.hero', sHero)
   const mass = massOf(w, 'throw.mass', sMass, radius)
+  const front = choice('throw.queue', sQueue, QUEUES) === 'front'
   if (w.recorder !== null) {
-    record(w, ['throwBall', specOf({ x: sx, y: sy, power: sPower, angle: sAngle, radius: sRadius, hero: sHero, mass: sMass })])
+    record(w, ['throwBall', specOf({ x: sx, y: sy, power: sPower, angle: sAngle, radius: sRadius, hero: sHero, mass: sMass, queue: sQueue })])
   }
   const cfg = w.config
   const speed = cfg.MIN_VY + power * (cfg.MAX_VY - cfg.MIN_VY)
-  return newBall(w, x, y, speed * sin(angle), -speed * cos(angle), radius, hero, mass)
+  return newBall(w, x, y, speed * sin(angle), -speed * cos(angle), radius, hero, mass, front)
 }
 
 /**

@@ -4,7 +4,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { isLiveBall } from '../world/balls.js'
 import { isLiveHole } from '../world/holeTable.js'
 
-export { checkWorld, describe, finite, flag, positive, readSpec, specObject, within } from '../check.js'
+export { checkWorld, choice, describe, finite, flag, positive, readSpec, specObject, within } from '../check.js'
 
 function checkId(field: string, eid: unknown, kind: string): number {
   // not a number: the wrong type; a number that is not a positive integer: out of range

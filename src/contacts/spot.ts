@@ -46,6 +46,13 @@ export function heldOn(w: BallWorld, self: number, x: number, y: number, r: numb
   return false
 }
 
+/** The place in the launcher's queue of the first held ball other than `self` overlapping the circle (x, y, r), or -1. */
+export function firstHeldAt(w: BallWorld, self: number, x: number, y: number, r: number): number {
+  const q = w.held
+  for (let i = 0; i < q.count; i++) if (heldAt(w, q.ids[i]!, self, x, y, r)) return i
+  return -1
+}
+
 /** A ball h other than `self`, live and held, overlapping the circle (x, y, r). */
 export function heldAt(w: BallWorld, h: number, self: number, x: number, y: number, r: number): boolean {
   const B = w.Ball

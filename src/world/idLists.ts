@@ -21,6 +21,13 @@ export function pushId(list: IdList, eid: number): void {
   list.ids[list.count++] = eid
 }
 
+/** Puts an id into a list at index `at` (0 ≤ at ≤ count), the ids from there on one place later. */
+export function insertId(list: IdList, at: number, eid: number): void {
+  pushId(list, eid)
+  list.ids.copyWithin(at + 1, at, list.count - 1)
+  list.ids[at] = eid
+}
+
 /** Takes every occurrence of an id out of a list, keeping the others in order. */
 export function dropId(list: IdList, eid: number): void {
   const ids = list.ids

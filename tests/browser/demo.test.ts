@@ -59,6 +59,7 @@ interface DemoHook {
   heldDrawn: number
   gameOver: boolean
   awayFromLauncher: number
+  playerWaiting: { id: number; ahead: number } | null
   lipRiders: { ball: number; distance: number; angle: number }[]
   roundsRecorded: number
   lastRoundSteps: number
@@ -410,21 +411,29 @@ describe('demo in headless Chromium', { timeout: 120_000 }, () => {
       expect(state.away, mode).toBeGreaterThanOrEqual(8)
       expect(state.held, mode).toBeLessThan(1000 - 30)
       expect(state.held, mode).toBeGreaterThan(500)
-      // the player's throw now queues behind the burst's held balls (it left ahead of most of them): drawn
-      // faint at the launcher, and the status line says how many wait ahead of it (it waited unseen)
-      // (one task of the page: no frame launches a ball between the count and the throw)
+      // the player's throw goes to the front of the launcher's queue: it waits only while a ball is on the
+      // spot, with none of the burst's held balls ahead of it, and the status line says so (it waited
+      // unseen behind all of them, about 50 s, before queue: 'front'); one task of the page, so no frame
+      // launches a ball between the count and the throw
       const queued = await page.evaluate(() => {
         const held = window.__demo.heldBalls
         window.__demo.aim(0)
         window.__demo.charge(0.5)
         window.__demo.release()
-        return { held, status: document.getElementById('call-status')!.textContent ?? '' }
+        return { held, waiting: window.__demo.playerWaiting, status: document.getElementById('call-status')!.textContent ?? '', t: window.__demo.simTime }
       })
       expect(queued.held, mode).toBeGreaterThan(400)
-      expect(queued.status, mode).toBe(`Your ball waits at the launcher behind ${queued.held.toLocaleString('en-US')} balls: it leaves after them.`)
-      const thrown = await page.evaluate(() => window.__demo.frames)
-      await page.waitForFunction((f) => window.__demo.frames > f + 1, thrown, { timeout: 5_000 })
-      expect(await page.evaluate(() => window.__demo.heldDrawn), mode).toBe(1)
+      if (queued.waiting === null) expect(queued.status, mode).toBe('')
+      else {
+        expect(queued.waiting.ahead, mode).toBe(0)
+        expect(queued.status, mode).toBe('Your ball waits at the launcher until its spot is clear.')
+      }
+      // it leaves within a second, the burst's balls still waiting behind it, and the line clears
+      await page.waitForFunction(() => window.__demo.playerWaiting === null, undefined, { timeout: 10_000 })
+      const out = await page.evaluate(() => ({ t: window.__demo.simTime, held: window.__demo.heldBalls }))
+      expect(out.t - queued.t, mode).toBeLessThan(1)
+      expect(out.held, mode).toBeGreaterThan(300)
+      await expect.poll(() => page.textContent('#call-status')).toBe('')
       await page.waitForFunction((s) => window.__demo.score > s, score0, { timeout: 30_000 })
       // Clear takes the burst's balls: the player's leaves the launcher, and the line clears
       await page.click('#clear-balls')
