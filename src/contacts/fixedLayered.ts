@@ -80,7 +80,7 @@ export function layered(w: BallWorld, F: FixedContactState): boolean {
     normal(F, F.pairA[p]!, F.pairB[p]!)
     const gap = nrm.gap
     if (!(gap < 0)) continue
-    pushApart(w, F, p, gap)
+    pushApart(w, F, p)
     if (-gap > worst) worst = -gap
   }
   return worst <= PROJECTION_SLOP

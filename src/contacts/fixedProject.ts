@@ -48,7 +48,7 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
       normal(F, F.pairA[p]!, F.pairB[p]!)
       const gap = nrm.gap
       if (!(gap < 0)) continue
-      pushApart(w, F, p, gap)
+      pushApart(w, F, p)
       if (-gap > worst) worst = -gap
       if (F.ballStamp[F.pairA[p]!] !== stamp && movedA) {
         F.ballStamp[F.pairA[p]!] = stamp
@@ -105,7 +105,7 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
       normal(F, a, b)
       const gap = nrm.gap
       if (!(gap < 0)) continue
-      pushApart(w, F, p, gap)
+      pushApart(w, F, p)
       if (-gap > worst) worst = -gap
       // activate reads every pair of its ball, F.adjStart[i + 1] − F.adjStart[i] of them
       if (movedA) {

@@ -13,12 +13,17 @@ import { MOVED } from './fixedWallTurn.js'
 export let movedA = false
 export let movedB = false
 
-/** Moves the balls of pair p, overlapping by −gap along nrm (normal() just set it), apart; sets movedA, movedB. */
-export function pushApart(w: BallWorld, F: FixedContactState, p: number, gap: number): void {
+/**
+ * Moves the balls of pair p, overlapping by −nrm.gap along nrm (normal() just set both), apart; sets movedA,
+ * movedB. The gap is read from nrm, not passed: a double passed to a call V8 does not inline is boxed, a
+ * heap number a push.
+ */
+export function pushApart(w: BallWorld, F: FixedContactState, p: number): void {
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   const nx = nrm.x
   const ny = nrm.y
+  const gap = nrm.gap
   // shared by inverse mass, each ball taking at least MIN_PROJECTION_SHARE (a light ball squeezed between
   // heavy ones would otherwise take every push and pass it to and fro); what a wall keeps one ball from
   // taking, the other takes (a ball against a wall is held by it)

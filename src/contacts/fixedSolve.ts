@@ -32,7 +32,7 @@ import { overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, pushed, wallAhead } from './fixedAhead.js'
-import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
+import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
 import { STRUCK, VELOCITY, WALL_DUE, WALL_TURNED } from './fixedWallTurn.js'
 import { block, capBall, pairWithWall } from './fixedWallPair.js'
 import { changedAt, OTHER, PARTING, REFUSED, reserveStamps, testedAs, testedAt } from './fixedStamps.js'
@@ -279,7 +279,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     const l = ra >= SQUEEZE_MASS_RATIO * rb ? a : rb >= SQUEEZE_MASS_RATIO * ra ? b : -1
     if (l >= 0 && !(l === a ? pinA : pinB)) {
       S[S_SEPARATE] = k - approach
-      second = pairWithBall(F, p, l, j, calls)
+      squeeze[SQ_J] = j
+      second = pairWithBall(F, p, l, calls)
     }
   }
   if (walled) {

@@ -31,7 +31,7 @@ import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_C
  * The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before,
  * the second pair's normal, and 1 when the second pair took no restitution for its visits or count.
  */
-export const squeeze = new Float64Array(8)
+export const squeeze = new Float64Array(9)
 export const SQ_J1 = 0
 export const SQ_J2 = 1
 export const SQ_APPROACH = 2
@@ -41,6 +41,24 @@ export const SQ_BOUND = 5
 /** the second heavy ball, and the light balls between the two (1: l alone; more: squeezeChain) */
 export const SQ_OTHER = 6
 export const SQ_CHAIN = 7
+/** pairWithBall's input: the pair's own impulse j (a slot: a double passed to a call V8 does not inline is boxed) */
+export const SQ_J = 8
+
+/**
+ * The block's inputs to impulses() (the inverse masses of h, the light side and o, σ·c, the cross product,
+ * the two contacts' wanted changes r₁, r₂) and a velocity for holds(): slots, since a double passed to a call
+ * V8 does not inline is boxed, a heap number an argument a block
+ */
+const blk = new Float64Array(9)
+const B_IMH = 0
+const B_IML = 1
+const B_IMO = 2
+const B_SIGMA_C = 3
+const B_CROSS = 4
+const B_R1 = 5
+const B_R2 = 6
+const B_VX = 7
+const B_VY = 8
 
 /** Most light balls in a row between the two heavy ones that a block takes. */
 const MAX_CHAIN = 8
@@ -77,7 +95,8 @@ function adjacency(F: FixedContactState, call: number): void {
  * A heavy ball at rest (l's partner or the second ball) that the block would leave slower than
  * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0.
  */
-export function pairWithBall(F: FixedContactState, p: number, l: number, j: number, call: number): number {
+export function pairWithBall(F: FixedContactState, p: number, l: number, call: number): number {
+  const j = squeeze[SQ_J]!
   const a = F.pairA[p]!
   const b = F.pairB[p]!
   const h = l === a ? b : a
@@ -96,7 +115,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   adjacency(F, call)
   let q = -1
   let o = -1
-  let best = 0
+  closing[1] = 0 // the fastest closing so far (closesFaster reads it)
   F.vx[l] = tx
   F.vy[l] = ty
   for (let k = F.adjStart[l]!, e = F.adjStart[l + 1]!; k < e; k++) {
@@ -106,8 +125,8 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     if (m === h || SQUEEZE_MASS_RATIO * F.im[m]! > iml) continue
     // l touching both (a squeeze, not a light ball crossing between them), the two heavy ones closing on
     // each other along the line of their centres, and l driven into m within the tick
-    if (!touching(F, l, m) || !closesFaster(F, h, m, best) || !meetsWithinTick(F, l, m)) continue
-    best = closing[0]!
+    if (!touching(F, l, m) || !closesFaster(F, h, m) || !meetsWithinTick(F, l, m)) continue
+    closing[1] = closing[0]!
     q = r
     o = m
     squeeze[SQ_NX] = nrm.x
@@ -180,7 +199,14 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
   let ox = 0
   let oy = 0
   for (let pass = 0; ; pass++) {
-    if (!impulses(imhUsed, imv, imoUsed, sigmaC, cross, r1, r2)) return -1
+    blk[B_IMH] = imhUsed
+    blk[B_IML] = imv
+    blk[B_IMO] = imoUsed
+    blk[B_SIGMA_C] = sigmaC
+    blk[B_CROSS] = cross
+    blk[B_R1] = r1
+    blk[B_R2] = r2
+    if (!impulses()) return -1
     j1 = squeeze[SQ_J1]!
     j2 = squeeze[SQ_J2]!
     // the three velocities after: h takes σ·j₁·n₁, l −σ·j₁·n₁ − j₂·n₂, o +j₂·n₂ (σ: +1 when l is the pair's a)
@@ -191,8 +217,12 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, j: numb
     ox = F.vx[o]! + j2 * imoUsed * n2x
     oy = F.vy[o]! + j2 * imoUsed * n2y
     if (pass > 0) break
-    const heldH = holds(F, h, hx, hy)
-    const heldO = holds(F, o, ox, oy)
+    blk[B_VX] = hx
+    blk[B_VY] = hy
+    const heldH = holds(F, h)
+    blk[B_VX] = ox
+    blk[B_VY] = oy
+    const heldO = holds(F, o)
     if (!heldH && !heldO) break
     if (heldH) imhUsed = 0
     if (heldO) imoUsed = 0
@@ -251,7 +281,7 @@ function chainTo(F: FixedContactState, l: number, h: number): number {
     let next = -1
     let bestCos = CHAIN_COS
     let q = -1
-    let best = 0
+    closing[1] = 0
     for (let k = F.adjStart[cur]!, e = F.adjStart[cur + 1]!; k < e; k++) {
       const r = F.adjPairs[k]!
       const m = F.pairA[r] === cur ? F.pairB[r]! : F.pairA[r]!
@@ -263,8 +293,8 @@ function chainTo(F: FixedContactState, l: number, h: number): number {
       if (!(cos > CHAIN_COS)) continue
       if (SQUEEZE_MASS_RATIO * F.im[m]! <= imMin) {
         // a heavy ball: closing on h along the line of their centres
-        if (closesFaster(F, h, m, best)) {
-          best = closing[0]!
+        if (closesFaster(F, h, m)) {
+          closing[1] = closing[0]!
           q = r
           squeeze[SQ_OTHER] = m
           squeeze[SQ_NX] = ex / el
@@ -287,14 +317,18 @@ function chainTo(F: FixedContactState, l: number, h: number): number {
   }
 }
 
-/** closesFaster's speed (a slot: a returned double is boxed) */
-const closing = new Float64Array(1)
+/**
+ * closesFaster's speed, and the speed it must beat (slots: a double returned from a call V8 does not inline,
+ * or passed to one, is boxed)
+ */
+const closing = new Float64Array(2)
 
 /**
- * Whether candidates h and m close on each other along the line of their centres faster than `than` (and
- * faster than 0): the speed into closing[0].
+ * Whether candidates h and m close on each other along the line of their centres faster than closing[1]
+ * (at least 0): the speed into closing[0].
  */
-function closesFaster(F: FixedContactState, h: number, m: number, than: number): boolean {
+function closesFaster(F: FixedContactState, h: number, m: number): boolean {
+  const than = closing[1]!
   const dx = F.x[m]! - F.x[h]!
   const dy = F.y[m]! - F.y[h]!
   const d = Math.sqrt(dx * dx + dy * dy)
@@ -310,12 +344,19 @@ function inChain(m: number, count: number): boolean {
 }
 
 /**
- * The block's impulses into squeeze[SQ_J1], squeeze[SQ_J2]: (imh + iml)·j₁ + σ·iml·c·j₂ = r₁ and
+ * The block's impulses (its inputs in blk) into squeeze[SQ_J1], squeeze[SQ_J2]: (imh + iml)·j₁ + σ·iml·c·j₂ = r₁ and
  * σ·iml·c·j₁ + (iml + imo)·j₂ = r₂ (c = n₁·n₂, σc given). The determinant is written out, 1 − c² as the cross
  * product squared: A·D − B² cancels to the heavy balls' inverse masses, a billionth of the light one's, and
  * lost half the digits of the impulses. False when it is not above 0, or an impulse is not.
  */
-function impulses(imh: number, iml: number, imo: number, sigmaC: number, cross: number, r1: number, r2: number): boolean {
+function impulses(): boolean {
+  const imh = blk[B_IMH]!
+  const iml = blk[B_IML]!
+  const imo = blk[B_IMO]!
+  const sigmaC = blk[B_SIGMA_C]!
+  const cross = blk[B_CROSS]!
+  const r1 = blk[B_R1]!
+  const r2 = blk[B_R2]!
   const A = imh + iml
   const B = sigmaC * iml
   const D = iml + imo
@@ -329,8 +370,10 @@ function impulses(imh: number, iml: number, imo: number, sigmaC: number, cross: 
   return true
 }
 
-/** Whether candidate i is a ball at rest that velocity (vx, vy) would leave slower than BALL_SETTLE_SPEED. */
-function holds(F: FixedContactState, i: number, vx: number, vy: number): boolean {
+/** Whether candidate i is a ball at rest that the velocity in blk[B_VX], blk[B_VY] would leave slower than BALL_SETTLE_SPEED. */
+function holds(F: FixedContactState, i: number): boolean {
+  const vx = blk[B_VX]!
+  const vy = blk[B_VY]!
   const settle = solveSlots[S_SETTLE]!
   return i >= F.restFrom && F.vx[i] === 0 && F.vy[i] === 0 && vx * vx + vy * vy < settle * settle
 }
