@@ -20,14 +20,14 @@ import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
 import { CONTACT_DURATION, GRAZE_SLIDE, MAX_TICK_CONTACTS, NEVER, TOUCH_GAP } from '../src/config/tolerances.js'
-import { collectCluster } from '../src/contacts/cluster.js'
-import { contactOut, isRepeatContact, resolveContact, strikeLeavesRim } from '../src/contacts/law.js'
+import { clusterAt, collectCluster } from '../src/contacts/cluster.js'
+import { CI_E, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, isRepeatContact, resolveContactIn, strikeLeavesRim } from '../src/contacts/law.js'
 import { appendCollision } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
-import { planRolling, startAt } from '../src/motion/rolling.js'
+import { PS_T, PS_VX, PS_VY, PS_X, PS_Y, pathStart, planRolling } from '../src/motion/rolling.js'
 import { planRimRoll } from '../src/motion/rimRoll.js'
 import { pushId } from '../src/world/idLists.js'
-import { contactTickKey, countContacts } from '../src/world/contactState.js'
+import { countContacts } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
 import { HOT, H_NEXT_T, setNextT } from '../src/world/pathHot.js'
@@ -76,13 +76,16 @@ export function collisionsSystem(w: BallWorld): void {
     // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
     const slow = approach < w.config.BALL_SETTLE_SPEED
     const repeat = isRepeatContact(w, a, b)
-    // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate)
-    const tick = contactTickKey(t, w.config.CONTACT_TICK)
+    // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate;
+    // contactTickKey written out: a call V8 does not inline boxed the time)
+    const tick = Math.floor(t / w.config.CONTACT_TICK) + 1
     const settle = slow || repeat || countContacts(C, a, tick, 1) > MAX_TICK_CONTACTS || countContacts(C, b, tick, 1) > MAX_TICK_CONTACTS
     C.contacts++
     let graze = false
     if (settle) {
-      collectCluster(w, a, b, t)
+      // the time through a slot, for the cluster and the settle (a double passed to a call V8 does not inline is boxed)
+      clusterAt[0] = t
+      collectCluster(w, a, b)
       // two balls alone that barely approach but slide past each other fast (a graze; restitution above 0)
       // take the normal impulse and keep their motion along the tangent; merged, both stopped dead (a graze
       // at 300 px/s each way left two balls at rest). Only a first touch, counted with the tick's contacts
@@ -92,7 +95,7 @@ export function collisionsSystem(w: BallWorld): void {
         slow && !repeat && w.config.BALL_RESTITUTION > 0 && C.clusterCount === 2 && slides(B, a, b, nx, ny) >= GRAZE_SLIDE * w.config.BALL_SETTLE_SPEED &&
         countContacts(C, a, tick, 1) <= MAX_TICK_CONTACTS && countContacts(C, b, tick, 1) <= MAX_TICK_CONTACTS
       if (!graze) {
-        settleCluster(w, a, b, t)
+        settleCluster(w, a, b)
         const k = appendCollision(w.events, a < b ? a : b, a < b ? b : a)
         w.events.time[k] = t
         w.events.speed[k] = approach
@@ -102,7 +105,17 @@ export function collisionsSystem(w: BallWorld): void {
     }
     const rapid = t - C.lastContact[a]! < CONTACT_DURATION || t - C.lastContact[b]! < CONTACT_DURATION
     const e = rapid && !graze ? 1 : w.config.BALL_RESTITUTION
-    resolveContact(C.mass[a]!, C.mass[b]!, B.vx[a]!, B.vy[a]!, B.vx[b]!, B.vy[b]!, nx, ny, e)
+    const I = contactIn
+    I[CI_MA] = C.mass[a]!
+    I[CI_MB] = C.mass[b]!
+    I[CI_VAX] = B.vx[a]!
+    I[CI_VAY] = B.vy[a]!
+    I[CI_VBX] = B.vx[b]!
+    I[CI_VBY] = B.vy[b]!
+    I[CI_NX] = nx
+    I[CI_NY] = ny
+    I[CI_E] = e
+    resolveContactIn()
     const o = contactOut
     C.lastContact[a] = t
     C.lastContact[b] = t
@@ -110,9 +123,18 @@ export function collisionsSystem(w: BallWorld): void {
     w.events.time[k] = t
     w.events.speed[k] = o.approach
     w.events.impulse[k] = o.impulse
-    startAt(B.x[a]!, B.y[a]!, o.vax, o.vay, t)
+    // the new starts written here, not through startAt (five doubles a call where V8 does not inline it)
+    pathStart[PS_X] = B.x[a]!
+    pathStart[PS_Y] = B.y[a]!
+    pathStart[PS_VX] = o.vax
+    pathStart[PS_VY] = o.vay
+    pathStart[PS_T] = t
     restart(w, a)
-    startAt(B.x[b]!, B.y[b]!, o.vbx, o.vby, t)
+    pathStart[PS_X] = B.x[b]!
+    pathStart[PS_Y] = B.y[b]!
+    pathStart[PS_VX] = o.vbx
+    pathStart[PS_VY] = o.vby
+    pathStart[PS_T] = t
     restart(w, b)
     // set after the restart (a new path clears it): any later change of either path clears it again
     C.partner[a] = b
@@ -139,8 +161,12 @@ function slides(B: BallWorld['Ball'], a: number, b: number, nx: number, ny: numb
   return Math.abs(rx * ny - ry * nx)
 }
 
-/** The cluster touching a and b (collectCluster, just run) leaves with its centre-of-mass velocity (less motion into walls). */
-function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
+/**
+ * The cluster touching a and b (collectCluster, just run, at clusterAt[0]) leaves with its centre-of-mass
+ * velocity (less motion into walls).
+ */
+function settleCluster(w: BallWorld, a: number, b: number): void {
+  const t = clusterAt[0]!
   const C = w.collide!
   const B = w.Ball
   const n = C.clusterCount
@@ -176,7 +202,13 @@ function settleCluster(w: BallWorld, a: number, b: number, t: number): void {
   for (let k = 0; k < n; k++) {
     const eid = C.cluster[k]!
     C.lastContact[eid] = t
-    startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
+    // the start written here, not through startAt: where V8 does not inline it, its five doubles were boxed
+    // for every member of every cluster settled (a pile's clusters run to hundreds)
+    pathStart[PS_X] = B.x[eid]!
+    pathStart[PS_Y] = B.y[eid]!
+    pathStart[PS_VX] = vx
+    pathStart[PS_VY] = vy
+    pathStart[PS_T] = t
     restart(w, eid)
     // the others are predicted again next pass with a and b
     if (k >= 2) pushId(w.marked, eid)

@@ -93,6 +93,26 @@ function crowd(): BallPhysics {
   return sim
 }
 
+/**
+ * A 15 × 15 pile packed in the corner of a closed 1,000 px box with restitution 0, the exact method, pressed
+ * by a ball a step thrown at it at 1,500 px/s from the far side (`press`, called before each step): touching
+ * pairs whose searches creep, and clusters settled, every step.
+ */
+function pile(): { sim: BallPhysics; press: () => void } {
+  let seed = 99
+  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0 }, { capacity: 1024 })
+  sim.setWalls({ minX: 0, minY: 0, maxX: 1000, maxY: 1000, restitution: 0 })
+  for (let i = 0; i < 15; i++) for (let j = 0; j < 15; j++) sim.addBall({ x: 12 + 22.5 * i, y: 12 + 22.5 * j })
+  const press = (): void => {
+    const x = 400 + 300 * random()
+    const y = 400 + 300 * random()
+    const d = Math.hypot(x, y)
+    sim.addBall({ x, y, vx: (-1500 * x) / d, vy: (-1500 * y) / d })
+  }
+  return { sim, press }
+}
+
 // a collection on demand, so that a window starts with an empty young generation (what was allocated
 // before it, by this test, the test runner or the warm-up, cannot fill it during the window)
 setFlagsFromString('--expose-gc')
@@ -103,7 +123,7 @@ const collectGarbage = runInNewContext('gc') as () => void
  * between; NaN if one ran (after the collection only what the window allocates can start one: about
  * 0.9 MB for 300 steps at the limit of 3 bytes a ball-step).
  */
-async function bytesPerBallStep(sim: BallPhysics, steps: number): Promise<number> {
+async function bytesPerBallStep(sim: BallPhysics, steps: number, each: (() => void) | null = null, dt = 1 / 120): Promise<number> {
   let collections = 0
   const obs = new PerformanceObserver((list) => {
     collections += list.getEntries().length
@@ -112,14 +132,17 @@ async function bytesPerBallStep(sim: BallPhysics, steps: number): Promise<number
   await new Promise((r) => setTimeout(r, 10))
   obs.observe({ entryTypes: ['gc'] })
   const before = process.memoryUsage().heapUsed
+  let ballSteps = 0
   for (let s = 0; s < steps; s++) {
-    sim.step(1 / 120)
+    if (each !== null) each()
+    ballSteps += sim.world.moving.count + (sim.world.collide?.restCount ?? 0)
+    sim.step(dt)
     sim.world.events.count = 0
   }
   const after = process.memoryUsage().heapUsed
   await new Promise((r) => setTimeout(r, 10))
   obs.disconnect()
-  return collections === 0 ? (after - before) / (steps * N) : NaN
+  return collections === 0 ? (after - before) / (each === null ? steps * N : ballSteps) : NaN
 }
 
 /**
@@ -165,6 +188,8 @@ const MAX_WINDOWS = 12
 // the gas scenes have run in the same process, V8 sometimes keeps optimised code for the planner, the
 // integration and the skip-over system that calls Math.sqrt as a generic function: docs/decisions.md §1.)
 const LIMIT = 3
+/** the pressed pile's limit (its test says why it is not LIMIT) */
+const PILE_LIMIT = 1000
 
 describe('allocation per ball-step', () => {
   for (const mode of ['off', 'on', 'fixed'] as const) {
@@ -187,6 +212,31 @@ describe('allocation per ball-step', () => {
     expect(moving).toBe(N)
     expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
   }, 60_000)
+
+  it(`contacts on: a pile pressed by a stream (touching pairs creeping, clusters settled) allocates under ${PILE_LIMIT} bytes a ball-step`, async () => {
+    // the contact search passed a touching pair's numbers to creep (eight doubles and the answer) and the
+    // cluster its time to each ball it looked at, and the lookups' circle to pointQuery: about 22 MB a step of
+    // a 400-ball pile (sampled by V8's heap profiler), 4,900 bytes a ball-step here or more (most windows had a
+    // collection in them); now 260–610. What is left is about 27 bytes each time a settled cluster's balls start
+    // new paths (16 such restarts a ball-step here), not found yet: hence a limit of its own, not LIMIT
+    const throwaway = pile()
+    for (let s = 0; s < 60; s++) {
+      throwaway.press()
+      throwaway.sim.step(1 / 60)
+      throwaway.sim.world.events.count = 0
+    }
+    const { sim, press } = pile()
+    for (let s = 0; s < 30; s++) {
+      press()
+      sim.step(1 / 60)
+      sim.world.events.count = 0
+    }
+    const windows: number[] = []
+    for (let k = 0; k < 6 && !(Math.min(...windows.filter((b) => !Number.isNaN(b))) < PILE_LIMIT); k++) windows.push(await bytesPerBallStep(sim, 5, press, 1 / 60))
+    expect(sim.world.collide!.restCount, 'the pile rests').toBeGreaterThan(100)
+    const least = Math.min(...windows.filter((b) => !Number.isNaN(b)))
+    expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(PILE_LIMIT)
+  }, 120_000)
 
   for (const mode of ['on', 'fixed'] as const) {
     it(`contacts ${mode}: balls rolling through a spread-out field of resting ones allocate under ${LIMIT} bytes a ball-step`, async () => {

@@ -26,6 +26,46 @@ export function resolveContact(
   ny: number,
   e: number,
 ): void {
+  const I = contactIn
+  I[CI_MA] = ma
+  I[CI_MB] = mb
+  I[CI_VAX] = vax
+  I[CI_VAY] = vay
+  I[CI_VBX] = vbx
+  I[CI_VBY] = vby
+  I[CI_NX] = nx
+  I[CI_NY] = ny
+  I[CI_E] = e
+  resolveContactIn()
+}
+
+/**
+ * resolveContact's inputs, for callers in the step (slots: nine doubles passed to a call V8 does not inline
+ * are nine heap numbers a contact): masses, velocities, normal, restitution
+ */
+export const contactIn = new Float64Array(9)
+export const CI_MA = 0
+export const CI_MB = 1
+export const CI_VAX = 2
+export const CI_VAY = 3
+export const CI_VBX = 4
+export const CI_VBY = 5
+export const CI_NX = 6
+export const CI_NY = 7
+export const CI_E = 8
+
+/** resolveContact with its inputs in contactIn. */
+export function resolveContactIn(): void {
+  const I = contactIn
+  const ma = I[CI_MA]!
+  const mb = I[CI_MB]!
+  const vax = I[CI_VAX]!
+  const vay = I[CI_VAY]!
+  const vbx = I[CI_VBX]!
+  const vby = I[CI_VBY]!
+  const nx = I[CI_NX]!
+  const ny = I[CI_NY]!
+  const e = I[CI_E]!
   const o = contactOut
   const rx = vbx - vax
   const ry = vby - vay

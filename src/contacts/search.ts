@@ -101,9 +101,22 @@ export function searchContact(w: BallWorld, a: number, b: number): void {
     }
     // the gap closes no sooner than closeIn's bound
     const gg = g > 0 ? g : 0
-    let h = closeIn(gg, vn, A)
+    // (closeIn written out, and creep's numbers through slots: a double passed to or returned from a call
+    // V8 does not inline is boxed, nine heap numbers a step of a touching pair's search)
+    let h = vn < 0 ? (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn) : A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : 1 / 0
     // touching (or nearly, and not closing): a step from the rates (creep), at least MIN_ADVANCE
-    if (h < minAdvance && !(vn < 0 && g > 0)) h = creep(h, g, vn, vrel, A, floor, deep, minAdvance)
+    if (h < minAdvance && !(vn < 0 && g > 0)) {
+      CR[CR_H] = h
+      CR[CR_G] = g
+      CR[CR_VN] = vn
+      CR[CR_VREL] = vrel
+      CR[CR_A] = A
+      CR[CR_FLOOR] = floor
+      CR[CR_DEEP] = deep
+      CR[CR_MIN] = minAdvance
+      creep()
+      h = CR[CR_H]!
+    }
     let next = t + h
     if (pieceEnd > t && next > pieceEnd) next = pieceEnd
     if (next > to) return
@@ -241,9 +254,22 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
     const pieceEnd = na < nb ? na : nb
     // the gap closes no sooner than closeIn's bound
     const gg = g > 0 ? g : 0
-    let h = closeIn(gg, vn, A)
+    // (closeIn written out, and creep's numbers through slots: a double passed to or returned from a call
+    // V8 does not inline is boxed, nine heap numbers a step of a touching pair's search)
+    let h = vn < 0 ? (2 * gg) / (Math.sqrt(vn * vn + 2 * A * gg) - vn) : A > 0 ? (vn + Math.sqrt(vn * vn + 2 * A * gg)) / A : 1 / 0
     // touching (or nearly, and not closing): a step from the rates (creep), at least MIN_ADVANCE
-    if (h < minAdvance && !(vn < 0 && g > 0)) h = creep(h, g, vn, vrel, A, floor, deep, minAdvance)
+    if (h < minAdvance && !(vn < 0 && g > 0)) {
+      CR[CR_H] = h
+      CR[CR_G] = g
+      CR[CR_VN] = vn
+      CR[CR_VREL] = vrel
+      CR[CR_A] = A
+      CR[CR_FLOOR] = floor
+      CR[CR_DEEP] = deep
+      CR[CR_MIN] = minAdvance
+      creep()
+      h = CR[CR_H]!
+    }
     let next = t + h
     if (pieceEnd > t && next > pieceEnd) next = pieceEnd
     if (next > to) return
@@ -255,7 +281,7 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
 }
 
 /**
- * How far a search may advance from a state where the gap's own bound h1 is under MIN_ADVANCE (touching, or
+ * How far a search may advance (into CR[CR_H]; its inputs in CR) from a state where the gap's own bound h1 is under MIN_ADVANCE (touching, or
  * nearly and not closing), without passing the first time its contact test holds. g is the gap (px), vn its
  * rate (negative: closing), vrel the balls' relative speed, A a bound on their relative acceleration until
  * the state's piece ends. The test holds either at a gap of at most 0 (GAP_TOLERANCE) closing faster than
@@ -268,7 +294,15 @@ function searchStraight(w: BallWorld, a: number, b: number): void {
  * slower than the floor no longer creeps while it sinks into itself (which cost one pair 23 ms a step 9 s
  * after it met, and more every step): the search passes over to the depth of route 2, where it is a contact.
  */
-function creep(h1: number, g: number, vn: number, vrel: number, A: number, floor: number, deep: number, minAdvance: number): number {
+function creep(): void {
+  const h1 = CR[CR_H]!
+  const g = CR[CR_G]!
+  const vn = CR[CR_VN]!
+  const vrel = CR[CR_VREL]!
+  const A = CR[CR_A]!
+  const floor = CR[CR_FLOOR]!
+  const deep = CR[CR_DEEP]!
+  const minAdvance = CR[CR_MIN]!
   // route 1 waits for its rate, route 2 for its depth and a rate of closing at all
   const eps = APPROACH_EPSILON * (1 + vrel)
   const rate1 = fallIn(vn + floor + eps, A)
@@ -282,8 +316,19 @@ function creep(h1: number, g: number, vn: number, vrel: number, A: number, floor
     if (h2 < h) h = h2
   }
   // touching without approaching: creep on; the balls can close by at most A·MIN_ADVANCE²/2 meanwhile
-  return h < minAdvance ? minAdvance : h
+  CR[CR_H] = h < minAdvance ? minAdvance : h
 }
+
+/** creep's inputs (its gap's own bound h1 in CR_H, and the state's g, vn, vrel, A, floor, depth and least step) and its answer (CR_H) */
+const CR = new Float64Array(8)
+const CR_H = 0
+const CR_G = 1
+const CR_VN = 2
+const CR_VREL = 3
+const CR_A = 4
+const CR_FLOOR = 5
+const CR_DEEP = 6
+const CR_MIN = 7
 
 /**
  * The least time in which a gap x ≥ 0 closing at rate vn, its rate falling no faster than A, can close: the
