@@ -801,15 +801,21 @@ describe('a launcher firing many balls from one point', () => {
     expect(balls.filter((b) => sim.ballState(b).mode !== 'held').length).toBeGreaterThan(5)
   })
 
+  /** The default panel, walls open at the bottom, and 300 balls thrown from its launch point in one frame (seeded). */
+  function launcherBurst(mode: 'on' | 'fixed'): { sim: ReturnType<typeof createBallPhysics>; burst: number[] } {
+    const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+    addPanel(sim)
+    sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
+    const r = mulberry32(5)
+    const burst = Array.from({ length: 300 }, () => sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.3 + 0.6 * r(), angle: r() - 0.5 }))
+    return { sim, burst }
+  }
+
   it('a ball thrown at the launch point while a burst waits there queues behind it, even when the spot is clear for a moment', () => {
     // held balls do not occupy their spot: a ball put down while the last ball launched had just left it was
     // placed at once (the fixed tick, 1.5 s into a 300-ball burst: it left 27th of 301, not last)
     for (const mode of ['on', 'fixed'] as const) {
-      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
-      addPanel(sim)
-      sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
-      const r = mulberry32(5)
-      const burst = Array.from({ length: 300 }, () => sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.3 + 0.6 * r(), angle: r() - 0.5 }))
+      const { sim, burst } = launcherBurst(mode)
       const left = new Map<number, number>()
       let late = -1
       // heldAhead counts the balls waiting ahead of the late one: all that wait when it is thrown, then fewer
@@ -845,11 +851,7 @@ describe('a launcher firing many balls from one point', () => {
     // the player's throw during a launcher's burst: with the default ('back') it leaves after the whole
     // burst (the test above); at the front, at the first launch instant its spot is clear
     for (const mode of ['on', 'fixed'] as const) {
-      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
-      addPanel(sim)
-      sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, open: { bottom: true } })
-      const r = mulberry32(5)
-      const burst = Array.from({ length: 300 }, () => sim.throwBall({ ...DEFAULT_PANEL.launch, power: 0.3 + 0.6 * r(), angle: r() - 0.5 }))
+      const { sim, burst } = launcherBurst(mode)
       const left = new Map<number, number>()
       let first = -1
       let second = -1
