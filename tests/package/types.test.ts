@@ -121,13 +121,13 @@ const OPTIONAL = `
 import { createBallPhysics, createFixedStepClock, outcomeMap, prepareRimTable, sampleThrows, solveThrow, DEFAULT_PANEL, type BallSpec, type ConfigOverrides, type HoleSpec, type ThrowSpec, type WallsSpec } from '${PKG}'
 import { createBallWorld } from '${PKG}/ecs'
 
-export function pass(o: { decel?: number; capacity?: number; radius?: number; hero?: boolean; mass?: number; value?: number; e?: number; bottom?: boolean; hz?: number; along?: number; sd?: number; window?: 'ellipse' | 'quadratic' }): void {
+export function pass(o: { decel?: number; capacity?: number; radius?: number; hero?: boolean; mass?: number; value?: number; e?: number; bottom?: boolean; hz?: number; along?: number; sd?: number; window?: 'ellipse' | 'quadratic'; queue?: 'back' | 'front' }): void {
   const overrides: ConfigOverrides = { ROLLING_DECEL: o.decel, CAPTURE_WINDOW: o.window }
   const sim = createBallPhysics({ ROLLING_DECEL: o.decel }, { capacity: o.capacity, broadphase: undefined })
   createBallWorld(overrides, { capacity: o.capacity })
-  const ball: BallSpec = { x: 0, y: 0, vx: 0, vy: 0, radius: o.radius, hero: o.hero, mass: o.mass }
+  const ball: BallSpec = { x: 0, y: 0, vx: 0, vy: 0, radius: o.radius, hero: o.hero, mass: o.mass, queue: o.queue }
   sim.addBall(ball)
-  const thrown: ThrowSpec = { x: 0, y: 0, power: 0.5, angle: 0, radius: o.radius, hero: o.hero, mass: o.mass }
+  const thrown: ThrowSpec = { x: 0, y: 0, power: 0.5, angle: 0, radius: o.radius, hero: o.hero, mass: o.mass, queue: o.queue }
   sim.throwBall(thrown)
   const hole: HoleSpec = { x: 100, y: 100, radius: o.radius, value: o.value }
   const id = sim.addHole(hole)
@@ -135,7 +135,7 @@ export function pass(o: { decel?: number; capacity?: number; radius?: number; he
   sim.setWalls(walls)
   sim.setWalls({ ...walls, open: undefined })
   createFixedStepClock({ hz: o.hz, maxStepsPerFrame: undefined })
-  solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: id, along: o.along, outcome: undefined })
+  solveThrow(sim, { from: DEFAULT_PANEL.launch, hole: id, along: o.along, outcome: undefined, queue: o.queue })
   prepareRimTable(sim, 18, 11, { inertia: undefined, rows: undefined })
   const scene = { config: o.decel === undefined ? undefined : overrides, holes: DEFAULT_PANEL.holes, walls: undefined }
   sampleThrows(scene, { power: { mean: 0.5, sd: o.sd }, angle: { mean: 0, sd: o.sd }, from: { x: 210, y: 450, sdX: o.sd, sdY: o.sd } }, 1, 1)
