@@ -27,7 +27,7 @@ import { launchBall } from '../src/motion/ballFate.js'
 import { PS_T, PS_VX, PS_VY, PS_X, PS_Y, pathStart, planRolling } from '../src/motion/rolling.js'
 import { planRimRoll } from '../src/motion/rimRoll.js'
 import { pushId } from '../src/world/idLists.js'
-import { countContacts } from '../src/world/contactState.js'
+import { contactTickKey, countContacts } from '../src/world/contactState.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { hypot } from '../src/math.js'
 import { HOT, H_NEXT_T, setNextT } from '../src/world/pathHot.js'
@@ -76,9 +76,8 @@ export function collisionsSystem(w: BallWorld): void {
     // contacts: 1 in 180,000 at s = 1 px/s (the default BALL_SETTLE_SPEED), v = 300 px/s
     const slow = approach < w.config.BALL_SETTLE_SPEED
     const repeat = isRepeatContact(w, a, b)
-    // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate;
-    // contactTickKey written out: a call V8 does not inline boxed the time)
-    const tick = Math.floor(t / w.config.CONTACT_TICK) + 1
+    // the contact tick of the world's clock the contact falls in (its count is the same at every frame rate)
+    const tick = contactTickKey(t, w.config.CONTACT_TICK)
     const settle = slow || repeat || countContacts(C, a, tick, 1) > MAX_TICK_CONTACTS || countContacts(C, b, tick, 1) > MAX_TICK_CONTACTS
     C.contacts++
     let graze = false

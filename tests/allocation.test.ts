@@ -95,22 +95,22 @@ function crowd(): BallPhysics {
 
 /**
  * A 15 × 15 pile packed in the corner of a closed 1,000 px box with restitution 0, the exact method, pressed
- * by a ball a step thrown at it at 1,500 px/s from the far side (`press`, called before each step): touching
+ * by a ball a step thrown at it at 1,500 px/s from the far side (`each`, called before each step): touching
  * pairs whose searches creep, and clusters settled, every step.
  */
-function pile(): { sim: BallPhysics; press: () => void } {
+function pile(): Fed {
   let seed = 99
   const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
   const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 0 }, { capacity: 1024 })
   sim.setWalls({ minX: 0, minY: 0, maxX: 1000, maxY: 1000, restitution: 0 })
   for (let i = 0; i < 15; i++) for (let j = 0; j < 15; j++) sim.addBall({ x: 12 + 22.5 * i, y: 12 + 22.5 * j })
-  const press = (): void => {
+  const each = (): void => {
     const x = 400 + 300 * random()
     const y = 400 + 300 * random()
     const d = Math.hypot(x, y)
     sim.addBall({ x, y, vx: (-1500 * x) / d, vy: (-1500 * y) / d })
   }
-  return { sim, press }
+  return { sim, each }
 }
 
 // a collection on demand, so that a window starts with an empty young generation (what was allocated
@@ -119,8 +119,8 @@ setFlagsFromString('--expose-gc')
 const collectGarbage = runInNewContext('gc') as () => void
 
 /**
- * Bytes the heap grew by per ball-step over `steps` steps, after a collection, with no collection in
- * between; NaN if one ran (after the collection only what the window allocates can start one: about
+ * Bytes the heap grew by per ball-step over `steps` steps of `dt` (with `each` before each step: per ball on the
+ * panel then, else per N), after a collection, with no collection in between; NaN if one ran (after the collection only what the window allocates can start one: about
  * 0.9 MB for 300 steps at the limit of 3 bytes a ball-step).
  */
 async function bytesPerBallStep(sim: BallPhysics, steps: number, each: (() => void) | null = null, dt = 1 / 120): Promise<number> {
@@ -146,39 +146,52 @@ async function bytesPerBallStep(sim: BallPhysics, steps: number, each: (() => vo
 }
 
 /**
- * The least growth of the heap per ball-step over windows of 300 steps (each after a collection; a window
+ * The least growth of the heap per ball-step over windows of `steps` steps (300; each after a collection; a window
  * a collection ran in counts as NaN), after `warm` steps, in a fresh scene from `make` after a throwaway
  * one has run as many steps as may be measured: V8 optimises a function for the paths it has seen taken
  * and drops the code when another is first taken, and until it optimises again the function runs
  * unoptimised, boxing every double (windows of 9 and 30 bytes a ball-step, in a scene whose steps allocate
- * 0.1 once every path has been seen). Four windows; more, up to twelve, while none is under LIMIT: in one
+ * 0.1 once every path has been seen). Four windows; more, up to twelve, while none is under `limit`: in one
  * of about 40 processes run beside other test files, the exact method's prediction was still being
  * optimised again well into the field scene (windows of 15, 14, 9 and 4.5 bytes a ball-step, then 1.6,
- * then the usual 0.06). `moving` is the scene's moving balls after warm + 1,200 steps, whatever the
+ * then the usual 0.06). `moving` (and `resting`, with exact contacts) is the scene's moving balls after warm + 4 windows' steps, whatever the
  * windows measured: the tests check that the scene was what it says then (with the windows' count
  * depending on the collections, under load the skipping stream had lost balls to the holes, 997 of 1,000
  * moving, and the field had come to rest by its end, in 5 of 30 runs of this file).
  */
-async function leastBytesPerBallStep(make: () => BallPhysics, warm: number): Promise<{ least: number; windows: number[]; moving: number }> {
-  const throwaway = make()
-  for (let s = 0; s < warm + MAX_WINDOWS * 300; s++) {
-    throwaway.step(1 / 120)
-    throwaway.world.events.count = 0
+async function leastBytesPerBallStep(
+  make: () => BallPhysics | Fed,
+  warm: number,
+  { steps = 300, dt = 1 / 120, limit = LIMIT }: { steps?: number; dt?: number; limit?: number } = {},
+): Promise<{ least: number; windows: number[]; moving: number; resting: number }> {
+  const fed = (s: BallPhysics | Fed): Fed => ('sim' in s ? s : { sim: s, each: null })
+  const run = ({ sim, each }: Fed, n: number): void => {
+    for (let s = 0; s < n; s++) {
+      if (each !== null) each()
+      sim.step(dt)
+      sim.world.events.count = 0
+    }
   }
-  const sim = make()
-  for (let s = 0; s < warm; s++) {
-    sim.step(1 / 120)
-    sim.world.events.count = 0
-  }
+  run(fed(make()), warm + MAX_WINDOWS * steps)
+  const scene = fed(make())
+  const { sim, each } = scene
+  run(scene, warm)
   const windows: number[] = []
-  for (let k = 0; k < 4; k++) windows.push(await bytesPerBallStep(sim, 300))
+  for (let k = 0; k < 4; k++) windows.push(await bytesPerBallStep(sim, steps, each, dt))
   const moving = sim.world.moving.count
+  const resting = sim.world.collide?.restCount ?? 0
   const least = (): number => {
     const clean = windows.filter((b) => !Number.isNaN(b))
     return clean.length > 0 ? Math.min(...clean) : NaN
   }
-  while (windows.length < MAX_WINDOWS && !(least() < LIMIT)) windows.push(await bytesPerBallStep(sim, 300))
-  return { least: least(), windows, moving }
+  while (windows.length < MAX_WINDOWS && !(least() < limit)) windows.push(await bytesPerBallStep(sim, steps, each, dt))
+  return { least: least(), windows, moving, resting }
+}
+
+/** A scene fed before each step (the pile's stream): `each` runs first, and bytes are counted per ball on the panel. */
+interface Fed {
+  sim: BallPhysics
+  each: (() => void) | null
 }
 
 const MAX_WINDOWS = 12
@@ -219,22 +232,8 @@ describe('allocation per ball-step', () => {
     // a 400-ball pile (sampled by V8's heap profiler), 4,900 bytes a ball-step here or more (most windows had a
     // collection in them); now 260–610. What is left is about 27 bytes each time a settled cluster's balls start
     // new paths (16 such restarts a ball-step here), not found yet: hence a limit of its own, not LIMIT
-    const throwaway = pile()
-    for (let s = 0; s < 60; s++) {
-      throwaway.press()
-      throwaway.sim.step(1 / 60)
-      throwaway.sim.world.events.count = 0
-    }
-    const { sim, press } = pile()
-    for (let s = 0; s < 30; s++) {
-      press()
-      sim.step(1 / 60)
-      sim.world.events.count = 0
-    }
-    const windows: number[] = []
-    for (let k = 0; k < 6 && !(Math.min(...windows.filter((b) => !Number.isNaN(b))) < PILE_LIMIT); k++) windows.push(await bytesPerBallStep(sim, 5, press, 1 / 60))
-    expect(sim.world.collide!.restCount, 'the pile rests').toBeGreaterThan(100)
-    const least = Math.min(...windows.filter((b) => !Number.isNaN(b)))
+    const { least, windows, resting } = await leastBytesPerBallStep(pile, 30, { steps: 5, dt: 1 / 60, limit: PILE_LIMIT })
+    expect(resting, 'the pile rests').toBeGreaterThan(100)
     expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(PILE_LIMIT)
   }, 120_000)
 

@@ -13,7 +13,6 @@ import { CR, X1, X2, Y1, Y2, capsuleCellsOver, capsuleCells, query, staleEntry }
  * ball looked at
  */
 export const clusterAt = new Float64Array(1)
-const at = clusterAt
 
 /**
  * Gathers into C.cluster the balls touching a or b (gap ≤ TOUCH_GAP at time t = clusterAt[0]), and those touching
@@ -88,7 +87,7 @@ export function collectCluster(w: BallWorld, a: number, b: number): void {
 }
 
 
-/** Adds ball c to the cluster when it touches member m at at[0] (and is not in it yet); returns the new count. */
+/** Adds ball c to the cluster when it touches member m at clusterAt[0] (and is not in it yet); returns the new count. */
 function consider(w: BallWorld, n: number, c: number, m: number, stamp: number): number {
   const C = w.collide!
   if (C.seen[c] === stamp || !touches(w, c, m)) return n
@@ -98,12 +97,12 @@ function consider(w: BallWorld, n: number, c: number, m: number, stamp: number):
 }
 
 /**
- * True when ball c touches member m at time t = at[0] (gap ≤ TOUCH_GAP) without moving away from it; c is
+ * True when ball c touches member m at time t = clusterAt[0] (gap ≤ TOUCH_GAP) without moving away from it; c is
  * then sampled into Ball at t. A ball separating from m (a striker rebounding off the cluster an instant
  * ago, still within the touch gap) is not part of the cluster: merging it would stop it dead.
  */
 function touches(w: BallWorld, c: number, m: number): boolean {
-  const t = at[0]!
+  const t = clusterAt[0]!
   if (w.Ball.live[c] !== 1) return false
   const mode = w.Ball.mode[c]
   if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll && mode !== BallMode.Resting) return false
