@@ -41,7 +41,8 @@ import { changedAt, OTHER, PARTING, REFUSED, reserveStamps, testedAs, testedAt }
  * A sweep's impulses: pairs met past RESTITUTION_VISITS whose one ball is SQUEEZE_MASS_RATIO times lighter
  * than the other or more (by their own masses: a ball at rest held like a wall is not a heavier one, or a slow
  * push along a row at rest ended its calls half way and left the row 5e-3 px deep), with restitution 1 any
- * pair one of whose balls was the light ball of such a meeting earlier in the call (pumped), and all others
+ * pair one of whose balls is pumped (the light ball of such a meeting earlier in the call, or a ball a
+ * meeting of this kind turned: the pumping passes from ball to ball), and all others
  */
 let remet = 0
 let plain = 0
@@ -243,7 +244,13 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   if (visits >= RESTITUTION_VISITS && (F.im[a]! >= SQUEEZE_MASS_RATIO * F.im[b]! || F.im[b]! >= SQUEEZE_MASS_RATIO * F.im[a]!)) {
     remet++
     pumpedIn[F.im[a]! > F.im[b]! ? a : b] = calls
-  } else if (e === 1 && (pumpedIn[a] === calls || pumpedIn[b] === calls)) remet++
+  } else if (e === 1 && (pumpedIn[a] === calls || pumpedIn[b] === calls)) {
+    // and the other ball is pumped from now on in the call: a pumped ball knocks the balls around it into
+    // one another, and those meetings kept the sweeps going (docs/decisions.md §12)
+    remet++
+    pumpedIn[a] = calls
+    pumpedIn[b] = calls
+  }
   else plain++
   // a ball SQUEEZE_MASS_RATIO times lighter than its partner (or more) that the impulse drives into a closed
   // wall it can reach within the tick (at its speed; a ball standing still, at the speed the impulse gives

@@ -88,8 +88,9 @@ function probeTicks(sim: BallPhysics, tick: (same: boolean, before: number, afte
 
 describe('fixed-tick contacts: the work meter', () => {
   // without the tick halved for the balls' travel: with it (the default), the unbounded solve of this crowd
-  // runs 21,456 sweeps in these steps, and the budget of 16 18,172
-  it('CONTACT_WORK_BUDGET 16, a pumped elastic crowd (CONTACT_TRAVEL_HALVINGS 0): its spans spend their budget and go lean, each lean tick within its own bound; energy never rises at a tick, every state finite; under a fifth of the sweeps of the unbounded solve', () => {
+  // runs 20,168 sweeps in these steps, and the budget of 16 16,672. Without it, 15,609 and 3,612 (33,615 and
+  // 4,510 before a ball an elastic meeting with a pumped one turned counted as pumped too: fixedSolve.ts)
+  it('CONTACT_WORK_BUDGET 16, a pumped elastic crowd (CONTACT_TRAVEL_HALVINGS 0): its spans spend their budget and go lean, each lean tick within its own bound; energy never rises at a tick, every state finite; under a quarter of the sweeps of the unbounded solve', () => {
     const sim = pumped(16, 0)
     const F = sim.world.fixed!
     // a tick that starts with its span's budget spent costs at most its gather, two lean velocity calls, and a
@@ -115,7 +116,7 @@ describe('fixed-tick contacts: the work meter', () => {
     const freeSweeps = sweepsRun()
     for (let i = 0; i < 12; i++) free.step(1 / 60)
     expect(free.world.fixed!.lean).toBe(0)
-    expect(5 * bounded).toBeLessThan(sweepsRun() - freeSweeps)
+    expect(4 * bounded).toBeLessThan(sweepsRun() - freeSweeps)
   })
 
   it('lean ticks are decided at the ticks: the same events and states at 30, 60 and 240 Hz', () => {
