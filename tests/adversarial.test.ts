@@ -2,9 +2,9 @@
 // (METHOD 'exact'; BALL_COLLISIONS 'off' | 'on' | 'fixed' × BALL_RESTITUTION 0, 0.5, 1 × ROLLING_DECEL 0, 300), with
 // extreme but valid input: radii 1e-3…200 px and now and then up to MAX_RADIUS, masses 1e-9…1e9, speeds up to
 // 1e5 px/s, balls put down on one another, overlapping one, inside a lip circle or aimed at a hole (rim shots),
-// bursts of up to 30 balls at one point, holes added and removed, walls of every shape (the panel, 1e-6 px
-// across, narrower than a ball, open edges) set and cleared, velocities set, steps of 1e-9 s to 10 s. Each
-// sequence ends with 40 steps of 1/60 s. After every call the runner checks the property's invariants:
+// at the back of a busy spot's queue or at its front (queue: 'front'), bursts of up to 30 balls at one point,
+// holes added and removed, walls of every shape (the panel, 1e-6 px across, narrower than a ball, open edges)
+// set and cleared, velocities set, steps of 1e-9 s to 10 s. Each sequence ends with 40 steps of 1/60 s. After every call the runner checks the property's invariants:
 //   finite   every element of every Ball and Path store of every live ball is finite; every mode is named;
 //            no velocity component beyond MAX_SPEED (what setBallVelocity accepts)
 //   events   drained events never go back in time, and each lies in the window [time before, time after]
@@ -98,8 +98,8 @@ type Place =
   | { p: 'aim'; k: number; d: number; off: number; a: number; lip?: number }
 
 type Op =
-  | { t: 'addBall'; x: number; y: number; vx: number; vy: number; radius?: number; mass?: number; place: Place }
-  | { t: 'throw'; x: number; y: number; power: number; angle: number; radius?: number; mass?: number; place: Place }
+  | { t: 'addBall'; x: number; y: number; vx: number; vy: number; radius?: number; mass?: number; place: Place; queue?: 'front' }
+  | { t: 'throw'; x: number; y: number; power: number; angle: number; radius?: number; mass?: number; place: Place; queue?: 'front' }
   | { t: 'burst'; n: number; x: number; y: number; spread: number; speed: number; radius?: number; mass?: number; seed: number; aim?: Place }
   | { t: 'addHole'; x: number; y: number; radius?: number }
   | { t: 'removeHole'; k: number }
@@ -197,10 +197,13 @@ function opArbs(L: Limits) {
     { weight: 3, arbitrary: logUniform(L.mass[0], L.mass[1]) },
     { weight: 1, arbitrary: fc.constantFrom(L.mass[0], L.mass[1]) },
   )
-  const addBall = fc.record({ x, y, v: velocity, radius, mass, place }).map(({ v, ...o }): Op => ({ t: 'addBall', ...o, vx: v.vx, vy: v.vy }))
+  // one ball in three put down or thrown at the front of the queue where its spot is busy (a player's throw
+  // into a launcher burst), the others at the back (the default)
+  const queue = fc.constantFrom<'front' | undefined>(undefined, undefined, 'front')
+  const addBall = fc.record({ x, y, v: velocity, radius, mass, place, queue }).map(({ v, ...o }): Op => ({ t: 'addBall', ...o, vx: v.vx, vy: v.vy }))
   const launch = fc.oneof({ weight: 2, arbitrary: fc.constant({ x: 210, y: 450 }) }, { weight: 3, arbitrary: fc.record({ x, y }) })
   const thrown = fc
-    .record({ at: launch, power: fc.oneof(unit, fc.constantFrom(0, 1)), angle: uniform(-2 * Math.PI, 2 * Math.PI), radius, mass, place })
+    .record({ at: launch, power: fc.oneof(unit, fc.constantFrom(0, 1)), angle: uniform(-2 * Math.PI, 2 * Math.PI), radius, mass, place, queue })
     .map(({ at, ...o }): Op => ({ t: 'throw', ...at, ...o }))
   const burst = fc.record({
     t: fc.constant('burst' as const),
@@ -292,7 +295,7 @@ function noteRun(name: string, ms: number, scale: number, runDevMs: number): voi
   list.length = Math.min(list.length, SLOWEST_RUNS)
 }
 /** what the runs of a property exercised: runs, steps, most balls at once, energy or overlap checks made, events by type */
-const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; halved: number; mostHalvings: number; lean: number; events: Record<string, number> }> = {}
+const seen: Record<string, { runs: number; discarded: number; steps: number; balls: number; checked: number; halved: number; mostHalvings: number; lean: number; frontHeld: number; events: Record<string, number> }> = {}
 
 const PANEL_MODES = new Set(['rolling', 'rimRoll', 'resting'])
 
@@ -376,7 +379,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (ms > 2 * STEP_BUDGET_MS) throw new OverBudget(`step still running after ${ms.toFixed(0)} ms (pass ${sim.world.pass})`)
     },
   })
-  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, halved: 0, mostHalvings: 0, lean: 0, events: {} })
+  const stats = (seen[name] ??= { runs: 0, discarded: 0, steps: 0, balls: 0, checked: 0, halved: 0, mostHalvings: 0, lean: 0, frontHeld: 0, events: {} })
   let halved = false
   let lean = false
   stats.runs++
@@ -476,16 +479,22 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       case 'addBall':
       case 'throw': {
         const p = spot(op)
-        const opt = { ...(op.radius === undefined ? {} : { radius: op.radius }), ...(op.mass === undefined ? {} : { mass: op.mass }) }
+        const opt = { ...(op.radius === undefined ? {} : { radius: op.radius }), ...(op.mass === undefined ? {} : { mass: op.mass }), ...(op.queue === undefined ? {} : { queue: op.queue }) }
+        // a front put is counted where it went ahead of a ball already held (one more ball ahead of that one)
+        const heldBefore = op.queue === 'front' ? sim.balls().filter((b) => sim.ballState(b).mode === 'held').map((b) => [b, sim.heldAhead(b)] as const) : []
+        let id: number
         if (op.t === 'addBall') {
           const s = p.speed ?? Math.max(Math.hypot(op.vx, op.vy), p.dir ? 50 : 0) // an aimed shot keeps its speed (at least 50 px/s)
           const spec = p.dir ? { x: p.x, y: p.y, vx: s * p.dir.ux, vy: s * p.dir.uy, ...opt } : { x: p.x, y: p.y, vx: op.vx, vy: op.vy, ...opt }
-          log(`sim.addBall(${lit(spec)}) // ${sim.addBall(spec)}`)
+          id = sim.addBall(spec)
+          log(`sim.addBall(${lit(spec)}) // ${id}`)
         } else {
           const angle = p.dir ? Math.atan2(p.dir.ux, -p.dir.uy) : op.angle
           const spec = { x: p.x, y: p.y, power: op.power, angle, ...opt }
-          log(`sim.throwBall(${lit(spec)}) // ${sim.throwBall(spec)}`)
+          id = sim.throwBall(spec)
+          log(`sim.throwBall(${lit(spec)}) // ${id}`)
         }
+        if (heldBefore.some(([b, ahead]) => sim.heldAhead(b) === ahead + 1)) stats.frontHeld++
         lastSpawn = sim.time
         break
       }
@@ -737,6 +746,8 @@ const CROWDS: Limits = { ...FULL, radius: [1e-3, 3], burst: 150, burstSpeeds: [3
 describe('adversarial API sequences (fast-check, seeded)', () => {
   it('every element of every Ball and Path store of every live ball stays finite; every mode is a BALL_MODE_NAMES mode', () => {
     property('finite', scenario(FULL), ['finite'], 100, SEED + 1)
+    // some of its balls were put down at the front of a queue with held balls behind them
+    expect(seen['finite']!.frontHeld).toBeGreaterThan(0)
   }, 120_000 * SCALE)
 
   it('drained events never go back in time, and each lies in the window of the call that reported it', () => {
