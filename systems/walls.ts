@@ -8,12 +8,12 @@ import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
 import { EventType, appendEvent } from '../src/events.js'
 import { NEVER } from '../src/config/tolerances.js'
-import { startAt, planRolling, startPath } from '../src/motion/rolling.js'
+import { PS_T, PS_VX, PS_VY, PS_X, PS_Y, pathStart, planRolling, startPath } from '../src/motion/rolling.js'
 import { releaseRim } from '../src/world/rimSlots.js'
 import { removeMoving } from '../src/world/idLists.js'
 import { type BallWorld } from '../src/world/createWorld.js'
 import { setBallMode } from '../src/world/ballMode.js'
-import { hotNextT, setNextT } from '../src/world/pathHot.js'
+import { H_NEXT_T, HOT, setNextT } from '../src/world/pathHot.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function wallsSystem(w: BallWorld): void {
@@ -30,7 +30,7 @@ export function wallsSystem(w: BallWorld): void {
     if (mark === PathEvent.Wall) {
       P.mark[eid] = PathEvent.None
       const edge = P.markEdge[eid]!
-      const t = hotNextT(w, eid)
+      const t = w.pathHot[eid * HOT + H_NEXT_T]!
       const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
       // with contacts on, a ball pressed to the wall by others slides along it instead of bouncing forever
       const vn = horizontal ? B.vx[eid]! : B.vy[eid]!
@@ -46,13 +46,19 @@ export function wallsSystem(w: BallWorld): void {
       const vy = horizontal ? B.vy[eid]! : k * vn
       const ev = appendEvent(w.events, EventType.Wall, eid, 0, false)
       w.events.time[ev] = t
-      startAt(B.x[eid]!, B.y[eid]!, vx, vy, t)
+      // the new path's start written here, not through startAt or hotNextT: where V8 did not inline those into
+      // this system (a pile pressed by a stream runs it at thousands of passes a step), their doubles were boxed
+      pathStart[PS_X] = B.x[eid]!
+      pathStart[PS_Y] = B.y[eid]!
+      pathStart[PS_VX] = vx
+      pathStart[PS_VY] = vy
+      pathStart[PS_T] = t
       startPath(w, eid)
       planRolling(w, eid)
     } else if (mark === PathEvent.Gutter) {
       P.mark[eid] = PathEvent.None
       const ev = appendEvent(w.events, EventType.Gutter, eid, 0, false)
-      w.events.time[ev] = hotNextT(w, eid)
+      w.events.time[ev] = w.pathHot[eid * HOT + H_NEXT_T]!
       setBallMode(w, eid, BallMode.Out)
       B.vx[eid] = 0
       B.vy[eid] = 0

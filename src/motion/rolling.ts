@@ -356,8 +356,18 @@ export function pathOffset(w: BallWorld, eid: number, hole: number): number {
   return (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
 }
 
+/** The time sampleRollingAt samples at, s (a slot: a double passed to a function V8 does not inline is boxed). */
+export const sampleTime = new Float64Array(1)
+
 /** Ball state at time t on its straight path (clamped at its stop). */
 export function sampleRolling(w: BallWorld, eid: number, t: number): void {
+  sampleTime[0] = t
+  sampleRollingAt(w, eid)
+}
+
+/** sampleRolling at sampleTime[0]. */
+export function sampleRollingAt(w: BallWorld, eid: number): void {
+  const t = sampleTime[0]!
   const P = w.Path
   const B = w.Ball
   const H = w.pathHot
