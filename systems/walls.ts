@@ -47,7 +47,8 @@ export function wallsSystem(w: BallWorld): void {
       const ev = appendEvent(w.events, EventType.Wall, eid, 0, false)
       w.events.time[ev] = t
       // the new path's start written here, not through startAt or hotNextT: where V8 did not inline those into
-      // this system (a pile pressed by a stream runs it at thousands of passes a step), their doubles were boxed
+      // this system (with contacts on it runs at every pass, and a pile pressed by a stream has many), their
+      // doubles were boxed
       pathStart[PS_X] = B.x[eid]!
       pathStart[PS_Y] = B.y[eid]!
       pathStart[PS_VX] = vx

@@ -4,7 +4,8 @@
 // 1e5 px/s, balls put down on one another, overlapping one, inside a lip circle or aimed at a hole (rim shots),
 // at the back of a busy spot's queue or at its front (queue: 'front'), bursts of up to 30 balls at one point,
 // holes added and removed, walls of every shape (the panel, 1e-6 px across, narrower than a ball, open edges)
-// set and cleared, velocities set, steps of 1e-9 s to 10 s. Each sequence ends with 40 steps of 1/60 s. After every call the runner checks the property's invariants:
+// set and cleared, velocities set, steps of 1e-9 s to 10 s. Each sequence ends with 40 steps of 1/60 s.
+// After every call the runner checks the property's invariants:
 //   finite   every element of every Ball and Path store of every live ball is finite; every mode is named;
 //            no velocity component beyond MAX_SPEED (what setBallVelocity accepts)
 //   events   drained events never go back in time, and each lies in the window [time before, time after]
