@@ -55,14 +55,21 @@ export function pushApart(w: BallWorld, F: FixedContactState, p: number): void {
 
 /**
  * Keeps a moved candidate from being pushed through a closed wall: never further past a wall's inner face
- * than it was when the tick began (a ball outside the box stays outside; an open edge's face is at
- * ±Infinity, so it never holds).
+ * than it was when the tick began (an open edge's face is at ±Infinity, so it never holds). A ball whose
+ * centre was beyond a wall's line at the tick's start is out of the box on that axis, not pressed into the
+ * wall, and is not held on that side: held, a crowd the walls turn back toward a box too small for it (its
+ * balls wider than the box) was squeezed onto the box's corners, 20 balls at one point, and every tick's
+ * projection ran out of sweeps (tests/systems/fixedWall.test.ts).
  */
 export function keepInside(w: BallWorld, F: FixedContactState, i: number): void {
   const eid = F.id[i]!
   const r = F.r[i]!
   const x0 = w.Ball.x[eid]!
   const y0 = w.Ball.y[eid]!
-  F.x[i] = Math.min(Math.max(F.x[i]!, Math.min(x0, walls.minX + r)), Math.max(x0, walls.maxX - r))
-  F.y[i] = Math.min(Math.max(F.y[i]!, Math.min(y0, walls.minY + r)), Math.max(y0, walls.maxY - r))
+  const lx = x0 < walls.minX ? -Infinity : Math.min(x0, walls.minX + r)
+  const hx = x0 > walls.maxX ? Infinity : Math.max(x0, walls.maxX - r)
+  const ly = y0 < walls.minY ? -Infinity : Math.min(y0, walls.minY + r)
+  const hy = y0 > walls.maxY ? Infinity : Math.max(y0, walls.maxY - r)
+  F.x[i] = Math.min(Math.max(F.x[i]!, lx), hx)
+  F.y[i] = Math.min(Math.max(F.y[i]!, ly), hy)
 }

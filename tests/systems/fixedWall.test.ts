@@ -754,3 +754,36 @@ describe('fixed-tick contacts: a light ball squeezed between two heavy ones (src
     }
   })
 })
+
+describe('fixed-tick contacts: a crowd outside a closed box too small for it', () => {
+  // The projection keeps a ball from being pushed further past a closed wall's inner face than it was at
+  // the tick's start, so that no ball in the box is pushed out through a wall. A ball whose centre is
+  // outside the box's line on an axis is out of the box, not pressed into it: held that way too, a crowd
+  // the walls turn back toward a box narrower than its balls (a sequence of the 47x adversarial run) was
+  // squeezed onto the box's corners, 20 balls at one point, and every tick's projection ran out.
+  it('42 balls of radius 11 sent at a closed 5 x 60 px box from outside, e = 0 and 1, 2 s: no two over 1e-3 px in each other, the projection not capped at most ticks', () => {
+    for (const e of [0, 1]) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: e, ROLLING_DECEL: 0 })
+      sim.setWalls({ minX: 50, minY: 165, maxX: 55, maxY: 225, restitution: 1 })
+      for (let i = 0; i < 6; i++) {
+        for (let j = 0; j < 7; j++) {
+          const y = 120 + 30 * j
+          sim.addBall({ x: 90 + 30 * i, y, vx: -150 - 10 * ((7 * i + j) % 5), vy: (195 - y) * 0.8 })
+        }
+      }
+      for (let s = 0; s < 120; s++) sim.step(1 / 60)
+      const st = sim.balls().map((b) => sim.ballState(b))
+      let deep = 0
+      for (let i = 0; i < st.length; i++) {
+        for (let j = i + 1; j < st.length; j++) {
+          if (st[i]!.radius + st[j]!.radius - Math.hypot(st[i]!.x - st[j]!.x, st[i]!.y - st[j]!.y) > 1e-3) deep++
+        }
+      }
+      // held, 7-8 pairs stayed 10-22 px deep and 207-217 of the 241 ticks' projections ran out
+      expect(deep).toBe(0)
+      expect(sim.world.fixed!.capped).toBeLessThan(60)
+      // none went into the box (its balls are wider than it)
+      for (const s of st) expect(s.x).toBeGreaterThan(55)
+    }
+  })
+})
