@@ -16,7 +16,7 @@ import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, appendEvent } from '../src/events.js'
 import { pathOffset, planRolling, sampleAtDistance, sampleRollingAt, sampleTime } from '../src/motion/rolling.js'
 import { capturesClean, fliesOver } from '../src/geometry.js'
-import { sampleRimRoll } from '../src/motion/rimRoll.js'
+import { rimTime, sampleRimRoll, sampleRimRollAt } from '../src/motion/rimRoll.js'
 import { HeapKind, heapPop, heapPush, pushTime, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
@@ -61,7 +61,10 @@ export function integrationSystem(w: BallWorld): void {
             const d = H[h + 4]! * (tEnd - H[h + 5]!)
             x[eid] = H[h]! + H[h + 2]! * d
             y[eid] = H[h + 1]! + H[h + 3]! * d
-          } else sampleRimRoll(w, eid, tEnd)
+          } else {
+            rimTime[0] = tEnd
+            sampleRimRollAt(w, eid)
+          }
           continue
         }
         if (nd === due.length) due = grown(due)
@@ -88,7 +91,9 @@ export function integrationSystem(w: BallWorld): void {
           vx[eid] = dx * vNow
           vy[eid] = dy * vNow
         } else {
-          sampleRimRoll(w, eid, tEnd)
+          // the time in a slot (src/motion/rimRoll.ts): as an argument, a heap number a rim-rolling ball a step
+          rimTime[0] = tEnd
+          sampleRimRollAt(w, eid)
         }
         continue
       }
@@ -195,9 +200,10 @@ function orderedIntegration(w: BallWorld): void {
   // the time in a slot (src/motion/rolling.ts): where V8 did not inline sampleRolling here, its time argument
   // was boxed for every moving ball, about 20 bytes a ball-step in a pile pressed by a stream
   sampleTime[0] = tEnd
+  rimTime[0] = tEnd
   for (let i = 0, n = w.moving.count; i < n; i++) {
     const eid = balls[i]!
-    if (mode[eid] === BallMode.RimRoll) sampleRimRoll(w, eid, tEnd)
+    if (mode[eid] === BallMode.RimRoll) sampleRimRollAt(w, eid)
     else sampleRollingAt(w, eid)
   }
   C.now = tEnd
@@ -346,8 +352,10 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
   for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {
     const t = H[eid * HOT + H_NEXT_T]!
     if (t > tEnd) {
-      if (w.Ball.mode[eid] === BallMode.RimRoll) sampleRimRoll(w, eid, tEnd)
-      else {
+      if (w.Ball.mode[eid] === BallMode.RimRoll) {
+        rimTime[0] = tEnd
+        sampleRimRollAt(w, eid)
+      } else {
         sampleTime[0] = tEnd
         sampleRollingAt(w, eid)
       }

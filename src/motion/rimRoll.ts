@@ -3,14 +3,14 @@
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { RimMode } from '../../components/RimContact.js'
-import { cogRadius, popArc, rollArc, rollDropTime, rollPopTime, rollSpeed } from '../geometry.js'
+import { popArc, rollDropTime, rollPopTime } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { EventType } from '../events.js'
 import { emitHoleEvent } from './ballFate.js'
 import { startAt, planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { setNextT } from '../world/pathHot.js'
-import { ARG, COS, SIN, atan2, hypot, mathSlot, sinCosSlot } from '../math.js'
+import { ARG, COS, RESULT, SIN, atan2, expSlot, expm1Slot, hypot, mathSlot, sinCosSlot } from '../math.js'
 
 /** Next event of a ball rolling on a rim: the earlier of its drop and its pop-off. */
 export function planRimRoll(w: BallWorld, eid: number): void {
@@ -67,25 +67,41 @@ export function rollPopsOff(w: BallWorld, eid: number): boolean {
 export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc: 0, radius: 0 }
 
 /**
- * Evaluates a rim-rolling ball at time t into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt. The
- * centre rides the contact circle ρ_c = R − r/2, where the COG gate took the contact (so a roll starts where
- * the ball is, with no jump), and turns arc/ρ_c radians.
+ * The time rimRollAt and sampleRimRollAt evaluate at, s (a slot, as src/motion/rolling.ts's sampleTime: a
+ * double passed to a function V8 does not inline is boxed, a heap number a rim-rolling ball a step).
  */
-export function rimRollAt(w: BallWorld, eid: number, t: number): void {
+export const rimTime = new Float64Array(1)
+
+/**
+ * Evaluates a rim-rolling ball at time rimTime[0] into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt.
+ * The centre rides the contact circle ρ_c = R − r/2, where the COG gate took the contact (so a roll starts
+ * where the ball is, with no jump), and turns arc/ρ_c radians.
+ */
+export function rimRollAt(w: BallWorld, eid: number): void {
+  const t = rimTime[0]!
   const RC = w.RimContact
   const slot = w.Ball.rim[eid]!
   const hole = RC.hole[slot]!
   if (RC.ride[slot] !== 0) {
-    rideAt(w, slot, hole, t)
+    rideAt(w, slot, hole)
     return
   }
-  const R = cogRadius(w.Hole.radius[hole]!, w.Ball.radius[eid]!)
+  // cogRadius, rollArc and rollSpeed written out, term for term: called, they took and returned doubles,
+  // which V8 boxes where it does not inline the call (four heap numbers a rim-rolling ball a step)
+  const R = w.Hole.radius[hole]! - w.Ball.radius[eid]! / 2
   const vt0 = RC.speed0[slot]!
   const mu = w.config.RIM_ROLL_FRICTION
   let tau = t - RC.time0[slot]!
   if (tau < 0) tau = 0
-  const arc = rollArc(tau, vt0, mu)
-  const v = rollSpeed(tau, vt0, mu)
+  let arc = vt0 * tau
+  if (mu > 0) {
+    mathSlot[ARG] = -mu * tau
+    expm1Slot()
+    arc = (vt0 * -mathSlot[RESULT]!) / mu
+  }
+  mathSlot[ARG] = -mu * tau
+  expSlot()
+  const v = vt0 * mathSlot[RESULT]!
   const dir = RC.direction[slot]!
   const phi = RC.angle0[slot]! + (dir * arc) / R
   mathSlot[ARG] = phi
@@ -104,14 +120,14 @@ export function rimRollAt(w: BallWorld, eid: number, t: number): void {
 }
 
 /**
- * A tabulated ride at time t into rimRollState: the centre turns at a steady rate while its distance from
+ * A tabulated ride at time rimTime[0] into rimRollState: the centre turns at a steady rate while its distance from
  * the hole centre moves linearly from rideFrom to rideTo (an animation of the reference's outcome, whose
  * start and end are the reference's: the lip crossing and the exit point or the drop).
  */
-function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
+function rideAt(w: BallWorld, slot: number, hole: number): void {
   const RC = w.RimContact
   const T = RC.rideTime[slot]!
-  let tau = t - RC.time0[slot]!
+  let tau = rimTime[0]! - RC.time0[slot]!
   if (tau < 0) tau = 0
   else if (tau > T) tau = T
   const f = T > 0 ? tau / T : 1
@@ -141,7 +157,13 @@ function rideAt(w: BallWorld, slot: number, hole: number, t: number): void {
 
 /** Ball state at time t on the rim (rimRollAt), written into Ball, RimContact and Path. */
 export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
-  rimRollAt(w, eid, t)
+  rimTime[0] = t
+  sampleRimRollAt(w, eid)
+}
+
+/** sampleRimRoll at rimTime[0] (the systems' form: they write the slot). */
+export function sampleRimRollAt(w: BallWorld, eid: number): void {
+  rimRollAt(w, eid)
   const o = rimRollState
   const B = w.Ball
   const slot = B.rim[eid]!
