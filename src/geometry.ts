@@ -125,7 +125,8 @@ export function speedAtDistance(d: number, v0: number, decel: number): number {
 /** Arc length rolled on the rim after τ seconds. */
 export function rollArc(tau: number, vt0: number, friction: number): number {
   if (!(friction > 0)) return vt0 * tau
-  // expm1 through its slot: evaluated at every step's end for a ball on a rim, so no double crosses a call
+  // expm1 through its slot (src/motion/rimRoll.ts's rimRollAt writes this and rollSpeed out, term for term,
+  // for the sample at every step's end: keep the two the same)
   mathSlot[ARG] = -friction * tau
   expm1Slot()
   return (vt0 * -mathSlot[RESULT]!) / friction

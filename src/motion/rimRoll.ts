@@ -73,9 +73,9 @@ export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc:
 export const rimTime = new Float64Array(1)
 
 /**
- * Evaluates a rim-rolling ball at time rimTime[0] into rimRollState: v_t = v_t0·e^(−μτ), exact for every dt.
- * The centre rides the contact circle ρ_c = R − r/2, where the COG gate took the contact (so a roll starts
- * where the ball is, with no jump), and turns arc/ρ_c radians.
+ * Evaluates a rim-rolling ball at time rimTime[0] into rimRollState: v_t = v_t0·e^(−μτ), exact for every
+ * dt. The centre rides the contact circle ρ_c = R − r/2, where the COG gate took the contact (so a roll
+ * starts where the ball is, with no jump), and turns arc/ρ_c radians.
  */
 export function rimRollAt(w: BallWorld, eid: number): void {
   const t = rimTime[0]!
@@ -86,8 +86,9 @@ export function rimRollAt(w: BallWorld, eid: number): void {
     rideAt(w, slot, hole)
     return
   }
-  // cogRadius, rollArc and rollSpeed written out, term for term: called, they took and returned doubles,
-  // which V8 boxes where it does not inline the call (four heap numbers a rim-rolling ball a step)
+  // cogRadius, rollArc and rollSpeed (src/geometry.ts) written out, term for term (a change to one is a
+  // change to both): called, they took and returned doubles, which V8 boxes where it does not inline the
+  // call (four heap numbers a rim-rolling ball a step)
   const R = w.Hole.radius[hole]! - w.Ball.radius[eid]! / 2
   const vt0 = RC.speed0[slot]!
   const mu = w.config.RIM_ROLL_FRICTION
@@ -120,9 +121,9 @@ export function rimRollAt(w: BallWorld, eid: number): void {
 }
 
 /**
- * A tabulated ride at time rimTime[0] into rimRollState: the centre turns at a steady rate while its distance from
- * the hole centre moves linearly from rideFrom to rideTo (an animation of the reference's outcome, whose
- * start and end are the reference's: the lip crossing and the exit point or the drop).
+ * A tabulated ride at time rimTime[0] into rimRollState: the centre turns at a steady rate while its
+ * distance from the hole centre moves linearly from rideFrom to rideTo (an animation of the reference's
+ * outcome, whose start and end are the reference's: the lip crossing and the exit point or the drop).
  */
 function rideAt(w: BallWorld, slot: number, hole: number): void {
   const RC = w.RimContact

@@ -1,5 +1,8 @@
 import { describe, expect, it } from 'vitest'
+import fc from 'fast-check'
 import { createBallPhysics, popArc, rollDropTime } from '../../src/index'
+import { cogRadius, rollArc, rollSpeed } from '../../src/geometry'
+import { rimRollAt, rimRollState, rimTime } from '../../src/motion/rimRoll'
 import { rimSlot } from '../../src/ecs'
 import { EXACT, sequence, settle, shoot, watchRim } from '../helpers'
 
@@ -82,5 +85,29 @@ describe('rim-roll system (Stage 3)', () => {
     const ev = settle(sim)
     expect(sequence(ev)).toEqual(['rimRoll', 'capture:rimRoll'])
     expect(ev[1]!.time).toBe(ev[0]!.time)
+  })
+
+  it('samples a roll with the very bits of cogRadius, rollArc and rollSpeed (written out there so that no double crosses a call), friction 0 included (fast-check)', () => {
+    const checked = new Set<number>()
+    fc.assert(
+      fc.property(fc.constantFrom(0, 0.2, 5, 1e3), fc.double({ min: 0, max: 30, noNaN: true }), (mu, after) => {
+        const { sim, ball } = shoot(ROLL_DROP.delta, ROLL_DROP.v, { RIM_ROLL_FRICTION: mu, RIM_ROLL_MAX_TURNS: 100 }, 30)
+        for (let i = 0; i < 200 && sim.ballState(ball).mode !== 'rimRoll'; i++) sim.step(1 / 1000)
+        if (sim.ballState(ball).mode !== 'rimRoll') return
+        const slot = rimSlot(sim.world, ball)
+        const RC = sim.world.RimContact
+        const t = RC.time0[slot]! + after
+        rimTime[0] = t
+        rimRollAt(sim.world, ball)
+        const tau = t - RC.time0[slot]!
+        expect(rimRollState.radius).toBe(cogRadius(sim.world.Hole.radius[RC.hole[slot]!]!, sim.world.Ball.radius[ball]!))
+        expect(rimRollState.arc).toBe(rollArc(tau, RC.speed0[slot]!, mu))
+        expect(rimRollState.speed).toBe(rollSpeed(tau, RC.speed0[slot]!, mu))
+        checked.add(mu)
+      }),
+      { numRuns: 100, seed: 11 },
+    )
+    // every friction drawn put the ball on its rim
+    expect([...checked].sort((a, b) => a - b)).toEqual([0, 0.2, 5, 1e3])
   })
 })
