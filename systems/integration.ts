@@ -14,9 +14,9 @@ import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, appendEvent } from '../src/events.js'
-import { pathOffset, planRolling, sampleAtDistance, sampleRollingAt, sampleTime } from '../src/motion/rolling.js'
+import { pathOffset, planRolling, sampleAtDistance, sampleTime } from '../src/motion/rolling.js'
 import { capturesClean, fliesOver } from '../src/geometry.js'
-import { rimTime, sampleRimRoll, sampleRimRollAt } from '../src/motion/rimRoll.js'
+import { sampleMovingAt, sampleRimRoll, sampleRimRollAt } from '../src/motion/rimRoll.js'
 import { HeapKind, heapPop, heapPush, pushTime, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
 import { beginWindow } from '../src/contacts/sweepGrid.js'
 import { bumpVersion } from '../src/world/contactState.js'
@@ -62,7 +62,7 @@ export function integrationSystem(w: BallWorld): void {
             x[eid] = H[h]! + H[h + 2]! * d
             y[eid] = H[h + 1]! + H[h + 3]! * d
           } else {
-            rimTime[0] = tEnd
+            sampleTime[0] = tEnd
             sampleRimRollAt(w, eid)
           }
           continue
@@ -91,8 +91,8 @@ export function integrationSystem(w: BallWorld): void {
           vx[eid] = dx * vNow
           vy[eid] = dy * vNow
         } else {
-          // the time in a slot (src/motion/rimRoll.ts): as an argument, a heap number a rim-rolling ball a step
-          rimTime[0] = tEnd
+          // the time in a slot (src/motion/rolling.ts): as an argument, a heap number a rim-rolling ball a step
+          sampleTime[0] = tEnd
           sampleRimRollAt(w, eid)
         }
         continue
@@ -196,16 +196,10 @@ function orderedIntegration(w: BallWorld): void {
   if (held.count > 0) return
   // nothing left before the step's end
   const balls = w.moving.dense
-  const mode = w.Ball.mode
   // the time in a slot (src/motion/rolling.ts): where V8 did not inline sampleRolling here, its time argument
   // was boxed for every moving ball, about 20 bytes a ball-step in a pile pressed by a stream
   sampleTime[0] = tEnd
-  rimTime[0] = tEnd
-  for (let i = 0, n = w.moving.count; i < n; i++) {
-    const eid = balls[i]!
-    if (mode[eid] === BallMode.RimRoll) sampleRimRollAt(w, eid)
-    else sampleRollingAt(w, eid)
-  }
+  for (let i = 0, n = w.moving.count; i < n; i++) sampleMovingAt(w, balls[i]!)
   C.now = tEnd
 }
 
@@ -352,13 +346,8 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
   for (let guard = 0; guard < MAX_INLINE_EVENTS; guard++) {
     const t = H[eid * HOT + H_NEXT_T]!
     if (t > tEnd) {
-      if (w.Ball.mode[eid] === BallMode.RimRoll) {
-        rimTime[0] = tEnd
-        sampleRimRollAt(w, eid)
-      } else {
-        sampleTime[0] = tEnd
-        sampleRollingAt(w, eid)
-      }
+      sampleTime[0] = tEnd
+      sampleMovingAt(w, eid)
       return
     }
     const kind = P.nextKind[eid]!

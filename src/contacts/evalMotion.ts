@@ -2,7 +2,8 @@
 // the stores: what the contact search, the capsules and the cluster gatherer evaluate.
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
-import { rimRollAt, rimRollState, rimTime } from '../motion/rimRoll.js'
+import { rimRollAt, rimRollState } from '../motion/rimRoll.js'
+import { sampleTime } from '../motion/rolling.js'
 import { HOT, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 
 /**
@@ -36,7 +37,7 @@ export function evalBall(w: BallWorld, eid: number): void {
   const B = w.Ball
   const mode = B.mode[eid]
   if (mode === BallMode.RimRoll) {
-    rimTime[0] = t
+    sampleTime[0] = t
     rimRollAt(w, eid)
     const o = rimRollState
     E[X] = o.x

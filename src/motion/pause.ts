@@ -7,8 +7,8 @@
 import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { dropPredictions } from '../world/contactState.js'
-import { rimTime, sampleRimRollAt } from './rimRoll.js'
-import { sampleRollingAt, sampleTime } from './rolling.js'
+import { sampleMovingAt } from './rimRoll.js'
+import { sampleTime } from './rolling.js'
 import { timeToDistance } from '../geometry.js'
 import { HOT, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
 
@@ -45,7 +45,8 @@ export function waitOutStep(w: BallWorld): void {
     for (let i = 0, n = w.moving.count; i < n; i++) {
       const eid = balls[i]!
       delayMotion(w, eid, delta)
-      sampleAt(w, eid, w.Ball.mode[eid] === BallMode.RimRoll)
+      sampleTime[0] = tEnd
+      sampleMovingAt(w, eid)
     }
     C.now = tEnd
     w.marked.count = 0
@@ -59,18 +60,8 @@ export function waitOutStep(w: BallWorld): void {
     const mode = w.Ball.mode[eid]
     if (mode !== BallMode.Rolling && mode !== BallMode.RimRoll) continue
     delayMotion(w, eid, tEnd - ownTime(w, eid))
-    sampleAt(w, eid, mode === BallMode.RimRoll)
+    sampleTime[0] = tEnd
+    sampleMovingAt(w, eid)
   }
   list.count = 0
-}
-
-/** Samples ball `eid` at the window's end, w.tickEnd, through the slots (a double argument is boxed). */
-function sampleAt(w: BallWorld, eid: number, onRim: boolean): void {
-  if (onRim) {
-    rimTime[0] = w.tickEnd
-    sampleRimRollAt(w, eid)
-  } else {
-    sampleTime[0] = w.tickEnd
-    sampleRollingAt(w, eid)
-  }
 }

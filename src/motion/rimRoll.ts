@@ -7,7 +7,7 @@ import { popArc, rollDropTime, rollPopTime } from '../geometry.js'
 import { type BallWorld } from '../world/createWorld.js'
 import { EventType } from '../events.js'
 import { emitHoleEvent } from './ballFate.js'
-import { startAt, planRolling, startPath } from './rolling.js'
+import { sampleRollingAt, sampleTime, startAt, planRolling, startPath } from './rolling.js'
 import { setBallMode } from '../world/ballMode.js'
 import { setNextT } from '../world/pathHot.js'
 import { ARG, COS, RESULT, SIN, atan2, expSlot, expm1Slot, hypot, mathSlot, sinCosSlot } from '../math.js'
@@ -67,18 +67,13 @@ export function rollPopsOff(w: BallWorld, eid: number): boolean {
 export const rimRollState = { x: 0, y: 0, vx: 0, vy: 0, speed: 0, angle: 0, arc: 0, radius: 0 }
 
 /**
- * The time rimRollAt and sampleRimRollAt evaluate at, s (a slot, as src/motion/rolling.ts's sampleTime: a
- * double passed to a function V8 does not inline is boxed, a heap number a rim-rolling ball a step).
- */
-export const rimTime = new Float64Array(1)
-
-/**
- * Evaluates a rim-rolling ball at time rimTime[0] into rimRollState: v_t = v_t0·e^(−μτ), exact for every
+ * Evaluates a rim-rolling ball at time sampleTime[0] (src/motion/rolling.ts: a slot, not an argument,
+ * which V8 boxes where it does not inline the call) into rimRollState: v_t = v_t0·e^(−μτ), exact for every
  * dt. The centre rides the contact circle ρ_c = R − r/2, where the COG gate took the contact (so a roll
  * starts where the ball is, with no jump), and turns arc/ρ_c radians.
  */
 export function rimRollAt(w: BallWorld, eid: number): void {
-  const t = rimTime[0]!
+  const t = sampleTime[0]!
   const RC = w.RimContact
   const slot = w.Ball.rim[eid]!
   const hole = RC.hole[slot]!
@@ -121,14 +116,14 @@ export function rimRollAt(w: BallWorld, eid: number): void {
 }
 
 /**
- * A tabulated ride at time rimTime[0] into rimRollState: the centre turns at a steady rate while its
+ * A tabulated ride at time sampleTime[0] into rimRollState: the centre turns at a steady rate while its
  * distance from the hole centre moves linearly from rideFrom to rideTo (an animation of the reference's
  * outcome, whose start and end are the reference's: the lip crossing and the exit point or the drop).
  */
 function rideAt(w: BallWorld, slot: number, hole: number): void {
   const RC = w.RimContact
   const T = RC.rideTime[slot]!
-  let tau = rimTime[0]! - RC.time0[slot]!
+  let tau = sampleTime[0]! - RC.time0[slot]!
   if (tau < 0) tau = 0
   else if (tau > T) tau = T
   const f = T > 0 ? tau / T : 1
@@ -158,11 +153,17 @@ function rideAt(w: BallWorld, slot: number, hole: number): void {
 
 /** Ball state at time t on the rim (rimRollAt), written into Ball, RimContact and Path. */
 export function sampleRimRoll(w: BallWorld, eid: number, t: number): void {
-  rimTime[0] = t
+  sampleTime[0] = t
   sampleRimRollAt(w, eid)
 }
 
-/** sampleRimRoll at rimTime[0] (the systems' form: they write the slot). */
+/** A moving ball (rolling or on a rim) sampled at sampleTime[0] into its stores. */
+export function sampleMovingAt(w: BallWorld, eid: number): void {
+  if (w.Ball.mode[eid] === BallMode.RimRoll) sampleRimRollAt(w, eid)
+  else sampleRollingAt(w, eid)
+}
+
+/** sampleRimRoll at sampleTime[0] (the systems' form: they write the slot). */
 export function sampleRimRollAt(w: BallWorld, eid: number): void {
   rimRollAt(w, eid)
   const o = rimRollState

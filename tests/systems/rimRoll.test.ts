@@ -2,7 +2,8 @@ import { describe, expect, it } from 'vitest'
 import fc from 'fast-check'
 import { createBallPhysics, popArc, rollDropTime } from '../../src/index'
 import { cogRadius, rollArc, rollSpeed } from '../../src/geometry'
-import { rimRollAt, rimRollState, rimTime } from '../../src/motion/rimRoll'
+import { rimRollAt, rimRollState } from '../../src/motion/rimRoll'
+import { sampleTime } from '../../src/motion/rolling'
 import { rimSlot } from '../../src/ecs'
 import { EXACT, sequence, settle, shoot, watchRim } from '../helpers'
 
@@ -97,7 +98,7 @@ describe('rim-roll system (Stage 3)', () => {
         const slot = rimSlot(sim.world, ball)
         const RC = sim.world.RimContact
         const t = RC.time0[slot]! + after
-        rimTime[0] = t
+        sampleTime[0] = t
         rimRollAt(sim.world, ball)
         const tau = t - RC.time0[slot]!
         expect(rimRollState.radius).toBe(cogRadius(sim.world.Hole.radius[RC.hole[slot]!]!, sim.world.Ball.radius[ball]!))
