@@ -918,6 +918,35 @@ describe('shrunk counterexamples of the long run', () => {
     expect(pairShare).toBeLessThan(0.5)
   })
 
+  // the crowds property at 30× (the 1,230th sequence, shrunk): 97 light balls and 14 specks (radius 0.0015,
+  // mass 865) at 5e3 px/s, a closed 5 × 60 px box away from them. The box's walls turn the light balls back
+  // into the band between its top and bottom lines, where they crowd against its side, and the specks run
+  // through them: no solve stops a speck through balls 1e12 times lighter, so tick after tick left such a
+  // pair closing into itself by more than the speck's radius, and was solved again 8–10 times finer. The last
+  // step took 4,469 ms alone (3,560 ticks); now that a speck closes deep only past 0.5 px (or a quarter of the
+  // other radius), 205 ms (183 ticks) (src/contacts/fixedDeep.ts)
+  it('fixed-tick contacts: specks of mass 865 at 5e3 px/s through light balls crowded at a small closed box: every step within its budget, the tick not solved again for each speck', () => {
+    const ops = [
+      { t: 'burst', n: 97, x: 71.28286, y: 408.91732, spread: 400, speed: 5000, radius: undefined, mass: 1e-9, seed: 838, aim: { p: 'aim', k: 15, d: 9.7328, off: -1.2654694, a: 2.2077909 } },
+      { t: 'walls', minX: 102.72523999999999, minY: 385.76171999999997, w: 5, h: 60, e: 1, open: { top: false, bottom: false } },
+      { t: 'burst', n: 14, x: 283.61518, y: 78.21032000000001, spread: 22, speed: 5000, radius: 0.0014554590805819652, mass: 864.967918775693, seed: 791, aim: { p: 'aim', k: 43, d: 76.1166, off: -0.565123, a: 1.4973083999999999 } },
+      { t: 'step', dt: 10 },
+      { t: 'throw', x: -15.03936, y: 78.66896, power: 1, angle: 3.249600609020211, radius: undefined, mass: 3349654.3915782794, place: { p: 'overlap', k: 32, f: 1.49497755, a: 0.6506325000000001 }, queue: undefined },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'throw', x: 210, y: 450, power: 0.163926, angle: 4.754385790977878, radius: 0.005508076964054035, mass: undefined, place: { p: 'stack', k: 21 }, queue: 'front' },
+      { t: 'step', dt: 0.004166666666666667 },
+      { t: 'setVel', k: 46, vx: 102.46111315957302, vy: 63.42583437353105 },
+      { t: 'addHole', x: 130, y: 310, radius: undefined },
+      { t: 'step', dt: 10 },
+    ] as unknown as Op[]
+    let ticks = 0
+    runScenario('specks in a crowd', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['finite', 'events', 'time'], (sim) => {
+      ticks = sim.world.fixed!.ticks
+    })
+    // 1,201 ticks for the whole sequence (its last step alone took 3,560 before)
+    expect(ticks).toBeLessThan(2000)
+  })
+
   // a crowd of 1e9-mass balls and light ones against closed walls: the projection's sweeps ran out with
   // 1.4e-3 px of overlap left after a tick's solve
   it('fixed-tick contacts: 1e9-mass bursts at a rim, light balls, a 1e5 px/s ball, walls open on two edges: no overlap over 1e-3 px after a tick within its projection budget', () => {

@@ -194,6 +194,13 @@ export const MAX_TICK_REDOS = 4
  */
 export const DEEP_FRONTS = 2
 /**
+ * Fixed-tick contacts: a pair whose smaller ball is a speck (radius under this, under a px across) closes deep
+ * (src/contacts/fixedDeep.ts) only when the speck's centre would come more than this far inside the other
+ * ball, or a quarter of the other's radius if less, rather than its own radius: half a px inside a ball is not
+ * seen. For balls of radius 0.5 px and more nothing changes.
+ */
+export const DEEP_UNSEEN_DEPTH = 0.5
+/**
  * ... but a tick of at most SMALL_TICK_BALLS candidates is solved again halved however many pairs it has:
  * a try costs little there. Twelve balls in a closed elastic box, some at 2e4–1e5 px/s, all paired with
  * all after the first tick's rounds: the solve left two closing on straight lines 26 px into each other
