@@ -24,7 +24,8 @@
 // Judged by the speck's radius alone, a radius-0.0015 ball of mass 865 running at 5e3 px/s into radius-11
 // balls of mass 1e-9 crowded against a wall left tick after tick closing at 100–4,000 px/s (a solve stops it
 // through balls 1e12 times lighter at no spacing), each solved again 8–10 times finer until it closed by less
-// than 0.0015 px: 3,120 ticks for 0.2 s, a step of 10 s in 4.6 s; now 0.9 s (tests/systems/fixedDeep.test.ts).
+// than 0.0015 px: 3,120 ticks for 0.2 s, a step of 10 s in 4.6 s; now 0.9 s (a named test in
+// tests/adversarial.test.ts).
 // A tick of more pairs a candidate is solved again only
 // when it leaves at most DEEP_FRONTS of them (src/config/tolerances.ts: a push's front along a row struck
 // fast, and the wall ahead); a crowd that leaves more is left to the projection: there every ball covers
