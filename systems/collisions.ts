@@ -21,7 +21,7 @@ import { PathEvent } from '../components/Path.js'
 import { WallEdge } from '../components/Walls.js'
 import { CONTACT_DURATION, GRAZE_SLIDE, MAX_TICK_CONTACTS, NEVER, TOUCH_GAP } from '../src/config/tolerances.js'
 import { clusterAt, collectCluster } from '../src/contacts/cluster.js'
-import { CI_E, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, isRepeatContact, resolveContactIn, strikeLeavesRim } from '../src/contacts/law.js'
+import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, isRepeatContact, resolveContactIn, strikeLeavesRim } from '../src/contacts/law.js'
 import { appendCollision } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
 import { PS_T, PS_VX, PS_VY, PS_X, PS_Y, pathStart, planRolling } from '../src/motion/rolling.js'
@@ -114,6 +114,7 @@ export function collisionsSystem(w: BallWorld): void {
     I[CI_NX] = nx
     I[CI_NY] = ny
     I[CI_E] = e
+    I[CI_LIMIT] = w.config.CONTACT_SPEED_LIMIT
     resolveContactIn()
     const o = contactOut
     C.lastContact[a] = t

@@ -4,7 +4,7 @@
 // consistent, so they can never disagree.
 import { describe } from '../check.js'
 import { CONSISTENCY_TOLERANCE } from './tolerances.js'
-import { MIN_TABLE_RATIO } from './limits.js'
+import { MAX_SPEED, MIN_TABLE_RATIO } from './limits.js'
 
 /** How a world steps: the exact event-driven core, a tick-sampled port of the six stages, or v1's rule. */
 export const METHODS = Object.freeze(['exact', 'naive', 'v1'] as const)
@@ -101,6 +101,15 @@ export interface BallPhysicsConfig {
   /** e between two balls, normal coefficient of restitution, [0, 1]. */
   BALL_RESTITUTION: number
   /**
+   * With ball-ball contacts: px/s. A contact that would send a ball's velocity component beyond this (and
+   * beyond what that component was before the contact) takes less restitution instead, down to none:
+   * momentum is kept and kinetic energy falls further. Light balls between heavy ones gain speed at every
+   * bounce (Fermi acceleration), without end in a closed elastic box; past this they gain no more, where
+   * every px/s more costs ticks (the fixed tick) or events (the exact method). Never below what an inelastic
+   * contact gives. MAX_SPEED (1e7) bounds only at the speed limit of the commands.
+   */
+  CONTACT_SPEED_LIMIT: number
+  /**
    * Approach speed below which a ball-ball contact is perfectly inelastic (the two leave together), and,
    * with contacts on, normal speed below which a wall hit stops instead of bouncing, px/s. Ends the
    * ever-faster runs of ever-smaller contacts of balls pressed together (inelastic collapse).
@@ -159,6 +168,7 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   CONTACT_ITERATIONS: 32,
   CONTACT_WORK_BUDGET: 0,
   BALL_RESTITUTION: 0.9,
+  CONTACT_SPEED_LIMIT: 2e5,
   BALL_SETTLE_SPEED: 1,
 })
 
@@ -210,6 +220,7 @@ export const CONFIG_RANGES: Readonly<Record<NumericKey, Readonly<Range>>> = Obje
   CONTACT_ITERATIONS: Object.freeze({ min: 1, max: 64, integer: true }),
   CONTACT_WORK_BUDGET: Object.freeze({ min: 0, max: 1e6, integer: true }),
   BALL_RESTITUTION: Object.freeze({ min: 0, max: 1 }),
+  CONTACT_SPEED_LIMIT: Object.freeze({ min: 0, max: MAX_SPEED, minOpen: true }),
   BALL_SETTLE_SPEED: Object.freeze({ min: 0, max: 1e6 }),
 })
 

@@ -19,7 +19,7 @@ export const PAIR_VISIT_SHIFT = 1
  * from) a call V8 does not inline is boxed, and which of these calls it inlines changes with the process: up
  * to 9 bytes a ball-step on the gas.
  */
-export const solveSlots = new Float64Array(9)
+export const solveSlots = new Float64Array(10)
 export const S_T = 0
 export const S_E = 1
 export const S_SETTLE = 2
@@ -29,6 +29,8 @@ export const S_IMB = 5
 export const S_SEPARATE = 6
 export const S_CLOCK = 7
 export const S_J = 8
+/** config.CONTACT_SPEED_LIMIT (set once a solve) */
+export const S_LIMIT = 9
 
 /**
  * Pair p of candidates a and b, met at solveSlots' approach with its impulse: its first meeting of the tick at

@@ -24,7 +24,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { bouncesBetween, intoWalls, walls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
-import { meetsWithinTick, nrm, touch, PAIR_VISIT_SHIFT as VISIT_SHIFT, reportPair, S_APPROACH, S_CLOCK, S_E, S_IMA, S_IMB, S_J, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
+import { meetsWithinTick, nrm, touch, PAIR_VISIT_SHIFT as VISIT_SHIFT, reportPair, S_APPROACH, S_CLOCK, S_E, S_IMA, S_IMB, S_J, S_LIMIT, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
 import { heldBalls, holdRows } from './fixedShock.js'
 import { capImpulse } from './law.js'
@@ -67,6 +67,7 @@ export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, i
   S[S_T] = t
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
+  S[S_LIMIT] = w.config.CONTACT_SPEED_LIMIT
   S[S_CLOCK] = clockTick(w, t)
   reserveStamps(F)
   if (pumpedIn.length < F.n) pumpedIn = grownTo(pumpedIn, 2 * F.n)
@@ -325,9 +326,22 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     F.vy[a] = vay - j * ima * ny
     F.vx[b] = vbx + j * imb * nx
     F.vy[b] = vby + j * imb * ny
-    // a light ball would leave faster than MAX_SPEED: less restitution (src/contacts/law.ts)
-    if (overSpeed(F.vx[a]!, F.vy[a]!) || overSpeed(F.vx[b]!, F.vy[b]!)) {
-      j = capImpulse(vax, vay, vbx, vby, nx, ny, ima, imb, approach, k / approach - 1)
+    // a light ball would leave faster than CONTACT_SPEED_LIMIT (and faster than it came) or MAX_SPEED: less
+    // restitution (src/contacts/law.ts)
+    const limit = S[S_LIMIT]!
+    const ax = F.vx[a]!
+    const ay = F.vy[a]!
+    const bx = F.vx[b]!
+    const by = F.vy[b]!
+    if (
+      overSpeed(ax, ay) ||
+      overSpeed(bx, by) ||
+      ((ax > limit || ax < -limit) && ax * ax > vax * vax) ||
+      ((ay > limit || ay < -limit) && ay * ay > vay * vay) ||
+      ((bx > limit || bx < -limit) && bx * bx > vbx * vbx) ||
+      ((by > limit || by < -limit) && by * by > vby * vby)
+    ) {
+      j = capImpulse(vax, vay, vbx, vby, nx, ny, ima, imb, approach, k / approach - 1, limit)
       F.vx[a] = vax - j * ima * nx
       F.vy[a] = vay - j * ima * ny
       F.vx[b] = vbx + j * imb * nx

@@ -12,7 +12,8 @@ export const contactOut = { vax: 0, vay: 0, vbx: 0, vby: 0, impulse: 0, approach
  * restitution e: the normal impulse j = (1 + e)·w / (1/ma + 1/mb), w the approach speed, changes a by −j·n/ma
  * and b by +j·n/mb; tangential velocities are kept (smooth balls). Momentum is conserved exactly in exact
  * arithmetic and kinetic energy falls by (1 − e²)·w²/(2(1/ma + 1/mb)) ≥ 0. A contact that would leave a ball
- * with a velocity component beyond MAX_SPEED takes less restitution (capImpulse). (A settling contact instead
+ * with a velocity component beyond MAX_SPEED, or beyond `limit` (CONTACT_SPEED_LIMIT; MAX_SPEED when absent)
+ * and faster than that component came in, takes less restitution (capImpulse). (A settling contact instead
  * gives the touching cluster its centre-of-mass velocity: systems/collisions.ts.)
  */
 export function resolveContact(
@@ -25,6 +26,7 @@ export function resolveContact(
   nx: number,
   ny: number,
   e: number,
+  limit = MAX_SPEED,
 ): void {
   const I = contactIn
   I[CI_MA] = ma
@@ -36,14 +38,15 @@ export function resolveContact(
   I[CI_NX] = nx
   I[CI_NY] = ny
   I[CI_E] = e
+  I[CI_LIMIT] = limit
   resolveContactIn()
 }
 
 /**
  * resolveContact's inputs, for callers in the step (slots: nine doubles passed to a call V8 does not inline
- * are nine heap numbers a contact): masses, velocities, normal, restitution
+ * are nine heap numbers a contact): masses, velocities, normal, restitution, CONTACT_SPEED_LIMIT
  */
-export const contactIn = new Float64Array(9)
+export const contactIn = new Float64Array(10)
 export const CI_MA = 0
 export const CI_MB = 1
 export const CI_VAX = 2
@@ -53,6 +56,7 @@ export const CI_VBY = 5
 export const CI_NX = 6
 export const CI_NY = 7
 export const CI_E = 8
+export const CI_LIMIT = 9
 
 /** resolveContact with its inputs in contactIn. */
 export function resolveContactIn(): void {
@@ -66,6 +70,7 @@ export function resolveContactIn(): void {
   const nx = I[CI_NX]!
   const ny = I[CI_NY]!
   const e = I[CI_E]!
+  const limit = I[CI_LIMIT]!
   const o = contactOut
   const rx = vbx - vax
   const ry = vby - vay
@@ -84,9 +89,18 @@ export function resolveContactIn(): void {
   let ay = vay - (j / ma) * ny
   let bx = vbx + (j / mb) * nx
   let by = vby + (j / mb) * ny
-  if (overSpeed(ax, ay) || overSpeed(bx, by)) {
-    // a light ball struck by a heavy one would leave faster than MAX_SPEED: less restitution (capImpulse)
-    j = capImpulse(vax, vay, vbx, vby, nx, ny, 1 / ma, 1 / mb, approach, e)
+  if (
+    overSpeed(ax, ay) ||
+    overSpeed(bx, by) ||
+    // (the test of beyondLimit written out: four calls with doubles where V8 does not inline them)
+    ((ax > limit || ax < -limit) && ax * ax > vax * vax) ||
+    ((ay > limit || ay < -limit) && ay * ay > vay * vay) ||
+    ((bx > limit || bx < -limit) && bx * bx > vbx * vbx) ||
+    ((by > limit || by < -limit) && by * by > vby * vby)
+  ) {
+    // a light ball struck by a heavy one would leave faster than CONTACT_SPEED_LIMIT or MAX_SPEED: less
+    // restitution (capImpulse)
+    j = capImpulse(vax, vay, vbx, vby, nx, ny, 1 / ma, 1 / mb, approach, e, limit)
     ax = vax - (j / ma) * nx
     ay = vay - (j / ma) * ny
     bx = vbx + (j / mb) * nx
@@ -108,13 +122,14 @@ export function resolveContactIn(): void {
 /**
  * The normal impulse of a contact (unit normal (nx, ny) from a to b, inverse masses ima and imb, approach
  * speed `approach`, restitution e) lowered so that neither ball leaves with a velocity component beyond
- * MAX_SPEED: its restitution is the largest in [0, e] that keeps every component within it. Momentum is
- * kept, and kinetic energy falls further. Heavy balls drive light ones to any speed (Fermi acceleration:
- * a light ball between a heavy one and a wall gains twice the heavy one's speed each round trip, up to the
- * heavy balls' energy), and a state the commands would refuse (ballState read, given back to
+ * MAX_SPEED, nor beyond `limit` (CONTACT_SPEED_LIMIT) where that component was within it before: its
+ * restitution is the largest in [0, e] that keeps every component so. Momentum is kept, and kinetic energy
+ * falls further. Heavy balls drive light ones to any speed (Fermi acceleration: a light ball between a heavy
+ * one and a wall gains twice the heavy one's speed each round trip, up to the heavy balls' energy), every
+ * px/s of which costs ticks or events, and a state the commands would refuse (ballState read, given back to
  * setBallVelocity) is no state to leave a ball in. When even an inelastic contact leaves a component beyond
- * it (the ball's motion across the normal), the inelastic impulse; capVelocity (src/motion/speedLimit.ts)
- * then slows that ball.
+ * them (the ball's motion across the normal, or the partner's speed), the inelastic impulse; capVelocity
+ * (src/motion/speedLimit.ts) then slows a ball beyond MAX_SPEED.
  */
 export function capImpulse(
   vax: number,
@@ -127,22 +142,29 @@ export function capImpulse(
   imb: number,
   approach: number,
   e: number,
+  limit = MAX_SPEED,
 ): number {
   const unit = approach / (ima + imb)
   // each component is c + f·s, f = 1 + restitution; the largest f in [1, 1 + e] that keeps it within
   let f = 1 + e
-  f = within(vax, -unit * ima * nx, f)
-  f = within(vay, -unit * ima * ny, f)
-  f = within(vbx, unit * imb * nx, f)
-  f = within(vby, unit * imb * ny, f)
+  f = within(vax, -unit * ima * nx, f, limit)
+  f = within(vay, -unit * ima * ny, f, limit)
+  f = within(vbx, unit * imb * nx, f, limit)
+  f = within(vby, unit * imb * ny, f, limit)
   return f > 1 ? f * unit : unit
 }
 
-/** The largest f' ≤ f for which |c + f'·s| ≤ MAX_SPEED (f itself when c + f·s is within it). */
-function within(c: number, s: number, f: number): number {
+/**
+ * The largest f' ≤ f for which |c + f'·s| ≤ M (f itself when c + f·s is within it), M the larger of `limit`
+ * and |c| (a component already beyond the limit may keep its size, not grow), at most MAX_SPEED.
+ */
+function within(c: number, s: number, f: number, limit: number): number {
+  const size = c < 0 ? -c : c
+  let M = limit > size ? limit : size
+  if (M > MAX_SPEED) M = MAX_SPEED
   const at = c + f * s
-  if (!(at > MAX_SPEED || at < -MAX_SPEED) || s === 0) return f
-  const g = ((s > 0 ? MAX_SPEED : -MAX_SPEED) - c) / s
+  if (!(at > M || at < -M) || s === 0) return f
+  const g = ((s > 0 ? M : -M) - c) / s
   return g < f ? g : f
 }
 
