@@ -1,7 +1,7 @@
 // The contact law of two smooth balls, and the rules a contact applies to the balls' state.
 import { RimMode } from '../../components/RimContact.js'
 import { MAX_SPEED } from '../config/limits.js'
-import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
+import { capped, capVelocity, overSpeed, pumpedPast } from '../motion/speedLimit.js'
 import type { BallWorld } from '../world/createWorld.js'
 
 /** Result of resolveContact: new velocities, the impulse along the normal and the approach speed. */
@@ -89,15 +89,7 @@ export function resolveContactIn(): void {
   let ay = vay - (j / ma) * ny
   let bx = vbx + (j / mb) * nx
   let by = vby + (j / mb) * ny
-  if (
-    overSpeed(ax, ay) ||
-    overSpeed(bx, by) ||
-    // (the test of beyondLimit written out: four calls with doubles where V8 does not inline them)
-    ((ax > limit || ax < -limit) && ax * ax > vax * vax) ||
-    ((ay > limit || ay < -limit) && ay * ay > vay * vay) ||
-    ((bx > limit || bx < -limit) && bx * bx > vbx * vbx) ||
-    ((by > limit || by < -limit) && by * by > vby * vby)
-  ) {
+  if (overSpeed(ax, ay) || overSpeed(bx, by) || pumpedPast(vax, ax, limit) || pumpedPast(vay, ay, limit) || pumpedPast(vbx, bx, limit) || pumpedPast(vby, by, limit)) {
     // a light ball struck by a heavy one would leave faster than CONTACT_SPEED_LIMIT or MAX_SPEED: less
     // restitution (capImpulse)
     j = capImpulse(vax, vay, vbx, vby, nx, ny, 1 / ma, 1 / mb, approach, e, limit)

@@ -10,6 +10,14 @@ export function overSpeed(vx: number, vy: number): boolean {
   return vx > MAX_SPEED || vx < -MAX_SPEED || vy > MAX_SPEED || vy < -MAX_SPEED
 }
 
+/**
+ * Whether a contact takes a velocity component from c to o beyond `limit` (CONTACT_SPEED_LIMIT) and beyond
+ * |c|: it would pump the ball past the limit (src/contacts/law.ts, capImpulse).
+ */
+export function pumpedPast(c: number, o: number, limit: number): boolean {
+  return (o > limit || o < -limit) && o * o > c * c
+}
+
 /** capVelocity's answer: the capped velocity (slots, not a returned pair) */
 export const capped = new Float64Array(2)
 
