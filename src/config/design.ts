@@ -106,7 +106,7 @@ export interface BallPhysicsConfig {
    * momentum is kept and kinetic energy falls further. Light balls between heavy ones gain speed at every
    * bounce (Fermi acceleration), without end in a closed elastic box; past this they gain no more, where
    * every px/s more costs ticks (the fixed tick) or events (the exact method). Never below what an inelastic
-   * contact gives. MAX_SPEED (1e7) bounds only at the speed limit of the commands.
+   * contact gives. At MAX_SPEED (1e7) only the commands' own speed limit bounds a contact, as before 0.3.0.
    */
   CONTACT_SPEED_LIMIT: number
   /**

@@ -114,8 +114,8 @@ export function resolveContactIn(): void {
 /**
  * The normal impulse of a contact (unit normal (nx, ny) from a to b, inverse masses ima and imb, approach
  * speed `approach`, restitution e) lowered so that neither ball leaves with a velocity component beyond
- * MAX_SPEED, nor beyond `limit` (CONTACT_SPEED_LIMIT) where that component was within it before: its
- * restitution is the largest in [0, e] that keeps every component so. Momentum is kept, and kinetic energy
+ * MAX_SPEED, nor beyond `limit` (CONTACT_SPEED_LIMIT), or, for a component already beyond the limit, beyond
+ * its size before: its restitution is the largest in [0, e] that keeps every component so. Momentum is kept, and kinetic energy
  * falls further. Heavy balls drive light ones to any speed (Fermi acceleration: a light ball between a heavy
  * one and a wall gains twice the heavy one's speed each round trip, up to the heavy balls' energy), every
  * px/s of which costs ticks or events, and a state the commands would refuse (ballState read, given back to
