@@ -20,9 +20,9 @@
 // not depend on the broadphase.
 import { JAM_MIN_BALLS, PROJECTION_SLOP, RESTITUTION_VISITS } from '../config/tolerances.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
-import { meetsWithinTick, normal, nrm } from './fixedPairs.js'
+import { meetsWithinTick, normal, nrm, touch } from './fixedPairs.js'
 import { keepsLine, rootOf, uniteSized } from './fixedUnion.js'
-import { asBefore, OTHER } from './fixedStamps.js'
+import { asBefore, foundNow, OTHER, PARTING, REFUSED } from './fixedStamps.js'
 
 /**
  * Union-find over the candidates; by root: the mass, momentum and members summed, whether the group is
@@ -89,8 +89,16 @@ export function settleJams(F: FixedContactState): number {
     const b = F.pairB[p]!
     closing[p] = 0
     if (a >= F.restFrom || b >= F.restFrom) continue
-    // a pair whose balls have not changed since the sweeps last found it refused or parting does not close
-    const approach = asBefore(F, p) === OTHER && meetsWithinTick(F, a, b) ? -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y) : 0
+    // a pair whose balls have not changed since the sweeps last found it refused or parting does not close;
+    // one tested here and not closing is stamped as found (the rules after this one and the next sweep take
+    // it so, src/contacts/fixedStamps.ts)
+    let approach = 0
+    if (asBefore(F, p) === OTHER) {
+      if (meetsWithinTick(F, a, b)) {
+        approach = -((F.vx[b]! - F.vx[a]!) * nrm.x + (F.vy[b]! - F.vy[a]!) * nrm.y)
+        if (!(approach > 0)) foundNow(F, p, touch.c <= 0 ? PARTING : OTHER)
+      } else foundNow(F, p, REFUSED)
+    }
     if (approach > 0) closing[p] = approach * F.tick
     else {
       // not closing now, but met RESTITUTION_VISITS times this tick (pressed together, not bounced apart):
