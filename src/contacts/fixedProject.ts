@@ -12,7 +12,7 @@
 import { LEAN_PROJECTION_BUDGET, MAX_LISTED_SWEEPS, PROJECTION_BUDGET, PROJECTION_QUEUE_BUDGET, PROJECTION_SLOP } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
-import { activate, buildAdjacency, nextDue, nextStamp, normal, nrm, startSweep } from './fixedPairs.js'
+import { activate, apart, buildAdjacency, nextDue, nextStamp, normal, nrm, startSweep } from './fixedPairs.js'
 import { layered } from './fixedLayered.js'
 import { lean, spend } from './fixedBudget.js'
 import { movedA, movedB, pushApart } from './fixedPush.js'
@@ -45,6 +45,7 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
     moved = 0
     for (let k = 0; k < pairs; k++) {
       const p = back ? pairs - 1 - k : k
+      if (apart(F, F.pairA[p]!, F.pairB[p]!)) continue
       normal(F, F.pairA[p]!, F.pairB[p]!)
       const gap = nrm.gap
       if (!(gap < 0)) continue
@@ -102,6 +103,7 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
       left = budget
       const a = F.pairA[p]!
       const b = F.pairB[p]!
+      if (apart(F, a, b)) continue
       normal(F, a, b)
       const gap = nrm.gap
       if (!(gap < 0)) continue
@@ -123,3 +125,4 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
   }
   if (!layered(w, F)) F.capped++
 }
+
