@@ -73,6 +73,9 @@ export function normal(F: FixedContactState, a: number, b: number): void {
   nrm.gap = d - F.r[a]! - F.r[b]!
 }
 
+/** 1 + a millionth: clear of normal()'s rounding (a few ulps) by orders of magnitude */
+const APART = 1 + 1e-6
+
 /**
  * Whether candidates a and b are clearly apart: their centres further than their radii's sum by more than a
  * millionth of it, so that normal() would find them not overlapping (gap ≥ 0) whatever its rounding. The
@@ -84,8 +87,6 @@ export function apart(F: FixedContactState, a: number, b: number): boolean {
   const s = (F.r[a]! + F.r[b]!) * APART
   return dx * dx + dy * dy > s * s
 }
-/** 1 + a millionth: clear of normal()'s rounding (a few ulps) by orders of magnitude */
-const APART = 1 + 1e-6
 
 /**
  * The swept test on straight lines: whether two balls whose radii add up to S, the second at (dx, dy) from

@@ -125,4 +125,3 @@ function project(w: BallWorld, F: FixedContactState, sweeps: number): void {
   }
   if (!layered(w, F)) F.capped++
 }
-
