@@ -21,11 +21,12 @@
 // between the two heavy ones are taken as one body: its mass their sum, its velocity their centre of
 // mass's, and each of them takes that body's change of velocity (so their motion within the row, and its
 // kinetic energy, are left as they were); before, the sweeps turned the row's balls between the two, and
-// the heavy ones went on closing while the projection held them apart.
+// the heavy ones went on closing while the projection held them apart. A block that would pump a ball past
+// CONTACT_SPEED_LIMIT at the pairs' restitution is solved again with both inelastic (docs/decisions.md §8).
 import { PROJECTION_SLOP, RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
-import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_CLOCK, S_E, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
+import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_CLOCK, S_E, S_LIMIT, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
 
 /**
  * The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before,
@@ -93,9 +94,11 @@ function adjacency(F: FixedContactState, call: number): void {
  * ball and the row's length in `squeeze`; -1, changing nothing, when there is no such ball or the block does not hold (an impulse not
  * above 0, or kinetic energy rising). `call` numbers the solve call (the pairs do not change within one).
  * A heavy ball at rest (l's partner or the second ball) that the block would leave slower than
- * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0.
+ * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0. `inelastic`: both
+ * contacts leave at none of their approach (the block taken again so where their restitution would pump a
+ * ball past CONTACT_SPEED_LIMIT).
  */
-export function pairWithBall(F: FixedContactState, p: number, l: number, call: number): number {
+export function pairWithBall(F: FixedContactState, p: number, l: number, call: number, inelastic = false): number {
   const j = squeeze[SQ_J]!
   const a = F.pairA[p]!
   const b = F.pairB[p]!
@@ -151,7 +154,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   let vvx = vlx
   let vvy = vly
   let w1 = solveSlots[S_APPROACH]!
-  let s1 = solveSlots[S_SEPARATE]!
+  let s1 = inelastic ? 0 : solveSlots[S_SEPARATE]!
   if (count > 1) {
     let mass = 0
     let px = 0
@@ -180,7 +183,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   const last = squeezeChain[count - 1]!
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
   const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, last, o, solveSlots[S_CLOCK]!)
-  const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
+  const s2 = w2 >= solveSlots[S_SETTLE]! && !bound && !inelastic ? solveSlots[S_E]! * w2 : 0
   const r1 = w1 + s1
   const r2 = w2 + s2
   const sigmaC = sigma * (n1x * n2x + n1y * n2y)
@@ -235,6 +238,19 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   const before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vvx * vvx + vvy * vvy) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
   const after = mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy)
   if (after > before + 8 * Number.EPSILON * before) return -1
+  // nor past CONTACT_SPEED_LIMIT at full restitution: a velocity component beyond it and beyond its size
+  // before (pumpedPast, src/motion/speedLimit.ts, written out: V8 boxes the doubles of a call it does not
+  // take inline) takes the block again with none, which is kept whatever it gives (as the plain impulse's)
+  const limit = solveSlots[S_LIMIT]!
+  for (let k = 0; k < count + 2 && !inelastic && (s1 > 0 || s2 > 0); k++) {
+    // h, o, then the light side's balls (l alone takes lx, ly; a row's balls the row's change)
+    const c = k === 0 ? h : k === 1 ? o : squeezeChain[k - 2]!
+    const cx = F.vx[c]!
+    const cy = F.vy[c]!
+    const nx = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : cx + (lx - vvx)
+    const ny = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : cy + (ly - vvy)
+    if (((nx > limit || nx < -limit) && nx * nx > cx * cx) || ((ny > limit || ny < -limit) && ny * ny > cy * cy)) return pairWithBall(F, p, l, call, true)
+  }
   F.vx[h] = hx
   F.vy[h] = hy
   if (count === 1) {

@@ -1,13 +1,15 @@
 // Fixed-tick contacts: a pair solved together with the closed wall that it drives its lighter ball into
 // (src/contacts/fixedSolve.ts, applyImpulse): one visit ends a squeeze or a wedge against the wall, where
 // the sweeps would bounce the light ball between the wall and its partner, a little of the push each sweep.
+// A block that would pump a ball past CONTACT_SPEED_LIMIT at the pair's restitution is solved again with the
+// pair inelastic (docs/decisions.md §8).
 import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
 import { face } from './fixedAhead.js'
 import { walls } from './fixedGrid.js'
-import { nrm, S_APPROACH, S_IMA, S_IMB, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
+import { nrm, S_APPROACH, S_IMA, S_IMB, S_LIMIT, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
 import { WALL_REPORTED } from './fixedWallTurn.js'
 
 /** Candidate i's velocity with no component beyond MAX_SPEED (capVelocity, src/motion/speedLimit.ts). */
@@ -28,12 +30,13 @@ export const block = { j: 0, k: 0 }
  * (the push goes through q into the wall: a dead wall takes it all, as a light ball's many bounces between
  * the two would) and q leaves the wall at the walls' restitution times its own speed into it before, each
  * zero when the other alone does it. Applied when both are positive and kinetic energy does not rise;
- * returns false, changing nothing, otherwise.
+ * returns false, changing nothing, otherwise. `inelastic`: the pair leaves at none of its approach (the
+ * block taken again so where its restitution would pump a ball past CONTACT_SPEED_LIMIT).
  */
-export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number): boolean {
+export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number, inelastic = false): boolean {
   const ima = S[S_IMA]!
   const imb = S[S_IMB]!
-  const separate = S[S_SEPARATE]!
+  const separate = inelastic ? 0 : S[S_SEPARATE]!
   const approach = S[S_APPROACH]!
   const nx = nrm.x
   const ny = nrm.y
@@ -72,6 +75,23 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
   const along = face.x !== 0 ? (q === a ? vay : vby) : q === a ? vax : vbx
   const span = face.x !== 0 ? walls.maxY - walls.minY : walls.maxX - walls.minX
   if (Math.abs(along) * F.tick > span) return false
+  // nor past CONTACT_SPEED_LIMIT at the pair's restitution: a velocity component beyond it and beyond its
+  // size before (pumpedPast, src/motion/speedLimit.ts, written out: V8 boxes the doubles of a call it does
+  // not take inline) takes the block again with the pair inelastic, which is kept whatever it gives (as the
+  // plain impulse's)
+  const limit = S[S_LIMIT]!
+  const ax = F.vx[a]!
+  const ay = F.vy[a]!
+  const bx = F.vx[b]!
+  const by = F.vy[b]!
+  if (
+    separate > 0 &&
+    (((vax > limit || vax < -limit) && vax * vax > ax * ax) ||
+      ((vay > limit || vay < -limit) && vay * vay > ay * ay) ||
+      ((vbx > limit || vbx < -limit) && vbx * vbx > bx * bx) ||
+      ((vby > limit || vby < -limit) && vby * vby > by * by))
+  )
+    return pairWithWall(w, F, a, b, q, true)
   F.vx[a] = vax
   F.vy[a] = vay
   F.vx[b] = vbx

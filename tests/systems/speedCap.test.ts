@@ -9,6 +9,7 @@ import { describe, expect, it } from 'vitest'
 import { capImpulse } from '../../src/contacts/law'
 import { capped, capVelocity } from '../../src/motion/speedLimit'
 import { createBallPhysics, MAX_SPEED } from '../../src/index'
+import { squeezesSolved } from '../../src/contacts/fixedSqueeze'
 import { startPath } from '../../src/ecs'
 
 type Method = 'on' | 'fixed'
@@ -191,12 +192,93 @@ describe('contacts do not pump a ball past CONTACT_SPEED_LIMIT', () => {
 
     it(`${method}: 12 light balls among 12 of mass 1e9 at 1e5 px/s in a closed elastic box, 1 s: pumped to a few times the limit at most, not to 1e6 and more; energy never rises`, () => {
       const pumped = (limit?: number) => pumpedBox(method, 1e5, limit, true)
-      // 2.5e5 (on) and 2.9e5 (fixed) (2.8e5 and 4.6e5 with no velocity given back each step): a squeeze
-      // against a wall, or an inelastic meeting's share of the heavy ball's velocity across the normal, still
-      // adds to a ball at the limit
+      // 2.5e5 (on) and 2.7e5 (fixed) (2.8e5 and 2.8e5 with no velocity given back each step; the fixed tick
+      // 2.9e5 and 4.6e5 while its squeeze blocks took no account of the limit): an inelastic meeting's share
+      // of the heavy ball's velocity across the normal, or an inelastic squeeze, still adds to a ball at the
+      // limit
       expect(pumped()).toBeLessThan(5 * LIMIT)
       // 6.2e6 and 4.5e6 without it (4.5e6 and 4.7e6)
       expect(pumped(MAX_SPEED)).toBeGreaterThan(1e6)
+    })
+  }
+})
+
+// The fixed tick's two blocks (src/contacts/fixedWallPair.ts, fixedSqueeze.ts) solve a light ball squeezed
+// against a closed wall, or between two heavy balls, in one go; near head on they send it out sideways at
+// about the closing speed over the sine of the angle from head on. They took no account of the limit: with
+// CONTACT_SPEED_LIMIT 1,000 a light ball left at 8,700–17,000 px/s, as without it. A block that would pump a
+// ball past the limit is now taken again with the pair inelastic (less restitution, down to none, as the
+// plain impulse takes): the squirt is halved, and what the inelastic block gives is kept (a ball that must
+// leave the gap faster than the limit to leave it at all).
+describe('fixed: the squeeze blocks take no restitution where it would pump a ball past CONTACT_SPEED_LIMIT', () => {
+  const LIMIT = 1000
+  /** Per 1/240 s step for 30 steps: the light ball's fastest component, the least gap, the greatest kinetic energy (masses 100 and 0.01). */
+  function follow(sim: ReturnType<typeof createBallPhysics>, heavy: readonly number[], light: number) {
+    let fastest = 0
+    let gap = Infinity
+    let energy = 0
+    for (let i = 0; i < 30; i++) {
+      sim.step(1 / 240)
+      const l = sim.ballState(light)
+      fastest = Math.max(fastest, Math.abs(l.vx), Math.abs(l.vy))
+      let k = 0.5 * 0.01 * (l.vx * l.vx + l.vy * l.vy)
+      for (const id of heavy) {
+        const h = sim.ballState(id)
+        gap = Math.min(gap, Math.hypot(l.x - h.x, l.y - h.y) - 22)
+        k += 0.5 * 100 * (h.vx * h.vx + h.vy * h.vy)
+      }
+      energy = Math.max(energy, k)
+    }
+    return { fastest, gap, energy }
+  }
+
+  for (const dy of [1, 2]) {
+    it(`against a wall: a heavy ball at 400 px/s into a light one lying at the wall, ${dy} px off head on`, () => {
+      const run = (limit: number) => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_SPEED_LIMIT: limit })
+        sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 1 })
+        const h = sim.addBall({ x: 360, y: 200 + dy, vx: 400, vy: 0, mass: 100 })
+        const l = sim.addBall({ x: 389, y: 200, vx: 0, vy: 0, mass: 0.01 })
+        return follow(sim, [h], l)
+      }
+      const limited = run(LIMIT)
+      const free = run(MAX_SPEED)
+      // squirted along the wall at 16,932 and 8,659 px/s without the limit; 8,385 and 4,329 with it
+      expect(free.fastest).toBeGreaterThan(5 * LIMIT)
+      expect(limited.fastest / free.fastest).toBeGreaterThan(0.45)
+      expect(limited.fastest / free.fastest).toBeLessThan(0.55)
+      for (const r of [limited, free]) {
+        expect(r.gap).toBeGreaterThan(-1e-3)
+        expect(r.energy).toBeLessThanOrEqual(0.5 * 100 * 400 * 400 * (1 + 1e-12))
+      }
+    })
+  }
+
+  for (const dy of [1, 2]) {
+    it(`between two heavy balls closing at 400 px/s each, the light one ${dy} px off their line`, () => {
+      const run = (limit: number) => {
+        const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_SPEED_LIMIT: limit })
+        const along = 22 * Math.sqrt(1 - (dy / 22) * (dy / 22))
+        const a = sim.addBall({ x: 100, y: 200, vx: 400, vy: 0, mass: 100 })
+        const l = sim.addBall({ x: 100 + along, y: 200 + dy, vx: 0, vy: 0, mass: 0.01 })
+        const b = sim.addBall({ x: 100 + 2 * along, y: 200, vx: -400, vy: 0, mass: 100 })
+        const blocks = squeezesSolved()
+        const out = follow(sim, [a, b], l)
+        return { ...out, blocks: squeezesSolved() - blocks }
+      }
+      const limited = run(LIMIT)
+      const free = run(MAX_SPEED)
+      // the block takes it either way (left to the plain impulses, the light ball stayed 2 px inside a heavy
+      // one between ticks): 17,166 and 8,711 px/s without the limit, 8,583 and 4,355 with it
+      expect(limited.blocks).toBe(1)
+      expect(free.blocks).toBe(1)
+      expect(free.fastest).toBeGreaterThan(4 * LIMIT)
+      expect(limited.fastest / free.fastest).toBeGreaterThan(0.45)
+      expect(limited.fastest / free.fastest).toBeLessThan(0.55)
+      for (const r of [limited, free]) {
+        expect(r.gap).toBeGreaterThan(-1e-3)
+        expect(r.energy).toBeLessThanOrEqual(2 * 0.5 * 100 * 400 * 400 * (1 + 1e-12))
+      }
     })
   }
 })
