@@ -22,10 +22,12 @@
 // mass's, and each of them takes that body's change of velocity (so their motion within the row, and its
 // kinetic energy, are left as they were); before, the sweeps turned the row's balls between the two, and
 // the heavy ones went on closing while the projection held them apart. A block that would pump a ball past
-// CONTACT_SPEED_LIMIT at the pairs' restitution is solved again with both inelastic (docs/decisions.md §8).
-import { PROJECTION_SLOP, RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
+// CONTACT_SPEED_LIMIT takes less of the two contacts' restitution, down to none (docs/decisions.md §8).
+import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
+import { B_CROSS, B_IMH, B_IML, B_IMO, B_R1, B_R2, B_SIGMA_C, B_VX, B_VY, blk, closesFaster, closing, holds, impulses, touching } from './fixedBlock.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
+import { largestShare, share, shareRows } from '../motion/speedLimit.js'
 import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_CLOCK, S_E, S_LIMIT, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
 
 /**
@@ -44,22 +46,6 @@ export const SQ_OTHER = 6
 export const SQ_CHAIN = 7
 /** pairWithBall's input: the pair's own impulse j (a slot: a double passed to a call V8 does not inline is boxed) */
 export const SQ_J = 8
-
-/**
- * The block's inputs to impulses() (the inverse masses of h, the light side and o, σ·c, the cross product,
- * the two contacts' wanted changes r₁, r₂) and a velocity for holds(): slots, since a double passed to a call
- * V8 does not inline is boxed, a heap number an argument a block
- */
-const blk = new Float64Array(9)
-const B_IMH = 0
-const B_IML = 1
-const B_IMO = 2
-const B_SIGMA_C = 3
-const B_CROSS = 4
-const B_R1 = 5
-const B_R2 = 6
-const B_VX = 7
-const B_VY = 8
 
 /** Most light balls in a row between the two heavy ones that a block takes. */
 const MAX_CHAIN = 8
@@ -94,11 +80,9 @@ function adjacency(F: FixedContactState, call: number): void {
  * ball and the row's length in `squeeze`; -1, changing nothing, when there is no such ball or the block does not hold (an impulse not
  * above 0, or kinetic energy rising). `call` numbers the solve call (the pairs do not change within one).
  * A heavy ball at rest (l's partner or the second ball) that the block would leave slower than
- * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0. `inelastic`: both
- * contacts leave at none of their approach (the block taken again so where their restitution would pump a
- * ball past CONTACT_SPEED_LIMIT).
+ * BALL_SETTLE_SPEED is held like a wall: the block is solved again with its inverse mass 0.
  */
-export function pairWithBall(F: FixedContactState, p: number, l: number, call: number, inelastic = false): number {
+export function pairWithBall(F: FixedContactState, p: number, l: number, call: number): number {
   const j = squeeze[SQ_J]!
   const a = F.pairA[p]!
   const b = F.pairB[p]!
@@ -154,7 +138,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   let vvx = vlx
   let vvy = vly
   let w1 = solveSlots[S_APPROACH]!
-  let s1 = inelastic ? 0 : solveSlots[S_SEPARATE]!
+  let s1 = solveSlots[S_SEPARATE]!
   if (count > 1) {
     let mass = 0
     let px = 0
@@ -183,7 +167,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   const last = squeezeChain[count - 1]!
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
   const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, last, o, solveSlots[S_CLOCK]!)
-  const s2 = w2 >= solveSlots[S_SETTLE]! && !bound && !inelastic ? solveSlots[S_E]! * w2 : 0
+  const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
   const r1 = w1 + s1
   const r2 = w2 + s2
   const sigmaC = sigma * (n1x * n2x + n1y * n2y)
@@ -209,7 +193,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
     blk[B_CROSS] = cross
     blk[B_R1] = r1
     blk[B_R2] = r2
-    if (!impulses()) return -1
+    if (!impulses(squeeze)) return -1
     j1 = squeeze[SQ_J1]!
     j2 = squeeze[SQ_J2]!
     // the three velocities after: h takes σ·j₁·n₁, l −σ·j₁·n₁ − j₂·n₂, o +j₂·n₂ (σ: +1 when l is the pair's a)
@@ -238,19 +222,49 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   const before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vvx * vvx + vvy * vvy) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
   const after = mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy)
   if (after > before + 8 * Number.EPSILON * before) return -1
-  // nor past CONTACT_SPEED_LIMIT at full restitution: a velocity component beyond it and beyond its size
-  // before (pumpedPast, src/motion/speedLimit.ts, written out: V8 boxes the doubles of a call it does not
-  // take inline) takes the block again with none, which is kept whatever it gives (as the plain impulse's)
+  // nor past CONTACT_SPEED_LIMIT: where a velocity component would go beyond it and beyond its size before,
+  // the two contacts take the largest share of their restitution that keeps every one within, down to none,
+  // as the plain impulse does (largestShare, src/motion/speedLimit.ts; each component is linear in the share)
   const limit = solveSlots[S_LIMIT]!
-  for (let k = 0; k < count + 2 && !inelastic && (s1 > 0 || s2 > 0); k++) {
+  let rows = 0
+  let pumped = false
+  for (let k = 0; k < count + 2 && (s1 > 0 || s2 > 0); k++) {
     // h, o, then the light side's balls (l alone takes lx, ly; a row's balls the row's change)
     const c = k === 0 ? h : k === 1 ? o : squeezeChain[k - 2]!
     const cx = F.vx[c]!
     const cy = F.vy[c]!
     const nx = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : cx + (lx - vvx)
     const ny = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : cy + (ly - vvy)
-    if (((nx > limit || nx < -limit) && nx * nx > cx * cx) || ((ny > limit || ny < -limit) && ny * ny > cy * cy)) return pairWithBall(F, p, l, call, true)
+    if (((nx > limit || nx < -limit) && nx * nx > cx * cx) || ((ny > limit || ny < -limit) && ny * ny > cy * cy)) pumped = true
+    shareRows[3 * rows] = cx
+    shareRows[3 * rows++ + 1] = nx
+    shareRows[3 * rows] = cy
+    shareRows[3 * rows++ + 1] = ny
   }
+  for (let pass = 0; pumped && pass < 2; pass++) {
+    // none, then the share
+    const f = pass === 0 ? 0 : share[0]!
+    blk[B_R1] = w1 + f * s1
+    blk[B_R2] = w2 + f * s2
+    if (!impulses(squeeze)) return -1
+    j1 = squeeze[SQ_J1]!
+    j2 = squeeze[SQ_J2]!
+    hx = F.vx[h]! + sigma * j1 * imhUsed * n1x
+    hy = F.vy[h]! + sigma * j1 * imhUsed * n1y
+    lx = vvx - sigma * j1 * imv * n1x - j2 * imv * n2x
+    ly = vvy - sigma * j1 * imv * n1y - j2 * imv * n2y
+    ox = F.vx[o]! + j2 * imoUsed * n2x
+    oy = F.vy[o]! + j2 * imoUsed * n2y
+    if (pass === 1) break
+    for (let k = 0; k < count + 2; k++) {
+      const c = k < 2 ? 0 : squeezeChain[k - 2]!
+      shareRows[6 * k + 2] = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : F.vx[c]! + (lx - vvx)
+      shareRows[6 * k + 5] = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : F.vy[c]! + (ly - vvy)
+    }
+    largestShare(rows, limit)
+    if (share[0] === 0) break
+  }
+  if (pumped && mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy) > before + 8 * Number.EPSILON * before) return -1
   F.vx[h] = hx
   F.vy[h] = hy
   if (count === 1) {
@@ -333,70 +347,8 @@ function chainTo(F: FixedContactState, l: number, h: number): number {
   }
 }
 
-/**
- * closesFaster's speed, and the speed it must beat (slots: a double returned from a call V8 does not inline,
- * or passed to one, is boxed)
- */
-const closing = new Float64Array(2)
-
-/**
- * Whether candidates h and m close on each other along the line of their centres faster than closing[1]
- * (at least 0): the speed into closing[0].
- */
-function closesFaster(F: FixedContactState, h: number, m: number): boolean {
-  const than = closing[1]!
-  const dx = F.x[m]! - F.x[h]!
-  const dy = F.y[m]! - F.y[h]!
-  const d = Math.sqrt(dx * dx + dy * dy)
-  const v = ((F.vx[h]! - F.vx[m]!) * dx + (F.vy[h]! - F.vy[m]!) * dy) / d
-  closing[0] = v
-  return v > than
-}
-
 /** Whether candidate m is among the first `count` balls of squeezeChain. */
 function inChain(m: number, count: number): boolean {
   for (let k = 0; k < count; k++) if (squeezeChain[k] === m) return true
   return false
-}
-
-/**
- * The block's impulses (its inputs in blk) into squeeze[SQ_J1], squeeze[SQ_J2]: (imh + iml)·j₁ + σ·iml·c·j₂ = r₁ and
- * σ·iml·c·j₁ + (iml + imo)·j₂ = r₂ (c = n₁·n₂, σc given). The determinant is written out, 1 − c² as the cross
- * product squared: A·D − B² cancels to the heavy balls' inverse masses, a billionth of the light one's, and
- * lost half the digits of the impulses. False when it is not above 0, or an impulse is not.
- */
-function impulses(): boolean {
-  const imh = blk[B_IMH]!
-  const iml = blk[B_IML]!
-  const imo = blk[B_IMO]!
-  const sigmaC = blk[B_SIGMA_C]!
-  const cross = blk[B_CROSS]!
-  const r1 = blk[B_R1]!
-  const r2 = blk[B_R2]!
-  const A = imh + iml
-  const B = sigmaC * iml
-  const D = iml + imo
-  const det = imh * iml + imh * imo + iml * imo + iml * iml * cross * cross
-  if (!(det > 0)) return false
-  const j1 = (r1 * D - B * r2) / det
-  const j2 = (A * r2 - B * r1) / det
-  if (!(j1 > 0 && j2 > 0)) return false
-  squeeze[SQ_J1] = j1
-  squeeze[SQ_J2] = j2
-  return true
-}
-
-/** Whether candidate i is a ball at rest that the velocity in blk[B_VX], blk[B_VY] would leave slower than BALL_SETTLE_SPEED. */
-function holds(F: FixedContactState, i: number): boolean {
-  const vx = blk[B_VX]!
-  const vy = blk[B_VY]!
-  const settle = solveSlots[S_SETTLE]!
-  return i >= F.restFrom && F.vx[i] === 0 && F.vy[i] === 0 && vx * vx + vy * vy < settle * settle
-}
-
-/** Whether candidates i and j touch, within PROJECTION_SLOP (a boolean, not the gap: a returned double is boxed). */
-function touching(F: FixedContactState, i: number, j: number): boolean {
-  const dx = F.x[j]! - F.x[i]!
-  const dy = F.y[j]! - F.y[i]!
-  return Math.sqrt(dx * dx + dy * dy) - F.r[i]! - F.r[j]! <= PROJECTION_SLOP
 }

@@ -1,12 +1,12 @@
 // Fixed-tick contacts: a pair solved together with the closed wall that it drives its lighter ball into
 // (src/contacts/fixedSolve.ts, applyImpulse): one visit ends a squeeze or a wedge against the wall, where
 // the sweeps would bounce the light ball between the wall and its partner, a little of the push each sweep.
-// A block that would pump a ball past CONTACT_SPEED_LIMIT at the pair's restitution is solved again with the
-// pair inelastic (docs/decisions.md §8).
+// A block that would pump a ball past CONTACT_SPEED_LIMIT takes less of the pair's restitution, down to none
+// (docs/decisions.md §8).
 import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
-import { capped, capVelocity, overSpeed } from '../motion/speedLimit.js'
+import { capped, capVelocity, largestShare, overSpeed, share, shareRows } from '../motion/speedLimit.js'
 import { face } from './fixedAhead.js'
 import { walls } from './fixedGrid.js'
 import { nrm, S_APPROACH, S_IMA, S_IMB, S_LIMIT, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
@@ -30,13 +30,13 @@ export const block = { j: 0, k: 0 }
  * (the push goes through q into the wall: a dead wall takes it all, as a light ball's many bounces between
  * the two would) and q leaves the wall at the walls' restitution times its own speed into it before, each
  * zero when the other alone does it. Applied when both are positive and kinetic energy does not rise;
- * returns false, changing nothing, otherwise. `inelastic`: the pair leaves at none of its approach (the
- * block taken again so where its restitution would pump a ball past CONTACT_SPEED_LIMIT).
+ * returns false, changing nothing, otherwise. Where the pair's restitution would pump a ball past
+ * CONTACT_SPEED_LIMIT, the pair takes the largest share of it that does not, down to none (largestShare).
  */
-export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number, inelastic = false): boolean {
+export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: number, q: number): boolean {
   const ima = S[S_IMA]!
   const imb = S[S_IMB]!
-  const separate = inelastic ? 0 : S[S_SEPARATE]!
+  const separate = S[S_SEPARATE]!
   const approach = S[S_APPROACH]!
   const nx = nrm.x
   const ny = nrm.y
@@ -54,44 +54,74 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
   // motion into the wall comes back at the wall's restitution (u2 < 0 is into the wall)
   const ew = walls.e
   const back = u2 < 0 ? -ew * u2 : 0
-  const j = (separate * ew + approach + c * (u2 - back)) / den
-  const k = (back - u2) / imq - j * c
-  if (!(j > 0 && k > 0)) return false
-  const vax = F.vx[a]! - j * ima * nx + (q === a ? k * ima * face.x : 0)
-  const vay = F.vy[a]! - j * ima * ny + (q === a ? k * ima * face.y : 0)
-  const vbx = F.vx[b]! + j * imb * nx + (q === b ? k * imb * face.x : 0)
-  const vby = F.vy[b]! + j * imb * ny + (q === b ? k * imb * face.y : 0)
-  const after = m2a * (vax * vax + vay * vay) + m2b * (vbx * vbx + vby * vby)
-  // both restitutions at once can raise the energy (the two impulses are not independent): then the plain
-  // impulse and the sweeps take the pair (a fully inelastic fallback here drained elastic scenes). Rounding
-  // aside: an elastic striker off a pinned ball keeps its energy exactly, in exact arithmetic
-  if (after > before + 8 * Number.EPSILON * before) return false
-  // a squeeze near head on sends q along the wall at about its partner's speed over the sine of the angle
-  // from head on, without bound as that angle closes. A tick cannot follow a ball across its box (its swept
-  // tests are straight, and a wall turns it within the tick): a light ball squirted at 1e6 px/s and more
-  // crossed a 420 px box many times a tick, every ball there paired with it, each sweep turned it and tested
-  // those pairs again (seconds a step: docs/known-failures.md). So a squeeze that would send q along the wall
-  // further than the wall's length in a tick is left to the plain impulse and the sweeps, as above
-  const along = face.x !== 0 ? (q === a ? vay : vby) : q === a ? vax : vbx
-  const span = face.x !== 0 ? walls.maxY - walls.minY : walls.maxX - walls.minX
-  if (Math.abs(along) * F.tick > span) return false
-  // nor past CONTACT_SPEED_LIMIT at the pair's restitution: a velocity component beyond it and beyond its
-  // size before (pumpedPast, src/motion/speedLimit.ts, written out: V8 boxes the doubles of a call it does
-  // not take inline) takes the block again with the pair inelastic, which is kept whatever it gives (as the
-  // plain impulse's)
-  const limit = S[S_LIMIT]!
   const ax = F.vx[a]!
   const ay = F.vy[a]!
   const bx = F.vx[b]!
   const by = F.vy[b]!
-  if (
-    separate > 0 &&
-    (((vax > limit || vax < -limit) && vax * vax > ax * ax) ||
-      ((vay > limit || vay < -limit) && vay * vay > ay * ay) ||
-      ((vbx > limit || vbx < -limit) && vbx * vbx > bx * bx) ||
-      ((vby > limit || vby < -limit) && vby * vby > by * by))
-  )
-    return pairWithWall(w, F, a, b, q, true)
+  const limit = S[S_LIMIT]!
+  let sep = separate
+  let j = 0
+  let k = 0
+  let vax = 0
+  let vay = 0
+  let vbx = 0
+  let vby = 0
+  // the block at the pair's restitution; where that would pump a ball past CONTACT_SPEED_LIMIT, again with
+  // none and then with the largest share of it that keeps every component within (below)
+  for (let pass = 0; ; pass++) {
+    j = (sep * ew + approach + c * (u2 - back)) / den
+    k = (back - u2) / imq - j * c
+    if (!(j > 0 && k > 0)) return false
+    vax = ax - j * ima * nx + (q === a ? k * ima * face.x : 0)
+    vay = ay - j * ima * ny + (q === a ? k * ima * face.y : 0)
+    vbx = bx + j * imb * nx + (q === b ? k * imb * face.x : 0)
+    vby = by + j * imb * ny + (q === b ? k * imb * face.y : 0)
+    const after = m2a * (vax * vax + vay * vay) + m2b * (vbx * vbx + vby * vby)
+    // both restitutions at once can raise the energy (the two impulses are not independent): then the plain
+    // impulse and the sweeps take the pair (a fully inelastic fallback here drained elastic scenes). Rounding
+    // aside: an elastic striker off a pinned ball keeps its energy exactly, in exact arithmetic
+    if (after > before + 8 * Number.EPSILON * before) return false
+    // a squeeze near head on sends q along the wall at about its partner's speed over the sine of the angle
+    // from head on, without bound as that angle closes. A tick cannot follow a ball across its box (its swept
+    // tests are straight, and a wall turns it within the tick): a light ball squirted at 1e6 px/s and more
+    // crossed a 420 px box many times a tick, every ball there paired with it, each sweep turned it and tested
+    // those pairs again (seconds a step: docs/known-failures.md). So a squeeze that would send q along the wall
+    // further than the wall's length in a tick is left to the plain impulse and the sweeps, as above
+    const along = face.x !== 0 ? (q === a ? vay : vby) : q === a ? vax : vbx
+    const span = face.x !== 0 ? walls.maxY - walls.minY : walls.maxX - walls.minX
+    if (Math.abs(along) * F.tick > span) return false
+    if (pass === 2) break
+    if (pass === 1) {
+      // the largest share of the pair's restitution that keeps each component within (largestShare)
+      for (let r = 0; r < 4; r++) shareRows[3 * r + 2] = r === 0 ? vax : r === 1 ? vay : r === 2 ? vbx : vby
+      largestShare(4, limit)
+      if (share[0] === 0) break
+      sep = separate * share[0]!
+      continue
+    }
+    // nor past CONTACT_SPEED_LIMIT: a velocity component beyond it and beyond its size before (pumpedPast,
+    // src/motion/speedLimit.ts, written out: V8 boxes the doubles of a call it does not take inline) takes
+    // less of the pair's restitution, down to none, as the plain impulse does (capImpulse)
+    if (
+      !(
+        sep > 0 &&
+        (((vax > limit || vax < -limit) && vax * vax > ax * ax) ||
+          ((vay > limit || vay < -limit) && vay * vay > ay * ay) ||
+          ((vbx > limit || vbx < -limit) && vbx * vbx > bx * bx) ||
+          ((vby > limit || vby < -limit) && vby * vby > by * by))
+      )
+    )
+      break
+    shareRows[0] = ax
+    shareRows[3] = ay
+    shareRows[6] = bx
+    shareRows[9] = by
+    shareRows[1] = vax
+    shareRows[4] = vay
+    shareRows[7] = vbx
+    shareRows[10] = vby
+    sep = 0
+  }
   F.vx[a] = vax
   F.vy[a] = vay
   F.vx[b] = vbx

@@ -7,7 +7,8 @@
 // src/motion/rolling.ts): a rim's exit can turn a fast ball's velocity onto one axis.
 import { describe, expect, it } from 'vitest'
 import { capImpulse } from '../../src/contacts/law'
-import { capped, capVelocity } from '../../src/motion/speedLimit'
+import { capped, capVelocity, largestShare, share, shareRows } from '../../src/motion/speedLimit'
+import fc from 'fast-check'
 import { createBallPhysics, MAX_SPEED } from '../../src/index'
 import { squeezesSolved } from '../../src/contacts/fixedSqueeze'
 import { startPath } from '../../src/ecs'
@@ -192,7 +193,7 @@ describe('contacts do not pump a ball past CONTACT_SPEED_LIMIT', () => {
 
     it(`${method}: 12 light balls among 12 of mass 1e9 at 1e5 px/s in a closed elastic box, 1 s: pumped to a few times the limit at most, not to 1e6 and more; energy never rises`, () => {
       const pumped = (limit?: number) => pumpedBox(method, 1e5, limit, true)
-      // 2.5e5 (on) and 2.7e5 (fixed) (2.8e5 and 2.8e5 with no velocity given back each step; the fixed tick
+      // 2.5e5 (on) and 2.9e5 (fixed) (2.8e5 and 2.6e5 with no velocity given back each step; the fixed tick
       // 2.9e5 and 4.6e5 while its squeeze blocks took no account of the limit): an inelastic meeting's share
       // of the heavy ball's velocity across the normal, or an inelastic squeeze, still adds to a ball at the
       // limit
@@ -207,10 +208,10 @@ describe('contacts do not pump a ball past CONTACT_SPEED_LIMIT', () => {
 // against a closed wall, or between two heavy balls, in one go; near head on they send it out sideways at
 // about the closing speed over the sine of the angle from head on. They took no account of the limit: with
 // CONTACT_SPEED_LIMIT 1,000 a light ball left at 8,700–17,000 px/s, as without it. A block that would pump a
-// ball past the limit is now taken again with the pair inelastic (less restitution, down to none, as the
-// plain impulse takes): the squirt is halved, and what the inelastic block gives is kept (a ball that must
-// leave the gap faster than the limit to leave it at all).
-describe('fixed: the squeeze blocks take no restitution where it would pump a ball past CONTACT_SPEED_LIMIT', () => {
+// ball past the limit now takes the largest share of its restitution that does not, down to none, as the
+// plain impulse does (capImpulse): where even none sends it past (a ball that must leave the gap faster than
+// the limit to leave it at all), the squirt is halved; where a share is enough, it leaves at the limit.
+describe('fixed: the squeeze blocks take less restitution where it would pump a ball past CONTACT_SPEED_LIMIT', () => {
   const LIMIT = 1000
   /** Per 1/240 s step for 30 steps: the light ball's fastest component, the least gap, the greatest kinetic energy (masses 100 and 0.01). */
   function follow(sim: ReturnType<typeof createBallPhysics>, heavy: readonly number[], light: number) {
@@ -281,4 +282,70 @@ describe('fixed: the squeeze blocks take no restitution where it would pump a ba
       }
     })
   }
+
+  it('a share of the restitution is enough: the light ball leaves at the limit, momentum kept, between the outcomes at none and at full', () => {
+    const squeezed = (limit: number) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_SPEED_LIMIT: limit })
+      const along = 22 * Math.sqrt(1 - (1 / 22) * (1 / 22))
+      const a = sim.addBall({ x: 100, y: 200, vx: 400, vy: 0, mass: 100 })
+      const l = sim.addBall({ x: 100 + along, y: 201, vx: 0, vy: 0, mass: 0.01 })
+      const b = sim.addBall({ x: 100 + 2 * along, y: 200, vx: -400, vy: 0, mass: 100 })
+      sim.step(1 / 120)
+      return { l: sim.ballState(l), a: sim.ballState(a), b: sim.ballState(b) }
+    }
+    const none = squeezed(1000)
+    const share = squeezed(12_000)
+    const full = squeezed(MAX_SPEED)
+    // out along y at 8,583 px/s at none and 17,166 at full: 12,000 with the share
+    expect(none.l.vy).toBeLessThan(12_000)
+    expect(full.l.vy).toBeGreaterThan(12_000)
+    expect(share.l.vy).toBeLessThanOrEqual(12_000 * (1 + 1e-12))
+    expect(share.l.vy).toBeGreaterThan(12_000 * (1 - 1e-9))
+    expect(share.a.vx).toBeGreaterThan(full.a.vx)
+    expect(share.a.vx).toBeLessThan(none.a.vx)
+    const p = 100 * (share.a.vy + share.b.vy) + 0.01 * share.l.vy
+    expect(Math.abs(p)).toBeLessThan(1e-9 * 100 * 400)
+    expect(Math.abs(100 * (share.a.vx + share.b.vx) + 0.01 * share.l.vx)).toBeLessThan(1e-9 * 100 * 400)
+
+    const walled = (limit: number) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_SPEED_LIMIT: limit })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 1 })
+      sim.addBall({ x: 360, y: 201, vx: 400, vy: 0, mass: 100 })
+      const l = sim.addBall({ x: 389, y: 200, vx: 0, vy: 0, mass: 0.01 })
+      let fastest = 0
+      for (let i = 0; i < 10; i++) {
+        sim.step(1 / 240)
+        const s = sim.ballState(l)
+        fastest = Math.max(fastest, Math.abs(s.vx), Math.abs(s.vy))
+      }
+      return fastest
+    }
+    // along the wall at 8,385 px/s at none and 16,932 at full: 12,000 with the share
+    expect(walled(12_000)).toBeLessThanOrEqual(12_000 * (1 + 1e-12))
+    expect(walled(12_000)).toBeGreaterThan(12_000 * (1 - 1e-9))
+  })
+
+  it('largestShare: the share keeps every component within the larger of the limit and its size before, and no larger share would', () => {
+    const speed = fc.double({ min: -3e5, max: 3e5, noNaN: true })
+    fc.assert(
+      fc.property(fc.array(fc.tuple(speed, speed, speed), { minLength: 1, maxLength: 20 }), fc.double({ min: 1, max: 2e5, noNaN: true }), (rows, limit) => {
+        rows.forEach(([c, full, none], k) => shareRows.set([c, full, none], 3 * k))
+        largestShare(rows.length, limit)
+        const s = share[0]!
+        expect(s).toBeGreaterThanOrEqual(0)
+        expect(s).toBeLessThanOrEqual(1)
+        const bound = (c: number) => Math.min(Math.max(limit, Math.abs(c)), MAX_SPEED)
+        // beyond the bound at none already: none (the inelastic impulse is the least a contact takes)
+        if (rows.some(([c, full, none]) => Math.abs(none) > bound(c) && Math.abs(full) > bound(c))) {
+          expect(s).toBe(0)
+          return
+        }
+        const at = (c: number, full: number, none: number) => Math.abs(none + s * (full - none)) - bound(c)
+        for (const [c, full, none] of rows) if (Math.abs(none) <= bound(c)) expect(at(c, full, none)).toBeLessThanOrEqual(1e-9 * bound(c))
+        // the largest: all of it, or some component at its bound
+        if (s < 1) expect(rows.some(([c, full, none]) => Math.abs(at(c, full, none)) <= 1e-9 * bound(c))).toBe(true)
+      }),
+      { numRuns: 2000, seed: 11 },
+    )
+  })
 })
