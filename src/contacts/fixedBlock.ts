@@ -44,9 +44,10 @@ export function closesFaster(F: FixedContactState, h: number, m: number): boolea
 
 /**
  * The block's impulses (its inputs in blk) into out[0], out[1] (the squeeze's SQ_J1, SQ_J2):
- * (imh + iml)·j₁ + σ·iml·c·j₂ = r₁ and σ·iml·c·j₁ + (iml + imo)·j₂ = r₂ (c = n₁·n₂, σc given). The determinant is written out, 1 − c² as the cross
- * product squared: A·D − B² cancels to the heavy balls' inverse masses, a billionth of the light one's, and
- * lost half the digits of the impulses. False when it is not above 0, or an impulse is not.
+ * (imh + iml)·j₁ + σ·iml·c·j₂ = r₁ and σ·iml·c·j₁ + (iml + imo)·j₂ = r₂ (c = n₁·n₂, σc given). The
+ * determinant is written out, 1 − c² as the cross product squared: A·D − B² cancels to the heavy balls'
+ * inverse masses, a billionth of the light one's, and lost half the digits of the impulses. False when it
+ * is not above 0, or an impulse is not.
  */
 export function impulses(out: Float64Array): boolean {
   const imh = blk[B_IMH]!
