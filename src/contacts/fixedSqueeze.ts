@@ -168,8 +168,6 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
   const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, last, o, solveSlots[S_CLOCK]!)
   const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
-  const r1 = w1 + s1
-  const r2 = w2 + s2
   const sigmaC = sigma * (n1x * n2x + n1y * n2y)
   const cross = n1x * n2y - n1y * n2x
   // a heavy ball at rest that the block would leave slower than BALL_SETTLE_SPEED stays at rest
@@ -185,14 +183,24 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   let ly = 0
   let ox = 0
   let oy = 0
-  for (let pass = 0; ; pass++) {
+  let mh = 0
+  let ml = 0
+  let mo = 0
+  let before = 0
+  const limit = solveSlots[S_LIMIT]!
+  let rows = 0
+  // the share of the two contacts' restitution, and the stage: 0 the block, 1 again with a heavy ball held,
+  // 2 again at none, 3 again at the largest share that keeps CONTACT_SPEED_LIMIT (below)
+  let f = 1
+  let stage = 0
+  for (;;) {
     blk[B_IMH] = imhUsed
     blk[B_IML] = imv
     blk[B_IMO] = imoUsed
     blk[B_SIGMA_C] = sigmaC
     blk[B_CROSS] = cross
-    blk[B_R1] = r1
-    blk[B_R2] = r2
+    blk[B_R1] = w1 + f * s1
+    blk[B_R2] = w2 + f * s2
     if (!impulses(squeeze)) return -1
     j1 = squeeze[SQ_J1]!
     j2 = squeeze[SQ_J2]!
@@ -203,59 +211,50 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
     ly = vvy - sigma * j1 * imv * n1y - j2 * imv * n2y
     ox = F.vx[o]! + j2 * imoUsed * n2x
     oy = F.vy[o]! + j2 * imoUsed * n2y
-    if (pass > 0) break
-    blk[B_VX] = hx
-    blk[B_VY] = hy
-    const heldH = holds(F, h)
-    blk[B_VX] = ox
-    blk[B_VY] = oy
-    const heldO = holds(F, o)
-    if (!heldH && !heldO) break
-    if (heldH) imhUsed = 0
-    if (heldO) imoUsed = 0
-  }
-  // kinetic energy of the three bodies (a row's motion within itself is not changed: each of its balls takes
-  // the row's change of velocity)
-  const mh = imhUsed > 0 ? 1 / imhUsed : 0
-  const ml = 1 / imv
-  const mo = imoUsed > 0 ? 1 / imoUsed : 0
-  const before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vvx * vvx + vvy * vvy) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
-  const after = mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy)
-  if (after > before + 8 * Number.EPSILON * before) return -1
-  // nor past CONTACT_SPEED_LIMIT: where a velocity component would go beyond it and beyond its size before,
-  // the two contacts take the largest share of their restitution that keeps every one within, down to none,
-  // as the plain impulse does (largestShare, src/motion/speedLimit.ts; each component is linear in the share)
-  const limit = solveSlots[S_LIMIT]!
-  let rows = 0
-  let pumped = false
-  for (let k = 0; k < count + 2 && (s1 > 0 || s2 > 0); k++) {
-    // h, o, then the light side's balls (l alone takes lx, ly; a row's balls the row's change)
-    const c = k === 0 ? h : k === 1 ? o : squeezeChain[k - 2]!
-    const cx = F.vx[c]!
-    const cy = F.vy[c]!
-    const nx = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : cx + (lx - vvx)
-    const ny = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : cy + (ly - vvy)
-    if (((nx > limit || nx < -limit) && nx * nx > cx * cx) || ((ny > limit || ny < -limit) && ny * ny > cy * cy)) pumped = true
-    shareRows[3 * rows] = cx
-    shareRows[3 * rows++ + 1] = nx
-    shareRows[3 * rows] = cy
-    shareRows[3 * rows++ + 1] = ny
-  }
-  for (let pass = 0; pumped && pass < 2; pass++) {
-    // none, then the share
-    const f = pass === 0 ? 0 : share[0]!
-    blk[B_R1] = w1 + f * s1
-    blk[B_R2] = w2 + f * s2
-    if (!impulses(squeeze)) return -1
-    j1 = squeeze[SQ_J1]!
-    j2 = squeeze[SQ_J2]!
-    hx = F.vx[h]! + sigma * j1 * imhUsed * n1x
-    hy = F.vy[h]! + sigma * j1 * imhUsed * n1y
-    lx = vvx - sigma * j1 * imv * n1x - j2 * imv * n2x
-    ly = vvy - sigma * j1 * imv * n1y - j2 * imv * n2y
-    ox = F.vx[o]! + j2 * imoUsed * n2x
-    oy = F.vy[o]! + j2 * imoUsed * n2y
-    if (pass === 1) break
+    if (stage === 0) {
+      blk[B_VX] = hx
+      blk[B_VY] = hy
+      const heldH = holds(F, h)
+      blk[B_VX] = ox
+      blk[B_VY] = oy
+      const heldO = holds(F, o)
+      stage = 1
+      if (heldH) imhUsed = 0
+      if (heldO) imoUsed = 0
+      if (heldH || heldO) continue
+    }
+    if (stage === 1) {
+      // kinetic energy of the three bodies (a row's motion within itself is not changed: each of its balls
+      // takes the row's change of velocity)
+      mh = imhUsed > 0 ? 1 / imhUsed : 0
+      ml = 1 / imv
+      mo = imoUsed > 0 ? 1 / imoUsed : 0
+      before = mh * (F.vx[h]! * F.vx[h]! + F.vy[h]! * F.vy[h]!) + ml * (vvx * vvx + vvy * vvy) + mo * (F.vx[o]! * F.vx[o]! + F.vy[o]! * F.vy[o]!)
+      if (mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy) > before + 8 * Number.EPSILON * before) return -1
+      // nor past CONTACT_SPEED_LIMIT: where a velocity component would go beyond it and beyond its size
+      // before, the two contacts take the largest share of their restitution that keeps every one within,
+      // down to none, as the plain impulse does (largestShare, src/motion/speedLimit.ts; each component is
+      // linear in the share): the block again at none, then at that share
+      let pumped = false
+      for (let k = 0; k < count + 2 && (s1 > 0 || s2 > 0); k++) {
+        // h, o, then the light side's balls (l alone takes lx, ly; a row's balls the row's change)
+        const c = k === 0 ? h : k === 1 ? o : squeezeChain[k - 2]!
+        const cx = F.vx[c]!
+        const cy = F.vy[c]!
+        const nx = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : cx + (lx - vvx)
+        const ny = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : cy + (ly - vvy)
+        if (((nx > limit || nx < -limit) && nx * nx > cx * cx) || ((ny > limit || ny < -limit) && ny * ny > cy * cy)) pumped = true
+        shareRows[3 * rows] = cx
+        shareRows[3 * rows++ + 1] = nx
+        shareRows[3 * rows] = cy
+        shareRows[3 * rows++ + 1] = ny
+      }
+      if (!pumped) break
+      f = 0
+      stage = 2
+      continue
+    }
+    if (stage === 3) break
     for (let k = 0; k < count + 2; k++) {
       const c = k < 2 ? 0 : squeezeChain[k - 2]!
       shareRows[6 * k + 2] = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : F.vx[c]! + (lx - vvx)
@@ -263,8 +262,10 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
     }
     largestShare(rows, limit)
     if (share[0] === 0) break
+    f = share[0]!
+    stage = 3
   }
-  if (pumped && mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy) > before + 8 * Number.EPSILON * before) return -1
+  if (stage > 1 && mh * (hx * hx + hy * hy) + ml * (lx * lx + ly * ly) + mo * (ox * ox + oy * oy) > before + 8 * Number.EPSILON * before) return -1
   F.vx[h] = hx
   F.vy[h] = hy
   if (count === 1) {
