@@ -260,7 +260,8 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
       shareRows[6 * k + 2] = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : F.vx[c]! + (lx - vvx)
       shareRows[6 * k + 5] = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : F.vy[c]! + (ly - vvy)
     }
-    largestShare(rows, limit)
+    share[1] = limit
+    largestShare(rows)
     if (share[0] === 0) break
     f = share[0]!
     stage = 3

@@ -94,7 +94,8 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
     if (pass === 1) {
       // the largest share of the pair's restitution that keeps each component within (largestShare)
       for (let r = 0; r < 4; r++) shareRows[3 * r + 2] = r === 0 ? vax : r === 1 ? vay : r === 2 ? vbx : vby
-      largestShare(4, limit)
+      share[1] = limit
+      largestShare(4)
       if (share[0] === 0) break
       sep = separate * share[0]!
       continue

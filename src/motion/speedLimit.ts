@@ -49,20 +49,22 @@ export function capVelocity(vx: number, vy: number): void {
 /**
  * largestShare's rows: for velocity component k, [3k] its value before a contact block (src/contacts/
  * fixedWallPair.ts, fixedSqueeze.ts), [3k + 1] after it at the block's full restitution, [3k + 2] after it
- * at none; and its answer in share[0]. Slots, not arguments or a returned double, which V8 boxes when it does
- * not take the call inline. Room for the most components a block changes (two heavy balls and a row of 8).
+ * at none; its limit in share[1] and its answer in share[0]. Slots, not arguments or a returned double, which
+ * V8 boxes when it does not take the call inline. Room for the most components a block changes (two heavy
+ * balls and a row of 8).
  */
 export const shareRows = new Float64Array(3 * 20)
-export const share = new Float64Array(1)
+export const share = new Float64Array(2)
 
 /**
  * The largest share σ in [0, 1] of a block's restitution that keeps each of the first n components of
- * shareRows within the larger of `limit` (CONTACT_SPEED_LIMIT) and its size before, at most MAX_SPEED (as
+ * shareRows within the larger of share[1] (CONTACT_SPEED_LIMIT) and its size before, at most MAX_SPEED (as
  * capImpulse, src/contacts/law.ts, keeps a two-body contact): each component is linear in σ, from its value
  * at none to its value at full. 0 when a component is beyond it at none already: down to none, never below.
  * Into share[0].
  */
-export function largestShare(n: number, limit: number): void {
+export function largestShare(n: number): void {
+  const limit = share[1]!
   let s = 1
   for (let k = 0; k < n; k++) {
     const c = shareRows[3 * k]!
