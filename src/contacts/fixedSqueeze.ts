@@ -27,7 +27,7 @@ import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { B_CROSS, B_IMH, B_IML, B_IMO, B_R1, B_R2, B_SIGMA_C, B_VX, B_VY, blk, closesFaster, closing, holds, impulses, touching } from './fixedBlock.js'
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
-import { largestShare, share, shareRows } from '../motion/speedLimit.js'
+import { largestShare, pastLimit, share, shareRows } from '../motion/speedLimit.js'
 import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_CLOCK, S_E, S_LIMIT, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
 
 /**
@@ -187,8 +187,6 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   let ml = 0
   let mo = 0
   let before = 0
-  const limit = solveSlots[S_LIMIT]!
-  let rows = 0
   // the share of the two contacts' restitution, and the stage: 0 the block, 1 again with a heavy ball held,
   // 2 again at none, 3 again at the largest share that keeps CONTACT_SPEED_LIMIT (below)
   let f = 1
@@ -235,21 +233,19 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
       // before, the two contacts take the largest share of their restitution that keeps every one within,
       // down to none, as the plain impulse does (largestShare, src/motion/speedLimit.ts; each component is
       // linear in the share): the block again at none, then at that share
-      let pumped = false
-      for (let k = 0; k < count + 2 && (s1 > 0 || s2 > 0); k++) {
+      if (!(s1 > 0 || s2 > 0)) break
+      for (let k = 0; k < count + 2; k++) {
         // h, o, then the light side's balls (l alone takes lx, ly; a row's balls the row's change)
         const c = k === 0 ? h : k === 1 ? o : squeezeChain[k - 2]!
         const cx = F.vx[c]!
         const cy = F.vy[c]!
-        const nx = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : cx + (lx - vvx)
-        const ny = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : cy + (ly - vvy)
-        if (((nx > limit || nx < -limit) && nx * nx > cx * cx) || ((ny > limit || ny < -limit) && ny * ny > cy * cy)) pumped = true
-        shareRows[3 * rows] = cx
-        shareRows[3 * rows++ + 1] = nx
-        shareRows[3 * rows] = cy
-        shareRows[3 * rows++ + 1] = ny
+        shareRows[6 * k] = cx
+        shareRows[6 * k + 1] = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : cx + (lx - vvx)
+        shareRows[6 * k + 3] = cy
+        shareRows[6 * k + 4] = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : cy + (ly - vvy)
       }
-      if (!pumped) break
+      share[1] = solveSlots[S_LIMIT]!
+      if (!pastLimit(2 * (count + 2))) break
       f = 0
       stage = 2
       continue
@@ -260,8 +256,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
       shareRows[6 * k + 2] = k === 0 ? hx : k === 1 ? ox : count === 1 ? lx : F.vx[c]! + (lx - vvx)
       shareRows[6 * k + 5] = k === 0 ? hy : k === 1 ? oy : count === 1 ? ly : F.vy[c]! + (ly - vvy)
     }
-    share[1] = limit
-    largestShare(rows)
+    largestShare(2 * (count + 2))
     if (share[0] === 0) break
     f = share[0]!
     stage = 3

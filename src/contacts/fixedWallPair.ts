@@ -6,7 +6,7 @@
 import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
-import { capped, capVelocity, largestShare, overSpeed, share, shareRows } from '../motion/speedLimit.js'
+import { capped, capVelocity, largestShare, overSpeed, pastLimit, share, shareRows } from '../motion/speedLimit.js'
 import { face } from './fixedAhead.js'
 import { walls } from './fixedGrid.js'
 import { nrm, S_APPROACH, S_IMA, S_IMB, S_LIMIT, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
@@ -58,7 +58,6 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
   const ay = F.vy[a]!
   const bx = F.vx[b]!
   const by = F.vy[b]!
-  const limit = S[S_LIMIT]!
   let sep = separate
   let j = 0
   let k = 0
@@ -94,33 +93,20 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
     if (pass === 1) {
       // the largest share of the pair's restitution that keeps each component within (largestShare)
       for (let r = 0; r < 4; r++) shareRows[3 * r + 2] = r === 0 ? vax : r === 1 ? vay : r === 2 ? vbx : vby
-      share[1] = limit
       largestShare(4)
       if (share[0] === 0) break
       sep = separate * share[0]!
       continue
     }
-    // nor past CONTACT_SPEED_LIMIT: a velocity component beyond it and beyond its size before (pumpedPast,
-    // src/motion/speedLimit.ts, written out: V8 boxes the doubles of a call it does not take inline) takes
-    // less of the pair's restitution, down to none, as the plain impulse does (capImpulse)
-    if (
-      !(
-        sep > 0 &&
-        (((vax > limit || vax < -limit) && vax * vax > ax * ax) ||
-          ((vay > limit || vay < -limit) && vay * vay > ay * ay) ||
-          ((vbx > limit || vbx < -limit) && vbx * vbx > bx * bx) ||
-          ((vby > limit || vby < -limit) && vby * vby > by * by))
-      )
-    )
-      break
-    shareRows[0] = ax
-    shareRows[3] = ay
-    shareRows[6] = bx
-    shareRows[9] = by
-    shareRows[1] = vax
-    shareRows[4] = vay
-    shareRows[7] = vbx
-    shareRows[10] = vby
+    // nor past CONTACT_SPEED_LIMIT: a velocity component beyond it and beyond its size before (pastLimit)
+    // takes less of the pair's restitution, down to none, as the plain impulse does (capImpulse)
+    if (!(sep > 0)) break
+    for (let r = 0; r < 4; r++) {
+      shareRows[3 * r] = r === 0 ? ax : r === 1 ? ay : r === 2 ? bx : by
+      shareRows[3 * r + 1] = r === 0 ? vax : r === 1 ? vay : r === 2 ? vbx : vby
+    }
+    share[1] = S[S_LIMIT]!
+    if (!pastLimit(4)) break
     sep = 0
   }
   F.vx[a] = vax

@@ -57,6 +57,24 @@ export const shareRows = new Float64Array(3 * 20)
 export const share = new Float64Array(2)
 
 /**
+ * Whether any of the first n components of shareRows goes, at the block's full restitution, beyond the larger
+ * of share[1] (CONTACT_SPEED_LIMIT) and its size before, at most MAX_SPEED: pumpedPast for each (velocities
+ * and the limit are within MAX_SPEED), read from the rows, where the calls' doubles would be boxed.
+ */
+export function pastLimit(n: number): boolean {
+  const limit = share[1]!
+  for (let k = 0; k < n; k++) {
+    const c = shareRows[3 * k]!
+    const full = shareRows[3 * k + 1]!
+    const size = c < 0 ? -c : c
+    let M = limit > size ? limit : size
+    if (M > MAX_SPEED) M = MAX_SPEED
+    if (full > M || full < -M) return true
+  }
+  return false
+}
+
+/**
  * The largest share σ in [0, 1] of a block's restitution that keeps each of the first n components of
  * shareRows within the larger of share[1] (CONTACT_SPEED_LIMIT) and its size before, at most MAX_SPEED (as
  * capImpulse, src/contacts/law.ts, keeps a two-body contact): each component is linear in σ, from its value
