@@ -6,11 +6,17 @@
 // the heap over 300 steps started after a collection, with none in between (checked), the least of four
 // windows after a warm-up (more while none is under the limit); what contacts and walls still allocate stays
 // below that.
+import { build } from 'esbuild'
+import { execFileSync } from 'node:child_process'
+import { mkdirSync, rmSync } from 'node:fs'
+import { join, resolve } from 'node:path'
 import { PerformanceObserver } from 'node:perf_hooks'
 import { setFlagsFromString } from 'node:v8'
 import { runInNewContext } from 'node:vm'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
+
+const root = resolve(import.meta.dirname, '..')
 
 const N = 1000
 const R = 11
@@ -247,6 +253,39 @@ describe('allocation per ball-step', () => {
     expect(moving).toBe(N)
     expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
   }, 60_000)
+
+  it(`contacts fixed, as a bundle: light balls pumped by heavy ones in a small box (16 ticks a step, hundreds of new paths a tick) allocate under ${LIMIT} bytes a ball-step`, async () => {
+    // startPath called overSpeed with the velocity: where V8 inlined startPath into the fixed tick's last act
+    // but not overSpeed, both doubles were boxed at each of its two calls (95–120 bytes a ball-step here).
+    // Only as a bundle, and after a long warm-up (tests/alloc/pumpedBoxMain.ts). What is left is a dozen
+    // heap numbers a tick, not a ball (180–300 bytes a tick)
+    // its packages imported, not bundled: so written where Node finds them
+    const dir = join(root, 'node_modules', '.cache', 'allocation-test')
+    mkdirSync(dir, { recursive: true })
+    const file = join(dir, `pumped-box-${process.pid}.mjs`)
+    await build({
+      absWorkingDir: root,
+      entryPoints: ['tests/alloc/pumpedBoxMain.ts'],
+      bundle: true,
+      format: 'esm',
+      platform: 'node',
+      packages: 'external',
+      outfile: file,
+      logLevel: 'silent',
+    })
+    try {
+      const text = execFileSync(process.execPath, ['--expose-gc', '--min-semi-space-size=64', '--max-semi-space-size=64', file], { encoding: 'utf8', timeout: 120_000 })
+      const { perBallStep, perTick, moving, ticksPerStep } = JSON.parse(text.trim()) as { perBallStep: (number | null)[]; perTick: (number | null)[]; moving: number; ticksPerStep: number }
+      expect(moving).toBe(720)
+      expect(ticksPerStep, 'the tick halved four times').toBeGreaterThanOrEqual(16)
+      const clean = perBallStep.filter((b): b is number => b !== null)
+      expect(clean.length, 'a window with no collection').toBeGreaterThan(0)
+      const note = `bytes per ball-step in each window (null: a collection ran): ${perBallStep.map((b) => b?.toFixed(2)).join(', ')}; per tick ${perTick.map((b) => b?.toFixed(0)).join(', ')}`
+      expect(Math.min(...clean), note).toBeLessThan(LIMIT)
+    } finally {
+      rmSync(file, { force: true })
+    }
+  }, 120_000)
 
   it(`contacts on: a pile pressed by a stream (touching pairs creeping, clusters settled) allocates under ${PILE_LIMIT} bytes a ball-step`, async () => {
     // the contact search passed a touching pair's numbers to creep (eight doubles and the answer) and the

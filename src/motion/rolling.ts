@@ -13,7 +13,8 @@ import { type BallWorld } from '../world/createWorld.js'
 import { pathChanged } from '../world/contactState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
 import { NEVER } from '../config/tolerances.js'
-import { capped, capVelocity, overSpeed } from './speedLimit.js'
+import { capped, capVelocity } from './speedLimit.js'
+import { MAX_SPEED } from '../config/limits.js'
 
 /**
  * The start of the next path (startPath, launchBall): position, velocity and time, written by the caller
@@ -37,8 +38,10 @@ export function startPath(w: BallWorld, eid: number): void {
   let vy = pathStart[PS_VY]!
   const t = pathStart[PS_T]!
   // no component beyond MAX_SPEED (src/motion/speedLimit.ts: a rim's exit can turn a fast ball's velocity
-  // onto an axis)
-  if (overSpeed(vx, vy)) {
+  // onto an axis). overSpeed written out here and below: inlined into launchBall and applyChanges, V8 did
+  // not inline it in turn and boxed its two doubles at each call (about 64 bytes a ball the fixed tick's
+  // solve changed)
+  if (vx > MAX_SPEED || vx < -MAX_SPEED || vy > MAX_SPEED || vy < -MAX_SPEED) {
     capVelocity(vx, vy)
     vx = capped[0]!
     vy = capped[1]!
@@ -48,8 +51,16 @@ export function startPath(w: BallWorld, eid: number): void {
   const ux = speed > 0 ? vx / speed : 0
   const uy = speed > 0 ? vy / speed : 0
   // nor the ulp or two beyond it that ux·speed can round to (each try takes an ulp or two off the speed);
-  // every later sample, ux·v with v ≤ speed, is then within it too (rounding is monotonic)
-  for (let k = 0; k < 8 && overSpeed(ux * speed, uy * speed); k++) speed *= 1 - Number.EPSILON
+  // every later sample, ux·v with v ≤ speed, is then within it too (rounding is monotonic). The factor is
+  // 1 − Number.EPSILON written as a number literal: the global Number, read in a branch V8 has not seen
+  // taken, is a generic load, and the speed it merges into was boxed at every path (a module constant is of
+  // no known type to V8 either)
+  for (let k = 0; k < 8; k++) {
+    const sx = ux * speed
+    const sy = uy * speed
+    if (!(sx > MAX_SPEED || sx < -MAX_SPEED || sy > MAX_SPEED || sy < -MAX_SPEED)) break
+    speed *= 0.9999999999999998
+  }
   // the path's row, written here (a call taking these six doubles boxed them wherever V8 did not inline it)
   const H = w.pathHot
   const h = eid * HOT
