@@ -17,7 +17,7 @@ import { skipOverSystem } from '../systems/skipOver.js'
 import { orderMoving } from './world/idLists.js'
 import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN, TICK_SNAP } from './config/tolerances.js'
 import { nearTick } from './contacts/fixedHalve.js'
-import { gridInstant } from './world/gridTime.js'
+import { gridInstant, instantOut, tickInstant } from './world/gridTime.js'
 import { wallsSystem } from '../systems/walls.js'
 import { NAIVE_SUBSTEP, V1_SUBSTEP, repeatSubsteps } from '../systems/variants/naive/schedule.js'
 import { v1RuleSystem } from '../systems/variants/v1Rule.js'
@@ -116,13 +116,15 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
   const end = clockEnd(world, world.time + dt, dt)
   if (F === null) {
     if (world.collide === null) {
-      runWindow(world, schedule, end)
+      world.tickEnd = end
+      runWindow(world, schedule)
       return
     }
     // exact contacts: while balls are held, the step is split at the launch instants, where the launcher acts
     for (;;) {
       const next = launchInstant(world)
-      runWindow(world, schedule, next < end ? next : end)
+      world.tickEnd = next < end ? next : end
+      runWindow(world, schedule)
       if (world.time >= end) return
     }
   }
@@ -131,8 +133,10 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
   // fixedContacts system); a solve asked for between steps (a ball put down or given a new velocity) runs in
   // the next step's first pass
   for (;;) {
-    const L = world.config.CONTACT_TICK
-    const tick = gridInstant(L, F.halvings, F.nextTick)
+    // the instants through a slot, not returned, and no double passed to a call here: V8 boxes those for a
+    // call it does not inline, a dozen heap numbers a tick
+    tickInstant(world, F.halvings, F.nextTick)
+    const tick = instantOut[0]!
     if (tick <= world.time) {
       F.due = true
       F.nextTick++
@@ -141,18 +145,22 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     // a step whose end is the tick but for rounding (a clock summed from 1/120 s steps drifts a few ulps
     // from k·(1/120)) ends at the tick, solved, and the clock is back on the ticks; else a sliver window
     // before or after the tick integrated every ball again
-    const onTick = nearTick(tick, end, dt)
+    const gap = Math.abs(tick - end)
+    const onTick = gap <= TICK_SNAP * tick && gap < 0.5 * dt // nearTick(tick, end, dt)
     const stop = onTick || tick < end ? tick : end
     // held balls leave at the ticks, the halved ones too (ticks of the world's clock, decided from its state,
     // so the same at every frame rate; k·CONTACT_TICK = (k·2^h)·(CONTACT_TICK / 2^h), the same double, is
     // among them): a window that starts on one
-    world.launchDue = world.held.count > 0 && world.time === gridInstant(L, F.halvings, F.nextTick - 1)
-    runWindow(world, schedule, stop)
+    if (world.held.count > 0) tickInstant(world, F.halvings, F.nextTick - 1)
+    world.launchDue = world.held.count > 0 && world.time === instantOut[0]
+    world.tickEnd = stop
+    runWindow(world, schedule)
     F.due = false
     // the window reached the next tick: `tick`, or, when a solve at its start (one a command asked for)
     // halved the tick, the next tick of the finer spacing, where the window then ended (or ends anyway:
     // src/contacts/fixedHalve.ts)
-    if (world.time === gridInstant(L, F.halvings, F.nextTick)) {
+    tickInstant(world, F.halvings, F.nextTick)
+    if (world.time === instantOut[0]) {
       // the tick's solve right at the end of the window that reaches it: a step that ends on a tick ends
       // solved (what the game draws), and the next window starts from the solved state
       F.nextTick++
@@ -226,9 +234,11 @@ function launchInstant(world: BallWorld): number {
   return next
 }
 
-/** Runs the passes from the world's time to tEnd. */
-function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[], tEnd: number): void {
-  world.tickEnd = tEnd
+/**
+ * Runs the passes from the world's time to world.tickEnd, which the caller sets (a double passed to a call V8
+ * does not inline is boxed).
+ */
+function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[]): void {
   // events at this instant from here on come after those of the window that ended here (src/events.ts)
   world.events.windowFrom = world.time
   // with ball-ball contacts a pass handles one event (or a few lip crossings), so the bound is per moving ball:

@@ -37,7 +37,7 @@ import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
 import { iterationsNow, lean, meterTick, skipRest, spend } from '../src/contacts/fixedBudget.js'
-import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_TICK_HALVINGS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP, SMALL_TICK_BALLS } from '../src/config/tolerances.js'
+import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP, SMALL_TICK_BALLS } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 import { outsideStep } from '../src/world/system.js'
@@ -48,7 +48,6 @@ export function fixedContactsSystem(w: BallWorld): void {
   const F = w.fixed
   if (F === null || !F.due || w.pass !== 0) return
   F.due = false
-  const t = w.time
   if (F.broadphase >= 0) F.denseNext = F.broadphase
   if (F.dense !== F.denseNext) {
     F.dense = F.denseNext
@@ -66,7 +65,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   let tries = 0
   let atLeast = 0
   for (;;) {
-    const h = solveTick(w, F, t, atLeast)
+    const h = solveTick(w, F, atLeast)
     if (h === NO_PAIRS) {
       recordGrowth(F, false)
       return
@@ -82,7 +81,7 @@ export function fixedContactsSystem(w: BallWorld): void {
       const dense = F.n > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
       if (dense && !fewPairs(F)) break
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
-      if (!deepFiner(F, w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS), dense ? fronts : Infinity)) break
+      if (!deepFiner(w, F, dense ? fronts : -1)) break
     }
     // past the span's work budget, no finer try (src/contacts/fixedBudget.ts)
     if (lean(F)) break
@@ -115,21 +114,21 @@ export function fixedContactsSystem(w: BallWorld): void {
   // radius-3 balls 1 px apart, e = 0: the front ball went from 640 to 946 px/s, through its neighbour at
   // rest, which was not a candidate)
   if (anchoredCount() !== anchored) {
-    solveVelocities(w, F, t, iterationsNow(w, F))
+    solveVelocities(w, F, iterationsNow(w, F))
     if (!lean(F) && mayPass(F)) {
       markCandidatesSeen(F)
       for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * F.n && !lean(F) && mayPass(F); round++) {
         if (!widenReach(w, F)) break
-        solveVelocities(w, F, t, iterationsNow(w, F))
+        solveVelocities(w, F, iterationsNow(w, F))
       }
     }
   }
   if (lean(F)) F.lean++
   recordGrowth(F, true)
   // a candidate only a wall turned goes on to meet the wall at its instant (src/contacts/fixedWallTurn.ts)
-  keepWallTurns(w, F, t)
-  countTickContacts(w, F, t)
-  applyChanges(w, F, t)
+  keepWallTurns(w, F)
+  countTickContacts(w, F)
+  applyChanges(w, F)
 }
 
 /** the halvings the last try took (halveTick): the next try takes more */
@@ -146,7 +145,7 @@ const SOLVED = -1
  * pairs with a ball that could still pass through another (the tick is solved again); else SOLVED (the
  * rounds ended, or stopped at a bound on their number, which solving again along a row only makes dearer).
  */
-function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: number): number {
+function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number {
   if (F.dense === 1) gatherDense(w, F)
   else gatherCandidates(w, F)
   if (F.full < 2) {
@@ -163,11 +162,11 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
   const iterations = iterationsNow(w, F)
   F.hitCount = 0
   F.overlap = false
-  let converged = solveVelocities(w, F, t, iterations)
+  let converged = solveVelocities(w, F, iterations)
   beginWidening()
   beginNear(F)
   minUpTo = 0
-  rMin = Infinity
+  minR[0] = 1 / 0
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts), and past MAX_PASS_ROUNDS only while the tick has CHAIN_PAIRS_PER_BALL pairs a
@@ -201,7 +200,7 @@ function solveTick(w: BallWorld, F: FixedContactState, t: number, atLeast: numbe
     }
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
-    converged = solveVelocities(w, F, t, iterations, extra && converged ? pairs : 0, pairs)
+    converged = solveVelocities(w, F, iterations, extra && converged ? pairs : 0, pairs)
   }
 }
 
@@ -218,16 +217,20 @@ function chooseBroadphase(F: FixedContactState): void {
     return
   }
   const area = (F.maxX - F.minX) * (F.maxY - F.minY)
-  const crowd = area > 0 ? (F.full * F.cell * F.cell) / area : Infinity
+  const crowd = area > 0 ? (F.full * F.cell * F.cell) / area : 1 / 0
   const share = F.pairCount / F.full
   if (F.dense === 1 && crowd < 0.25 && share < 0.25) F.denseNext = 0
   else if (F.dense === 0 && (crowd > 0.3 || share > 0.3)) F.denseNext = 1
 }
 
-/** mayPass's smallest candidate radius so far in the tick (of the candidates below minUpTo, numbered as at renumbering minPacking; reset each tick) */
+/**
+ * mayPass's smallest candidate radius so far in the tick (of the candidates below minUpTo, numbered as at
+ * renumbering minPacking; reset each tick), in a slot: a module-level `let` holding a double gets a fresh
+ * heap number at every write (V8)
+ */
+const minR = new Float64Array(1)
 let minUpTo = 0
 let minPacking = -1
-let rMin = Infinity
 
 /**
  * Whether a ball the solve sped up beyond its reach (one the next widening round would pair again) moves
@@ -240,7 +243,8 @@ function mayPass(F: FixedContactState): boolean {
     minPacking = packings()
     minUpTo = 0
   }
-  for (; minUpTo < F.n; minUpTo++) if (F.r[minUpTo]! < rMin) rMin = F.r[minUpTo]!
+  for (; minUpTo < F.n; minUpTo++) if (F.r[minUpTo]! < minR[0]!) minR[0] = F.r[minUpTo]!
+  const rMin = minR[0]!
   // a candidate neither the last solve nor the last cut touched was looked at by the last round's widening
   // (src/contacts/fixedRounds.ts), and gives no to this
   const listed = roundCandidates(F, false)

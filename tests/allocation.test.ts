@@ -257,8 +257,10 @@ describe('allocation per ball-step', () => {
   it(`contacts fixed, as a bundle: light balls pumped by heavy ones in a small box (16 ticks a step, hundreds of new paths a tick) allocate under ${LIMIT} bytes a ball-step`, async () => {
     // startPath called overSpeed with the velocity: where V8 inlined startPath into the fixed tick's last act
     // but not overSpeed, both doubles were boxed at each of its two calls (95–120 bytes a ball-step here).
-    // Only as a bundle, and after a long warm-up (tests/alloc/pumpedBoxMain.ts). What is left is a dozen
-    // heap numbers a tick, not a ball (180–300 bytes a tick)
+    // Only as a bundle, and after a long warm-up (tests/alloc/pumpedBoxMain.ts); with it fixed, a shorter
+    // one still showed a dozen doubles boxed at the calls between the tick's stages (4 bytes a ball-step,
+    // 180–300 a tick). What is left is a few heap numbers a tick, not a ball (about 60–120 bytes a tick,
+    // the same with 1,620 balls)
     // its packages imported, not bundled: so written where Node finds them
     const dir = join(root, 'node_modules', '.cache', 'allocation-test')
     mkdirSync(dir, { recursive: true })

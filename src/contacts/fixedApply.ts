@@ -11,9 +11,10 @@ import { holeAt } from '../world/holeTable.js'
 import { restingInsert, restingRemove } from '../world/restingGrid.js'
 import { strikeLeavesRim } from './law.js'
 
-/** Gives every changed ball a fresh path from its state at the tick t (see above). */
-export function applyChanges(w: BallWorld, F: FixedContactState, t: number): void {
+/** Gives every changed ball a fresh path from its state at the tick, the world's time (see above). */
+export function applyChanges(w: BallWorld, F: FixedContactState): void {
   const B = w.Ball
+  const t = w.time
   const settle = w.config.BALL_SETTLE_SPEED
   for (let i = 0; i < F.n; i++) {
     const c = F.changed[i]!

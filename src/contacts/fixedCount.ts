@@ -12,9 +12,12 @@ import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { contactTickKey, countContacts } from '../world/contactState.js'
 
-/** The key of the contact tick of the clock that time t falls in (k + 1: 0 is none). */
-export function clockTick(w: BallWorld, t: number): number {
-  return contactTickKey(t, w.config.CONTACT_TICK)
+/**
+ * The key of the contact tick of the clock that the world's time falls in (k + 1: 0 is none). The time is
+ * read here, not passed: a double passed to a call V8 does not inline is boxed.
+ */
+export function clockTick(w: BallWorld): number {
+  return contactTickKey(w.time, w.config.CONTACT_TICK)
 }
 
 /**
@@ -32,9 +35,9 @@ function over(F: FixedContactState, i: number, key: number): boolean {
   return F.rest.tickContactsAt[eid] === key && F.rest.tickContacts[eid]! >= MAX_TICK_CONTACTS
 }
 
-/** Adds the impulses of each pair at the tick t (F.pairHit above its bit 0, up to RESTITUTION_VISITS) to its balls' counts. */
-export function countTickContacts(w: BallWorld, F: FixedContactState, t: number): void {
-  const key = clockTick(w, t)
+/** Adds the impulses of each pair at the tick (F.pairHit above its bit 0, up to RESTITUTION_VISITS) to its balls' counts. */
+export function countTickContacts(w: BallWorld, F: FixedContactState): void {
+  const key = clockTick(w)
   const C = F.rest
   for (let p = 0; p < F.pairCount; p++) {
     const v = F.pairHit[p]! >> 1

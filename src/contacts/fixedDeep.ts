@@ -32,16 +32,20 @@
 // its neighbours' spacing, and each try costs the whole crowd (a crowd of 261 balls pumped to 5e7 px/s
 // took 9 times as long).
 import type { FixedContactState } from '../world/fixedState.js'
-import { DEEP_UNSEEN_DEPTH } from '../config/tolerances.js'
-import { intoWalls } from './fixedGrid.js'
+import { DEEP_UNSEEN_DEPTH, MAX_TICK_HALVINGS } from '../config/tolerances.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { finestTick, intoWalls } from './fixedGrid.js'
 
 /**
- * Whether pair (a, b) closes within `tick`, on straight lines at the present velocities, by more than its gap
- * (none when overlapping) and its smaller radius, or, with `unseen` and a speck (radius under
- * DEEP_UNSEEN_DEPTH), by more than its gap and DEEP_UNSEEN_DEPTH or a quarter of the larger radius, whichever
- * is less (a boolean, not the amount: a returned double is boxed).
+ * Whether pair (a, b) closes within the tick (`finest`: within finestTick[0]), on straight lines at the
+ * present velocities, by more than its gap (none when overlapping) and its smaller radius, or, within the
+ * tick and a speck (radius under DEEP_UNSEEN_DEPTH), by more than its gap and DEEP_UNSEEN_DEPTH or a quarter
+ * of the larger radius, whichever is less (a boolean, not the amount, and no double passed: V8 boxes those
+ * for a call it does not inline).
  */
-function closesDeep(F: FixedContactState, a: number, b: number, tick: number, unseen: boolean): boolean {
+function closesDeep(F: FixedContactState, a: number, b: number, finest: boolean): boolean {
+  const tick = finest ? finestTick[0]! : F.tick
+  const unseen = !finest
   const dx = F.x[b]! - F.x[a]!
   const dy = F.y[b]! - F.y[a]!
   const ux = F.vx[b]! - F.vx[a]!
@@ -71,31 +75,34 @@ let paired = new Uint8Array(64)
 
 /**
  * Whether the tick leaves a ball near a wall moving into it, or a pair closing deep, that would not do so
- * within a tick as short as `finest` (a finer spacing can solve it: not a ball that covers its neighbours'
- * spacing even then, as one pumped to 1e7 px/s, nor one wider than its box, nor a pair that would close by
- * more than its smaller radius even then, a speck's too), and no more than `most` of
- * them (counted together). A ball near a wall counts only when the tick paired it: one with no pair reaches
- * no other ball within the tick wherever a wall turns it (its reach is a disc of its speed times the tick
- * about where it starts, and every ball whose reach meets it is paired), so a finer tick changes nothing
- * for it. Counting those too halved the whole world's tick for tiny balls rattling between the walls of a
- * 5-px channel at 1e5 px/s, far from every other ball: 70 ticks solved again every 5 ms.
+ * within a tick as short as the finest spacing's, CONTACT_TICK / 2^MAX_TICK_HALVINGS (a finer spacing can
+ * solve it: not a ball that covers its neighbours' spacing even then, as one pumped to 1e7 px/s, nor one
+ * wider than its box, nor a pair that would close by more than its smaller radius even then, a speck's too),
+ * and no more than `most` of them (counted together; -1: no bound). Nothing but indices and the world crosses
+ * the call: a double passed to a call V8 does not inline is boxed. A ball near a wall counts only when the
+ * tick paired it: one with no pair reaches no other ball within the tick wherever a wall turns it (its reach
+ * is a disc of its speed times the tick about where it starts, and every ball whose reach meets it is
+ * paired), so a finer tick changes nothing for it. Counting those too halved the whole world's tick for tiny
+ * balls rattling between the walls of a 5-px channel at 1e5 px/s, far from every other ball: 70 ticks solved
+ * again every 5 ms.
  */
-export function deepFiner(F: FixedContactState, finest: number, most: number): boolean {
+export function deepFiner(w: BallWorld, F: FixedContactState, most: number): boolean {
+  finestTick[0] = w.config.CONTACT_TICK / (1 << MAX_TICK_HALVINGS)
   let count = 0
   let marked = false
   for (let k = 0; k < F.nearWallCount; k++) {
     const i = F.nearWall[k]!
-    if (intoWalls(F, i) === 0 || intoWalls(F, i, finest) !== 0) continue
+    if (intoWalls(F, i) === 0 || intoWalls(F, i, true) !== 0) continue
     if (!marked) {
       markPaired(F)
       marked = true
     }
-    if (paired[i] === 1 && ++count > most) return false
+    if (paired[i] === 1 && ++count > most && most >= 0) return false
   }
   for (let p = 0; p < F.pairCount; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
-    if (closesDeep(F, a, b, F.tick, true) && !closesDeep(F, a, b, finest, false) && ++count > most) return false
+    if (closesDeep(F, a, b, false) && !closesDeep(F, a, b, true) && ++count > most && most >= 0) return false
   }
   return count > 0
 }

@@ -372,11 +372,18 @@ export function listNearWall(F: FixedContactState, i: number): void {
 }
 
 /**
- * Which closed walls candidate i moves into within the tick (or `tick`) at its present velocity: bit 1 on x, bit 2 on y
- * (an open edge's face is at ±Infinity: never within a tick). Indices in, an integer out: no double crosses
- * the call.
+ * The finest spacing's tick, CONTACT_TICK / 2^MAX_TICK_HALVINGS, for intoWalls (deepFiner sets it): a slot,
+ * not an argument
  */
-export function intoWalls(F: FixedContactState, i: number, tick = F.tick): number {
+export const finestTick = new Float64Array(1)
+
+/**
+ * Which closed walls candidate i moves into within the tick (or, `finest`, within finestTick[0]) at its
+ * present velocity: bit 1 on x, bit 2 on y (an open edge's face is at ±Infinity: never within a tick).
+ * Indices in, an integer out: no double crosses the call.
+ */
+export function intoWalls(F: FixedContactState, i: number, finest = false): number {
+  const tick = finest ? finestTick[0]! : F.tick
   const x = F.x[i]!
   const y = F.y[i]!
   const r = F.r[i]!

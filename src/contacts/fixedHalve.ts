@@ -25,7 +25,7 @@ import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, T
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { countTravelHalving, holdsForTravel, travelApplies, travelHalvings } from './fixedTravel.js'
-import { gridInstant } from '../world/gridTime.js'
+import { instantOut, tickInstant } from '../world/gridTime.js'
 
 /** Per packed candidate: its speed, and its reach at each further halving (level h at [h·n + k]; scratch). */
 let speed = new Float64Array(64)
@@ -47,25 +47,30 @@ export function coarsenTick(w: BallWorld, F: FixedContactState): void {
   // only at a tick's own solve, which runs at the end of the window that reaches it (not at a solve a command
   // asked for at a window's start, whose window ends at the tick of this spacing)
   const k = F.nextTick - 1
-  if (w.time !== w.tickEnd || k % 2 !== 0 || w.time !== gridInstant(w.config.CONTACT_TICK, F.halvings, k)) return
-  if (!fewPairs(F, sustainedGrowth(F))) return
+  if (w.time !== w.tickEnd || k % 2 !== 0) return
+  tickInstant(w, F.halvings, k)
+  if (w.time !== instantOut[0]) return
+  sustainedGrowth(F)
+  if (!fewPairs(F, true)) return
   if (F.coarsenWait > 0) {
     F.coarsenWait--
     return
   }
   coarsened = true
   F.halvings--
-  F.tick = tickOf(w, F.halvings)
+  setTick(w, F)
   F.nextTick = k / 2 + 1
 }
 
 /**
  * Whether the last tick's pairs (before its widening rounds; none when a finer tick would not have thinned
  * them) were within a quarter of the halving bound, at most TICK_PAIRS_PER_CANDIDATE / 4 a candidate: few
- * enough for the spacing to coarsen back. coarsenTick counts them times the last ticks' sustained growth, as
- * halveTick does (else a tick halved for its growth coarsens back at once, and the spacing swings).
+ * enough for the spacing to coarsen back. coarsenTick counts them times the last ticks' sustained growth
+ * (`grown`: sustainedGrowth's, just taken), as halveTick does (else a tick halved for its growth coarsens
+ * back at once, and the spacing swings).
  */
-export function fewPairs(F: FixedContactState, growth = 1): boolean {
+export function fewPairs(F: FixedContactState, grown = false): boolean {
+  const growth = grown ? growthOut[0]! : 1
   return 4 * F.tickPairs * growth <= TICK_PAIRS_PER_CANDIDATE * F.tickFull
 }
 
@@ -81,14 +86,15 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
   const levels = MAX_TICK_HALVINGS - F.halvings
   let h = 0
   let saturated = false
-  const growth = sustainedGrowth(F)
+  sustainedGrowth(F)
+  const growth = growthOut[0]!
   // balls closing on their nearest partner by more than a share of their size a tick (src/contacts/fixedTravel.ts)
   const travelOn = travelApplies(w)
   const travel = travelOn ? travelHalvings(F, Math.min(levels, w.config.CONTACT_TRAVEL_HALVINGS - F.halvings)) : 0
   const byTravel = travel > atLeast
   if (byTravel) atLeast = travel
   if (F.pairCount * growth > TICK_PAIRS_PER_CANDIDATE * F.full || atLeast > 0) {
-    h = levels > 0 ? bestHalvings(w, F, levels, growth) : 0
+    h = levels > 0 ? bestHalvings(w, F, levels) : 0
     // a tick solved again at a finer spacing (src/contacts/fixedRedo.ts), or one whose balls close on their
     // nearest partner too far a tick: at least that many
     if (h < atLeast) h = Math.min(atLeast, levels)
@@ -134,14 +140,18 @@ let gathered = 0
  * whose solve keeps speeding balls past their reach (light balls pumped by heavy ones) ends each tick with
  * several times the pairs it gathered, and its sweeps do not converge there: counted as gathered, its pairs
  * were within the bound and its tick was never halved. A push along a row grows them a hundredfold, but at
- * a tick or two: the least is 1 there.
+ * a tick or two: the least is 1 there. Into growthOut[0] (V8 boxes a double returned from a call it does not
+ * inline, and one passed to it).
  */
-function sustainedGrowth(F: FixedContactState): number {
+function sustainedGrowth(F: FixedContactState): void {
   const g = F.tickGrowth
   let least = g[0]!
   for (let i = 1; i < GROWTH_TICKS; i++) if (g[i]! < least) least = g[i]!
-  return least
+  growthOut[0] = least
 }
+
+/** sustainedGrowth's answer */
+const growthOut = new Float64Array(1)
 
 /** Halvings still open to a tick from the spacing it started at (saveSpacing). */
 export function halvingsLeft(): number {
@@ -180,8 +190,12 @@ export function restoreSpacing(w: BallWorld, F: FixedContactState): void {
 /** Most ticks coarsening waits after tries that were halved again at once (doubling from 2). */
 const MAX_COARSEN_WAIT = 1024
 
-/** The halvings, up to `levels`, that make the least work (see halveTick), from the pairs each keeps, times their growth. */
-function bestHalvings(w: BallWorld, F: FixedContactState, levels: number, growth: number): number {
+/**
+ * The halvings, up to `levels`, that make the least work (see halveTick), from the pairs each keeps, times
+ * their growth (growthOut).
+ */
+function bestHalvings(w: BallWorld, F: FixedContactState, levels: number): number {
+  const growth = growthOut[0]!
   countKept(w, F, levels)
   let best = 0
   let least = work(F.full, F.pairCount * growth, 0)
@@ -209,7 +223,7 @@ function countKept(w: BallWorld, F: FixedContactState, levels: number): void {
     speed[k] = Math.sqrt(vx * vx + vy * vy)
   }
   for (let h = 1; h <= levels; h++) {
-    const tick = tickOf(w, F.halvings + h)
+    const tick = w.config.CONTACT_TICK / (1 << (F.halvings + h))
     const o = h * n
     for (let k = 0; k < n; k++) reachAt[o + k] = F.r[k]! + speed[k]! * tick + TOUCH_GAP
   }
@@ -251,17 +265,21 @@ function halve(w: BallWorld, F: FixedContactState, h: number): void {
   F.pairCount = kept
   for (let k = 0; k < n; k++) F.reach[k] = reachAt[o + k]!
   F.halvings += h
-  F.tick = tickOf(w, F.halvings)
+  setTick(w, F)
   if (F.dense === 0) sweepReaches(w, F)
   // the next tick of the finer spacing after now: the one after this tick, or after now when the solve runs
   // between ticks (one a command asked for)
   let next = (1 << h) * (F.nextTick - 1) + 1
-  while (gridInstant(w.config.CONTACT_TICK, F.halvings, next) <= w.time) next++
+  for (;;) {
+    tickInstant(w, F.halvings, next)
+    if (instantOut[0]! > w.time) break
+    next++
+  }
   F.nextTick = next
   // a solve at a window's start: the window ends at that tick at the latest, or on it when the window would
   // end a few ulps short of it (TICK_SNAP, as a step does at a tick); src/schedule.ts solves a window that
   // ends on the next tick
-  const at = gridInstant(w.config.CONTACT_TICK, F.halvings, next)
+  const at = instantOut[0]!
   if (at <= w.tickEnd || nearTick(at, w.tickEnd, w.tickEnd - w.time)) w.tickEnd = at
 }
 
@@ -305,7 +323,10 @@ function meetsAt(F: FixedContactState, a: number, b: number, o: number): boolean
   return dx * dx + dy * dy < s * s
 }
 
-/** CONTACT_TICK halved h times (exact: a power of two). */
-function tickOf(w: BallWorld, h: number): number {
-  return w.config.CONTACT_TICK / (1 << h)
+/**
+ * F.tick: CONTACT_TICK halved F.halvings times (exact: a power of two), written here, not returned (V8 boxes
+ * a returned double).
+ */
+function setTick(w: BallWorld, F: FixedContactState): void {
+  F.tick = w.config.CONTACT_TICK / (1 << F.halvings)
 }

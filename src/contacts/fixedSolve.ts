@@ -63,12 +63,12 @@ let calls = 0
  * (with fresh 0): the pairs below it are those of the call before, in the same tick, with the positions
  * and velocities it left (a widening round in between): their stamps are kept (src/contacts/fixedCalls.ts).
  */
-export function solveVelocities(w: BallWorld, F: FixedContactState, t: number, iterations: number, fresh = 0, old = 0): boolean {
-  S[S_T] = t
+export function solveVelocities(w: BallWorld, F: FixedContactState, iterations: number, fresh = 0, old = 0): boolean {
+  S[S_T] = w.time
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
   S[S_LIMIT] = w.config.CONTACT_SPEED_LIMIT
-  S[S_CLOCK] = clockTick(w, t)
+  S[S_CLOCK] = clockTick(w)
   reserveStamps(F)
   if (pumpedIn.length < F.n) pumpedIn = grownTo(pumpedIn, 2 * F.n)
   const fromN = lastCallN()

@@ -37,7 +37,7 @@ export function travelApplies(w: BallWorld): boolean {
  */
 export function travelHalvings(F: FixedContactState, levels: number): number {
   if (levels <= 0 || !anyFast(F)) return 0
-  const paired = countNeeds(F, F.tick, levels)
+  const paired = countNeeds(F, 1, levels)
   if (paired === 0) return 0
   let over = paired
   for (let h = 0; h < levels; h++) {
@@ -82,16 +82,18 @@ export function ticksHalvedForTravel(): number {
  */
 export function holdsForTravel(F: FixedContactState, most: number): boolean {
   if (F.halvings === 0 || F.halvings > most) return false
-  const paired = countNeeds(F, 2 * F.tick, 0)
+  const paired = countNeeds(F, 2, 0)
   return paired > 0 && needAt[1]! > 0.5 * TRAVEL_SHARE * paired
 }
 
 /**
  * Per packed candidate with a pair: the halvings (up to levels + 1) its nearest partner needs for the pair to
- * close at most TRAVEL_PER_TICK · S in a tick at `tick` halved that often, counted into needAt. Returns the
- * candidates with a pair.
+ * close at most TRAVEL_PER_TICK · S in a tick at `times` F.tick (1, or 2: the coarser spacing) halved that
+ * often, counted into needAt. Returns the candidates with a pair. (A whole number crosses the call, not the
+ * tick: V8 boxes a double passed to a call it does not inline.)
  */
-function countNeeds(F: FixedContactState, tick: number, levels: number): number {
+function countNeeds(F: FixedContactState, times: number, levels: number): number {
+  const tick = times * F.tick
   const n = F.n
   if (nearest.length < n) {
     nearest = new Float64Array(2 * n)

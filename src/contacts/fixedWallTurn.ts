@@ -40,9 +40,9 @@ let turnedVy = new Float64Array(64)
  * would meet within the tick at that velocity (on straight lines, the swept test) or on its way back from
  * the wall (meetsAfterWall), or its partner is such a candidate too (both reach the wall within the tick:
  * the first back would meet the other on its way in, between the ticks): those keep the turn. Reports the
- * kept turns' 'wall' events at t.
+ * kept turns' 'wall' events at the tick.
  */
-export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): void {
+export function keepWallTurns(w: BallWorld, F: FixedContactState): void {
   const B = w.Ball
   // grown before the loop: grown within it, it dropped the turns already kept there (which then read 0, and
   // depended on the worlds stepped before in the process)
@@ -88,7 +88,7 @@ export function keepWallTurns(w: BallWorld, F: FixedContactState, t: number): vo
     }
     if ((c & (WALL_TURNED | WALL_DUE | WALL_REPORTED)) === (WALL_TURNED | WALL_DUE)) {
       const ev = appendEvent(w.events, EventType.Wall, F.id[i]!, 0, false)
-      w.events.time[ev] = t
+      w.events.time[ev] = w.time
       F.changed[i] = c | WALL_REPORTED
     }
   }
@@ -113,8 +113,10 @@ function meetsAfterWall(F: FixedContactState, a: number, b: number): boolean {
   const r = F.r[a]!
   let vx = F.vx[a]!
   let vy = F.vy[a]!
-  const hitX = vx < 0 ? (walls.minX + r - F.x[a]!) / vx : vx > 0 ? (walls.maxX - r - F.x[a]!) / vx : Infinity
-  const hitY = vy < 0 ? (walls.minY + r - F.y[a]!) / vy : vy > 0 ? (walls.maxY - r - F.y[a]!) / vy : Infinity
+  // Infinity written 1 / 0: the global, read in a branch V8 has not seen taken, is a generic load, and the
+  // doubles it merges with were boxed at every call
+  const hitX = vx < 0 ? (walls.minX + r - F.x[a]!) / vx : vx > 0 ? (walls.maxX - r - F.x[a]!) / vx : 1 / 0
+  const hitY = vy < 0 ? (walls.minY + r - F.y[a]!) / vy : vy > 0 ? (walls.maxY - r - F.y[a]!) / vy : 1 / 0
   const tw = Math.max(0, Math.min(hitX, hitY))
   if (!(tw < F.tick)) return false
   // where a meets the wall, and its velocity back from it (both axes at a corner)

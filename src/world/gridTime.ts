@@ -7,11 +7,26 @@
 // the 1/N grid, 23 steps of 1/60 s read 0.3833333333333333, an ulp short of 23/60, and a game comparing the
 // clock with 23 / 60 fired a step late at 60 Hz and not at 240 Hz.
 
+import type { BallWorld } from './createWorld.js'
+
 /** N when `tick` is the double nearest 1/N for a whole N (up to 2^30), else 0. */
 function wholeRate(tick: number): number {
   const n = Math.round(1 / tick)
   return n >= 1 && n <= 0x40000000 && 1 / n === tick ? n : 0
 }
+
+/**
+ * gridInstant(CONTACT_TICK, h, k) into instantOut[0]: for the fixed tick's clock, at every tick. Indices in,
+ * the double out through a slot: V8 boxes a double passed to or returned from a call it does not inline.
+ */
+export function tickInstant(w: BallWorld, h: number, k: number): void {
+  const tick = w.config.CONTACT_TICK
+  const n = wholeRate(tick)
+  instantOut[0] = n > 0 ? k / (n * (1 << h)) : k * (tick / (1 << h))
+}
+
+/** tickInstant's answer */
+export const instantOut = new Float64Array(1)
 
 /** The k-th instant of the grid of spacing `tick` / 2^h, `tick` being CONTACT_TICK (see above). */
 export function gridInstant(tick: number, h: number, k: number): number {
