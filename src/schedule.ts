@@ -111,9 +111,15 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
   }
 }
 
+/** runPasses' step end (see there) */
+const stepEnd = new Float64Array(1)
+
 function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   const F = world.fixed
-  const end = clockEnd(world, world.time + dt, dt)
+  // the end read back from a slot is a double to V8; as clockEnd returns it, an object, and the window's
+  // stop, the tick or the end, was boxed at every tick
+  stepEnd[0] = clockEnd(world, world.time + dt, dt)
+  const end = stepEnd[0]!
   if (F === null) {
     if (world.collide === null) {
       world.tickEnd = end

@@ -41,6 +41,13 @@ let tickFrom = 1
  */
 export const circle = new Float64Array(3)
 
+/**
+ * A widening round's reaches (src/contacts/fixedReach.ts): [0] a small ball's, the larger of half the cell
+ * and [1], the widest new reach. Slots, not arguments or returned values: V8 boxes a double passed to or
+ * returned from a call it does not inline (a heap number a round, and one a widened ball).
+ */
+export const roundReach = new Float64Array(2)
+
 /** A new contact tick: no ball has a capsule. */
 export function beginWidening(): void {
   tickFrom = round + 1

@@ -11,6 +11,7 @@ import { MAX_TICK_CONTACTS, PUMP_MASS_RATIO } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { contactTickKey, countContacts } from '../world/contactState.js'
+import { S_CLOCK, solveSlots } from './fixedPairs.js'
 
 /**
  * The key of the contact tick of the clock that the world's time falls in (k + 1: 0 is none). The time is
@@ -22,15 +23,17 @@ export function clockTick(w: BallWorld): number {
 
 /**
  * Whether the pair (a, b) has a ball PUMP_MASS_RATIO times lighter than the other or more that has taken
- * MAX_TICK_CONTACTS contacts or more in the contact tick of the clock `key`.
+ * MAX_TICK_CONTACTS contacts or more in the contact tick of the clock, whose key the solve keeps in
+ * solveSlots[S_CLOCK] (read here, not passed: V8 boxed it at every impulse where it did not inline this).
  */
-export function spent(F: FixedContactState, a: number, b: number, key: number): boolean {
-  if (F.im[a]! >= PUMP_MASS_RATIO * F.im[b]!) return over(F, a, key)
-  if (F.im[b]! >= PUMP_MASS_RATIO * F.im[a]!) return over(F, b, key)
+export function spent(F: FixedContactState, a: number, b: number): boolean {
+  if (F.im[a]! >= PUMP_MASS_RATIO * F.im[b]!) return over(F, a)
+  if (F.im[b]! >= PUMP_MASS_RATIO * F.im[a]!) return over(F, b)
   return false
 }
 
-function over(F: FixedContactState, i: number, key: number): boolean {
+function over(F: FixedContactState, i: number): boolean {
+  const key = solveSlots[S_CLOCK]!
   const eid = F.id[i]!
   return F.rest.tickContactsAt[eid] === key && F.rest.tickContacts[eid]! >= MAX_TICK_CONTACTS
 }

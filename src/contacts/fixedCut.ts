@@ -12,7 +12,7 @@
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { box } from './fixedDense.js'
-import { bounds, covers, cutAt, hasCapsule, pathLength, segmentBounds, shareAlong } from './fixedCapsule.js'
+import { bounds, covers, cutAt, hasCapsule, pathLength, roundReach, segmentBounds, shareAlong } from './fixedCapsule.js'
 import { probeAlong } from './fixedSeed.js'
 import { joinedFree, joinedList } from './fixedNear.js'
 
@@ -32,7 +32,8 @@ let nearest = 1
  * those the widening added before `upTo`; on dense ticks the ordering grid's cells stretch by stretch
  * along the path, up to the first ball met) and among the resting balls along its path.
  */
-export function cutCapsule(w: BallWorld, F: FixedContactState, g: number, peFrom: number, peTo: number, upTo: number, smallReach: number): void {
+export function cutCapsule(w: BallWorld, F: FixedContactState, g: number, peFrom: number, peTo: number, upTo: number): void {
+  const smallReach = roundReach[0]!
   nearest = 1
   for (let t = peFrom; t < peTo; t++) probe(F, g, F.packAt[F.pe2[t]!]!)
   for (let m = 0; m < F.bigCount; m++) probe(F, g, F.big[m]!)

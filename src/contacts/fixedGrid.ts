@@ -344,10 +344,12 @@ export function readWalls(w: BallWorld): void {
   const W = w.Walls
   const e = w.walls
   const open = e === 0 ? 15 : W.open[e]!
-  walls.minX = (open & WallEdge.Left) === 0 ? W.minX[e]! : -Infinity
-  walls.maxX = (open & WallEdge.Right) === 0 ? W.maxX[e]! : Infinity
-  walls.minY = (open & WallEdge.Top) === 0 ? W.minY[e]! : -Infinity
-  walls.maxY = (open & WallEdge.Bottom) === 0 ? W.maxY[e]! : Infinity
+  // ±Infinity written ±1 / 0: the global, read in a branch V8 has not seen taken (a closed box), is a generic
+  // load, and the face it merges with was boxed
+  walls.minX = (open & WallEdge.Left) === 0 ? W.minX[e]! : -1 / 0
+  walls.maxX = (open & WallEdge.Right) === 0 ? W.maxX[e]! : 1 / 0
+  walls.minY = (open & WallEdge.Top) === 0 ? W.minY[e]! : -1 / 0
+  walls.maxY = (open & WallEdge.Bottom) === 0 ? W.maxY[e]! : 1 / 0
   walls.e = e === 0 ? 0 : W.restitution[e]!
 }
 

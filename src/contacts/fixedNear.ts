@@ -18,7 +18,7 @@
 import type { FixedContactState } from '../world/fixedState.js'
 import { grownTo } from '../world/fixedState.js'
 import { TOUCH_GAP } from '../config/tolerances.js'
-import { hasCapsule, holderList, holdersNow, holderBox, nearBox } from './fixedCapsule.js'
+import { bounds, hasCapsule, holderList, holdersNow, holderBox, nearBox } from './fixedCapsule.js'
 import { packings } from './fixedOrder.js'
 
 const NEAR_CELLS = 2
@@ -39,7 +39,7 @@ let joinedUpTo = 0
 
 /** A new contact tick (after its gather): nothing listed yet. */
 export function beginNear(F: FixedContactState): void {
-  size = NEAR_CELLS * Math.max(F.gridCell, F.cell, TOUCH_GAP)
+  nearSize[0] = NEAR_CELLS * Math.max(F.gridCell, F.cell, TOUCH_GAP)
   clear(F)
 }
 
@@ -100,7 +100,8 @@ export function joinedList(): Int32Array {
 
 // The hash of the candidates with a capsule: buckets by cell (bucketHead, stamped by tick with bucketAt),
 // entries chained (entryNext) with their candidate; boxes too wide for it in `long`.
-let size = 1
+/** the hash's cell size (a slot: V8 boxes a double held in a module-level `let` at every write) */
+const nearSize = new Float64Array([1])
 let buckets = 1024
 let bucketHead = new Int32Array(1024)
 let bucketAt = new Float64Array(1024)
@@ -133,6 +134,7 @@ function enter(F: FixedContactState, j: number): void {
 /** Candidate j by its box now: in the cells it spans, or in `long` (once a tick) if they are too many. */
 function place(F: FixedContactState, j: number): void {
   holderBox(F, j)
+  const size = nearSize[0]!
   const x0 = Math.floor(nearBox[0]! / size)
   const x1 = Math.floor(nearBox[1]! / size)
   const y0 = Math.floor(nearBox[2]! / size)
@@ -185,16 +187,18 @@ let seenAt = new Float64Array(256)
 let seenFor = 0
 
 /**
- * The candidates with a capsule that may meet the box in nearBox (set by the caller: what a widened
- * candidate covers), each once, into foundList(); their count, or -1 when the box spans too many cells
+ * The candidates with a capsule that may meet the box in bounds (src/contacts/fixedCapsule.ts, set by the
+ * caller: what a widened candidate covers; read there, not passed, as V8 boxes a double passed to a call it
+ * does not inline), each once, into foundList(); their count, or -1 when the box spans too many cells
  * (walk every one).
  */
-export function holdersIn(F: FixedContactState, x0: number, x1: number, y0: number, y1: number): number {
+export function holdersIn(F: FixedContactState): number {
   if (!using) return -1
-  const cx0 = Math.floor(x0 / size)
-  const cx1 = Math.floor(x1 / size)
-  const cy0 = Math.floor(y0 / size)
-  const cy1 = Math.floor(y1 / size)
+  const size = nearSize[0]!
+  const cx0 = Math.floor(bounds[0]! / size)
+  const cx1 = Math.floor(bounds[1]! / size)
+  const cy0 = Math.floor(bounds[2]! / size)
+  const cy1 = Math.floor(bounds[3]! / size)
   if (!((cx1 - cx0 + 1) * (cy1 - cy0 + 1) <= NEAR_MAX_QUERY)) return -1
   if (seenAt.length < F.n) seenAt = grownTo(seenAt, 2 * F.n)
   seenFor++

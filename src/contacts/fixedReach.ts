@@ -16,7 +16,7 @@ import { box, boxRange, gridBox } from './fixedDense.js'
 import { listNearWall, markWall, walls } from './fixedGrid.js'
 import { seed, seedAlong, seedResting } from './fixedSeed.js'
 import { sortIdRange } from '../world/idLists.js'
-import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, widenAlong, withinCapsule } from './fixedCapsule.js'
+import { beyondBox, bounds, circle, coverBounds, covers, extendAlong, hasCapsule, madeNow, setTarget, holderList, holdersNow, meetsCircle, nextRound, roundReach, widenAlong, withinCapsule } from './fixedCapsule.js'
 import { boundsBox, cutCapsule } from './fixedCut.js'
 import { roundCandidates, roundList } from './fixedRounds.js'
 import { enterWidened, foundList, holdersIn, joinedFree, joinedList, pairedBefore, pairedBeforeUnpacked } from './fixedNear.js'
@@ -26,19 +26,21 @@ import { QR, QX, QY, queried, queryBox } from './fixedSweep.js'
 /** Widens the reach of the candidates the last round sped up and pairs them again; false when none did. */
 export function widenReach(w: BallWorld, F: FixedContactState): boolean {
   nextRound(F.x.length)
-  const widest = widenHits(F)
+  widenHits(F)
   if (F.widenedCount === 0) return false
-  const smallReach = Math.max(F.cell / 2, widest)
+  // through a slot, as the calls below read it (V8 boxes a double passed to a call it does not inline)
+  roundReach[0] = Math.max(F.cell / 2, roundReach[1]!)
+  const smallReach = roundReach[0]!
   const restFrom = F.n
   if (F.dense === 1) {
     for (let k = 0; k < F.widenedCount; k++) {
       const g = F.widened[k]!
-      if (madeNow(g)) cutCapsule(w, F, g, 0, 0, restFrom, smallReach)
+      if (madeNow(g)) cutCapsule(w, F, g, 0, 0, restFrom)
     }
     for (let k = 0; k < F.widenedCount; k++) {
       const g = F.widened[k]!
       if (hasCapsule(g)) {
-        pairNear(F, g, 0, 0, restFrom, smallReach)
+        pairNear(F, g, 0, 0, restFrom)
         pushPartners(F, g)
       } else {
         boxRange[0] = F.wide[g]! + smallReach
@@ -49,7 +51,7 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
       seedFrom(w, F, g)
     }
     addResting(w, F, restFrom)
-  } else widenSwept(w, F, smallReach, widest)
+  } else widenSwept(w, F)
   pairHolders(F)
   for (let k = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
@@ -85,10 +87,10 @@ let partnerCount = 0
  * balls with a capsule (a capsule reaches far from its ball: those only through their list, with a widened
  * one from the lower id).
  */
-function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number, upTo: number, smallReach: number): void {
+function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number, upTo: number): void {
   partnerCount = 0
   if (F.dense === 1) {
-    coverBounds(F, g, smallReach)
+    coverBounds(F, g, roundReach[0]!)
     if (boundsBox(F)) {
       for (let gy = box[2]!; gy <= box[3]!; gy++) {
         for (let q = F.start[gy * F.cols + box[0]!]!, e = F.start[gy * F.cols + box[1]! + 1]!; q < e; q++) offer(F, g, F.si[q]!)
@@ -101,7 +103,7 @@ function pairNear(F: FixedContactState, g: number, peFrom: number, peTo: number,
   // the resting balls the rounds added and those with a capsule, where they can be (fixedNear.ts)
   for (let k = 0, free = joinedFree(F, upTo), jl = joinedList(); k < free; k++) offer(F, g, jl[k]!)
   setTarget(F, g)
-  const near = holdersIn(F, bounds[0]!, bounds[1]!, bounds[2]!, bounds[3]!)
+  const near = holdersIn(F)
   const list = near < 0 ? holderList() : foundList()
   for (let h = 0, count = near < 0 ? holdersNow() : near; h < count; h++) {
     const j = list[h]!
@@ -181,8 +183,8 @@ function markSwept(F: FixedContactState, g: number): void {
   listNearWall(F, g)
 }
 
-/** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); returns the widest new reach. */
-function widenHits(F: FixedContactState): number {
+/** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); the widest new reach into roundReach[1]. */
+function widenHits(F: FixedContactState): void {
   const tick = F.tick
   F.widenedCount = 0
   let widest = 0
@@ -206,7 +208,7 @@ function widenHits(F: FixedContactState): number {
     F.widened[F.widenedCount++] = i
     if (wide > widest) widest = wide
   }
-  return widest
+  roundReach[1] = widest
 }
 
 /**
@@ -214,9 +216,10 @@ function widenHits(F: FixedContactState): number {
  * in the ordering grid's cells within its reach (packed first if they were not), by place; the big ones;
  * the resting balls now in its reach.
  */
-function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, widest: number): void {
+function widenSwept(w: BallWorld, F: FixedContactState): void {
+  const widest = roundReach[1]!
   if (widest > F.reachMax) F.reachMax = widest
-  gridPartners(w, F, smallReach)
+  gridPartners(w, F)
   reserveSort(F, F.peCount)
   const restFrom = F.n
   // every capsule cut before any is paired (pairNear tests the capsules of the others)
@@ -224,7 +227,7 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
     const from = t
     for (; t < F.peCount && F.pe1[t] === k; t++);
     const g = F.widened[k]!
-    if (madeNow(g)) cutCapsule(w, F, g, from, t, restFrom, smallReach)
+    if (madeNow(g)) cutCapsule(w, F, g, from, t, restFrom)
   }
   for (let k = 0, t = 0; k < F.widenedCount; k++) {
     const g = F.widened[k]!
@@ -233,7 +236,7 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
       // with a capsule: those gridPartners listed (packed now) and the rest where they can be, by id
       const from = t
       for (; t < F.peCount && F.pe1[t] === k; t++);
-      pairNear(F, g, from, t, restFrom, smallReach)
+      pairNear(F, g, from, t, restFrom)
       pushPartners(F, g)
       seedFrom(w, F, g)
       continue
@@ -269,7 +272,8 @@ function widenSwept(w: BallWorld, F: FixedContactState, smallReach: number, wide
  * in the ordering grid's cells within wide + smallReach of it that it now reaches and did not before, into
  * F.pe1 (k) and F.pe2 (id), in widened order; those not packed are packed first.
  */
-function gridPartners(w: BallWorld, F: FixedContactState, smallReach: number): void {
+function gridPartners(w: BallWorld, F: FixedContactState): void {
+  const smallReach = roundReach[0]!
   const B = w.Ball
   const half = F.cell / 2
   const st = F.markStamp

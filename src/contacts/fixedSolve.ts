@@ -223,7 +223,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   // and fro without end within one tick
   const hit = F.pairHit[p]!
   const visits = hit >> VISIT_SHIFT
-  const bound = approach >= settle && (visits >= RESTITUTION_VISITS || spent(F, a, b, S[S_CLOCK]!))
+  const bound = approach >= settle && (visits >= RESTITUTION_VISITS || spent(F, a, b))
   const k = (1 + (approach < settle || bound ? 0 : e)) * approach
   let j = k / (ima + imb)
   // a ball at rest that this impulse would leave slower than BALL_SETTLE_SPEED stays at rest (applyChanges),

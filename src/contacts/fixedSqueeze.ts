@@ -28,7 +28,7 @@ import { B_CROSS, B_IMH, B_IML, B_IMO, B_R1, B_R2, B_SIGMA_C, B_VX, B_VY, blk, c
 import { reserveSweeps, type FixedContactState } from '../world/fixedState.js'
 import { spent } from './fixedCount.js'
 import { largestShare, pastLimit, share, shareRows } from '../motion/speedLimit.js'
-import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_CLOCK, S_E, S_LIMIT, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
+import { buildAdjacency, meetsWithinTick, nrm, PAIR_VISIT_SHIFT, S_APPROACH, S_E, S_LIMIT, S_SEPARATE, S_SETTLE, solveSlots } from './fixedPairs.js'
 
 /**
  * The last block's numbers (slots, not boxed doubles): j₁ of the pair, j₂ of the second, its approach before,
@@ -130,8 +130,10 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   if (q < 0) {
     q = chainTo(F, l, h)
     if (q < 0) return -1
-    o = squeeze[SQ_OTHER]!
-    count = squeeze[SQ_CHAIN]!
+    // whole numbers as V8 holds them (`| 0`: a chain's length and a ball's index): read from the slots as
+    // doubles, they were boxed where passed to a call V8 does not inline (pastLimit below)
+    o = squeeze[SQ_OTHER]! | 0
+    count = squeeze[SQ_CHAIN]! | 0
   }
   // the light side as one body: its inverse mass and velocity (l's own when alone)
   let imv = iml
@@ -166,7 +168,7 @@ export function pairWithBall(F: FixedContactState, p: number, l: number, call: n
   const w2 = (vvx - F.vx[o]!) * n2x + (vvy - F.vy[o]!) * n2y
   const last = squeezeChain[count - 1]!
   // the second pair's restitution as the solve gives a pair's: none past its visits, or for a light ball past its count
-  const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, last, o, solveSlots[S_CLOCK]!)
+  const bound = F.pairHit[q]! >> PAIR_VISIT_SHIFT >= RESTITUTION_VISITS || spent(F, last, o)
   const s2 = w2 >= solveSlots[S_SETTLE]! && !bound ? solveSlots[S_E]! * w2 : 0
   const sigmaC = sigma * (n1x * n2x + n1y * n2y)
   const cross = n1x * n2y - n1y * n2x
