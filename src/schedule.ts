@@ -116,8 +116,8 @@ const stepEnd = new Float64Array(1)
 
 function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   const F = world.fixed
-  // the end read back from a slot is a double to V8; as clockEnd returns it, an object, and the window's
-  // stop, the tick or the end, was boxed at every tick
+  // read back from a slot, the end is a double to V8; as clockEnd returns it, it is an object, and the
+  // window's stop (the tick or the end) merged with it was boxed at every tick
   stepEnd[0] = clockEnd(world, world.time + dt, dt)
   const end = stepEnd[0]!
   if (F === null) {
@@ -140,7 +140,7 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
   // the next step's first pass
   for (;;) {
     // the instants through a slot, not returned, and no double passed to a call here: V8 boxes those for a
-    // call it does not inline, a dozen heap numbers a tick
+    // call it does not inline, a few heap numbers a tick
     tickInstant(world, F.halvings, F.nextTick)
     const tick = instantOut[0]!
     if (tick <= world.time) {
@@ -151,14 +151,18 @@ function runPasses(world: BallWorld, schedule: readonly ScheduleEntry[], dt: num
     // a step whose end is the tick but for rounding (a clock summed from 1/120 s steps drifts a few ulps
     // from k·(1/120)) ends at the tick, solved, and the clock is back on the ticks; else a sliver window
     // before or after the tick integrated every ball again
+    // (nearTick(tick, end, dt) written out: its three doubles were boxed at every tick)
     const gap = Math.abs(tick - end)
-    const onTick = gap <= TICK_SNAP * tick && gap < 0.5 * dt // nearTick(tick, end, dt)
+    const onTick = gap <= TICK_SNAP * tick && gap < 0.5 * dt
     const stop = onTick || tick < end ? tick : end
     // held balls leave at the ticks, the halved ones too (ticks of the world's clock, decided from its state,
     // so the same at every frame rate; k·CONTACT_TICK = (k·2^h)·(CONTACT_TICK / 2^h), the same double, is
     // among them): a window that starts on one
-    if (world.held.count > 0) tickInstant(world, F.halvings, F.nextTick - 1)
-    world.launchDue = world.held.count > 0 && world.time === instantOut[0]
+    world.launchDue = false
+    if (world.held.count > 0) {
+      tickInstant(world, F.halvings, F.nextTick - 1)
+      world.launchDue = world.time === instantOut[0]
+    }
     world.tickEnd = stop
     runWindow(world, schedule)
     F.due = false

@@ -217,6 +217,7 @@ function chooseBroadphase(F: FixedContactState): void {
     return
   }
   const area = (F.maxX - F.minX) * (F.maxY - F.minY)
+  // Infinity written 1 / 0 (the global, in a branch V8 has not seen taken, is a generic load that boxes)
   const crowd = area > 0 ? (F.full * F.cell * F.cell) / area : 1 / 0
   const share = F.pairCount / F.full
   if (F.dense === 1 && crowd < 0.25 && share < 0.25) F.denseNext = 0
