@@ -17,7 +17,9 @@ function wholeRate(tick: number): number {
 
 /**
  * gridInstant(CONTACT_TICK, h, k) into instantOut[0]: for the fixed tick's clock, at every tick. Indices in,
- * the double out through a slot: V8 boxes a double passed to or returned from a call it does not inline.
+ * the double out through a slot: V8 boxes a double passed to or returned from a call it does not inline. The
+ * division is written out here, not a call of gridInstant: inlined into runPasses, whose inlining budget
+ * is spent, this function's own calls stay calls (its call of wholeRate boxed the tick at every tick).
  */
 export function tickInstant(w: BallWorld, h: number, k: number): void {
   const tick = w.config.CONTACT_TICK
