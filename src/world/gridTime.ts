@@ -19,11 +19,13 @@ function wholeRate(tick: number): number {
  * gridInstant(CONTACT_TICK, h, k) into instantOut[0]: for the fixed tick's clock, at every tick. Indices in,
  * the double out through a slot: V8 boxes a double passed to or returned from a call it does not inline. The
  * division is written out here, not a call of gridInstant: inlined into runPasses, whose inlining budget
- * is spent, this function's own calls stay calls (its call of wholeRate boxed the tick at every tick).
+ * is spent, this function's own calls stay calls (a call of wholeRate boxed the tick at every tick), so
+ * wholeRate's test is written out too.
  */
 export function tickInstant(w: BallWorld, h: number, k: number): void {
   const tick = w.config.CONTACT_TICK
-  const n = wholeRate(tick)
+  const r = Math.round(1 / tick)
+  const n = r >= 1 && r <= 0x40000000 && 1 / r === tick ? r : 0
   instantOut[0] = n > 0 ? k / (n * (1 << h)) : k * (tick / (1 << h))
 }
 
