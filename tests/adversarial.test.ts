@@ -691,6 +691,9 @@ function property(
   // discarded, and fast-check reports the smallest counterexample so far)
   let failedAt = -1
   let firstFailure: string | null = null
+  // the first failing run's calls, before any shrink (the long version runs one that failed 'time' to its end)
+  const first: { run: [Cfg, Op[]] | null } = { run: null }
+  let toEnd: ToEnd | null = null
   try {
     fc.assert(
       fc.property(arb, ([cfg, ops]) => {
@@ -707,6 +710,7 @@ function property(
             failedAt = performance.now()
             // the run that failed first, before any shrink: its own error (the shrunk one's may differ)
             firstFailure = String(err instanceof Error ? err.message : err).split('\n')[0]!
+            first.run = [cfg, ops]
           }
           throw err
         }
@@ -721,17 +725,62 @@ function property(
       .split('\n')
       .filter((line) => !/^\s+at /.test(line))
       .join('\n')
+    // (both are set inside the property's closure: read as their declared types)
+    const slow = (firstFailure as string | null)?.startsWith('slow') === true
+    if (REPORT && first.run !== null && slow) toEnd = runToEnd(name, first.run[0], first.run[1])
     throw err
   } finally {
     console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
     if (REPORT) {
-      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: RUN_DEV_MS, ...heavy[name], firstFailure, budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], failure }
+      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: RUN_DEV_MS, ...heavy[name], firstFailure, budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], firstFailureToEnd: toEnd, failure }
       writeFileSync(REPORT, JSON.stringify(report, null, 2) + '\n')
     }
   }
 }
 
 const report: Record<string, object> = {}
+
+/** A failing run's calls stepped to their end, without the run budget (see runToEnd). */
+interface ToEnd {
+  /** stepping ms, and the same in development-machine ms at the machine's slowness measured just after */
+  ms: number
+  devMs: number
+  /** times the run budget that is */
+  overBudget: number
+  steps: number
+  /** contact ticks solved (the fixed tick), and the simulated time reached */
+  ticks: number
+  time: number
+  /** null when every call ran; else why it stopped (a step over its own budget, or a check) */
+  stopped: string | null
+}
+
+/**
+ * The long version's account of a run that failed 'time': a run over the run budget is stopped where it
+ * crosses it, so the time it is reported with is always just over the budget, however far past it the
+ * calls would go. This runs the first failing run's calls (as drawn, before any shrink) to their end, with
+ * no run budget and no check but the step budget (a step over it still stops the run: a hang), and says
+ * how long they took.
+ */
+function runToEnd(name: string, cfg: Cfg, ops: Op[]): ToEnd {
+  shrinking = false
+  const key = `${name} (to its end)`
+  let stopped: string | null = null
+  let ticks = 0
+  let time = 0
+  const t0 = performance.now()
+  try {
+    runScenario(key, cfg, ops, [], (sim) => {
+      ticks = sim.world.fixed?.ticks ?? 0
+      time = sim.time
+    }, 1 / 0)
+  } catch (err) {
+    stopped = String(err instanceof Error ? err.message : err).split('\n')[0]!
+  }
+  const ms = performance.now() - t0
+  const devMs = ms / Math.max(SLOWDOWN, slowdownNow())
+  return { ms: Math.round(ms), devMs: Math.round(devMs), overBudget: Math.round((10 * devMs) / RUN_DEV_MS) / 10, steps: seen[key]?.steps ?? 0, ticks, time, stopped }
+}
 
 // ---------------------------------------------------------------- the properties
 
