@@ -742,7 +742,10 @@ const report: Record<string, object> = {}
 
 /** A failing run's calls stepped to their end, without the run budget (see runToEnd). */
 interface ToEnd {
-  /** stepping ms, and the same in development-machine ms at the machine's slowness measured just after */
+  /**
+   * the calls' ms (their steps nearly all of it), and the same in development-machine ms at the larger of the
+   * slowness measured at the file's start and a new measure just after (the budgets' own rule: overBudget)
+   */
   ms: number
   devMs: number
   /** times the run budget that is */
