@@ -21,7 +21,9 @@ const run = spawnSync(process.platform === 'win32' ? 'npx.cmd' : 'npx', ['vitest
   encoding: 'utf8',
 })
 const seconds = (Date.now() - t0) / 1000
-let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; firstFailure?: string | null; runBudgetDevMs?: number; slowestRunsDevMs?: number[]; runsOverHalfBudget?: number; budgetRechecks?: { over: number; within: number }; firstFailureToEnd?: { ms: number; devMs: number; overBudget: number; steps: number; ticks: number; time: number; stopped: string | null } | null; failure: string | null }> = {}
+/** a failing run run again to its end (tests/adversarial.test.ts, runToEnd) */
+type ToEnd = { ms: number; devMs: number; overBudget: number; steps: number; ticks: number; time: number; stopped: string | null }
+let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; firstFailure?: string | null; runBudgetDevMs?: number; slowestRunsDevMs?: number[]; runsOverHalfBudget?: number; budgetRechecks?: { over: number; within: number }; firstFailureToEnd?: ToEnd | null; failure: string | null }> = {}
 try {
   report = JSON.parse(readFileSync(file, 'utf8'))
 } catch {
@@ -35,7 +37,7 @@ for (const [name, r] of Object.entries(report)) {
  * A run over its budget is stopped where it crosses it, so the time it fails with is always just over the
  * budget: what the same calls take to their end (tests/adversarial.test.ts, runToEnd) says how far over.
  */
-function toEnd(e: { ms: number; devMs: number; overBudget: number; steps: number; ticks: number; time: number; stopped: string | null } | null | undefined): string {
+function toEnd(e: ToEnd | null | undefined): string {
   if (!e) return ''
   const how = e.stopped === null ? `to its end (${e.steps} steps, ${e.time.toFixed(3)} s simulated, ${e.ticks} contact ticks)` : `until stopped after ${e.steps} steps: ${e.stopped}`
   return `\n      that run as drawn, run again without the run budget ${how}: ${e.ms} ms, ${e.devMs} ms dev. (${e.overBudget}× the run budget)`
