@@ -282,10 +282,13 @@ const worst: Record<string, number> = {}
  * many runs stepped more than half the run budget. Runs a shrink tries are left out.
  */
 const heavy: Record<string, { slowestRunsDevMs: number[]; runsOverHalfBudget: number }> = {}
+/** per property, the run budget its runs were judged by (RUN_DEV_MS, or a property's own: 'quiet') */
+const runBudgets: Record<string, number> = {}
 const SLOWEST_RUNS = 5
 let shrinking = false
 function noteRun(name: string, ms: number, scale: number, runDevMs: number): void {
   if (shrinking) return
+  runBudgets[name] = runDevMs
   const h = (heavy[name] ??= { slowestRunsDevMs: [], runsOverHalfBudget: 0 })
   const dev = ms / scale
   if (dev > runDevMs / 2) h.runsOverHalfBudget++
@@ -727,12 +730,12 @@ function property(
       .join('\n')
     // (both are set inside the property's closure: read as their declared types)
     const slow = (firstFailure as string | null)?.startsWith('slow') === true
-    if (REPORT && first.run !== null && slow) toEnd = runToEnd(name, first.run[0], first.run[1])
+    if (REPORT && first.run !== null && slow) toEnd = runToEnd(name, first.run[0], first.run[1], runBudgets[name] ?? RUN_DEV_MS)
     throw err
   } finally {
     console.info(`${name}: slowest step ${(worst[name] ?? 0).toFixed(1)} ms; exercised ${JSON.stringify(seen[name])}`)
     if (REPORT) {
-      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: RUN_DEV_MS, ...heavy[name], firstFailure, budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], firstFailureToEnd: toEnd, failure }
+      report[name] = { passed: failure === null, numRuns: numRuns * SCALE, seed: seed + SEED_SHIFT, slowestStepMs: worst[name] ?? 0, runBudgetDevMs: runBudgets[name] ?? RUN_DEV_MS, ...heavy[name], firstFailure, budgetScale: SLOWDOWN, budgetRechecks: rechecks[name] ?? { over: 0, within: 0 }, ...seen[name], firstFailureToEnd: toEnd, failure }
       writeFileSync(REPORT, JSON.stringify(report, null, 2) + '\n')
     }
   }
@@ -748,7 +751,7 @@ interface ToEnd {
    */
   ms: number
   devMs: number
-  /** times the run budget that is */
+  /** times the property's run budget that is */
   overBudget: number
   steps: number
   /** contact ticks solved (the fixed tick), and the simulated time reached */
@@ -765,7 +768,7 @@ interface ToEnd {
  * no run budget and no check but the step budget (a step over it still stops the run: a hang), and says
  * how long they took.
  */
-function runToEnd(name: string, cfg: Cfg, ops: Op[]): ToEnd {
+function runToEnd(name: string, cfg: Cfg, ops: Op[], runDevMs: number): ToEnd {
   shrinking = false
   const key = `${name} (to its end)`
   let stopped: string | null = null
@@ -782,7 +785,7 @@ function runToEnd(name: string, cfg: Cfg, ops: Op[]): ToEnd {
   }
   const ms = performance.now() - t0
   const devMs = ms / Math.max(SLOWDOWN, slowdownNow())
-  return { ms: Math.round(ms), devMs: Math.round(devMs), overBudget: Math.round((10 * devMs) / RUN_DEV_MS) / 10, steps: seen[key]?.steps ?? 0, ticks, time, stopped }
+  return { ms: Math.round(ms), devMs: Math.round(devMs), overBudget: Math.round((10 * devMs) / runDevMs) / 10, steps: seen[key]?.steps ?? 0, ticks, time, stopped }
 }
 
 // ---------------------------------------------------------------- the properties
