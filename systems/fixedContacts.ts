@@ -36,7 +36,7 @@ import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
 import { lastCallChanges } from '../src/contacts/fixedCalls.js'
-import { iterationsNow, lean, meterTick, skipRest, spend } from '../src/contacts/fixedBudget.js'
+import { iterationsNow, lean, meterPairs, meterTick, skipRest, spend } from '../src/contacts/fixedBudget.js'
 import { CHAIN_PAIRS_PER_BALL, CHAIN_ROUNDS_PER_CANDIDATE, DEEP_FRONTS, DEEP_ROW_FRONTS, MAX_CHAIN_ROUNDS, MAX_PASS_ROUNDS, MAX_WIDEN_ROUNDS, PASS_PAIRS_PER_BALL, PASS_PAIRS_PER_WIDENED, PROJECTION_SLOP, SMALL_TICK_BALLS } from '../src/config/tolerances.js'
 import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
@@ -155,6 +155,7 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   if (F.dense === 1) findPairsDense(F)
   else findPairs(w, F)
   const h = halveTick(w, F, atLeast)
+  meterPairs(F)
   spend(F, F.full + F.pairCount)
   tryHalvings = h
   chooseBroadphase(F)

@@ -1148,6 +1148,28 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 16 }, ops, ['finite', 'time'])
   })
 
+  // the 1,462nd sequence of 'crowds (fixed)' at 30x the long run, shrunk: 84 balls at 1e5 px/s put down among 72
+  // of mass 1e-9 and 28 specks in the closed elastic box. With no budget its steps take 19 s here (7,636 ticks
+  // for 0.67 s simulated; drawn in full, 3.1 times the run budget). Its pairs are mostly of masses 1e9 apart:
+  // the default UNLIKE_MASS_BUDGET meters their work, and its spans go lean (3.7 s, 2,664 ticks)
+  it('fixed-tick contacts, no CONTACT_WORK_BUDGET: light balls pumped by a stream at 1e5 px/s take the budget for unlike masses and step within the run budget', () => {
+    const ops = [
+      { t: 'burst', n: 69, x: -20, y: 204.27704, spread: 22, speed: 30000, mass: 1e-9, seed: 182, aim: { p: 'aim', k: 10, d: 9.7834, off: -1.1953682, a: 5.5090854 } },
+      { t: 'clearWalls' },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'burst', n: 28, x: 199.47474, y: 111.97184000000001, spread: 0, speed: 5000, radius: 0.03689775985701503, seed: 755, aim: { p: 'aim', k: 20, d: 82.67320000000001, off: -0.40546479999999996, a: 4.5559017 } },
+      { t: 'burst', n: 3, x: 350, y: 354.97928, spread: 60, speed: 100000, mass: 1e-9, seed: 344, aim: { p: 'aim', k: 43, d: 159.6168, off: -1.016145, a: 5.8142196 } },
+      { t: 'burst', n: 84, x: 258.13578, y: 56.63864000000001, spread: 0, speed: 100000, seed: 550, aim: { p: 'aim', k: 34, d: 197.74419999999998, off: -0.20111520000000005, a: 0.038493 } },
+      { t: 'addHole', x: 370, y: 310, radius: 52.37248 },
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { left: false } },
+      { t: 'step', dt: 1e-9 },
+      { t: 'addHole', x: 210, y: 190, radius: 500 },
+    ] as unknown as Op[]
+    let lean = 0
+    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0 }, ops, ['finite', 'events', 'time', 'overlap'], (sim) => (lean = sim.world.fixed!.lean))
+    expect(lean).toBeGreaterThan(1000)
+  })
+
   // exact contacts, e = 0: a ball of mass 1e-3 settled against one of mass 1,000 in a corner, which a third
   // ball's hit then nudged toward it at 8.2e-4 px/s, below the settle floor of 1e-3 px/s then: never a
   // contact, the pair sank into itself, 1.00004e-3 px deep 0.67 s after the last spawn (found at 71x the long

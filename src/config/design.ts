@@ -98,6 +98,13 @@ export interface BallPhysicsConfig {
    * scenes stay far within it; a pumped elastic crowd does not.
    */
   CONTACT_WORK_BUDGET: number
+  /**
+   * With BALL_COLLISIONS 'fixed' and CONTACT_WORK_BUDGET 0: a budget of the same kind that counts only the
+   * work of pairs whose masses are UNLIKE_MASS_RATIO (1e4) or more apart, where a light ball squeezed between
+   * heavy ones takes a number of meetings that grows with that ratio (docs/fixed-tick.md); 0 sets none.
+   * Scenes of like masses never spend it.
+   */
+  UNLIKE_MASS_BUDGET: number
   /** e between two balls, normal coefficient of restitution, [0, 1]. */
   BALL_RESTITUTION: number
   /**
@@ -167,6 +174,7 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   CONTACT_TRAVEL_HALVINGS: 4,
   CONTACT_ITERATIONS: 32,
   CONTACT_WORK_BUDGET: 0,
+  UNLIKE_MASS_BUDGET: 16,
   BALL_RESTITUTION: 0.9,
   CONTACT_SPEED_LIMIT: 2e5,
   BALL_SETTLE_SPEED: 1,
@@ -219,6 +227,7 @@ export const CONFIG_RANGES: Readonly<Record<NumericKey, Readonly<Range>>> = Obje
   CONTACT_TRAVEL_HALVINGS: Object.freeze({ min: 0, max: 10, integer: true }),
   CONTACT_ITERATIONS: Object.freeze({ min: 1, max: 64, integer: true }),
   CONTACT_WORK_BUDGET: Object.freeze({ min: 0, max: 1e6, integer: true }),
+  UNLIKE_MASS_BUDGET: Object.freeze({ min: 0, max: 1e6, integer: true }),
   BALL_RESTITUTION: Object.freeze({ min: 0, max: 1 }),
   CONTACT_SPEED_LIMIT: Object.freeze({ min: 0, max: MAX_SPEED, minOpen: true }),
   BALL_SETTLE_SPEED: Object.freeze({ min: 0, max: 1e6 }),

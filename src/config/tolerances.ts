@@ -335,6 +335,12 @@ export const GRAZE_SLIDE = 64
  * ticks are skipped.
  */
 export const MIN_WORK_BALLS = 64
+/**
+ * The ratio of two balls' masses from which their pair's work counts toward config.UNLIKE_MASS_BUDGET, the
+ * budget of a span with no CONTACT_WORK_BUDGET (src/contacts/fixedBudget.ts): a light ball between two heavy
+ * ones closing takes about π·√(M/m) meetings to turn them, 314 at this ratio.
+ */
+export const UNLIKE_MASS_RATIO = 1e4
 export const LEAN_ITERATIONS = 2
 export const LEAN_PROJECTION_BUDGET = 2
 export const LEAN_SHARE = 1

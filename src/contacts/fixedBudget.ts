@@ -1,5 +1,6 @@
 // Fixed-tick contacts: the work meter (config.BALL_COLLISIONS = 'fixed'), and the budget a game may set on it
-// (config.CONTACT_WORK_BUDGET; 0, the default, sets none). Each CONTACT_TICK span of the world's clock (the
+// (config.CONTACT_WORK_BUDGET; 0, the default, sets none, and then config.UNLIKE_MASS_BUDGET applies: below).
+// Each CONTACT_TICK span of the world's clock (the
 // ticks k·tick, tick = CONTACT_TICK / 2^halvings, with the same ⌊k / 2^halvings⌋) may then spend
 // CONTACT_WORK_BUDGET visits to every pair of its balls: CONTACT_WORK_BUDGET · n·(n − 1)/2 pair visits, n the
 // balls on the panel (moving and resting) at the span's first tick, counted as at least MIN_WORK_BALLS. The
@@ -22,17 +23,32 @@
 // row, which needs those rounds, is what a budget breaks first (docs/decisions.md §12). The meter is part of
 // the world's state (snapshots keep it) and is read only at ticks, whose times do not depend on where steps
 // end: the same ticks are lean, and the same skipped, at every frame rate.
-import { LEAN_ITERATIONS, LEAN_SHARE, MIN_WORK_BALLS } from '../config/tolerances.js'
+//
+// With no CONTACT_WORK_BUDGET a span takes UNLIKE_MASS_BUDGET (16 by default), and the meter counts of each
+// try's work only the share of its pairs whose masses are UNLIKE_MASS_RATIO apart or more. A light ball
+// squeezed between two heavy ones closing takes about π·√(M/m) meetings to turn them (M/m up to 1e18 here), and
+// the solve takes them all: 100 balls of mass 1 at 1e5 px/s among 100 of mass 1e-9 cost 30,686 sweeps in 0.1
+// s. Such crowds spend this budget and go lean; scenes of like masses, and a row struck by a heavier ball (one
+// unlike pair among many), spend none of it and are solved as with no budget, bit for bit.
+import { LEAN_ITERATIONS, LEAN_SHARE, MIN_WORK_BALLS, UNLIKE_MASS_RATIO } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 
-/** slots of F.budget: the span metered, the work spent in it, its budget, the spans whose last ticks were skipped */
+/**
+ * slots of F.budget: the span metered, the work spent in it, its budget, the spans whose last ticks were
+ * skipped; the share of a try's visits the meter counts, and 1 where the span's budget is UNLIKE_MASS_BUDGET
+ */
 const SPAN = 0
 const WORK = 1
 const LIMIT = 2
 const SKIPPED = 3
+const SHARE = 4
+const UNLIKE = 5
 
-/** At a tick's solve: a new span starts a new count, its budget from the balls on the panel now. */
+/**
+ * At a tick's solve: a new span starts a new count, its budget from the balls on the panel now: the game's
+ * CONTACT_WORK_BUDGET, or with none UNLIKE_MASS_BUDGET, which counts the work of unlike pairs only.
+ */
 export function meterTick(w: BallWorld, F: FixedContactState): void {
   const span = Math.floor((F.nextTick - 1) / (1 << F.halvings))
   const B = F.budget
@@ -40,13 +56,36 @@ export function meterTick(w: BallWorld, F: FixedContactState): void {
   B[SPAN] = span
   B[WORK] = 0
   const n = Math.max(MIN_WORK_BALLS, w.moving.count + F.rest.restCount + F.rest.bigRestCount)
-  const budget = w.config.CONTACT_WORK_BUDGET
+  const own = w.config.CONTACT_WORK_BUDGET
+  const budget = own === 0 ? w.config.UNLIKE_MASS_BUDGET : own
   B[LIMIT] = budget === 0 ? -1 : (budget * n * (n - 1)) / 2
+  B[UNLIKE] = own === 0 && budget !== 0 ? 1 : 0
+  B[SHARE] = 1 - B[UNLIKE]!
 }
 
-/** Counts `visits` pair visits (or candidates) to the span. */
+/**
+ * At a try's pairing, where the span's budget is UNLIKE_MASS_BUDGET: the share of the try's work the meter
+ * counts is that of its pairs whose masses are UNLIKE_MASS_RATIO apart or more (by the balls' own masses).
+ * A crowd of light balls pumped among heavy ones spends it; a row struck by a heavy ball, one unlike pair
+ * among many like ones, or any scene of like masses, does not.
+ */
+export function meterPairs(F: FixedContactState): void {
+  const B = F.budget
+  if (B[UNLIKE] !== 1) return
+  const pairs = F.pairCount
+  const { pairA, pairB, id, mass } = F
+  let unlike = 0
+  for (let p = 0; p < pairs; p++) {
+    const ma = mass[id[pairA[p]!]!]!
+    const mb = mass[id[pairB[p]!]!]!
+    if (ma >= UNLIKE_MASS_RATIO * mb || mb >= UNLIKE_MASS_RATIO * ma) unlike++
+  }
+  B[SHARE] = pairs === 0 ? 0 : unlike / pairs
+}
+
+/** Counts `visits` pair visits (or candidates) to the span, at the share the meter counts. */
 export function spend(F: FixedContactState, visits: number): void {
-  F.budget[WORK] += visits
+  F.budget[WORK] += visits * F.budget[SHARE]!
 }
 
 /** Whether the span has spent its budget (there is one: −1 is none): the rest of it is solved lean. */
