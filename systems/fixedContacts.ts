@@ -155,7 +155,7 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   if (F.dense === 1) findPairsDense(F)
   else findPairs(w, F)
   const h = halveTick(w, F, atLeast)
-  meterPairs(F)
+  meterPairs(w, F)
   spend(F, F.full + F.pairCount)
   tryHalvings = h
   chooseBroadphase(F)

@@ -36,14 +36,18 @@ import type { FixedContactState } from '../world/fixedState.js'
 
 /**
  * slots of F.budget: the span metered, the work spent in it, its budget, the spans whose last ticks were
- * skipped; the share of a try's visits the meter counts, and 1 where the span's budget is UNLIKE_MASS_BUDGET
+ * skipped, the share of a try's visits the meter counts
  */
 const SPAN = 0
 const WORK = 1
 const LIMIT = 2
 const SKIPPED = 3
 const SHARE = 4
-const UNLIKE = 5
+
+/** Whether the spans' budget is UNLIKE_MASS_BUDGET: the game set no CONTACT_WORK_BUDGET (the config is the world's for life). */
+function unlikeBudget(w: BallWorld): boolean {
+  return w.config.CONTACT_WORK_BUDGET === 0 && w.config.UNLIKE_MASS_BUDGET !== 0
+}
 
 /**
  * At a tick's solve: a new span starts a new count, its budget from the balls on the panel now: the game's
@@ -56,11 +60,10 @@ export function meterTick(w: BallWorld, F: FixedContactState): void {
   B[SPAN] = span
   B[WORK] = 0
   const n = Math.max(MIN_WORK_BALLS, w.moving.count + F.rest.restCount + F.rest.bigRestCount)
-  const own = w.config.CONTACT_WORK_BUDGET
-  const budget = own === 0 ? w.config.UNLIKE_MASS_BUDGET : own
+  const unlike = unlikeBudget(w)
+  const budget = unlike ? w.config.UNLIKE_MASS_BUDGET : w.config.CONTACT_WORK_BUDGET
   B[LIMIT] = budget === 0 ? -1 : (budget * n * (n - 1)) / 2
-  B[UNLIKE] = own === 0 && budget !== 0 ? 1 : 0
-  B[SHARE] = 1 - B[UNLIKE]!
+  B[SHARE] = unlike ? 0 : 1
 }
 
 /**
@@ -69,9 +72,9 @@ export function meterTick(w: BallWorld, F: FixedContactState): void {
  * A crowd of light balls pumped among heavy ones spends it; a row struck by a heavy ball, one unlike pair
  * among many like ones, or any scene of like masses, does not.
  */
-export function meterPairs(F: FixedContactState): void {
+export function meterPairs(w: BallWorld, F: FixedContactState): void {
+  if (!unlikeBudget(w)) return
   const B = F.budget
-  if (B[UNLIKE] !== 1) return
   const pairs = F.pairCount
   const { pairA, pairB, id, mass } = F
   let unlike = 0

@@ -11,10 +11,10 @@ import { sweepsRun } from '../../src/contacts/fixedCalls'
 /** A ball to put down: the i-th, with a random direction `a` and the scene's seeded generator. */
 type Put = (i: number, a: number, random: () => number) => Parameters<BallPhysics['addBall']>[0]
 
-/** n balls put down by `put` in a closed box of restitution e, from a seeded generator; no deceleration. */
-/** (budget: CONTACT_WORK_BUDGET; undefined the default, none but UNLIKE_MASS_BUDGET; 'none' neither) */
+/** CONTACT_WORK_BUDGET; undefined: the default, none but UNLIKE_MASS_BUDGET; 'none': neither */
 type Budget = number | undefined | 'none'
 
+/** n balls put down by `put` in a closed box of restitution e, from a seeded generator; no deceleration. */
 function boxed(seed0: number, e: number, width: number, height: number, n: number, budget: Budget, put: Put, travel?: number): BallPhysics {
   let seed = seed0
   const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
