@@ -1,4 +1,4 @@
-// npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts,
+// npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts, pairing,
 // contact-accuracy, first-contact, passes, piles, rows, horizon, the adversarial suite's long version, resting, recycling, dense, solver, then
 // the physical reference's fidelity against cost, the independent model's map and the tick-sampled methods'
 // accuracy), then
@@ -24,6 +24,7 @@ const benches: [string, string[]][] = [
   ['bench/scale.ts', quick ? ['--max', '100000'] : []],
   ['bench/peers.ts', []],
   ['bench/contacts.ts', []],
+  ['bench/pairing.ts', []],
   ['bench/contactAccuracy.ts', quick ? ['--seeds', '8'] : []],
   ['bench/firstContact.ts', quick ? ['--scenes', '1000'] : []],
   ['bench/passes.ts', quick ? ['--scenes', '200'] : []],

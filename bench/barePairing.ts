@@ -11,9 +11,10 @@ import { BallMode } from '../components/Ball'
 import { TOUCH_GAP } from '../src/config/tolerances'
 import type { BallPhysics } from '../src/index'
 
-/** The moving balls after each step of a run (position, velocity, radius), packed per step. */
+/** The moving balls after each step of a run (entity id, position, velocity, radius), packed per step. */
 export interface Frame {
   n: number
+  id: Int32Array
   x: Float64Array
   y: Float64Array
   vx: Float64Array
@@ -31,11 +32,12 @@ export function recordFrames(sim: BallPhysics, steps: number, dt: number): Frame
     w.events.count = 0
     const ids = w.moving.dense
     const c = w.moving.count
-    const f: Frame = { n: 0, x: new Float64Array(c), y: new Float64Array(c), vx: new Float64Array(c), vy: new Float64Array(c), r: new Float64Array(c) }
+    const f: Frame = { n: 0, id: new Int32Array(c), x: new Float64Array(c), y: new Float64Array(c), vx: new Float64Array(c), vy: new Float64Array(c), r: new Float64Array(c) }
     for (let i = 0; i < c; i++) {
       const e = ids[i]!
       const m = B.mode[e]
       if (B.live[e] !== 1 || (m !== BallMode.Rolling && m !== BallMode.RimRoll)) continue
+      f.id[f.n] = e
       f.x[f.n] = B.x[e]!
       f.y[f.n] = B.y[e]!
       f.vx[f.n] = B.vx[e]!
@@ -55,38 +57,57 @@ const S = {
   sx: new Float64Array(0),
   sy: new Float64Array(0),
   sr: new Float64Array(0),
+  so: new Int32Array(0),
   head: new Int32Array(0),
+}
+
+/** Where cellPairs lists the pairs it finds (slots of the frame), when asked to. */
+export interface PairSink {
+  push(a: number, b: number): void
 }
 
 /** Pairs within reach among frame f's balls at tick length `tick`. */
 export function pairFrame(f: Frame, tick: number): number {
   const n = f.n
   if (n < 2) return 0
-  if (S.reach.length < n) {
-    S.reach = new Float64Array(n)
+  if (S.reach.length < n) S.reach = new Float64Array(n)
+  const reach = S.reach
+  for (let i = 0; i < n; i++) {
+    const vx = f.vx[i]!
+    const vy = f.vy[i]!
+    reach[i] = f.r[i]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
+  }
+  return cellPairs(n, f.x, f.y, reach, null)
+}
+
+/**
+ * The grid's pairs: how many of the n discs (centre x[i], y[i], radius rad[i]) overlap, each pair tested
+ * once through the cells; with a sink, each such pair (a, b) of slots is also pushed to it.
+ */
+export function cellPairs(n: number, x: Float64Array, y: Float64Array, rad: Float64Array, sink: PairSink | null): number {
+  if (n < 2) return 0
+  if (S.cell.length < n) {
     S.cell = new Int32Array(n)
     S.sx = new Float64Array(n)
     S.sy = new Float64Array(n)
     S.sr = new Float64Array(n)
+    S.so = new Int32Array(n)
   }
-  const { reach, cell, sx, sy, sr } = S
+  const { cell, sx, sy, sr, so } = S
   let max = 0
   let minX = Infinity
   let minY = Infinity
   let maxX = -Infinity
   let maxY = -Infinity
   for (let i = 0; i < n; i++) {
-    const vx = f.vx[i]!
-    const vy = f.vy[i]!
-    const rr = f.r[i]! + Math.sqrt(vx * vx + vy * vy) * tick + TOUCH_GAP
-    reach[i] = rr
+    const rr = rad[i]!
     if (rr > max) max = rr
-    const x = f.x[i]!
-    const y = f.y[i]!
-    if (x < minX) minX = x
-    if (x > maxX) maxX = x
-    if (y < minY) minY = y
-    if (y > maxY) maxY = y
+    const xi = x[i]!
+    const yi = y[i]!
+    if (xi < minX) minX = xi
+    if (xi > maxX) maxX = xi
+    if (yi < minY) minY = yi
+    if (yi > maxY) maxY = yi
   }
   let size = 2 * max
   let cols = Math.floor((maxX - minX) / size) + 1
@@ -102,7 +123,7 @@ export function pairFrame(f: Frame, tick: number): number {
   head.fill(0, 0, cells + 1)
   const inv = 1 / size
   for (let i = 0; i < n; i++) {
-    const c = Math.floor((f.y[i]! - minY) * inv) * cols + Math.floor((f.x[i]! - minX) * inv)
+    const c = Math.floor((y[i]! - minY) * inv) * cols + Math.floor((x[i]! - minX) * inv)
     cell[i] = c
     head[c + 1]!++
   }
@@ -110,9 +131,10 @@ export function pairFrame(f: Frame, tick: number): number {
   // scatter in cell order; head[c] becomes the end of cell c (its start: head[c − 1], or 0)
   for (let i = 0; i < n; i++) {
     const o = head[cell[i]!]!++
-    sx[o] = f.x[i]!
-    sy[o] = f.y[i]!
-    sr[o] = reach[i]!
+    sx[o] = x[i]!
+    sy[o] = y[i]!
+    sr[o] = rad[i]!
+    so[o] = i
   }
   let found = 0
   for (let c = 0; c < cells; c++) {
@@ -128,22 +150,22 @@ export function pairFrame(f: Frame, tick: number): number {
     const b0 = below ? head[c + cols - (cx > 0 ? 2 : 1)]! : 0
     const b1 = below ? head[c + cols + (right ? 1 : 0)]! : 0
     for (let a = s0; a < e0; a++) {
-      const x = sx[a]!
-      const y = sy[a]!
-      const ra = sr[a]!
-      for (let b = a + 1; b < e0; b++) found += within(x, y, ra, sx[b]!, sy[b]!, sr[b]!)
-      for (let b = r0; b < r1; b++) found += within(x, y, ra, sx[b]!, sy[b]!, sr[b]!)
-      for (let b = b0; b < b1; b++) found += within(x, y, ra, sx[b]!, sy[b]!, sr[b]!)
+      for (let b = a + 1; b < e0; b++) found += within(sx, sy, sr, so, a, b, sink)
+      for (let b = r0; b < r1; b++) found += within(sx, sy, sr, so, a, b, sink)
+      for (let b = b0; b < b1; b++) found += within(sx, sy, sr, so, a, b, sink)
     }
   }
   return found
 }
 
-function within(x: number, y: number, r: number, xb: number, yb: number, rb: number): number {
-  const dx = xb - x
-  const dy = yb - y
-  const s = r + rb
-  return dx * dx + dy * dy < s * s ? 1 : 0
+/** Whether the discs at places a and b of the cell order overlap (and if so, pushed to the sink). */
+function within(sx: Float64Array, sy: Float64Array, sr: Float64Array, so: Int32Array, a: number, b: number, sink: PairSink | null): number {
+  const dx = sx[b]! - sx[a]!
+  const dy = sy[b]! - sy[a]!
+  const s = sr[a]! + sr[b]!
+  if (dx * dx + dy * dy >= s * s) return 0
+  if (sink !== null) sink.push(so[a]!, so[b]!)
+  return 1
 }
 
 /**

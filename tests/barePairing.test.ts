@@ -4,13 +4,16 @@
 import { describe, expect, it } from 'vitest'
 import fc from 'fast-check'
 import { pairFrame, recordFrames, type Frame } from '../bench/barePairing'
+import { skinPerBall, skinRebuild, type SkinList } from '../bench/skinPairing'
+import { oursScene, panel } from '../bench/contactScenes'
 import { TOUCH_GAP } from '../src/config/tolerances'
 import { DEFAULT_PANEL, createBallPhysics } from '../src/index'
 
 function frameOf(balls: readonly { x: number; y: number; vx: number; vy: number; r: number }[]): Frame {
   const n = balls.length
-  const f: Frame = { n, x: new Float64Array(n), y: new Float64Array(n), vx: new Float64Array(n), vy: new Float64Array(n), r: new Float64Array(n) }
+  const f: Frame = { n, id: new Int32Array(n), x: new Float64Array(n), y: new Float64Array(n), vx: new Float64Array(n), vy: new Float64Array(n), r: new Float64Array(n) }
   balls.forEach((b, i) => {
+    f.id[i] = i + 1
     f.x[i] = b.x
     f.y[i] = b.y
     f.vx[i] = b.vx
@@ -79,5 +82,70 @@ describe('bare pairing loop (contacts benchmark)', () => {
     const last = frames[59]!
     expect(last.n).toBeLessThanOrEqual(30)
     expect(everyPair(frames[0]!, 1 / 120)).toBe(pairFrame(frames[0]!, 1 / 120))
+  })
+
+  // the neighbour lists set beside the grid (bench/skinPairing.ts) must count its pairs at every frame
+  const lists: [string, (K: number) => SkinList][] = [
+    ['rebuild', (K) => skinRebuild(K, 1 / 120)],
+    ['per ball', (K) => skinPerBall(K, 1 / 120)],
+    ['per ball, fine cells', (K) => skinPerBall(K, 1 / 120, 2)],
+  ]
+
+  it('neighbour lists count the pairs the grid counts at every frame of a recorded panel burst', () => {
+    const frames = recordFrames(oursScene(panel(200), 'fixed', 1 / 120), 90, 1 / 120)
+    const pairs = frames.map((f) => pairFrame(f, 1 / 120))
+    expect(pairs.reduce((a, b) => a + b, 0)).toBeGreaterThan(100)
+    for (const [name, make] of lists) {
+      for (const K of [1, 3, 8]) {
+        const L = make(K)
+        expect(frames.map((f) => L.frame(f)), `${name}, K ${K}`).toEqual(pairs)
+        // a skin of K ticks is renewed at most every tick and, on average, far less often than that
+        expect(L.entries(), `${name}, K ${K}`).toBeGreaterThanOrEqual(frames[0]!.n)
+      }
+    }
+  })
+
+  it('neighbour lists count the pairs the grid counts when balls jump, turn, leave and come back', () => {
+    // balls on random walks: each tick a ball may take a kick (up to 3,000 px/s), jump (a teleport the
+    // list sees only as travel), or be away (captured or resting) and come back later
+    const walk = fc.record({
+      n: fc.integer({ min: 2, max: 30 }),
+      ticks: fc.integer({ min: 2, max: 25 }),
+      seed: fc.integer({ min: 1, max: 2 ** 31 - 2 }),
+      K: fc.integer({ min: 1, max: 6 }),
+    })
+    fc.assert(
+      fc.property(walk, ({ n, ticks, seed, K }) => {
+        let s = seed
+        const rnd = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+        const x = Float64Array.from({ length: n }, () => 300 * rnd())
+        const y = Float64Array.from({ length: n }, () => 300 * rnd())
+        const vx = Float64Array.from({ length: n }, () => 1200 * (rnd() - 0.5))
+        const vy = Float64Array.from({ length: n }, () => 1200 * (rnd() - 0.5))
+        const r = Float64Array.from({ length: n }, () => 2 + 14 * rnd())
+        const made = lists.map(([, make]) => make(K))
+        for (let t = 0; t < ticks; t++) {
+          const here = []
+          for (let i = 0; i < n; i++) {
+            const u = rnd()
+            if (u < 0.1) {
+              vx[i] = 6000 * (rnd() - 0.5)
+              vy[i] = 6000 * (rnd() - 0.5)
+            } else if (u < 0.15) {
+              x[i] = 300 * rnd()
+              y[i] = 300 * rnd()
+            }
+            x[i]! += vx[i]! / 120
+            y[i]! += vy[i]! / 120
+            if (rnd() > 0.15) here.push({ x: x[i]!, y: y[i]!, vx: vx[i]!, vy: vy[i]!, r: r[i]!, id: 3 * i + 1 })
+          }
+          const f = frameOf(here)
+          here.forEach((b, k) => (f.id[k] = b.id))
+          const want = everyPair(f, 1 / 120)
+          for (const L of made) expect(L.frame(f)).toBe(want)
+        }
+      }),
+      { numRuns: 200, seed: 11 },
+    )
   })
 })
