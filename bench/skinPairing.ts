@@ -8,7 +8,7 @@
 // a listed pair, because |p0_a − p0_b| ≤ |p_a − p_b| + |p_a − p0_a| + |p_b − p0_b|. The tick then tests
 // the listed pairs only.
 //   rebuild: the whole list is built again (the grid of bench/barePairing.ts over the R's) when any ball
-//            has spent its skin or is new;
+//            has spent its skin, is new, or was away when the list was last built;
 //   per ball: a ball that has spent its skin (or is new, or back after a step away) alone gets a new entry
 //            and is queried against the entries of the rest through a hashed grid kept from tick to tick;
 //            its old pairs drop out of the list when the tick's pass meets them.
