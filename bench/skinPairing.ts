@@ -24,6 +24,14 @@ export interface SkinList {
   entries(): number
 }
 
+/** A copy of a in a new array of length n, the rest filled with `fill`. */
+function grown<T extends Float64Array | Int32Array>(a: T, n: number, fill = 0): T {
+  const m = new (a.constructor as new (n: number) => T)(n)
+  if (fill !== 0) m.fill(fill)
+  m.set(a)
+  return m
+}
+
 /** Per-entity scratch shared by both lists, grown to the largest id seen. */
 class Entries {
   x0 = new Float64Array(0)
@@ -39,16 +47,12 @@ class Entries {
     for (let i = 0; i < f.n; i++) if (f.id[i]! > top) top = f.id[i]!
     if (top < this.x0.length) return
     const n = 2 * top + 64
-    const grow = <T extends Float64Array | Int32Array>(a: T, m: T): T => {
-      m.set(a)
-      return m
-    }
-    this.x0 = grow(this.x0, new Float64Array(n))
-    this.y0 = grow(this.y0, new Float64Array(n))
-    this.R = grow(this.R, new Float64Array(n))
-    this.skin = grow(this.skin, new Float64Array(n))
-    this.seen = grow(this.seen, new Int32Array(n))
-    this.slot = grow(this.slot, new Int32Array(n))
+    this.x0 = grown(this.x0, n)
+    this.y0 = grown(this.y0, n)
+    this.R = grown(this.R, n)
+    this.skin = grown(this.skin, n)
+    this.seen = grown(this.seen, n)
+    this.slot = grown(this.slot, n)
   }
 
   /** A new entry for the ball at slot i of f: its position now, its skin K ticks of its present speed. */
@@ -81,15 +85,11 @@ class Pairs {
 
   push(a: number, b: number, va: number, vb: number): void {
     if (this.count === this.a.length) {
-      const grow = (x: Int32Array): Int32Array => {
-        const y = new Int32Array(2 * x.length)
-        y.set(x)
-        return y
-      }
-      this.a = grow(this.a)
-      this.b = grow(this.b)
-      this.va = grow(this.va)
-      this.vb = grow(this.vb)
+      const n = 2 * this.count
+      this.a = grown(this.a, n)
+      this.b = grown(this.b, n)
+      this.va = grown(this.va, n)
+      this.vb = grown(this.vb, n)
     }
     const k = this.count++
     this.a[k] = a
@@ -187,7 +187,6 @@ export function skinPerBall(K: number, tick: number, cell = 0): SkinList {
   let prev: Int32Array = new Int32Array(0)
   let ver: Int32Array = new Int32Array(0)
   let visit: Int32Array = new Int32Array(0)
-  let away: Int32Array = new Int32Array(0)
   let size = cell
   let inv = cell > 0 ? 1 / cell : 0
   let maxR = 0
@@ -198,17 +197,11 @@ export function skinPerBall(K: number, tick: number, cell = 0): SkinList {
   const fitLinks = (): void => {
     if (bucket.length >= E.x0.length) return
     const n = E.x0.length
-    const grow = (a: Int32Array, fill: number): Int32Array => {
-      const m = new Int32Array(n).fill(fill)
-      m.set(a)
-      return m
-    }
-    bucket = grow(bucket, -1)
-    next = grow(next, -1)
-    prev = grow(prev, -1)
-    ver = grow(ver, 0)
-    visit = grow(visit, 0)
-    away = grow(away, 0)
+    bucket = grown(bucket, n, -1)
+    next = grown(next, n, -1)
+    prev = grown(prev, n, -1)
+    ver = grown(ver, n)
+    visit = grown(visit, n)
   }
   const unlink = (e: number): void => {
     const c = bucket[e]!
@@ -266,13 +259,12 @@ export function skinPerBall(K: number, tick: number, cell = 0): SkinList {
         E.seen[e] = stamp
       }
       // balls of the last tick gone from this one leave the grid; one that comes back (or is new) is out
-      // of it, missed the queries made meanwhile, and is entered again
+      // of it (no bucket), missed the queries made meanwhile, and is entered again
       if (last !== null) for (let i = 0; i < last.n; i++) if (E.seen[last.id[i]!] !== stamp) unlink(last.id[i]!)
-      for (let i = 0; i < f.n; i++) away[f.id[i]!] = bucket[f.id[i]!]! >= 0 ? 0 : 1
       last = f
       for (let i = 0; i < f.n; i++) {
         const e = f.id[i]!
-        if (away[e] === 0 && E.keeps(f, i, S.speed[i]!, tick)) continue
+        if (bucket[e]! >= 0 && E.keeps(f, i, S.speed[i]!, tick)) continue
         unlink(e)
         ver[e]!++
         E.enter(f, i, K, tick, S.speed[i]!)
