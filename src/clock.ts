@@ -7,7 +7,7 @@ import { describe, readSpec } from './check.js'
 export interface FixedStepClock {
   /** physics step, s */
   readonly stepSeconds: number
-  /** most steps run for one frame; time beyond them is dropped (and counted in `droppedSeconds`) */
+  /** most steps run for one frame; time beyond them is dropped whole (and counted in `droppedSeconds`) */
   readonly maxStepsPerFrame: number
   /** steps run by the last `advance` */
   steps: number
@@ -64,8 +64,11 @@ export function createFixedStepClock(options: FixedStepClockOptions = {}): Fixed
         n++
       }
       if (acc >= dt) {
-        clock.droppedSeconds += acc - (acc % dt)
-        acc %= dt
+        // the rest of a long frame is dropped whole, and the display restarts at the last step (alpha 0).
+        // Kept, its fraction of a step (acc % dt) read a hair under one step when the rest was a whole number
+        // of steps, as rounding makes it: the drawn frame stayed a step behind for good
+        clock.droppedSeconds += acc
+        acc = 0
       }
       clock.steps = n
       clock.alpha = acc / dt
