@@ -99,7 +99,11 @@ export function flag(field: string, value: unknown): boolean {
 const BITECS_INTERNAL = Symbol.for('bitecs_internal')
 
 /** A world made by createBallWorld (or createBallPhysics().world), not deleted by bitECS's deleteWorld. */
-export function checkWorld(caller: string, world: unknown): BallWorld {
+/**
+ * `world` as a BallWorld, checked. A world whose last step an error ended part-done (world.failed) is
+ * refused unless the caller only reads it (`reads`): its state cannot go on.
+ */
+export function checkWorld(caller: string, world: unknown, reads = false): BallWorld {
   const w = world as BallWorld | null
   if (w === null || typeof w !== 'object' || !('Ball' in w) || !('holes' in w) || !('config' in w)) {
     throw new TypeError(`${caller}: world must be a world made by createBallWorld, got ${describe(world)}`)
@@ -110,6 +114,12 @@ export function checkWorld(caller: string, world: unknown): BallWorld {
   // the simulation's stores still hold its balls, holes and walls: new ids would be handed out over them
   if (internal.entityIndex !== w.entityIndex) {
     throw new Error(`${caller}: the world was reset (bitECS resetWorld), which is not supported: bitECS forgot its balls, holes and walls but the simulation did not; make a new world (createBallWorld) instead`)
+  }
+  if (w.failed !== null && !reads) {
+    throw new Error(
+      `${caller}: the world's step at t = ${w.time} was ended part-done by an error (${w.failed}), and the world cannot go on ` +
+        '(a ball may sit at an event no system handled); read it, or restore a snapshot taken before that step into a new world',
+    )
   }
   return w
 }

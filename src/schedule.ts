@@ -96,6 +96,7 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
   if (world.stepping) {
     throw new Error('step (runSchedule): the world is already stepping (called from inside a system or an observer?); a step cannot run inside a step')
   }
+  const recorded = world.recorder === null ? 0 : world.recorder.inputs.length
   if (world.recorder !== null) record(world, ['step', dt])
   world.stepping = true
   try {
@@ -106,9 +107,19 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
     const m = world.moving
     if (world.fixed === null && m.churn * MOVING_ORDER_CHURN > m.count && m.count > MOVING_ORDER_MIN) orderMoving(world)
     runPasses(world, schedule, dt)
+  } catch (e) {
+    // the step is part-done: the world refuses to go on (src/check.ts), and a step that failed records
+    // nothing, as a command that fails does (a replay of it would run the whole step)
+    if (world.failed === null) world.failed = `the step threw ${errorText(e)}`
+    if (world.recorder !== null) world.recorder.inputs.length = recorded
+    throw e
   } finally {
     world.stepping = false
   }
+}
+
+function errorText(e: unknown): string {
+  return e instanceof Error ? `${e.name}: ${e.message}` : describe(e)
 }
 
 /** runPasses' step end (see there) */
@@ -259,12 +270,16 @@ function runWindow(world: BallWorld, schedule: readonly ScheduleEntry[]): void {
   const contacts = world.collide !== null
   let maxPasses = contacts ? perBall * (world.moving.count + 1) : perBall
   setLipBatching(contacts && world.config.RIM_MODEL !== 'tabulated' && isDefault(schedule))
+  let i = 0
   try {
     for (world.pass = 0; world.pass < maxPasses; world.pass++) {
-      for (let i = 0; i < schedule.length; i++) schedule[i]!.run(world)
+      for (i = 0; i < schedule.length; i++) schedule[i]!.run(world)
       if (world.marked.count === 0) break
       if (contacts) maxPasses = Math.max(maxPasses, perBall * (world.moving.count + 1))
     }
+  } catch (e) {
+    world.failed = `system '${schedule[i]!.name}' threw in pass ${world.pass}: ${errorText(e)}`
+    throw e
   } finally {
     setLipBatching(false)
     world.launchDue = false

@@ -235,13 +235,13 @@ export function setHeroBall(world: BallWorld, ball: number, hero = true): void {
 
 /** True for a hero ball. */
 export function isHeroBall(world: BallWorld, ball: number): boolean {
-  const w = checkWorld('isHeroBall', world)
+  const w = checkWorld('isHeroBall', world, true)
   return w.Ball.hero[checkBall(w, 'ball', ball)] === 1
 }
 
 /** A ball's state at the end of the last step (a new object). */
 export function ballState(world: BallWorld, ball: number): BallState {
-  const w = checkWorld('ballState', world)
+  const w = checkWorld('ballState', world, true)
   const b = checkBall(w, 'ball', ball)
   const B = w.Ball
   return { x: B.x[b]!, y: B.y[b]!, vx: B.vx[b]!, vy: B.vy[b]!, radius: B.radius[b]!, mode: BALL_MODE_NAMES[B.mode[b]!]! }
@@ -253,7 +253,7 @@ export function ballState(world: BallWorld, ball: number): BallState {
  * leave before it does. -1 for a ball that is not held. For a game's "your ball waits behind n balls".
  */
 export function heldAhead(world: BallWorld, ball: number): number {
-  const w = checkWorld('heldAhead', world)
+  const w = checkWorld('heldAhead', world, true)
   const b = checkBall(w, 'ball', ball)
   const B = w.Ball
   if (B.mode[b] !== BallMode.Held) return -1
@@ -265,7 +265,7 @@ export function heldAhead(world: BallWorld, ball: number): number {
 
 /** A hole's geometry and value (a new object). */
 export function holeState(world: BallWorld, hole: number): HoleState {
-  const w = checkWorld('holeState', world)
+  const w = checkWorld('holeState', world, true)
   const h = checkHole(w, 'hole', hole)
   const H = w.Hole
   return { x: H.x[h]!, y: H.y[h]!, radius: H.radius[h]!, value: H.value[h]! }
@@ -273,7 +273,7 @@ export function holeState(world: BallWorld, hole: number): HoleState {
 
 /** ids of the live balls, ascending (a new array). */
 export function listBalls(world: BallWorld): number[] {
-  const w = checkWorld('listBalls', world)
+  const w = checkWorld('listBalls', world, true)
   const out: number[] = []
   forEachBall(w, (b) => void out.push(b))
   return out
@@ -281,6 +281,6 @@ export function listBalls(world: BallWorld): number[] {
 
 /** ids of the holes, in the order they were added (a new array). */
 export function listHoles(world: BallWorld): number[] {
-  const w = checkWorld('listHoles', world)
+  const w = checkWorld('listHoles', world, true)
   return Array.from(w.holes.ids.subarray(0, w.holes.count))
 }

@@ -10,7 +10,7 @@ import { checkWorld } from './validate.js'
  * dropped (the id may already belong to a new entity).
  */
 export function drainEvents(world: BallWorld): BallEvent[] {
-  const buf = checkWorld('drainEvents', world).events
+  const buf = checkWorld('drainEvents', world, true).events
   if (buf.draining) throw new Error('drainEvents: called from a drainEventsWith callback (drain once, after it returns)')
   return drainEventBuffer(buf)
 }
@@ -24,7 +24,7 @@ export function drainEvents(world: BallWorld): BallEvent[] {
  * ball's). If `visit` throws, the drain ends there and the events not yet given to it are dropped.
  */
 export function drainEventsWith(world: BallWorld, visit: (e: EventView) => void): number {
-  const buf = checkWorld('drainEventsWith', world).events
+  const buf = checkWorld('drainEventsWith', world, true).events
   if (typeof visit !== 'function') throw new TypeError(`drainEventsWith: visit must be a function (e: EventView) => void, got ${visit === null ? 'null' : typeof visit}`)
   if (buf.draining) throw new Error('drainEventsWith: called from a drainEventsWith callback (drain once, after it returns)')
   return drainEventBufferWith(buf, visit)

@@ -56,7 +56,7 @@ export function startReplay(world: BallWorld): void {
 
 /** Stops recording and returns the replay of everything since startReplay. */
 export function takeReplay(world: BallWorld): Replay {
-  const w = checkWorld('takeReplay', world)
+  const w = checkWorld('takeReplay', world, true)
   if (w.recorder === null) throw new Error('takeReplay (stopRecording): the world is not recording; call startReplay (startRecording) first')
   const replay: Replay = {
     format: REPLAY_FORMAT,

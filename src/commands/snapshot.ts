@@ -31,8 +31,8 @@ export const SNAPSHOT_VERSION = 18
 
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 
-/** World fields kept out of the walked body (see the top of this file) */
-const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells'])
+/** World fields kept out of the walked body (see the top of this file; a failed world is not snapshotted) */
+const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells', 'failed'])
 
 /** Component membership bits, per entity */
 const BALL = 1
@@ -290,7 +290,7 @@ function apply(parent: Record<string, unknown>, key: string, v: unknown): void {
  * or format version throw a RangeError that says which, and leave the world as it was.
  */
 export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
-  const w = checkWorld('restoreWorld', world)
+  const w = checkWorld('restoreWorld', world, true)
   if (!(bytes instanceof Uint8Array)) throw new TypeError(`restore: bytes must be a Uint8Array (from snapshot()), got ${bytes === null ? 'null' : typeof bytes}`)
   if (w.stepping) throw new Error('restore: the world is in the middle of a step')
   // a recording holds the state it started from and the inputs since; a restore is neither
@@ -334,4 +334,6 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   w.rimTables.length = 0
   for (const t of tables) w.rimTables.push(t)
   for (const k of keys) apply(w as unknown as Record<string, unknown>, k, d.fields[k])
+  // (a world that failed with no entity given yet: the snapshot's state replaces its own)
+  w.failed = null
 }

@@ -86,7 +86,7 @@ export function forgetBall(world: BallWorld, eid: number): void {
 
 /** True when `eid` is a live ball of this world. */
 export function isBall(world: BallWorld, eid: number): boolean {
-  checkWorld('isBall', world)
+  checkWorld('isBall', world, true)
   return isLiveBall(world, eid)
 }
 
@@ -97,7 +97,7 @@ export function isLiveBall(world: BallWorld, eid: number): boolean {
 
 /** Calls `fn` for every live ball, in ascending id order. */
 export function forEachBall(world: BallWorld, fn: (eid: number) => void): void {
-  checkWorld('forEachBall', world)
+  checkWorld('forEachBall', world, true)
   if (typeof fn !== 'function') throw new TypeError(`forEachBall: fn must be a function (eid) => void, got ${describe(fn)}`)
   if (world.ballCount === 0) return
   const live = world.Ball.live

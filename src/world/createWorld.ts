@@ -112,6 +112,11 @@ export interface BallWorldData {
   kickAfter: Float64Array
   /** the inputs recorded for a replay while the world records (src/commands/replay.ts), else null */
   recorder: Recorder | null
+  /**
+   * Why the world stopped: set when a step was ended part-done by an error (a system threw), else null.
+   * Such a world refuses every later step and every command that would change it (src/check.ts).
+   */
+  failed: string | null
 }
 
 export type BallWorld = World<BallWorldData>
@@ -175,6 +180,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     kickStreak: new Uint8Array(capacity),
     kickAfter: new Float64Array(capacity),
     recorder: null,
+    failed: null,
   }
   return createWorld<BallWorldData>(data, entityIndex)
 }
