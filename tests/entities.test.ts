@@ -81,8 +81,12 @@ describe('balls are bitECS entities', () => {
     const w = createBallWorld()
     const added: number[] = []
     const removed: number[] = []
-    observe(w, onAdd(w.Ball), (eid: number) => void added.push(eid))
-    observe(w, onRemove(w.Ball), (eid: number) => void removed.push(eid))
+    // what the README says an observer sees: in onAdd the rows' defaults (the command places the ball
+    // after), in onRemove rows already cleared
+    const seen: string[] = []
+    const row = (eid: number) => `${w.Ball.x[eid]} ${w.Ball.y[eid]} ${w.Ball.mode[eid]} ${w.Ball.live[eid]}`
+    observe(w, onAdd(w.Ball), (eid: number) => void (added.push(eid), seen.push(`add ${row(eid)}`)))
+    observe(w, onRemove(w.Ball), (eid: number) => void (removed.push(eid), seen.push(`remove ${row(eid)}`)))
     const h = addHole(w, { x: 500, y: 500 })
     const game = addEntity(w)
     addComponent(w, game, Sprite)
@@ -91,10 +95,12 @@ describe('balls are bitECS entities', () => {
     const b = throwBall(w, { x: 0, y: 100, power: 0.5, angle: 0 })
     const c = addBall(w, { x: 50, y: 0, vx: 0, vy: 0 })
     expect(added).toEqual([a, b, c])
-    // the observer sees a ball already set up
+    expect(seen[0]).toBe(`add 0 0 ${BallMode.Out} 1`)
+    expect(ballState(w, a).vx).toBe(100)
     step(w, 1 / 60, 5)
     removeBall(w, a)
     expect(removed).toEqual([a])
+    expect(seen.at(-1)).toBe('remove 0 0 0 0')
     removeEntity(w, b)
     expect(removed).toEqual([a, b])
     removeHole(w, h)
