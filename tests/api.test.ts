@@ -1,6 +1,6 @@
 // Bad input: clear errors naming the field and its range, and the world left as it was.
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_PANEL, addPanel, createBallPhysics, createReplayPlayer, replayFromJSON, replayToJSON, type BallPhysics } from '../src/index'
+import { DEFAULT_CONFIG, DEFAULT_PANEL, addPanel, createBallPhysics, createReplayPlayer, replayFromJSON, replayToJSON, type BallPhysics } from '../src/index'
 import { settle } from './helpers'
 import { ballState, listBalls, removeBall } from '../src/ecs'
 
@@ -185,6 +185,10 @@ describe('config', () => {
     expect(v.GRAVITY).toBeCloseTo((500 * 500 * 11) / (2 * 18 * 18), 9)
     expect(() => createBallPhysics({ GRAVITY: 9000, V_SKIP_MAX: 640 })).toThrow(/GRAVITY = 9000 implies V_SKIP_MAX/)
     expect(createBallPhysics({ GRAVITY: d.GRAVITY, V_SKIP_MAX: 640 }).config.V_SKIP_MAX).toBe(640)
+    // the defaults spread with one size changed hold both: the error says how to leave one out, and that works
+    expect(() => createBallPhysics({ ...DEFAULT_CONFIG, HOLE_RADIUS: 20 })).toThrow(/spread from DEFAULT_CONFIG .* holds both: leave one out/)
+    const { GRAVITY: _g, ...rest } = DEFAULT_CONFIG
+    expect(createBallPhysics({ ...rest, HOLE_RADIUS: 20 }).config.V_SKIP_MAX).toBe(640)
   })
 
   it('the defaults are the design table', () => {

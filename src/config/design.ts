@@ -320,7 +320,8 @@ export function resolveConfig(overrides: ConfigOverrides = {}): Readonly<BallPhy
     if (Math.abs(implied - out.V_SKIP_MAX) > CONSISTENCY_TOLERANCE * out.V_SKIP_MAX) {
       throw new RangeError(
         `config.GRAVITY = ${out.GRAVITY} implies V_SKIP_MAX = ${implied}, but config.V_SKIP_MAX = ${out.V_SKIP_MAX}; ` +
-          'give one of them (the other is derived) or values with V_SKIP_MAX = HOLE_RADIUS·√(2·GRAVITY/BALL_RADIUS)',
+          'give one of them (the other is derived) or values with V_SKIP_MAX = HOLE_RADIUS·√(2·GRAVITY/BALL_RADIUS); ' +
+          'a config spread from DEFAULT_CONFIG or a world.config holds both: leave one out (const { GRAVITY, ...rest } = DEFAULT_CONFIG)',
       )
     }
   } else if (hasG) {
