@@ -98,10 +98,10 @@ export function flag(field: string, value: unknown): boolean {
 /** bitECS's key for a world's own data (a registered symbol), which its deleteWorld removes */
 const BITECS_INTERNAL = Symbol.for('bitecs_internal')
 
-/** A world made by createBallWorld (or createBallPhysics().world), not deleted by bitECS's deleteWorld. */
 /**
- * `world` as a BallWorld, checked. A world whose last step an error ended part-done (world.failed) is
- * refused unless the caller only reads it (`reads`): its state cannot go on.
+ * `world` as a BallWorld, checked: one made by createBallWorld (or createBallPhysics().world), not deleted or
+ * reset by bitECS. A world whose last step an error ended part-done (world.failed) is refused unless the
+ * caller only reads it (`reads`): its state cannot go on.
  */
 export function checkWorld(caller: string, world: unknown, reads = false): BallWorld {
   const w = world as BallWorld | null
