@@ -8,7 +8,7 @@ export type { BallSpec, BallState, HoleState, ThrowSpec } from './commands/balls
 export type { HoleSpec } from './commands/holes.js'
 export type { WallsSpec } from './commands/walls.js'
 export type { BallWorldOptions } from './world/createWorld.js'
-export { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE, MIN_OUTCOME_STEP, MIN_TABLE_RATIO } from './config/limits.js'
+export { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MAX_VALUE, MIN_MASS, MIN_OUTCOME_STEP, MIN_TABLE_RATIO } from './config/limits.js'
 export {
   CAPTURE_WINDOW_SHAPES,
   RIM_MODELS,

@@ -4,7 +4,7 @@
 import { removeEntity } from 'bitecs'
 import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../../components/Ball.js'
 import { RimMode } from '../../components/RimContact.js'
-import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED } from '../config/limits.js'
+import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MIN_MASS, MAX_SPEED } from '../config/limits.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import { sampleRimRoll } from '../motion/rimRoll.js'
 import { startAt, sampleRolling } from '../motion/rolling.js'
@@ -31,8 +31,9 @@ export interface BallSpec {
   /** the physical reference decides this ball's lip crossings (docs/physical.md); default false */
   hero?: boolean | undefined
   /**
-   * mass for ball-ball contacts, in units of a default ball, in (0, MAX_MASS]; default (radius / BALL_RADIUS)³
-   * (same density). Used only when config.BALL_COLLISIONS is 'on' or 'fixed'.
+   * mass for ball-ball contacts, in units of a default ball, in [MIN_MASS, MAX_MASS] = [1e-15, 1e9]; default
+   * (radius / BALL_RADIUS)³ (same density), taken into that range. Used only when config.BALL_COLLISIONS is 'on'
+   * or 'fixed'.
    */
   mass?: number | undefined
   /**
@@ -83,10 +84,13 @@ const QUEUES = ['back', 'front'] as const
 
 function massOf(w: BallWorld, field: string, value: unknown, radius: number): number {
   if (value === undefined) {
+    // (radius / BALL_RADIUS)³, within the accepted masses: with a small BALL_RADIUS it passed MAX_MASS (or
+    // overflowed), with a tiny radius it fell to 0
     const k = radius / w.config.BALL_RADIUS
-    return k * k * k
+    const m = k * k * k
+    return m < MIN_MASS ? MIN_MASS : m > MAX_MASS ? MAX_MASS : m
   }
-  return positive(field, value, MAX_MASS)
+  return within(field, value, MIN_MASS, MAX_MASS)
 }
 
 function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number, front: boolean): number {

@@ -12,6 +12,13 @@ export const MAX_VALUE = 1e12
 /** Largest ball mass accepted, in units of a default ball. */
 export const MAX_MASS = 1e9
 /**
+ * Smallest ball mass accepted, and the least a default mass (radius / BALL_RADIUS)³ is taken as: 1 / mass and
+ * every impulse stay finite (a mass of 5e-324 was accepted, its inverse overflowed, and the fixed tick hung or
+ * gave NaN positions; a radius of 1e-120 gave a default mass of 0). A ball of radius 1e-3 with the default
+ * BALL_RADIUS weighs 7.5e-13 by default, above it.
+ */
+export const MIN_MASS = 1e-15
+/**
  * Shortest step the throw solver and the outcome estimates simulate a throw at, s (a world's MAX_STEP or a
  * request's step): they step each throw for up to 20–30 s, so at most 300,000 steps.
  */

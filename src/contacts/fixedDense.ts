@@ -137,6 +137,11 @@ export function gridShape(F: FixedContactState, n: number): void {
   let cols = 1
   let rows = 1
   if (n > 0) {
+    // (a box that is not finite never fits: the loop below would not end. Commands keep positions and
+    // masses finite, so this is a broken invariant, said rather than hung on)
+    if (!(maxX - minX < Infinity && maxY - minY < Infinity)) {
+      throw new Error(`fixed tick: the candidates' bounding box [${minX}, ${maxX}] × [${minY}, ${maxY}] is not finite`)
+    }
     // about one ball a cell at least (more, emptier cells cost more in the sort than the tests they save)
     const even = Math.sqrt(((maxX - minX) * (maxY - minY)) / n)
     if (even > cell) cell = even

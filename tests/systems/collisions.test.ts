@@ -1,6 +1,6 @@
 import fc from 'fast-check'
 import { describe, expect, it } from 'vitest'
-import { createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
+import { MAX_MASS, MIN_MASS, createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
 import { contactOut, resolveContact } from '../../src/contacts/law'
 import { PathEvent } from '../../components/Path'
 import { SETTLE_FLOOR, SINK_DEPTH } from '../../src/config/tolerances'
@@ -88,9 +88,45 @@ describe('ball-ball contacts (opt-in)', () => {
     const sim = createBallPhysics(ON)
     const big = sim.addBall({ x: 0, y: 0, vx: 0, vy: 0, radius: 22 })
     expect(sim.world.collide!.mass[big]).toBe(8)
-    expect(() => sim.addBall({ x: 0, y: 50, vx: 0, vy: 0, mass: 0 })).toThrow(/ball\.mass must be in \(0, 1000000000\]/)
+    expect(() => sim.addBall({ x: 0, y: 50, vx: 0, vy: 0, mass: 0 })).toThrow(/ball\.mass must be in \[1e-15, 1000000000\], got 0/)
     expect(() => sim.throwBall({ x: 0, y: 50, power: 0.5, angle: 0, mass: NaN })).toThrow(/throw\.mass/)
+    // a mass whose inverse overflows was accepted: the fixed tick hung on it, or gave NaN positions
+    expect(() => sim.addBall({ x: 0, y: 50, mass: 5e-324 })).toThrow(/ball\.mass must be in \[1e-15, 1000000000\], got 5e-324/)
+    expect(() => sim.throwBall({ x: 0, y: 50, power: 0.5, angle: 0, mass: 5e-309 })).toThrow(RangeError)
     expect(sim.balls()).toEqual([big])
+  })
+
+  it('a default mass is taken into [MIN_MASS, MAX_MASS], and balls at both ends step finite in both methods (a radius of 1e-120 weighed 0 and went NaN)', () => {
+    expect(MIN_MASS).toBe(1e-15)
+    for (const mode of ['on', 'fixed'] as const) {
+      const sim = createBallPhysics({ BALL_COLLISIONS: mode })
+      const masses = mode === 'on' ? sim.world.collide!.mass : sim.world.fixed!.mass
+      const rest = sim.addBall({ x: 210, y: 300 })
+      const speck = sim.throwBall({ x: 210, y: 450, power: 0.5, angle: 0, radius: 1e-120 })
+      const light = sim.throwBall({ x: 150, y: 450, power: 0.5, angle: 0, mass: MIN_MASS })
+      sim.addBall({ x: 150, y: 300 })
+      expect([masses[speck], masses[light]], mode).toEqual([MIN_MASS, MIN_MASS])
+      const met = new Set<number>()
+      for (let k = 0; k < 120; k++) {
+        sim.step(1 / 60)
+        for (const e of sim.drainEvents()) {
+          if (e.type === 'collision') {
+            expect(Number.isFinite(e.impulse), mode).toBe(true)
+            met.add(e.ball === rest || e.other === rest ? Math.max(e.ball, e.other) : 0)
+          }
+        }
+      }
+      for (const b of sim.balls()) {
+        const s = sim.ballState(b)
+        expect([s.x, s.y, s.vx, s.vy].every(Number.isFinite), `${mode} ball ${b}`).toBe(true)
+      }
+      expect(met.has(speck), mode).toBe(true) // the speck struck the ball at rest
+      createBallPhysics({ BALL_COLLISIONS: mode }).restore(sim.snapshot())
+      // with a small BALL_RADIUS, a big ball's default mass passed MAX_MASS (1e18 here)
+      const small = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RADIUS: 0.01 })
+      const huge = small.addBall({ x: 0, y: 0, radius: 1e4 })
+      expect((mode === 'on' ? small.world.collide!.mass : small.world.fixed!.mass)[huge], mode).toBe(MAX_MASS)
+    }
   })
 
   it('config: BALL_COLLISIONS names its choices, and needs the exact method', () => {
