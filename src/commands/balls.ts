@@ -4,7 +4,7 @@
 import { removeEntity } from 'bitecs'
 import { BALL_MODE_NAMES, BallMode, type BallModeName } from '../../components/Ball.js'
 import { RimMode } from '../../components/RimContact.js'
-import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MIN_MASS, MAX_SPEED } from '../config/limits.js'
+import { MAX_COORDINATE, MAX_MASS, MAX_RADIUS, MAX_SPEED, MIN_MASS } from '../config/limits.js'
 import { launchBall, placeBall } from '../motion/ballFate.js'
 import { sampleRimRoll } from '../motion/rimRoll.js'
 import { startAt, sampleRolling } from '../motion/rolling.js'
