@@ -1,5 +1,5 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts, pairing,
-// contact-accuracy, first-contact, passes, piles, rows, horizon, the adversarial suite's long version, resting, recycling, dense, solver, then
+// contact-accuracy, first-contact, passes, piles, rows, horizon, the adversarial suite's long version, resting, recycling, dense, big-hole, solver, then
 // the physical reference's fidelity against cost, the independent model's map and the tick-sampled methods'
 // accuracy), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
@@ -35,6 +35,7 @@ const benches: [string, string[]][] = [
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
   ['bench/recycling.ts', quick ? ['--throws', '100000'] : []],
   ['bench/dense.ts', []],
+  ['bench/bigHole.ts', []],
   ['bench/solver.ts', []],
   // the physical reference against the game models (fidelity against cost), the independent rigid-sphere
   // model against both, and the tick-sampled methods' accuracy against speed: scripts, also run on their

@@ -177,4 +177,40 @@ describe('holeAt', () => {
     }
     expect(inside).toBeGreaterThan(2000)
   })
+
+  it('holes far wider than the rest stay out of the grid, and the grid gives the same holes and events as the scan (one of radius 1e4 sized its cells, and every hole shared a cell)', async () => {
+    const { createBallWorld, addHoles, addBall, drainEvents, runSchedule, DEFAULT_SCHEDULE } = await import('../src/ecs.js')
+    const { holeAt } = await import('../src/world/holeTable.js')
+    const specs: { x: number; y: number; radius?: number }[] = []
+    for (let i = 0; i < 30; i++) for (let j = 0; j < 20; j++) specs.push({ x: 40 * i, y: 41 * j, radius: 12 + ((i * 7 + j) % 8) })
+    specs.push({ x: 600, y: -700, radius: 600 }, { x: -11000, y: 400, radius: 1e4 }, { x: 1500, y: 400, radius: 150 })
+    const worlds = [createBallWorld({}, { broadphase: 'grid' }), createBallWorld({}, { broadphase: 'scan' })] as const
+    for (const w of worlds) addHoles(w, specs)
+    let s = 11
+    const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
+    let inBig = 0
+    for (let k = 0; k < 20000; k++) {
+      const x = -1500 + 3500 * r()
+      const y = -1400 + 2400 * r()
+      const h = holeAt(worlds[1], x, y)
+      expect(holeAt(worlds[0], x, y)).toBe(h)
+      if (h > 600) inBig++
+    }
+    expect(inBig).toBeGreaterThan(1000)
+    // balls rolling over the small holes and into the big ones: the same events, bit for bit
+    const events = worlds.map((w) => {
+      s = 99
+      for (let k = 0; k < 300; k++) {
+        const a = 6.2832 * r()
+        addBall(w, { x: 1200 * r(), y: 800 * r(), vx: 900 * Math.cos(a), vy: 900 * Math.sin(a) })
+      }
+      for (let f = 0; f < 240; f++) runSchedule(w, DEFAULT_SCHEDULE, 1 / 60)
+      return drainEvents(w)
+    })
+    expect(JSON.stringify(events[0])).toBe(JSON.stringify(events[1]))
+    expect(events[0]!.filter((e) => e.type === 'capture' && (e.hole ?? 0) > 600).length).toBeGreaterThan(0)
+    const g = worlds[0].holeGrid
+    expect(g.bigCount).toBe(3)
+    expect(g.maxRadius).toBe(19)
+  })
 })

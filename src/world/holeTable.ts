@@ -98,15 +98,23 @@ export function removeHoleFromTable(world: BallWorld, eid: number): void {
 
 /**
  * The hole whose lip circle contains (x, y) (strictly inside), or 0. Lip circles never overlap, so there is
- * at most one. From the hole count at which the planner walks the hole grid, the holes of the 3 × 3 cells
- * around the point (one list of the grid: a cell is at least as wide as the largest lip radius); below it,
- * every hole. Only a hole wider than `radius` (a ball's: one not smaller than the hole bridges it).
+ * at most one. From the hole count at which the planner walks the hole grid, the holes kept out of the grid
+ * and those of the 3 × 3 cells around the point (one list of the grid: a cell is at least as wide as the
+ * largest lip radius in it); below it, every hole. Only a hole wider than `radius` (a ball's: one not smaller than the hole bridges it).
  */
 export function holeAt(world: BallWorld, x: number, y: number, radius = 0): number {
   const t = world.holes
   if (t.count > 0 && t.count >= world.gridFrom) {
     const g = world.holeGrid
     if (g.dirty) buildHoleGrid(g, t, Math.max(g.ballRadius, world.config.BALL_RADIUS))
+    // the few holes kept out of the grid (src/world/holeGrid.ts)
+    for (let k = 0; k < g.bigCount; k++) {
+      const i = g.big[k]!
+      const dx = x - t.xyr[3 * i]!
+      const dy = y - t.xyr[3 * i + 1]!
+      const R = t.xyr[3 * i + 2]!
+      if (dx * dx + dy * dy < R * R) return R > radius ? t.ids[i]! : 0
+    }
     const cx = Math.floor((x - g.minX) / g.cell)
     const cy = Math.floor((y - g.minY) / g.cell)
     // outside the grid's padded box: farther than a cell from every hole
