@@ -155,6 +155,23 @@ describe('stores are sized per component', () => {
   })
 })
 
+/**
+ * The hole holeAt finds at each of 20,000 random points of the box [x, y, width, height] in `grid`, checked
+ * against `scan` (a world of the same holes that scans them all).
+ */
+function holesAtRandomPoints<W>(grid: W, scan: W, holeAt: (w: W, x: number, y: number) => number, box: readonly number[], seed: number): number[] {
+  const r = rng(seed)
+  const hits: number[] = []
+  for (let k = 0; k < 20000; k++) {
+    const x = box[0]! + box[2]! * r()
+    const y = box[1]! + box[3]! * r()
+    const h = holeAt(scan, x, y)
+    expect(holeAt(grid, x, y)).toBe(h)
+    hits.push(h)
+  }
+  return hits
+}
+
 describe('holeAt', () => {
   it('the hole grid gives the same hole for a point as the scan of every hole', async () => {
     const { createBallWorld, addHoles } = await import('../src/ecs.js')
@@ -165,17 +182,8 @@ describe('holeAt', () => {
     const scan = createBallWorld({}, { broadphase: 'scan' })
     addHoles(grid, specs)
     addHoles(scan, specs)
-    let s = 7
-    const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-    let inside = 0
-    for (let k = 0; k < 20000; k++) {
-      const x = -50 + 1300 * r()
-      const y = -50 + 900 * r()
-      const h = holeAt(scan, x, y)
-      expect(holeAt(grid, x, y)).toBe(h)
-      if (h !== 0) inside++
-    }
-    expect(inside).toBeGreaterThan(2000)
+    const hits = holesAtRandomPoints(grid, scan, holeAt, [-50, -50, 1300, 900], 7)
+    expect(hits.filter((h) => h !== 0).length).toBeGreaterThan(2000)
   })
 
   it('holes far wider than the rest stay out of the grid, and the grid gives the same holes and events as the scan (one of radius 1e4 sized its cells, and every hole shared a cell)', async () => {
@@ -186,20 +194,11 @@ describe('holeAt', () => {
     specs.push({ x: 600, y: -700, radius: 600 }, { x: -11000, y: 400, radius: 1e4 }, { x: 1500, y: 400, radius: 150 })
     const worlds = [createBallWorld({}, { broadphase: 'grid' }), createBallWorld({}, { broadphase: 'scan' })] as const
     for (const w of worlds) addHoles(w, specs)
-    let s = 11
-    const r = () => ((s = (s * 16807) % 2147483647) - 1) / 2147483646
-    let inBig = 0
-    for (let k = 0; k < 20000; k++) {
-      const x = -1500 + 3500 * r()
-      const y = -1400 + 2400 * r()
-      const h = holeAt(worlds[1], x, y)
-      expect(holeAt(worlds[0], x, y)).toBe(h)
-      if (h > 600) inBig++
-    }
-    expect(inBig).toBeGreaterThan(1000)
+    const hits = holesAtRandomPoints(worlds[0], worlds[1], holeAt, [-1500, -1400, 3500, 2400], 11)
+    expect(hits.filter((h) => h > 600).length).toBeGreaterThan(1000)
     // balls rolling over the small holes and into the big ones: the same events, bit for bit
     const events = worlds.map((w) => {
-      s = 99
+      const r = rng(99)
       for (let k = 0; k < 300; k++) {
         const a = 6.2832 * r()
         addBall(w, { x: 1200 * r(), y: 800 * r(), vx: 900 * Math.cos(a), vy: 900 * Math.sin(a) })
