@@ -11,7 +11,7 @@
 // stops once t − R_max passes the best event found.
 // A few holes far wider than the rest (at most BIG_HOLES, each over 4× the median radius) are kept out of
 // the grid and visited by every walk: sized for them, the cells held every hole of a panel (one hole of
-// radius 1e4 far off among 3,600 of 18 px made a step of 1,000 balls 10× slower).
+// radius 1e4 far off among 3,600 of 18 px made a step of 1,000 balls 25× slower: npm run bench:big-hole).
 import { MAX_GRID_CELLS } from '../config/tolerances.js'
 import type { HoleTable } from './createWorld.js'
 

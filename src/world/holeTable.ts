@@ -100,7 +100,8 @@ export function removeHoleFromTable(world: BallWorld, eid: number): void {
  * The hole whose lip circle contains (x, y) (strictly inside), or 0. Lip circles never overlap, so there is
  * at most one. From the hole count at which the planner walks the hole grid, the holes kept out of the grid
  * and those of the 3 × 3 cells around the point (one list of the grid: a cell is at least as wide as the
- * largest lip radius in it); below it, every hole. Only a hole wider than `radius` (a ball's: one not smaller than the hole bridges it).
+ * largest lip radius in it); below it, every hole. Only a hole wider than `radius` (a ball's: one not
+ * smaller than the hole bridges it).
  */
 export function holeAt(world: BallWorld, x: number, y: number, radius = 0): number {
   const t = world.holes
