@@ -147,17 +147,24 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
 /** Most holes kept out of the grid as far wider than the rest. */
 const BIG_HOLES = 16
 
-/**
- * The radius above which a hole is kept out of the grid: more than 4× the median radius and more than all but
- * the BIG_HOLES widest (Infinity when there are no more holes than that).
- */
+/** bigRadius of the table's holes */
 function bigFrom(table: HoleTable): number {
   const n = table.count
-  if (n <= BIG_HOLES) return Infinity
   const r = new Float64Array(n)
   for (let i = 0; i < n; i++) r[i] = table.xyr[3 * i + 2]!
-  r.sort()
-  return Math.max(4 * r[n >> 1]!, r[n - 1 - BIG_HOLES]!)
+  return bigRadius(r)
+}
+
+/**
+ * The radius above which a hole is far wider than the rest (kept out of a grid's cells): more than 4× the
+ * median radius and more than all but the BIG_HOLES widest (Infinity when there are no more holes than
+ * that). Sorts `radii` in place.
+ */
+export function bigRadius(radii: Float64Array): number {
+  const n = radii.length
+  if (n <= BIG_HOLES) return Infinity
+  radii.sort()
+  return Math.max(4 * radii[n >> 1]!, radii[n - 1 - BIG_HOLES]!)
 }
 
 /** Visits a table index and writes the best event distance found so far into walk[W_BOUND]. */
