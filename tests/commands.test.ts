@@ -221,6 +221,16 @@ describe('holes added one by one or as a set: the overlap check', () => {
     expect(time((sim, specs) => addHoles(sim.world, specs))).toBeLessThan(timeBudget(1000))
     // with one hole of radius 1e4 far off: sized for it, the set's cells held every hole (4.5 s to check)
     expect(time((sim, specs) => addHoles(sim.world, [{ x: -30_000, y: -30_000, radius: 1e4 }, ...specs.slice(1)]))).toBeLessThan(timeBudget(1000))
+    expect(time((sim, specs) => [{ x: -30_000, y: -30_000, radius: 1e4 }, ...specs.slice(1)].forEach((s) => sim.addHole(s)))).toBeLessThan(timeBudget(1000))
+    // one by one: a hole overlapping a wide one, or a small one, is refused, with more wide holes than the
+    // cells keep out (built again for them)
+    const one = createBallPhysics()
+    field(300).forEach((h) => one.addHole(h))
+    for (let k = 0; k < 20; k++) one.addHole({ x: -2000 - 1200 * k, y: -2000, radius: 500 })
+    expect(() => one.addHole({ x: -2000 - 1200 * 19 + 510, y: -2000 })).toThrow(/overlaps hole/)
+    expect(() => one.addHole({ x: 80 * 50 + 20, y: 80 })).toThrow(/overlaps hole/)
+    one.addHole({ x: -2000 - 1200 * 19 + 600, y: -2000 })
+    expect(one.holes()).toHaveLength(321)
     // one hole too close to another in a set is still named, a wide one too, before or after it in the set
     const wide = { x: -3000, y: 0, radius: 1e4 }
     expect(() => addHoles(createBallPhysics().world, [...field(300), wide])).toThrow(/holes\[300\].*overlaps holes\[0\]/)

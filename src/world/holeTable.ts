@@ -2,7 +2,7 @@
 // added (events at equal distances are ordered by hole id, so the order here never decides an outcome).
 import type { BallWorld } from './createWorld.js'
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
-import { buildHoleGrid } from './holeGrid.js'
+import { bigRadius, buildHoleGrid } from './holeGrid.js'
 
 /** Holes packed for the planner's scan: x, y, R per hole, and the entity ids in the same order. */
 export interface HoleTable {
@@ -18,9 +18,17 @@ export interface HoleTable {
 export interface HoleCells {
   cell: number
   byCell: Map<number, number[]>
-  /** the largest lip radius among the holes put in (a lookup widens by it), px */
+  /** the largest lip radius among the holes in the cells (a lookup widens by it), px */
   maxR: number
+  /**
+   * holes wider than a cell, kept out of the cells and tested by every lookup (sized for one of radius 1e4,
+   * the cells held every hole, and each addHole scanned them all); past WIDE_HOLES the cells are built again
+   */
+  wide: number[]
 }
+
+/** Most holes kept out of the cells before they are built again for the holes as they are. */
+const WIDE_HOLES = 16
 
 export function createHoleTable(): HoleTable {
   return { count: 0, xyr: new Float64Array(3 * 16), ids: new Uint32Array(16) }
@@ -29,13 +37,25 @@ export function createHoleTable(): HoleTable {
 function cellsOf(world: BallWorld): HoleCells {
   if (world.holeCells !== null) return world.holeCells
   const t = world.holes
-  const cells: HoleCells = { cell: 4 * world.config.HOLE_RADIUS, byCell: new Map(), maxR: 0 }
+  // cells 4× the widest hole but the few far wider than the rest (src/world/holeGrid.ts: bigRadius)
+  const radii = new Float64Array(t.count)
+  for (let i = 0; i < t.count; i++) radii[i] = t.xyr[3 * i + 2]!
+  const limit = bigRadius(radii)
+  let base = 0
+  for (let i = 0; i < t.count; i++) if (radii[i]! <= limit && radii[i]! > base) base = radii[i]!
+  const cells: HoleCells = { cell: 4 * (base > 0 ? base : world.config.HOLE_RADIUS), byCell: new Map(), maxR: 0, wide: [] }
   world.holeCells = cells
-  for (let i = 0; i < t.count; i++) putInCell(cells, t.ids[i]!, t.xyr[3 * i]!, t.xyr[3 * i + 1]!, t.xyr[3 * i + 2]!)
+  for (let i = 0; i < t.count; i++) putInCell(world, cells, t.ids[i]!, t.xyr[3 * i]!, t.xyr[3 * i + 1]!, t.xyr[3 * i + 2]!)
   return cells
 }
 
-function putInCell(cells: HoleCells, eid: number, x: number, y: number, R: number): void {
+function putInCell(world: BallWorld, cells: HoleCells, eid: number, x: number, y: number, R: number): void {
+  if (R > cells.cell) {
+    cells.wide.push(eid)
+    // (more than a few: built again, for the holes as they are, when next needed)
+    if (cells.wide.length > WIDE_HOLES && world.holeCells === cells) world.holeCells = null
+    return
+  }
   const key = cellKey(Math.floor(x / cells.cell), Math.floor(y / cells.cell))
   const bucket = cells.byCell.get(key)
   if (bucket === undefined) cells.byCell.set(key, [eid])
@@ -64,7 +84,7 @@ export function addHoleToTable(world: BallWorld, eid: number): void {
   t.xyr[3 * i + 1] = world.Hole.y[eid]!
   t.xyr[3 * i + 2] = world.Hole.radius[eid]!
   t.ids[i] = eid
-  if (world.holeCells !== null) putInCell(world.holeCells, eid, world.Hole.x[eid]!, world.Hole.y[eid]!, world.Hole.radius[eid]!)
+  if (world.holeCells !== null) putInCell(world, world.holeCells, eid, world.Hole.x[eid]!, world.Hole.y[eid]!, world.Hole.radius[eid]!)
   world.holeGrid.dirty = true
 }
 
@@ -84,7 +104,9 @@ export function removeHoleFromTable(world: BallWorld, eid: number): void {
   while (i < t.count && t.ids[i] !== eid) i++
   if (i === t.count) return
   const cells = world.holeCells
-  if (cells !== null) {
+  const w = cells === null ? -1 : cells.wide.indexOf(eid)
+  if (cells !== null && w >= 0) cells.wide.splice(w, 1)
+  else if (cells !== null) {
     const key = cellKey(Math.floor(t.xyr[3 * i]! / cells.cell), Math.floor(t.xyr[3 * i + 1]! / cells.cell))
     const bucket = cells.byCell.get(key)!
     bucket.splice(bucket.indexOf(eid), 1)
@@ -140,12 +162,23 @@ export function holeAt(world: BallWorld, x: number, y: number, radius = 0): numb
 }
 
 /**
- * A hole whose lip circle overlaps the circle (x, y, radius) (entity id), or 0: from the cells within
- * radius + the largest lip radius of the point, or, when those are more than the holes, every hole.
+ * A hole whose lip circle overlaps the circle (x, y, radius) (entity id), or 0: from the holes kept out of
+ * the cells and the cells within radius + the largest lip radius in them of the point, or, when those cells
+ * are more than the holes, every hole.
  */
 export function overlappingHole(world: BallWorld, x: number, y: number, radius: number): number {
   const t = world.holes
   const cells = t.count < GRID_MIN_HOLES ? null : cellsOf(world)
+  if (cells !== null) {
+    const H = world.Hole
+    for (let k = 0; k < cells.wide.length; k++) {
+      const h = cells.wide[k]!
+      const dx = x - H.x[h]!
+      const dy = y - H.y[h]!
+      const min = radius + H.radius[h]!
+      if (dx * dx + dy * dy < min * min) return h
+    }
+  }
   const reach = cells === null ? 0 : radius + cells.maxR
   const c = cells === null ? 1 : cells.cell
   const cx0 = Math.floor((x - reach) / c)
