@@ -59,7 +59,7 @@ function checkClear(w: BallWorld, h: CheckedHole): void {
 /**
  * Throws for the first spec (in order) whose lip circle overlaps an earlier one's: through a hash of cells
  * sized for the holes' radii, with the few far wider than the rest (the hole grid's rule, holeGrid.ts:
- * bigFrom) tested against every earlier hole instead (sized for one of radius 1e4, the cells held every hole
+ * bigRadius) tested against every earlier hole instead (sized for one of radius 1e4, the cells held every hole
  * of a 40,000-hole set, and the check took 4.5 s).
  */
 function checkApart(list: readonly CheckedHole[]): void {

@@ -37,13 +37,15 @@ export function createHoleTable(): HoleTable {
 function cellsOf(world: BallWorld): HoleCells {
   if (world.holeCells !== null) return world.holeCells
   const t = world.holes
-  // cells 4× the widest hole but the few far wider than the rest (src/world/holeGrid.ts: bigRadius)
+  // cells 4× the widest hole but the few far wider than the rest (src/world/holeGrid.ts: bigRadius), and no
+  // narrower than 4 × HOLE_RADIUS (cells sized for specks made each lookup for a hole of the usual size span
+  // more cells than there are holes, and scan them all)
   const radii = new Float64Array(t.count)
   for (let i = 0; i < t.count; i++) radii[i] = t.xyr[3 * i + 2]!
   const limit = bigRadius(radii)
   let base = 0
   for (let i = 0; i < t.count; i++) if (radii[i]! <= limit && radii[i]! > base) base = radii[i]!
-  const cells: HoleCells = { cell: 4 * (base > 0 ? base : world.config.HOLE_RADIUS), byCell: new Map(), maxR: 0, wide: [] }
+  const cells: HoleCells = { cell: 4 * Math.max(base, world.config.HOLE_RADIUS), byCell: new Map(), maxR: 0, wide: [] }
   world.holeCells = cells
   for (let i = 0; i < t.count; i++) putInCell(world, cells, t.ids[i]!, t.xyr[3 * i]!, t.xyr[3 * i + 1]!, t.xyr[3 * i + 2]!)
   return cells
