@@ -148,7 +148,7 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
 const BIG_HOLES = 16
 
 /** bigRadius of the table's holes */
-function bigFrom(table: HoleTable): number {
+export function bigFrom(table: HoleTable): number {
   const n = table.count
   const r = new Float64Array(n)
   for (let i = 0; i < n; i++) r[i] = table.xyr[3 * i + 2]!

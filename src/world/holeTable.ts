@@ -2,7 +2,7 @@
 // added (events at equal distances are ordered by hole id, so the order here never decides an outcome).
 import type { BallWorld } from './createWorld.js'
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
-import { bigRadius, buildHoleGrid } from './holeGrid.js'
+import { bigFrom, buildHoleGrid } from './holeGrid.js'
 
 /** Holes packed for the planner's scan: x, y, R per hole, and the entity ids in the same order. */
 export interface HoleTable {
@@ -40,11 +40,12 @@ function cellsOf(world: BallWorld): HoleCells {
   // cells 4× the widest hole but the few far wider than the rest (src/world/holeGrid.ts: bigRadius), and no
   // narrower than 4 × HOLE_RADIUS (cells sized for specks made each lookup for a hole of the usual size span
   // more cells than there are holes, and scan them all)
-  const radii = new Float64Array(t.count)
-  for (let i = 0; i < t.count; i++) radii[i] = t.xyr[3 * i + 2]!
-  const limit = bigRadius(radii)
+  const limit = bigFrom(t)
   let base = 0
-  for (let i = 0; i < t.count; i++) if (radii[i]! <= limit && radii[i]! > base) base = radii[i]!
+  for (let i = 0; i < t.count; i++) {
+    const R = t.xyr[3 * i + 2]!
+    if (R <= limit && R > base) base = R
+  }
   const cells: HoleCells = { cell: 4 * Math.max(base, world.config.HOLE_RADIUS), byCell: new Map(), maxR: 0, wide: [] }
   world.holeCells = cells
   for (let i = 0; i < t.count; i++) putInCell(world, cells, t.ids[i]!, t.xyr[3 * i]!, t.xyr[3 * i + 1]!, t.xyr[3 * i + 2]!)
