@@ -212,4 +212,34 @@ describe('holeAt', () => {
     expect(g.bigCount).toBe(3)
     expect(g.maxRadius).toBe(19)
   })
+
+  it('a ball of any radius leaves the cells no wider than twice the widest hole in them, and balls wider and narrower than the holes give the same events as the scan (one ball of radius 1e4, added and removed, sized the cells for it for good)', async () => {
+    const { createBallWorld, addHoles, addBall, removeBall, drainEvents, runSchedule, DEFAULT_SCHEDULE } = await import('../src/ecs.js')
+    const specs: { x: number; y: number; radius?: number }[] = []
+    for (let i = 0; i < 30; i++) for (let j = 0; j < 20; j++) specs.push({ x: 40 * i, y: 41 * j, radius: 12 + ((i * 7 + j) % 8) })
+    const worlds = [createBallWorld({}, { broadphase: 'grid' }), createBallWorld({}, { broadphase: 'scan' })] as const
+    const radii = [1e4, 40, 16, 3, 11, 19.5, 0.5]
+    const events = worlds.map((w) => {
+      addHoles(w, specs)
+      const wide = addBall(w, { x: 600, y: 400, radius: 1e4, vx: 5, vy: 1 })
+      runSchedule(w, DEFAULT_SCHEDULE, 1 / 60)
+      removeBall(w, wide)
+      const r = rng(5)
+      for (let k = 0; k < 300; k++) {
+        const a = 6.2832 * r()
+        addBall(w, { x: 1200 * r(), y: 800 * r(), radius: radii[k % radii.length]!, vx: 700 * Math.cos(a), vy: 700 * Math.sin(a) })
+      }
+      for (let f = 0; f < 180; f++) runSchedule(w, DEFAULT_SCHEDULE, 1 / 60)
+      return drainEvents(w)
+    })
+    expect(JSON.stringify(events[0])).toBe(JSON.stringify(events[1]))
+    // balls narrower than the holes meet them (the 16-px ones some holes only), wider ones bridge them
+    const holeEvents = events[0]!.filter((e) => e.hole !== undefined)
+    expect(holeEvents.length).toBeGreaterThan(300)
+    const g = worlds[0].holeGrid
+    expect(g.maxRadius).toBe(19)
+    // sized for the widest ball narrower than the widest hole: the 16-px ones (1e4, 40 and 19.5 bridge every hole)
+    expect(g.ballRadius).toBe(16)
+    expect(g.cell).toBe(19 + 16)
+  })
 })

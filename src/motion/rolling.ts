@@ -309,7 +309,7 @@ export function planRolling(w: BallWorld, eid: number): void {
     if (table.count < w.gridFrom) {
       for (let i = 0, n = table.count; i < n; i++) considerHole(i)
     } else {
-      if (grid.dirty || Q.foot > grid.ballRadius) buildHoleGrid(grid, table, Math.max(Q.foot, grid.ballRadius, w.config.BALL_RADIUS))
+      if (grid.dirty || (Q.foot > grid.ballRadius && Q.foot < grid.maxRadius)) buildHoleGrid(grid, table, Math.max(Q.foot, grid.ballRadius, w.config.BALL_RADIUS))
       walk[W_X] = Q.x0
       walk[W_Y] = Q.y0
       walk[W_UX] = Q.ux

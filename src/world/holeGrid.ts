@@ -36,7 +36,10 @@ export interface HoleGrid {
   /** the holes kept out of the grid (table indices), visited by every walk: big[0 .. bigCount) */
   big: Int32Array
   bigCount: number
-  /** ball radius the cell size was chosen for; larger balls fall back to the full scan */
+  /**
+   * ball radius the cell size was chosen for (at most maxRadius); a ball wider than it and narrower than
+   * maxRadius has the grid built again for it, one at least maxRadius wide meets no hole of the grid
+   */
   ballRadius: number
   /** per table index: the query that last saw the hole (dedupe across overlapping 3 × 3 blocks) */
   seen: Uint32Array
@@ -64,7 +67,7 @@ export function createHoleGrid(): HoleGrid {
 }
 
 
-/** Builds the grid for the holes in `table`, sized for balls up to `ballRadius`. */
+/** Builds the grid for the holes in `table`, sized for balls up to `ballRadius` (and so for any ball, from the widest hole's radius on). */
 export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: number): void {
   const n = table.count
   const xyr = table.xyr
@@ -89,7 +92,11 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
     if (y > maxY) maxY = y
     if (xyr[3 * i + 2]! > maxR) maxR = xyr[3 * i + 2]!
   }
-  let cell = maxR + ballRadius
+  // a ball no smaller than a hole bridges it (no event: src/motion/rolling.ts), so a hole of the grid matters
+  // only to balls narrower than it, and cells of maxR + min(ballRadius, maxR) serve balls of any radius: one
+  // very wide ball does not make every cell hold the whole field, for as long as the world lives
+  const forBalls = Math.min(ballRadius, maxR)
+  let cell = maxR + forBalls
   // one cell of padding on every side, so a path point within R + r of a hole is inside the grid
   let nx = Math.floor((maxX - minX) / cell) + 3
   let ny = Math.floor((maxY - minY) / cell) + 3
@@ -104,7 +111,7 @@ export function buildHoleGrid(grid: HoleGrid, table: HoleTable, ballRadius: numb
   grid.nx = nx
   grid.ny = ny
   grid.maxRadius = maxR
-  grid.ballRadius = ballRadius
+  grid.ballRadius = forBalls
   const start = new Int32Array(nx * ny + 1)
   const cellOf = new Int32Array(n).fill(-1)
   for (let i = 0; i < n; i++) {
