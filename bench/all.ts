@@ -183,6 +183,9 @@ for (const n of [1000, 10_000]) {
     const us = r ? Math.min(r.usPerContact.fixed, r.usPerContact.exact) : undefined
     const least = r?.usPerContactLeast ? ` (fastest rounds ${r.usPerContactLeast.fixed.toFixed(1)}, ${r.usPerContactLeast.exact.toFixed(1)})` : ''
     check(r && us! <= 3, `contacts on, ${scene}, ${k(n)} balls: ${r ? `fixed-tick ${r.usPerContact.fixed.toFixed(1)}, exact ${r.usPerContact.exact.toFixed(1)}${least}` : '?'} µs per contact, median of the rounds (floor ≤ 3, the better method)`)
+    // what no method that looks at every moving ball each tick can beat: the barest loop that only pairs them
+    const bare = r?.barePairing
+    if (bare) console.log(`      the barest loop pairing the moving balls each tick, alone: ${bare.usPerContact.toFixed(1)} µs per contact (${bare.nsPerMovingBall.toFixed(0)} ns a moving ball); the fixed tick's extra time ${x(bare.fixedExtraOverBare)} that loop's`)
   }
 }
 // the core near the memory limit, and the reference-tabulated rim model
@@ -211,6 +214,17 @@ if (recycling) {
     growth <= 1.25,
     `${k(recycling.throws)} throws with recycling: heap ${(last.heapBytes / 1024).toFixed(0)} KiB at the end, ${x(growth)} that at ${k(half.thrown)} throws (peak ${k(recycling.peakLive)} live; bounded: ≤ 1.25×)`,
   )
+}
+
+// kept-pair lists against the bare grid (bench/pairing.ts): the pairing a method could keep from tick to tick
+const pairing = read<{ rows: { scene: string; balls: number; overGrid: Record<string, number> }[] }>('pairing')
+if (pairing) {
+  console.log('\npairs kept across ticks against the bare grid of every tick (time ÷ the grid\'s, same run; bench/pairing.ts)')
+  for (const r of pairing.rows) {
+    const kept = Object.entries(r.overGrid).filter(([name]) => name !== 'grid')
+    const best = kept.reduce((a, b) => (b[1] < a[1] ? b : a))
+    console.log(`${r.scene.padEnd(6)} ${k(r.balls).padStart(6)}  ${kept.map(([name, v]) => `${name} ${x(v)}`).join(', ')}; the best, ${best[0]}, ${x(best[1])}`)
+  }
 }
 
 if (failed.length > 0) {
