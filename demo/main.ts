@@ -553,7 +553,7 @@ async function main(): Promise<void> {
     setText(hud.ballsLeft, String(game.ballsLeft))
     setText(hud.ballCount, game.live.length.toLocaleString('en-US'))
     // balls the launcher holds until their spot is clear (contacts on) are in play but not yet out: say how many
-    const held = game.sim.world.held.count
+    const held = game.sim.heldCount()
     setText(ballCountLabel, held > 0 ? `Balls in play · ${held.toLocaleString('en-US')} waiting` : 'Balls in play')
     syncReplay()
     syncWaiting()

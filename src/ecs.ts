@@ -18,6 +18,7 @@ export {
   addBall,
   ballState,
   heldAhead,
+  heldCount,
   holeState,
   isHeroBall,
   listBalls,

@@ -14,7 +14,7 @@ import { integrationSystem, setLipBatching } from '../systems/integration.js'
 import { launcherSystem } from '../systems/launcher.js'
 import { rimRollSystem } from '../systems/rimRoll.js'
 import { skipOverSystem } from '../systems/skipOver.js'
-import { orderMoving } from './world/idLists.js'
+import { dropGoneHeld, orderMoving } from './world/idLists.js'
 import { MOVING_ORDER_CHURN, MOVING_ORDER_MIN, TICK_SNAP } from './config/tolerances.js'
 import { nearTick } from './contacts/fixedHalve.js'
 import { gridInstant, instantOut, tickInstant } from './world/gridTime.js'
@@ -79,6 +79,7 @@ export function createSchedule(config?: Readonly<BallPhysicsConfig>): ScheduleEn
  */
 export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[], dt: number): void {
   checkWorld('runSchedule', world)
+  dropGoneHeld(world)
   if (!Array.isArray(schedule)) throw new TypeError(`runSchedule: schedule must be an array of { name, run } entries, got ${describe(schedule)}`)
   for (let i = 0; i < schedule.length; i++) {
     const entry: unknown = schedule[i]

@@ -6,6 +6,7 @@ import {
   addBall,
   ballState,
   heldAhead,
+  heldCount,
   holeState,
   isHeroBall,
   listBalls,
@@ -56,6 +57,8 @@ export interface BallPhysics {
   ballState(ball: number): BallState
   /** For a held ball, the held balls waiting ahead of it on its spot (they leave first); -1 for a ball not held. */
   heldAhead(ball: number): number
+  /** How many balls wait held at their spots (contacts on: put down on another ball); 0 with contacts off. */
+  heldCount(): number
   holeState(hole: number): HoleState
   /** Removes a ball (as bitECS removeEntity does): the simulation forgets it; its buffered events are dropped. */
   removeBall(ball: number): void
@@ -132,6 +135,7 @@ export function physicsFor(w: BallWorld): BallPhysics {
     drainEventsWith: (visit) => drainEventsWith(w, visit),
     ballState: (ball) => ballState(w, ball),
     heldAhead: (ball) => heldAhead(w, ball),
+    heldCount: () => heldCount(w),
     holeState: (hole) => holeState(w, hole),
     removeBall: (ball) => removeBall(w, ball),
     setBallVelocity: (ball, vx, vy) => setBallVelocity(w, ball, vx, vy),

@@ -20,6 +20,7 @@
 // bench/solver.ts (a few ms for a capture on the default panel).
 import type { BallWorld } from '../world/createWorld.js'
 import { checkHole, checkWorld, describe, finite, readSpec } from '../commands/validate.js'
+import { heldCount } from '../commands/balls.js'
 import { MAX_COORDINATE, MIN_OUTCOME_STEP } from '../config/limits.js'
 import { choice, within } from '../check.js'
 import { atan2, hypot } from '../math.js'
@@ -164,7 +165,7 @@ export function solveThrow(target: BallPhysics | BallWorld, request: ThrowReques
   if (exact.heldThrough === tries) {
     const why =
       queue === 'back'
-        ? `behind the balls queued there (${world.held.count} held) for longer than the ${HORIZON} s a throw is followed: try again when the launcher has room, or ask for a throw at the front of the queue (request.queue 'front')`
+        ? `behind the balls queued there (${heldCount(world)} held) for longer than the ${HORIZON} s a throw is followed: try again when the launcher has room, or ask for a throw at the front of the queue (request.queue 'front')`
         : `for longer than the ${HORIZON} s a throw is followed (a ball is on it all that time): try again when the launcher has room`
     return fail(`a ball thrown from (${found[0]!.x}, ${fy}) now waits held at its spot ${why}`, trial.count + exact.count)
   }

@@ -12,7 +12,7 @@ import { addBallEntity, forEachBall } from '../world/balls.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { rimSlot } from '../world/rimSlots.js'
 import { setBallMode } from '../world/ballMode.js'
-import { insertId, pushId } from '../world/idLists.js'
+import { dropGoneHeld, insertId, pushId } from '../world/idLists.js'
 import { firstHeldAt, heldAt, heldOn, spotTaken } from '../contacts/spot.js'
 import { heldJoin } from '../world/heldGrid.js'
 import { betweenSteps, checkBall, checkHole, checkWorld, choice, finite, flag, positive, specObject, within } from './validate.js'
@@ -94,6 +94,9 @@ function massOf(w: BallWorld, field: string, value: unknown, radius: number): nu
 }
 
 function newBall(w: BallWorld, x: number, y: number, vx: number, vy: number, radius: number, hero: boolean, mass: number, front: boolean): number {
+  // removed held balls leave the queue before an id is reused: one listed at a removed ball's place would
+  // be taken for it once held
+  dropGoneHeld(w)
   const eid = addBallEntity(w)
   w.Ball.radius[eid] = radius
   w.Ball.hero[eid] = hero ? 1 : 0
@@ -265,6 +268,17 @@ export function heldAhead(world: BallWorld, ball: number): number {
   let ahead = 0
   for (let i = 0; i < q.count && q.ids[i] !== b; i++) if (heldAt(w, q.ids[i]!, b, B.x[b]!, B.y[b]!, B.radius[b]!)) ahead++
   return ahead
+}
+
+/**
+ * How many balls wait held at their spots in the launcher's queue (contacts on: put down on another ball),
+ * for a game's "n balls waiting" and to notice a launcher firing faster than its spots clear (each spot lets
+ * out a ball about every 1/16 s at the defaults, and the queue grows without limit beyond that).
+ */
+export function heldCount(world: BallWorld): number {
+  const w = checkWorld('heldCount', world, true)
+  dropGoneHeld(w)
+  return w.held.count
 }
 
 /** A hole's geometry and value (a new object). */

@@ -19,6 +19,7 @@
 // state outside the world, and are refused.
 import { addComponent, addEntity, hasComponent, removeEntity } from 'bitecs'
 import type { BallWorld } from '../world/createWorld.js'
+import { dropGoneHeld } from '../world/idLists.js'
 import { MIN_TABLE_RATIO } from '../config/limits.js'
 import { MAX_RATIO } from '../reference/tolerances.js'
 import { rimTableFor } from '../reference/rimTables.js'
@@ -32,7 +33,7 @@ export const SNAPSHOT_VERSION = 19
 const MAGIC = [0x50, 0x42, 0x53, 0x4e] // "PBSN"
 
 /** World fields kept out of the walked body (see the top of this file; a failed world is not snapshotted) */
-const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells', 'failed'])
+const SPECIAL = new Set(['config', 'entityIndex', 'rimTables', 'stepping', 'IsHole', 'recorder', 'holeCells', 'failed', 'heldGone'])
 
 /** Component membership bits, per entity */
 const BALL = 1
@@ -60,6 +61,7 @@ function bodyKeys(w: BallWorld): string[] {
  */
 export function snapshotWorld(world: BallWorld): Uint8Array {
   const w = checkWorld('snapshotWorld', world)
+  dropGoneHeld(w)
   if (w.stepping) throw new Error('snapshot (snapshotWorld): the world is in the middle of a step; take the snapshot between steps')
   // the events the callback has been handed are still in the buffer until the drain returns: a world restored
   // from such a snapshot would hand them out again (and refuse to drain, the drain's flag set)
@@ -336,4 +338,6 @@ export function restoreWorld(world: BallWorld, bytes: Uint8Array): void {
   for (const k of keys) apply(w as unknown as Record<string, unknown>, k, d.fields[k])
   // (a world that failed with no entity given yet: the snapshot's state replaces its own)
   w.failed = null
+  // the snapshot's queue replaced the world's, removed balls and all
+  w.heldGone = 0
 }

@@ -64,7 +64,12 @@ export function adoptBall(world: BallWorld, eid: number): void {
 export function forgetBall(world: BallWorld, eid: number): void {
   if (!isLiveBall(world, eid)) return
   world.ballCount--
-  if (world.Ball.mode[eid] === BallMode.Held) dropId(world.held, eid)
+  // between steps a held ball stays listed until the next entry point's check takes every removed one out
+  // in one pass (src/check.ts: its cleared row is no longer live); a step's own readers of the queue see it gone
+  if (world.Ball.mode[eid] === BallMode.Held) {
+    if (world.stepping) dropId(world.held, eid)
+    else world.heldGone++
+  }
   removeMoving(world, eid)
   // removed mid-step by a game's system: the next pass must not continue it (its zeroed path is due at
   // once, so with contacts on the pass would take its events for ever); between steps no list names it

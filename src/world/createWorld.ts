@@ -96,6 +96,11 @@ export interface BallWorldData {
   /** balls held at their spawn spot until it is clear (ball-ball contacts on), in the order they came */
   held: IdList
   /**
+   * held balls removed between steps and still in `held`: they leave it at the next entry point's check
+   * (src/check.ts), in one pass, so that removing n held balls costs O(n + queue), not O(n · queue)
+   */
+  heldGone: number
+  /**
    * true during a window that starts on a launch instant (k·CONTACT_TICK of the world's clock; with the
    * fixed tick, any of its ticks) while balls are held: the launcher acts only then (set by the step,
    * src/schedule.ts)
@@ -175,6 +180,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     stepping: false,
     ballStores: [],
     held: createIdList(16),
+    heldGone: 0,
     launchDue: false,
     kicks: 0,
     kickStreak: new Uint8Array(capacity),

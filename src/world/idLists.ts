@@ -1,4 +1,5 @@
 // Id lists without allocation: a growable list, and the sparse set of the balls that move.
+import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from './createWorld.js'
 import { spotJoin } from './spotGrid.js'
 
@@ -26,6 +27,26 @@ export function insertId(list: IdList, at: number, eid: number): void {
   pushId(list, eid)
   list.ids.copyWithin(at + 1, at, list.count - 1)
   list.ids[at] = eid
+}
+
+/**
+ * Takes the held balls removed between steps (world.heldGone, src/world/balls.ts: forgetBall) out of the
+ * launcher's queue in one pass, keeping the others in order: a removed ball's row is cleared, and an id
+ * reused since is not a held ball until it joins the queue again, which this runs before. Called by every
+ * reader of the queue that a command or a step starts (the step, putting a ball down on a held one,
+ * snapshots, heldCount), so removing n held balls costs O(n + queue) instead of n scans of the queue.
+ */
+export function dropGoneHeld(w: BallWorld): void {
+  if (w.heldGone === 0) return
+  const q = w.held
+  const B = w.Ball
+  let n = 0
+  for (let i = 0; i < q.count; i++) {
+    const eid = q.ids[i]!
+    if (B.live[eid] === 1 && B.mode[eid] === BallMode.Held) q.ids[n++] = eid
+  }
+  q.count = n
+  w.heldGone = 0
 }
 
 /** Takes every occurrence of an id out of a list, keeping the others in order. */
