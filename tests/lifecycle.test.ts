@@ -60,3 +60,46 @@ describe('entity lifecycle', () => {
     expect([w.Path.markOther[c], w.Ball.hero[c], w.Ball.x[c], w.Ball.live[c], w.pathHot[c * HOT]]).toEqual([0, 0, 0, 0, 0])
   })
 })
+
+describe('stores that cannot grow', () => {
+  it('an addBall whose stores fail to grow (out of memory) throws a RangeError naming the entity, and leaves no entity with Ball behind: the world steps on', async () => {
+    const { createBallWorld, addBall, listBalls, runSchedule, DEFAULT_SCHEDULE } = await import('../src/ecs.js')
+    const { query } = await import('bitecs')
+    for (const contacts of ['off', 'on', 'fixed'] as const) {
+      const w = createBallWorld({ BALL_COLLISIONS: contacts }, { capacity: 64 })
+      while (w.capacity === 64) addBall(w, { x: 30 * listBalls(w).length, y: 100, vx: 50, vy: 0 })
+      const before = listBalls(w).length
+      const real = globalThis.Float64Array
+      let failures = 0
+      // the next growth's first Float64Array of its new size fails, as an exhausted heap would
+      globalThis.Float64Array = new Proxy(real, {
+        construct(target, args: [number]) {
+          if (typeof args[0] === 'number' && args[0] >= 2 * w.capacity && failures === 0) {
+            failures++
+            throw new RangeError('Array buffer allocation failed')
+          }
+          return new target(...args)
+        },
+      })
+      // fill up to the capacity, so the next ball grows the stores
+      let err: unknown
+      try {
+        while (listBalls(w).length < w.capacity + 1) addBall(w, { x: 30 * (listBalls(w).length % 100), y: 200 + 30 * Math.floor(listBalls(w).length / 100), vx: 50, vy: 0 })
+      } catch (e) {
+        err = e
+      } finally {
+        globalThis.Float64Array = real
+      }
+      expect(failures, contacts).toBe(1)
+      expect(err, contacts).toBeInstanceOf(RangeError)
+      expect(String(err), contacts).toMatch(/the ball stores could not grow to hold entity \d+ \(Array buffer allocation failed\); the entity is left as it was/)
+      // every entity bitECS lists with Ball is a ball of the simulation's
+      expect([...query(w, [w.Ball])].sort((a, b) => a - b), contacts).toEqual([...listBalls(w)].sort((a, b) => a - b))
+      expect(listBalls(w).length, contacts).toBeGreaterThan(before)
+      const more = addBall(w, { x: 5, y: 900, vx: 10, vy: 0 })
+      expect(w.Ball.live[more], contacts).toBe(1)
+      for (let f = 0; f < 10; f++) runSchedule(w, DEFAULT_SCHEDULE, 1 / 60)
+      expect(listBalls(w).every((b) => Number.isFinite(w.Ball.x[b]!) && Number.isFinite(w.Ball.y[b]!)), contacts).toBe(true)
+    }
+  })
+})

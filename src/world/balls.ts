@@ -8,7 +8,7 @@
 //     resting grid and the step's lists of balls stopped at an event (a game's system may remove a ball
 //     mid-step), its pending contacts go stale, its rows are zeroed and, removed between steps, the events
 //     buffered for it are dropped at the next drain (its id may be handed to a new entity before then).
-import { addComponent, addEntity, hasComponent, removeComponent } from 'bitecs'
+import { addComponent, addEntity, hasComponent, removeComponent, removeEntity } from 'bitecs'
 import { BallMode, clearBallRow } from '../../components/Ball.js'
 import { clearPathRow } from '../../components/Path.js'
 import { clearSlot } from '../../components/store.js'
@@ -25,7 +25,12 @@ import { checkWorld, describe } from '../check.js'
 /** Makes a ball entity (Ball and Path), out of play at the origin; a command then places and launches it. */
 export function addBallEntity(world: BallWorld): number {
   const eid = addEntity(world)
-  addComponent(world, eid, world.Ball) // adoptBall runs here (and adds Path)
+  try {
+    addComponent(world, eid, world.Ball) // adoptBall runs here (and adds Path)
+  } catch (e) {
+    removeEntity(world, eid) // (adoptBall took the Ball off again: no entity is left half-made)
+    throw e
+  }
   return eid
 }
 
@@ -39,7 +44,14 @@ export function adoptBall(world: BallWorld, eid: number): void {
     removeComponent(world, eid, world.Ball) // forgetBall returns at once: not a ball yet
     throw new Error(`addComponent(world, ${eid}, world.Ball): entity ${eid} is ${eid === world.walls ? 'the walls' : 'a hole'}, which cannot also be a ball; make balls with addBall or throwBall (the entity is left as it was)`)
   }
-  ensureCapacity(world, eid)
+  try {
+    ensureCapacity(world, eid)
+  } catch (e) {
+    // out of memory growing the stores: the entity is not left a Ball the simulation does not know (a game's
+    // query would list it); stores already grown stay grown, and the world goes on
+    removeComponent(world, eid, world.Ball)
+    throw new RangeError(`addComponent(world, ${eid}, world.Ball): the ball stores could not grow to hold entity ${eid} (${e instanceof Error ? e.message : describe(e)}); the entity is left as it was`)
+  }
   if (!hasComponent(world, eid, world.Path)) addComponent(world, eid, world.Path)
   if (world.Ball.live[eid] !== 1) world.ballCount++
   clearBallRows(world, eid)
