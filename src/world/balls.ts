@@ -76,8 +76,8 @@ export function adoptBall(world: BallWorld, eid: number): void {
 export function forgetBall(world: BallWorld, eid: number): void {
   if (!isLiveBall(world, eid)) return
   world.ballCount--
-  // between steps a held ball stays listed until the next entry point's check takes every removed one out
-  // in one pass (src/check.ts: its cleared row is no longer live); a step's own readers of the queue see it gone
+  // between steps a held ball stays listed until the queue's next reader takes every removed one out in one
+  // pass (dropGoneHeld, src/world/idLists.ts: its cleared row is no longer live); mid-step it leaves at once
   if (world.Ball.mode[eid] === BallMode.Held) {
     if (world.stepping) dropId(world.held, eid)
     else world.heldGone++

@@ -96,8 +96,8 @@ export interface BallWorldData {
   /** balls held at their spawn spot until it is clear (ball-ball contacts on), in the order they came */
   held: IdList
   /**
-   * held balls removed between steps and still in `held`: they leave it at the next entry point's check
-   * (src/check.ts), in one pass, so that removing n held balls costs O(n + queue), not O(n · queue)
+   * held balls removed between steps and still in `held`: they leave it in one pass when the queue is next
+   * read (dropGoneHeld, src/world/idLists.ts), so that removing n held balls costs O(n + queue), not O(n · queue)
    */
   heldGone: number
   /**
