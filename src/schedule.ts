@@ -2,7 +2,8 @@
 // moving ball (pass 0), then again for the balls that stopped at an event, until no ball has an event left
 // before the step's end or MAX_EVENT_PASSES is reached (the balls still behind then wait out the rest of the
 // step where they are: src/motion/pause.ts). A game may read the list, reorder with care, or add its own systems; each added system
-// runs in every pass and can tell passes apart by `world.pass`.
+// runs in every pass and can tell passes apart by `world.pass` (a step is one window or several: the fixed
+// tick's contact ticks and the launcher's instants split it, and each window starts at pass 0).
 import { bounceSystem } from '../systems/bounce.js'
 import { captureSystem } from '../systems/capture.js'
 import { collisionsSystem } from '../systems/collisions.js'

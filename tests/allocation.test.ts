@@ -15,6 +15,7 @@ import { setFlagsFromString } from 'node:v8'
 import { runInNewContext } from 'node:vm'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
+import { EventType, HOT, H_NEXT_T, PathEvent, WallEdge, launchBall, pushEvent, type BallWorld } from '../src/ecs'
 
 const root = resolve(import.meta.dirname, '..')
 
@@ -73,6 +74,33 @@ function skipping(): BallPhysics {
     const a = random() * 2 * Math.PI
     sim.addBall({ x: 5 * W * random(), y: 5 * H * random(), vx: 1200 * Math.cos(a), vy: 1200 * Math.sin(a) })
   }
+  return sim
+}
+
+/**
+ * The skipping scene with the walls stage a game's own: the default's bounce off a closed wall, written with
+ * the ecs entry's checked functions (pushEvent, launchBall), as a game's system would be.
+ */
+let ownWallHits = 0
+function skippingOwnWalls(): BallPhysics {
+  const sim = skipping()
+  const own = (w: BallWorld): void => {
+    const P = w.Path
+    const B = w.Ball
+    const list = w.marked
+    for (let i = 0; i < list.count; i++) {
+      const eid = list.ids[i]!
+      if (P.mark[eid] !== PathEvent.Wall) continue
+      // (launchBall clears the mark: the ball leaves its event)
+      const t = w.pathHot[eid * HOT + H_NEXT_T]!
+      const edge = P.markEdge[eid]!
+      const horizontal = edge === WallEdge.Left || edge === WallEdge.Right
+      ownWallHits++
+      pushEvent(w.events, EventType.Wall, eid, 0, t, false, 0, 0)
+      launchBall(w, eid, B.x[eid]!, B.y[eid]!, horizontal ? -0.9 * B.vx[eid]! : B.vx[eid]!, horizontal ? B.vy[eid]! : -0.9 * B.vy[eid]!, t)
+    }
+  }
+  sim.schedule.splice(sim.schedule.findIndex((e) => e.name === 'walls'), 0, { name: 'ownWalls', run: own })
   return sim
 }
 
@@ -244,6 +272,14 @@ describe('allocation per ball-step', () => {
   it(`contacts off: balls skipping over holes and off walls, events every step, allocate under ${LIMIT} bytes a ball-step`, async () => {
     const { least, windows, moving } = await leastBytesPerBallStep(skipping, 300)
     expect(moving).toBe(N)
+    expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
+  }, 30_000)
+
+  it(`contacts off: the same with the walls stage a game's own, on the ecs entry's checked functions, allocates under ${LIMIT} bytes a ball-step`, async () => {
+    ownWallHits = 0
+    const { least, windows, moving } = await leastBytesPerBallStep(skippingOwnWalls, 300)
+    expect(moving).toBe(N)
+    expect(ownWallHits).toBeGreaterThan(1000) // the game's stage bounced the balls
     expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
   }, 30_000)
 

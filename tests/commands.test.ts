@@ -3,7 +3,7 @@
 import { addComponent, entityExists, query, removeEntity } from 'bitecs'
 import { describe, expect, it } from 'vitest'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type ConfigOverrides, type ThrowSpec, type WallsSpec } from '../src/index'
-import { HOT, H_NEXT_T, launchBall, planRolling, startPath } from '../src/ecs'
+import { CaptureVia, EventType, HOT, H_NEXT_T, captureBall, launchBall, lockAtLip, planRimRoll, planRolling, pushEvent, restBall, sampleRolling, startPath, startRimRoll } from '../src/ecs'
 import {
   BallMode,
   PathEvent,
@@ -415,4 +415,127 @@ describe("a game's own system in the schedule", () => {
       expect(lips.some((l) => l.ball === e.ball && l.hole === e.hole && Object.is(l.t, e.time))).toBe(true)
     }
   })
+
+  it("the ecs entry's motion functions refuse a bad argument, naming it, and change nothing", () => {
+    const w = createBallWorld({ BALL_COLLISIONS: 'on' })
+    const h = addHole(w, { x: 300, y: 300 })
+    const b = addBall(w, { x: 100, y: 100, vx: 40, vy: 0 })
+    addBall(w, { x: 400, y: 400 })
+    const held = addBall(w, { x: 400, y: 400 }) // on another ball: the launcher holds it
+    expect(w.Ball.mode[held]).toBe(BallMode.Held)
+    stepWorld(w, 3)
+    const snap = () => JSON.stringify([listBalls(w), w.time, w.events.count, Array.from(w.Ball.x.subarray(0, 8)), Array.from(w.Ball.vx.subarray(0, 8)), Array.from(w.pathHot.subarray(0, 8 * HOT)), Array.from(w.RimContact.hole.subarray(0, 4))])
+    const before = snap()
+    const t = w.time
+    const bad: [string, () => unknown, RegExp, ErrorConstructor][] = [
+      ['NaN x', () => launchBall(w, b, NaN, 100, 1, 0, t), /launchBall: x must be a finite number in \[-1000000000, 1000000000\], got NaN/, RangeError],
+      ['Infinity vy', () => launchBall(w, b, 100, 100, 1, Infinity, t), /launchBall: vy must be a finite number of px\/s \(beyond MAX_SPEED = 10000000 a path is slowed along its direction\), got Infinity/, RangeError],
+      ['string t', () => launchBall(w, b, 100, 100, 1, 0, '0' as unknown as number), /launchBall: t must be the world's time between steps/, TypeError],
+      ['t in the past', () => launchBall(w, b, 100, 100, 1, 0, t - 0.01), /launchBall: t must be the world's time between steps \(0\.025\), got 0\.015/, RangeError],
+      ['removed ball', () => launchBall(w, 999, 100, 100, 1, 0, t), /launchBall: ball 999 is not a live ball/, RangeError],
+      ['a hole', () => restBall(w, h, t), /restBall: ball \d+ is not a live ball of this world: it is a hole/, RangeError],
+      ['held ball', () => launchBall(w, held, 100, 100, 1, 0, t), /launchBall: ball \d+ is held by the launcher/, RangeError],
+      ['startPath NaN', () => startPath(w, b, 100, NaN, 1, 0, t), /startPath: y must be a finite number/, RangeError],
+      ['sampleRolling t', () => sampleRolling(w, b, Infinity), /sampleRolling: t must be the world's time/, RangeError],
+      ['capture via', () => captureBall(w, b, h, t, 7 as never), /captureBall: via must be one of the codes 0, 1, 2, 3, got 7/, RangeError],
+      ['capture hole', () => captureBall(w, b, b, t, CaptureVia.Clean), /captureBall: hole \d+ is not a live hole of this world: it is a ball/, RangeError],
+      ['lock delta', () => lockAtLip(w, b, h, -1, 10, t, 1), /lockAtLip: delta must be in \[0, 1000000000\], got -1/, RangeError],
+      ['rim roll without a lock', () => startRimRoll(w, b, h, t), /startRimRoll: ball \d+ holds no lock at hole \d+/, RangeError],
+      ['plan a rim roll of a rolling ball', () => planRimRoll(w, b), /planRimRoll: ball \d+ is not rolling on a rim/, RangeError],
+      ['pushEvent time', () => pushEvent(w.events, EventType.Skip, b, h, NaN, false, 0, 0), /pushEvent: time must be a finite number/, RangeError],
+      ['pushEvent collision', () => pushEvent(w.events, EventType.Collision, b, h, t, false, 0, 0), /pushEvent: type must be one of the codes 0, 1, 2, 3, 4, 5, 6, 7, 8, got 9/, RangeError],
+      ['pushEvent buffer', () => pushEvent({} as never, EventType.Skip, b, h, t, false, 0, 0), /pushEvent: buf must be a world's event buffer/, TypeError],
+    ]
+    for (const [what, call, message, kind] of bad) {
+      let caught: unknown
+      try {
+        call()
+      } catch (e) {
+        caught = e
+      }
+      expect(caught, what).toBeInstanceOf(kind)
+      expect((caught as Error).message, what).toMatch(message)
+      expect(snap(), what).toBe(before)
+    }
+    // what a step allows: a time in the window the step is in (here split at the launcher's instants, 1/120 s)
+    let inStep = ''
+    const s = createSchedule(w.config)
+    s.push({
+      name: 'probe',
+      run: (w2) => {
+        if (w2.pass !== 0) return
+        try {
+          restBall(w2, b, w2.tickEnd + 1e-9)
+        } catch (e) {
+          inStep = (e as Error).message
+        }
+      },
+    })
+    runSchedule(w, s, 1 / 60)
+    expect(inStep).toMatch(/^restBall: t \(in a step: within the window \[world\.time, world\.tickEnd\]\) must be in \[0\.0333\d*, 0\.041\d*\], got 0\.04166/)
+  })
+
+  it('a ball a system relaunches at its own lip crossing leaves that event (no stage decides it after), the same at every frame rate, with contacts off, on and fixed', () => {
+    for (const BALL_COLLISIONS of ['off', 'on', 'fixed'] as const) {
+      const runs: string[] = []
+      for (const dt of [1 / 30, 1 / 60, 1 / 240, 0.25]) {
+        const w = createBallWorld({ ROLLING_DECEL: 0, BALL_COLLISIONS })
+        addHole(w, { x: 100, y: 200 })
+        addHole(w, { x: 400, y: 200 })
+        const a = addBall(w, { x: 100, y: 150, vx: 0, vy: 30 })
+        const b = addBall(w, { x: 400, y: 150, vx: 0, vy: 30 }) // both cross a lip at the same instant
+        let kicked = 0
+        const s = createSchedule(w.config)
+        s.splice(s.findIndex((e) => e.name === 'integration') + 1, 0, {
+          name: 'booster',
+          run: (w2) => {
+            if (kicked !== 0 || w2.Path.mark[b] !== PathEvent.Lip) return
+            kicked = w2.pathHot[b * HOT + H_NEXT_T]!
+            launchBall(w2, b, w2.Ball.x[b]!, w2.Ball.y[b]!, 200, 0, kicked) // sideways, from where it is
+          },
+        })
+        const events: BallEvent[] = []
+        while (w.time < 2) {
+          runSchedule(w, s, dt)
+          events.push(...drainEvents(w))
+        }
+        expect(kicked, `${BALL_COLLISIONS} ${dt}`).toBeGreaterThan(1)
+        // the kicked ball's lip crossing was not decided (before: a 'skip' at the crossing, where it no longer was)
+        expect(events.filter((e) => e.ball === b && e.type !== 'nearMiss'), `${BALL_COLLISIONS} ${dt}`).toEqual([])
+        expect(events.find((e) => e.ball === a)?.type).toBe('capture')
+        runs.push(JSON.stringify([events, w.Ball.x[b], w.Ball.y[b]]))
+      }
+      expect(new Set(runs).size, BALL_COLLISIONS).toBe(1)
+    }
+  })
+
+  it('with contacts off, a ball a system relaunches from the window start is followed through its events to the window end', () => {
+    // a system, at the step's first pass, sends a resting ball at a hole from where it rests: the same as
+    // launchBall between steps (before: it stayed where it was launched until the next step)
+    const make = () => {
+      const w = createBallWorld()
+      const h = addHole(w, { x: 100, y: 200 })
+      const b = addBall(w, { x: 100, y: 120 })
+      runSchedule(w, createSchedule(w.config), 1 / 60)
+      expect(drainEvents(w).map((e) => e.type)).toEqual(['rest'])
+      return { w, h, b }
+    }
+    const between = make()
+    launchBall(between.w, between.b, 100, 120, 0, 250, between.w.time)
+    runSchedule(between.w, createSchedule(between.w.config), 0.5)
+    const inStep = make()
+    const s = createSchedule(inStep.w.config)
+    s.splice(s.findIndex((e) => e.name === 'integration') + 1, 0, {
+      name: 'sender',
+      run: (w2) => {
+        if (w2.pass === 0 && w2.Ball.mode[inStep.b] === BallMode.Resting) launchBall(w2, inStep.b, 100, 120, 0, 250, w2.time)
+      },
+    })
+    runSchedule(inStep.w, s, 0.5)
+    const seen = drainEvents(inStep.w)
+    expect(seen.map((e) => e.type)).toContain('capture')
+    expect(seen).toEqual(drainEvents(between.w))
+    expect(ballState(inStep.w, inStep.b)).toEqual(ballState(between.w, between.b))
+  })
+
 })

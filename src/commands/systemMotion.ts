@@ -1,0 +1,257 @@
+// The motion functions a game's own systems call (the ./ecs entry's launchBall, startPath, planRolling,
+// restBall, captureBall, …), checked. The systems of the schedule call the unchecked ones in src/motion with
+// values they made themselves; a game's system passes its own, and a NaN or a time outside the step went
+// straight into the stores (a path started at t = NaN gave every later event NaN). Each check names the
+// function and the argument, and is made before anything changes.
+//
+// Time: between steps every t is the world's time; in a step it lies in the window the step is in,
+// [world.time, world.tickEnd] (a ball stopped at an event is at that event's time, pathHot's H_NEXT_T).
+//
+// A ball given a new fate in a step (launched, rested, captured) leaves the event it was stopped at: its
+// Path.mark is cleared, so no stage after the game's decides it again from where it was. With contacts off
+// (and the fixed tick), a ball whose path a system restarted is handed to the next pass, which takes it to
+// the window's end through its events (the integration system continues world.marked only); a ball that was
+// not stopped at an event was left at the window's end, and its new path was not followed until the next step.
+import { BallMode } from '../../components/Ball.js'
+import { PathEvent } from '../../components/Path.js'
+import { RIM_MODE_NAMES } from '../../components/RimContact.js'
+import { MAX_COORDINATE, MAX_SPEED } from '../config/limits.js'
+import { CaptureVia, EventType, pushEvent as pushEventRaw, type CaptureViaCode, type EventBuffer, type EventTypeCode } from '../events.js'
+import { captureBall as captureRaw, emitHoleEvent as emitRaw, launchBallAt, restBall as restRaw } from '../motion/ballFate.js'
+import { planRimRoll as planRimRaw, sampleRimRoll as sampleRimRaw, startRimRoll as startRimRaw } from '../motion/rimRoll.js'
+import { planRolling as planRaw, sampleAtDistance as atDistanceRaw, sampleRolling as sampleRaw, startPathAt } from '../motion/rolling.js'
+import { lockAtLip as lockRaw, releaseRim as releaseRaw } from '../world/rimSlots.js'
+import { pushId } from '../world/idLists.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { checkBall, checkHole, checkWorld, describe, finite, within } from './validate.js'
+
+const HOLE_EVENTS = [EventType.Skip, EventType.Capture, EventType.Bounce, EventType.RimRoll, EventType.LipOut, EventType.NearMiss] as const
+const EVENT_CODES = Object.values(EventType).filter((c) => c !== EventType.Collision)
+const VIA_CODES = Object.values(CaptureVia)
+const RIM_CODES = RIM_MODE_NAMES.map((_, i) => i)
+
+
+/** t: the world's time between steps; in a step, within the window the step is in. */
+function instant(fn: string, w: BallWorld, t: unknown): number {
+  if (!w.stepping) {
+    if (t !== w.time) {
+      throw new (typeof t === 'number' ? RangeError : TypeError)(
+        `${fn}: t must be the world's time between steps (${w.time}), got ${describe(t)}; in a step, a time in the window the step is in`,
+      )
+    }
+    return t
+  }
+  // (the message built on failure only: a check that passes allocates nothing)
+  if (typeof t === 'number' && t >= w.time && t <= w.tickEnd) return t
+  return within(`${fn}: t (in a step: within the window [world.time, world.tickEnd])`, t, w.time, w.tickEnd)
+}
+
+/** A velocity component: any finite number (a path's is capped at MAX_SPEED along its direction: src/motion/speedLimit.ts). */
+function velocity(field: string, v: unknown): number {
+  if (typeof v !== 'number') throw new TypeError(`${field} must be a finite number of px/s, got ${describe(v)}`)
+  if (!Number.isFinite(v)) throw new RangeError(`${field} must be a finite number of px/s (beyond MAX_SPEED = ${MAX_SPEED} a path is slowed along its direction), got ${v}`)
+  return v
+}
+
+function code(fn: string, field: string, value: unknown, codes: readonly number[]): number {
+  if (typeof value !== 'number' || !codes.includes(value)) {
+    throw new (typeof value === 'number' ? RangeError : TypeError)(`${fn}: ${field} must be one of the codes ${codes.join(', ')}, got ${describe(value)}`)
+  }
+  return value
+}
+
+function notHeld(fn: string, w: BallWorld, b: number): void {
+  if (w.Ball.mode[b] === BallMode.Held) {
+    throw new RangeError(`${fn}: ball ${b} is held by the launcher (mode held: it waits for its spot to clear); it starts when the launcher releases it`)
+  }
+}
+
+function rimBall(fn: string, w: BallWorld, b: number): void {
+  if (w.Ball.mode[b] !== BallMode.RimRoll) throw new RangeError(`${fn}: ball ${b} is not rolling on a rim (its mode is not rimRoll)`)
+}
+
+/** In a step, a ball that leaves the event it was stopped at; with contacts off, its new path is followed. */
+function leaveEvent(w: BallWorld, b: number, moves: boolean): void {
+  if (!w.stepping) return
+  const P = w.Path
+  const marked = P.mark[b] !== PathEvent.None
+  P.mark[b] = PathEvent.None
+  if (!moves || w.collide !== null || w.config.METHOD !== 'exact') return
+  // a ball stopped at an event is listed; so is one the stages handled this pass (taken on twice, the second
+  // would find it at its next event, marked, and throw): a scan of the pass's list, which a stage that
+  // launches a ball before clearing its mark (launchBall clears it) does without
+  if (marked) return
+  const list = w.marked
+  for (let i = 0; i < list.count; i++) if (list.ids[i] === b) return
+  pushId(list, b)
+}
+
+/** Starts `ball` rolling from (x, y) with velocity (vx, vy) at time t: its new path, planned, and the ball moving. */
+export function launchBall(world: BallWorld, ball: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  const w = checkWorld('launchBall', world)
+  const b = checkBall(w, 'launchBall: ball', ball)
+  notHeld('launchBall', w, b)
+  const px = finite('launchBall: x', x, MAX_COORDINATE)
+  const py = finite('launchBall: y', y, MAX_COORDINATE)
+  const pvx = velocity('launchBall: vx', vx)
+  const pvy = velocity('launchBall: vy', vy)
+  const pt = instant('launchBall', w, t)
+  leaveEvent(w, b, true)
+  launchBallAt(w, b, px, py, pvx, pvy, pt)
+}
+
+/** Writes the start of `ball`'s next straight path (plan it with planRolling); the mode is left as it is. */
+export function startPath(world: BallWorld, ball: number, x: number, y: number, vx: number, vy: number, t: number): void {
+  const w = checkWorld('startPath', world)
+  const b = checkBall(w, 'startPath: ball', ball)
+  notHeld('startPath', w, b)
+  const px = finite('startPath: x', x, MAX_COORDINATE)
+  const py = finite('startPath: y', y, MAX_COORDINATE)
+  const pvx = velocity('startPath: vx', vx)
+  const pvy = velocity('startPath: vy', vy)
+  startPathAt(w, b, px, py, pvx, pvy, instant('startPath', w, t))
+}
+
+/**
+ * Finds the next event of `ball` on its straight path (after startPath, or after its radius was written:
+ * the events of a path depend on it). In a step with contacts off, the next pass follows the new plan.
+ */
+export function planRolling(world: BallWorld, ball: number): void {
+  const w = checkWorld('planRolling', world)
+  const b = checkBall(w, 'planRolling: ball', ball)
+  notHeld('planRolling', w, b)
+  if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`planRolling: ball ${b} is not rolling (its mode is not rolling)`)
+  planRaw(w, b)
+  if (w.stepping && w.Path.mark[b] === PathEvent.None) leaveEvent(w, b, true)
+}
+
+/** Writes `ball`'s state at time t on its straight path (clamped at its stop) into its stores. */
+export function sampleRolling(world: BallWorld, ball: number, t: number): void {
+  const w = checkWorld('sampleRolling', world)
+  const b = checkBall(w, 'sampleRolling: ball', ball)
+  if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`sampleRolling: ball ${b} is not rolling (its mode is not rolling)`)
+  sampleRaw(w, b, instant('sampleRolling', w, t))
+}
+
+/** Writes `ball`'s state where its straight path has covered distance d (px, ≥ 0) into its stores. */
+export function sampleAtDistance(world: BallWorld, ball: number, d: number): void {
+  const w = checkWorld('sampleAtDistance', world)
+  const b = checkBall(w, 'sampleAtDistance: ball', ball)
+  if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`sampleAtDistance: ball ${b} is not rolling (its mode is not rolling)`)
+  atDistanceRaw(w, b, within('sampleAtDistance: d', d, 0, 2 * MAX_COORDINATE))
+}
+
+/** `ball` stops where it is, at time t, outside every hole: a 'rest' event, mode resting. */
+export function restBall(world: BallWorld, ball: number, t: number): void {
+  const w = checkWorld('restBall', world)
+  const b = checkBall(w, 'restBall: ball', ball)
+  notHeld('restBall', w, b)
+  const pt = instant('restBall', w, t)
+  leaveEvent(w, b, false)
+  restRaw(w, b, pt)
+}
+
+/** `ball` falls into `hole` at time t: it sits at the hole's centre, captured, and its lock is given back. */
+export function captureBall(world: BallWorld, ball: number, hole: number, t: number, via: CaptureViaCode): void {
+  const w = checkWorld('captureBall', world)
+  const b = checkBall(w, 'captureBall: ball', ball)
+  notHeld('captureBall', w, b)
+  const h = checkHole(w, 'captureBall: hole', hole)
+  const pt = instant('captureBall', w, t)
+  const v = code('captureBall', 'via', via, VIA_CODES) as CaptureViaCode
+  leaveEvent(w, b, false)
+  captureRaw(w, b, h, pt, v)
+}
+
+/** Buffers a hole event of `ball` at `hole` at time t, with the lip crossing's (δ, v) when its lock has one. */
+export function emitHoleEvent(world: BallWorld, type: (typeof HOLE_EVENTS)[number], ball: number, hole: number, t: number, via: CaptureViaCode = CaptureVia.None): void {
+  const w = checkWorld('emitHoleEvent', world)
+  const b = checkBall(w, 'emitHoleEvent: ball', ball)
+  const ty = code('emitHoleEvent', 'type', type, HOLE_EVENTS) as (typeof HOLE_EVENTS)[number]
+  const h = checkHole(w, 'emitHoleEvent: hole', hole)
+  const pt = instant('emitHoleEvent', w, t)
+  emitRaw(w, ty, b, h, pt, code('emitHoleEvent', 'via', via, VIA_CODES) as CaptureViaCode)
+}
+
+/**
+ * Appends an event to an event buffer (world.events): type (any but a collision, which names two balls),
+ * ball and hole ids (0: none), time, and (δ, v) when hasDV.
+ */
+export function pushEvent(
+  buf: EventBuffer,
+  type: EventTypeCode,
+  ball: number,
+  hole: number,
+  time: number,
+  hasDV: boolean,
+  delta: number,
+  speed: number,
+  via: CaptureViaCode = CaptureVia.None,
+): void {
+  if (buf === null || typeof buf !== 'object' || !(buf.time instanceof Float64Array) || typeof buf.count !== 'number') {
+    throw new TypeError(`pushEvent: buf must be a world's event buffer (world.events), got ${describe(buf)}`)
+  }
+  const ty = code('pushEvent', 'type', type, EVENT_CODES) as EventTypeCode
+  const b = within('pushEvent: ball', ball, 1, 0x7fffffff)
+  const h = within('pushEvent: hole (0: none)', hole, 0, 0x7fffffff)
+  if (!Number.isInteger(b) || !Number.isInteger(h)) throw new RangeError(`pushEvent: ball and hole must be entity ids (integers), got ${ball} and ${hole}`)
+  const t = finite('pushEvent: time', time, Number.MAX_VALUE)
+  if (typeof hasDV !== 'boolean') throw new TypeError(`pushEvent: hasDV must be a boolean, got ${describe(hasDV)}`)
+  const d = hasDV ? within('pushEvent: delta', delta, 0, MAX_COORDINATE) : 0
+  const s = hasDV ? within('pushEvent: speed', speed, 0, MAX_SPEED) : 0
+  pushEventRaw(buf, ty, b, h, t, hasDV, d, s, code('pushEvent', 'via', via, VIA_CODES) as CaptureViaCode)
+}
+
+/**
+ * Takes a hole lock for `ball` at its lip crossing of `hole` (δ px, v px/s, at time t, in rim mode `mode`):
+ * its RimContact slot, which it returns.
+ */
+export function lockAtLip(world: BallWorld, ball: number, hole: number, delta: number, speed: number, t: number, mode: number): number {
+  const w = checkWorld('lockAtLip', world)
+  const b = checkBall(w, 'lockAtLip: ball', ball)
+  notHeld('lockAtLip', w, b)
+  const h = checkHole(w, 'lockAtLip: hole', hole)
+  const d = within('lockAtLip: delta', delta, 0, MAX_COORDINATE)
+  const s = within('lockAtLip: speed', speed, 0, MAX_SPEED)
+  const pt = instant('lockAtLip', w, t)
+  const m = code('lockAtLip', 'mode', mode, RIM_CODES)
+  return lockRaw(w, b, h, d, s, pt, m)
+}
+
+/** Gives back `ball`'s hole lock (its RimContact slot); a no-op when it holds none. */
+export function releaseRim(world: BallWorld, ball: number): void {
+  const w = checkWorld('releaseRim', world)
+  const b = checkBall(w, 'releaseRim: ball', ball)
+  if (w.Ball.mode[b] === BallMode.RimRoll) throw new RangeError(`releaseRim: ball ${b} is rolling on a rim (its roll reads the lock); end the roll first (launchBall, captureBall)`)
+  releaseRaw(w, b)
+}
+
+/** Puts `ball`, which holds a lock at `hole` (lockAtLip), on that hole's rim at time t; returns its angle. */
+export function startRimRoll(world: BallWorld, ball: number, hole: number, t: number): number {
+  const w = checkWorld('startRimRoll', world)
+  const b = checkBall(w, 'startRimRoll: ball', ball)
+  notHeld('startRimRoll', w, b)
+  const h = checkHole(w, 'startRimRoll: hole', hole)
+  const slot = w.Ball.rim[b]!
+  if (slot === 0 || w.RimContact.hole[slot] !== h) throw new RangeError(`startRimRoll: ball ${b} holds no lock at hole ${h} (take one with lockAtLip first)`)
+  const pt = instant('startRimRoll', w, t)
+  leaveEvent(w, b, false)
+  return startRimRaw(w, b, h, pt)
+}
+
+/** Finds the next event (drop or pop-off) of `ball`, rolling on a rim. */
+export function planRimRoll(world: BallWorld, ball: number): void {
+  const w = checkWorld('planRimRoll', world)
+  const b = checkBall(w, 'planRimRoll: ball', ball)
+  rimBall('planRimRoll', w, b)
+  planRimRaw(w, b)
+  if (w.stepping && w.Path.mark[b] === PathEvent.None) leaveEvent(w, b, true)
+}
+
+/** Writes `ball`'s state at time t on the rim into its stores. */
+export function sampleRimRoll(world: BallWorld, ball: number, t: number): void {
+  const w = checkWorld('sampleRimRoll', world)
+  const b = checkBall(w, 'sampleRimRoll: ball', ball)
+  rimBall('sampleRimRoll', w, b)
+  sampleRimRaw(w, b, instant('sampleRimRoll', w, t))
+}
