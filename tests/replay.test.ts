@@ -149,6 +149,16 @@ describe('replays', () => {
     expect(() => replayFromJSON(text.replace('{', '{"extra":1,'))).toThrow(/replay\.extra is not a known key/)
     expect(() => replayFromJSON(text.replace(/"version":\d+/, '"version":2'))).toThrow(/replay\.version 2/)
     expect(() => replayFromJSON('null')).toThrow(TypeError)
+    // the recorded world's options are part of a replay: checked, each field named
+    const { options: _options, ...noOptions } = good
+    expect(() => createReplayPlayer(noOptions as Replay)).toThrow(/^replay\.options must be the recorded world's options \{ capacity, broadphase \}, got undefined$/)
+    expect(() => replayFromJSON(replayToJSON(noOptions as Replay))).toThrow(TypeError)
+    expect(() => createReplayPlayer({ ...good, options: { ...good.options, capacity: 0 } })).toThrow(/^replay\.options\.capacity must be an integer in \[1, 67108864\], got 0$/)
+    expect(() => createReplayPlayer({ ...good, options: { ...good.options, broadphase: 'hash' as 'grid' } })).toThrow(/^replay\.options\.broadphase must be 'auto', 'grid' or 'scan', got the string "hash"$/)
+    expect(() => createReplayPlayer({ ...good, options: { ...good.options, cap: 1 } as Replay['options'] })).toThrow(/replay\.options\.cap is not a known key/)
+    // text that is not JSON says whose text it was
+    expect(() => replayFromJSON(text.slice(0, -1))).toThrow(SyntaxError)
+    expect(() => replayFromJSON(text.slice(0, -1))).toThrow(/^replayFromJSON: text is not JSON \(a replay as replayToJSON writes it\): /)
     expect(replayFromJSON(text)).toEqual(good)
   })
 })

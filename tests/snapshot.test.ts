@@ -2,8 +2,9 @@
 // same events and states, bit for bit, in every contact mode and rim model; bad bytes are refused with a
 // message that says what is wrong, and the world they were given to is left as it was.
 import { describe, expect, it } from 'vitest'
-import { addPanel, createBallPhysics, PHYSICAL_CONFIG, prepareRimTable, SNAPSHOT_VERSION, TABULATED_CONFIG, type BallPhysics, type ConfigOverrides } from '../src/index.js'
+import { addPanel, createBallPhysics, PHYSICAL_CONFIG, prepareRimTable, SNAPSHOT_VERSION, SnapshotError, TABULATED_CONFIG, type BallPhysics, type ConfigOverrides } from '../src/index.js'
 import { checksum } from '../src/commands/snapshotCodec.js'
+import { SnapshotError as ecsSnapshotError } from '../src/ecs.js'
 
 function random(seed: number): () => number {
   let s = seed
@@ -136,6 +137,18 @@ describe('snapshot and restore', () => {
     it('not a snapshot', () => {
       refused(new TextEncoder().encode('hello world, not a snapshot'), /not a snapshot/)
       refused(new Uint8Array(0), /end inside the header/)
+      // a SnapshotError (a RangeError) that a caller can tell apart, from either entry
+      let caught: unknown
+      try {
+        createBallPhysics().restore(new TextEncoder().encode('hello world, not a snapshot'))
+      } catch (e) {
+        caught = e
+      }
+      expect(caught).toBeInstanceOf(SnapshotError)
+      expect(caught).toBeInstanceOf(RangeError)
+      expect((caught as Error).name).toBe('SnapshotError')
+      expect(String(caught)).toMatch(/^SnapshotError: restore: these bytes are not a snapshot/)
+      expect(SnapshotError).toBe(ecsSnapshotError)
     })
 
     it('truncated anywhere', () => {

@@ -12,7 +12,7 @@ import { describe, readSpec } from './validate.js'
 import { forgetWalls } from './walls.js'
 
 /** Largest `options.capacity`. */
-const MAX_CAPACITY = 1 << 26
+export const MAX_CAPACITY = 1 << 26
 
 /**
  * Creates an empty world with the design's constants changed by `overrides` (validated). Games that run

@@ -17,7 +17,7 @@ import type { ReplayInput } from '../world/recorder.js'
 import { createSchedule, runSchedule, type ScheduleEntry } from '../schedule.js'
 import { prepareRimTable } from '../reference/rimTables.js'
 import { addBall, removeBall, setBallVelocity, setHeroBall, throwBall, type BallSpec, type ThrowSpec } from './balls.js'
-import { createBallWorld } from './createBallWorld.js'
+import { MAX_CAPACITY, createBallWorld } from './createBallWorld.js'
 import { addHole, addHoles, removeHole, type HoleSpec } from './holes.js'
 import { restoreWorld, snapshotWorld } from './snapshot.js'
 import { checkWorld, describe, specObject } from './validate.js'
@@ -165,6 +165,7 @@ function apply(w: BallWorld, schedule: readonly ScheduleEntry[], input: ReplayIn
 }
 
 const REPLAY_KEYS = ['format', 'version', 'config', 'options', 'start', 'inputs'] as const
+const OPTION_KEYS = ['capacity', 'broadphase'] as const
 
 function checkReplay(r: Replay): void {
   if (r === null || typeof r !== 'object') throw new TypeError(`replay must be a replay object (from takeReplay), got ${describe(r)}`)
@@ -172,6 +173,16 @@ function checkReplay(r: Replay): void {
   if (r.format !== REPLAY_FORMAT) throw new RangeError(`replay.format must be '${REPLAY_FORMAT}', got ${describe(r.format)}`)
   if (r.version !== REPLAY_VERSION) throw new RangeError(`replay.version ${describe(r.version)}: this module plays version ${REPLAY_VERSION}`)
   if (r.config === null || typeof r.config !== 'object') throw new TypeError(`replay.config must be a config object, got ${describe(r.config)}`)
+  const o: unknown = r.options
+  if (o === null || typeof o !== 'object' || Array.isArray(o)) throw new TypeError(`replay.options must be the recorded world's options { capacity, broadphase }, got ${describe(o)}`)
+  const opts = specObject('replay.options', o, OPTION_KEYS)
+  const cap = opts.capacity
+  if (typeof cap !== 'number' || !Number.isInteger(cap) || cap < 1 || cap > MAX_CAPACITY) {
+    throw new (typeof cap === 'number' ? RangeError : TypeError)(`replay.options.capacity must be an integer in [1, ${MAX_CAPACITY}], got ${describe(cap)}`)
+  }
+  if (opts.broadphase !== 'auto' && opts.broadphase !== 'grid' && opts.broadphase !== 'scan') {
+    throw new RangeError(`replay.options.broadphase must be 'auto', 'grid' or 'scan', got ${describe(opts.broadphase)}`)
+  }
   if (!Array.isArray(r.inputs)) throw new TypeError(`replay.inputs must be an array, got ${describe(r.inputs)}`)
   for (let i = 0; i < r.inputs.length; i++) {
     if (!Array.isArray(r.inputs[i]) || typeof r.inputs[i]![0] !== 'string') throw new TypeError(`replay.inputs[${i}] must be [command, ...arguments], got ${describe(r.inputs[i])}`)
@@ -187,7 +198,12 @@ export function replayToJSON(replay: Replay): string {
 /** A replay from replayToJSON's text, checked as a player checks it (an unknown key, a wrong format or version throws here). */
 export function replayFromJSON(text: string): Replay {
   if (typeof text !== 'string') throw new TypeError(`replayFromJSON: text must be a string, got ${describe(text)}`)
-  const replay = JSON.parse(text, (_k, v: unknown) => (v === '-0' ? -0 : v)) as Replay
+  let replay: Replay
+  try {
+    replay = JSON.parse(text, (_k, v: unknown) => (v === '-0' ? -0 : v)) as Replay
+  } catch (e) {
+    throw new SyntaxError(`replayFromJSON: text is not JSON (a replay as replayToJSON writes it): ${e instanceof Error ? e.message : describe(e)}`)
+  }
   checkReplay(replay)
   return replay
 }

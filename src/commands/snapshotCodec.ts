@@ -64,7 +64,10 @@ export class Writer {
   }
 }
 
-export class SnapshotError extends RangeError {}
+/** What restore throws for bytes it will not read (a RangeError, named so that a caller can tell it apart). */
+export class SnapshotError extends RangeError {
+  override name = 'SnapshotError'
+}
 
 export class Reader {
   view: DataView
