@@ -109,7 +109,11 @@ export function checkWorld(caller: string, world: unknown, reads = false): BallW
     throw new TypeError(`${caller}: world must be a world made by createBallWorld, got ${describe(world)}`)
   }
   const internal = (w as unknown as Record<symbol, { entityIndex?: unknown } | undefined>)[BITECS_INTERNAL]
-  if (internal === undefined) throw new Error(`${caller}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
+  if (internal === undefined) {
+    throw new Error(
+      `${caller}: this is not a live world: it was deleted (bitECS deleteWorld), which is not supported (make a new one), or it is a copy of one (such as { ...world }), which has the stores but not bitECS's entities (pass the world createBallWorld returned)`,
+    )
+  }
   // bitECS's resetWorld gives the world a fresh entity index and forgets every entity and component, while
   // the simulation's stores still hold its balls, holes and walls: new ids would be handed out over them
   if (internal.entityIndex !== w.entityIndex) {

@@ -18,7 +18,7 @@ import { outsideStep } from '../src/world/system.js'
 const out = new Float64Array(2)
 
 export function bounceSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('bounceSystem')
+  if (!w.stepping) outsideStep('bounceSystem', w)
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

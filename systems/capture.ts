@@ -14,7 +14,7 @@ import { hotNextT } from '../src/world/pathHot.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function captureSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('captureSystem')
+  if (!w.stepping) outsideStep('captureSystem', w)
   const P = w.Path
   const RC = w.RimContact
   const vMax = w.config.V_MAX

@@ -15,7 +15,7 @@ import type { BallWorld } from '../src/world/createWorld.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function cogGateSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('cogGateSystem')
+  if (!w.stepping) outsideStep('cogGateSystem', w)
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

@@ -34,7 +34,7 @@ import { HOT, H_NEXT_T, setNextT } from '../src/world/pathHot.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function collisionsSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('collisionsSystem')
+  if (!w.stepping) outsideStep('collisionsSystem', w)
   const C = w.collide
   if (C === null) return
   const P = w.Path

@@ -44,7 +44,7 @@ import { outsideStep } from '../src/world/system.js'
 import { keepWallTurns } from '../src/contacts/fixedWallTurn.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('fixedContactsSystem')
+  if (!w.stepping) outsideStep('fixedContactsSystem', w)
   const F = w.fixed
   if (F === null || !F.due || w.pass !== 0) return
   F.due = false

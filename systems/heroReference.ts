@@ -22,7 +22,7 @@ import { outsideStep } from '../src/world/system.js'
 export const HERO_ROLL_TURN = ROLL_TURN
 
 export function heroReferenceSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('heroReferenceSystem')
+  if (!w.stepping) outsideStep('heroReferenceSystem', w)
   const P = w.Path
   const B = w.Ball
   const list = w.marked

@@ -32,7 +32,7 @@ import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function integrationSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('integrationSystem')
+  if (!w.stepping) outsideStep('integrationSystem', w)
   if (w.collide !== null) {
     orderedIntegration(w)
     return
@@ -393,7 +393,7 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
     if (P.mark[eid] !== PathEvent.None) {
       throw new Error(
         `ball ${eid}: its event (kind ${P.mark[eid]}) was not handled by any system in the schedule; ` +
-          'keep skipOver, capture, cogGate, bounce, rimRoll and walls in it',
+          'keep skipOver, capture, cogGate, bounce, rimRoll, walls and collisions in it',
       )
     }
     P.mark[eid] = kind

@@ -33,7 +33,7 @@ import { hypot } from '../src/math.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function launcherSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('launcherSystem')
+  if (!w.stepping) outsideStep('launcherSystem', w)
   if (w.pass !== 0 || w.held.count === 0 || !w.launchDue) return
   const q = w.held
   const B = w.Ball

@@ -16,7 +16,7 @@ import { hotNextT } from '../src/world/pathHot.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function rimRollSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('rimRollSystem')
+  if (!w.stepping) outsideStep('rimRollSystem', w)
   const P = w.Path
   const B = w.Ball
   const list = w.marked

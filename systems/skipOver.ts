@@ -16,7 +16,7 @@ import { hotNextT } from '../src/world/pathHot.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function skipOverSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('skipOverSystem')
+  if (!w.stepping) outsideStep('skipOverSystem', w)
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

@@ -17,7 +17,7 @@ import { type BallWorld } from '../src/world/createWorld.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function tabulatedRimSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('tabulatedRimSystem')
+  if (!w.stepping) outsideStep('tabulatedRimSystem', w)
   // (rides and carries also end here for hero balls, whose crossings the reference decided live)
   const tabulated = w.config.RIM_MODEL === 'tabulated'
   const P = w.Path

@@ -17,7 +17,7 @@ import { H_NEXT_T, HOT, setNextT } from '../src/world/pathHot.js'
 import { outsideStep } from '../src/world/system.js'
 
 export function wallsSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('wallsSystem')
+  if (!w.stepping) outsideStep('wallsSystem', w)
   if (w.walls === 0) return
   const P = w.Path
   const B = w.Ball

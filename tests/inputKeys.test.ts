@@ -16,7 +16,7 @@ import {
   type OutcomeScene,
   type Replay,
 } from '../src/index'
-import { addHole, addHoles, createBallWorld, forEachBall, isBall, listBalls, listHoles, playReplay, setWalls, throwBall } from '../src/ecs'
+import { addBall, addHole, addHoles, createBallWorld, forEachBall, isBall, listBalls, listHoles, playReplay, setWalls, throwBall } from '../src/ecs'
 import { brentRoot, createDopri5Workspace, dopri5, lipEnergy, referenceOutcome, referenceTrace, rollOnLip, singleImpactEscapes, validateReferenceInput } from '../src/reference/index'
 
 /** What a refused call could have touched. */
@@ -276,7 +276,14 @@ describe('a world deleted by bitECS deleteWorld (not supported)', () => {
       ['forEachBall', () => forEachBall(sim.world, () => {})],
       ['isBall', () => isBall(sim.world, ball)],
     ]
-    for (const [name, call] of calls) expect(call).toThrow(`${name}: the world was deleted (bitECS deleteWorld), which is not supported; make a new one`)
+    for (const [name, call] of calls) expect(call).toThrow(`${name}: this is not a live world: it was deleted (bitECS deleteWorld), which is not supported (make a new one), or it is a copy of one`)
+  })
+
+  it('a copy of a world ({ ...world }) is refused as not live, with both causes named', () => {
+    const sim = scene()
+    const copy = { ...sim.world }
+    expect(() => addBall(copy, { x: 0, y: 0 })).toThrow(/^addBall: this is not a live world: .* or it is a copy of one \(such as \{ \.\.\.world \}\), which has the stores but not bitECS's entities \(pass the world createBallWorld returned\)$/)
+    expect(sim.balls().length).toBeGreaterThan(0)
   })
 })
 

@@ -240,6 +240,8 @@ describe('steps', () => {
         sim.step(1 / 60)
         for (const entry of createSchedule(sim.world.config)) {
           expectRefused(sim, () => entry.run(sim.world), Error, `${entry.run.name}: a system runs inside a step`, 'runSchedule(world, schedule, dt)')
+          // given what is not a ball world (a bitECS world of the game's own, say), it says that instead
+          expect(() => entry.run({ components: [] } as unknown as typeof sim.world)).toThrow(new TypeError(`${entry.run.name}: world must be a world made by createBallWorld, got an object that is not one`))
         }
         // the same systems in a schedule step as ever
         expect(() => sim.step(1 / 60)).not.toThrow()

@@ -14,7 +14,12 @@ export interface ScheduleEntry {
  * and return, the world unchanged, so a game that ran the systems in its own pipeline instead of through
  * runSchedule saw no ball move and no error.
  */
-export function outsideStep(system: string): never {
+export function outsideStep(system: string, world: unknown): never {
+  // (what was passed may not be a world at all: a bitECS world of the game's own has no `stepping` either)
+  const w = world as Record<string, unknown> | null
+  if (w === null || typeof w !== 'object' || !('Ball' in w) || !('holes' in w) || !('config' in w)) {
+    throw new TypeError(`${system}: world must be a world made by createBallWorld, got ${w === null ? 'null' : Array.isArray(w) ? 'an array' : typeof w === 'object' ? 'an object that is not one' : typeof w}`)
+  }
   throw new Error(
     `${system}: a system runs inside a step, which runSchedule(world, schedule, dt) (or sim.step) opens: put it in a schedule (createSchedule(world.config), with systems of your own spliced in) and run that; called between steps it would do nothing`,
   )

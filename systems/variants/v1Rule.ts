@@ -14,7 +14,7 @@ import { HOT, H_NEXT_T, H_UX, H_UY, H_X0, H_Y0 } from '../../src/world/pathHot.j
 import { outsideStep } from '../../src/world/system.js'
 
 export function v1RuleSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('v1RuleSystem')
+  if (!w.stepping) outsideStep('v1RuleSystem', w)
   const P = w.Path
   const RC = w.RimContact
   const H = w.Hole

@@ -17,7 +17,7 @@ import { outsideStep } from '../../../src/world/system.js'
 const out = new Float64Array(2)
 
 export function naiveBounceSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveBounceSystem')
+  if (!w.stepping) outsideStep('naiveBounceSystem', w)
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

@@ -10,7 +10,7 @@ import { naiveState } from './state.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveCaptureSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveCaptureSystem')
+  if (!w.stepping) outsideStep('naiveCaptureSystem', w)
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

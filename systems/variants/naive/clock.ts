@@ -7,7 +7,7 @@ import { naiveState } from './state.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveClockSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveClockSystem')
+  if (!w.stepping) outsideStep('naiveClockSystem', w)
   const st = naiveState(w)
   if (st.stepEnd !== w.tickEnd || st.index >= st.substeps) {
     st.stepEnd = w.tickEnd

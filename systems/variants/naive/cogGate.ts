@@ -11,7 +11,7 @@ import { naiveState } from './state.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveCogGateSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveCogGateSystem')
+  if (!w.stepping) outsideStep('naiveCogGateSystem', w)
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

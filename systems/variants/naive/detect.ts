@@ -22,7 +22,7 @@ import { hypot } from '../../../src/math.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveDetectSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveDetectSystem')
+  if (!w.stepping) outsideStep('naiveDetectSystem', w)
   const st = naiveState(w)
   const t = st.t
   const S = st.store

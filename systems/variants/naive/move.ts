@@ -17,7 +17,7 @@ export function naiveRollDecay(v: number, friction: number, h: number): number {
 }
 
 export function naiveMoveSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveMoveSystem')
+  if (!w.stepping) outsideStep('naiveMoveSystem', w)
   const st = naiveState(w)
   const h = st.h
   const S = st.store

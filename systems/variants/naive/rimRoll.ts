@@ -18,7 +18,7 @@ import { cos, sin } from '../../../src/math.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveRimRollSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveRimRollSystem')
+  if (!w.stepping) outsideStep('naiveRimRollSystem', w)
   const st = naiveState(w)
   const S = st.store
   const P = w.Path

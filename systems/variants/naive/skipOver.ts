@@ -10,7 +10,7 @@ import { naiveState } from './state.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function naiveSkipOverSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('naiveSkipOverSystem')
+  if (!w.stepping) outsideStep('naiveSkipOverSystem', w)
   const st = naiveState(w)
   const P = w.Path
   const RC = w.RimContact

@@ -14,7 +14,7 @@ import { hypot } from '../../../src/math.js'
 import { outsideStep } from '../../../src/world/system.js'
 
 export function v1CaptureSystem(w: BallWorld): void {
-  if (!w.stepping) outsideStep('v1CaptureSystem')
+  if (!w.stepping) outsideStep('v1CaptureSystem', w)
   const st = naiveState(w)
   const S = st.store
   const B = w.Ball
