@@ -111,6 +111,33 @@ describe('balls are bitECS entities', () => {
     expect(listBalls(w)).toEqual(sorted([c, d]))
   })
 
+  it('an onAdd(Ball) observer that throws, or removes the entity, fails the command with nothing added, and the world goes on', () => {
+    for (const act of ['throws', 'removes'] as const) {
+      const w = createBallWorld()
+      const first = addBall(w, { x: 0, y: 0, vx: 50, vy: 0 })
+      const stop = observe(w, onAdd(w.Ball), (eid: number) => {
+        if (act === 'throws') throw new Error('the game failed')
+        removeEntity(w, eid)
+      })
+      let message = ''
+      try {
+        addBall(w, { x: 200, y: 0 })
+      } catch (e) {
+        message = (e as Error).message
+      }
+      // (before: a removed entity gave bitECS's own TypeError, "Cannot read properties of undefined")
+      expect(message).toMatch(act === 'throws' ? /^the game failed$/ : /^addBall \(throwBall\): an onAdd\(world\.Ball\) observer removed entity \d+ while it was being made a ball .*Nothing was added$/)
+      expect(listBalls(w)).toEqual([first])
+      expect(sorted(query(w, [w.Ball]))).toEqual([first])
+      expect(w.ballCount).toBe(1)
+      stop()
+      const next = addBall(w, { x: 200, y: 0 })
+      step(w, 1 / 60, 3)
+      expect(listBalls(w)).toEqual([first, next])
+      expect(ballState(w, first).x).toBeCloseTo(50 * 0.05 - 0.5 * w.config.ROLLING_DECEL * 0.05 * 0.05, 9) // it rolled on
+    }
+  })
+
   it('RimContact is on a ball exactly while it rolls on a rim, after every small step; query([RimContact]) agrees', () => {
     // rim roll, skip, slow capture, and a ball put down inside a lip circle (in transit): only the rim roll
     // carries the component; the others hold a RimContact row (their hole lock) without it

@@ -8,7 +8,7 @@
 //     resting grid and the step's lists of balls stopped at an event (a game's system may remove a ball
 //     mid-step), its pending contacts go stale, its rows are zeroed and, removed between steps, the events
 //     buffered for it are dropped at the next drain (its id may be handed to a new entity before then).
-import { addComponent, addEntity, hasComponent, removeComponent, removeEntity } from 'bitecs'
+import { addComponent, addEntity, entityExists, hasComponent, removeComponent, removeEntity } from 'bitecs'
 import { BallMode, clearBallRow } from '../../components/Ball.js'
 import { clearPathRow } from '../../components/Path.js'
 import { clearSlot } from '../../components/store.js'
@@ -28,6 +28,11 @@ export function addBallEntity(world: BallWorld): number {
   try {
     addComponent(world, eid, world.Ball) // adoptBall runs here (and adds Path)
   } catch (e) {
+    // an onAdd(Ball) observer of the game's that removed the entity: bitECS's addComponent went on and failed
+    // on it with an error of its own
+    if (!entityExists(world, eid)) {
+      throw new Error(`addBall (throwBall): an onAdd(world.Ball) observer removed entity ${eid} while it was being made a ball (${e instanceof Error ? e.message : describe(e)}); remove a ball after the command that made it returns. Nothing was added`)
+    }
     removeEntity(world, eid) // (adoptBall took the Ball off again: no entity is left half-made)
     throw e
   }
