@@ -109,6 +109,8 @@ export function runSchedule(world: BallWorld, schedule: readonly ScheduleEntry[]
     const m = world.moving
     if (world.fixed === null && m.churn * MOVING_ORDER_CHURN > m.count && m.count > MOVING_ORDER_MIN) orderMoving(world)
     runPasses(world, schedule, dt)
+    // a hole or the walls removed by a system (src/commands/holes.ts): the step's results are not to be trusted
+    if (world.failed !== null) throw new Error(`step (runSchedule): ${world.failed}`)
   } catch (e) {
     // the step is part-done: the world refuses to go on (src/check.ts), and a step that failed records
     // nothing, as a command that fails does (a replay of it would run the whole step)

@@ -1,7 +1,8 @@
 // Every entry point validates its input, says what it got, and leaves the world as it was.
 import { describe, expect, it } from 'vitest'
+import { removeEntity } from 'bitecs'
 import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallPhysics, type PanelLayout } from '../src/index'
-import { HOT, H_V0, addBall, addHole, addHoles, clearWalls, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, removeHole, runSchedule, setBallVelocity, setWalls, throwBall, type BallWorld } from '../src/ecs'
+import { HOT, H_V0, addBall, drainEvents, addHole, addHoles, clearWalls, createBallWorld, createSchedule, forEachBall, isBall, listBalls, listHoles, removeHole, runSchedule, setBallVelocity, setWalls, throwBall, type BallWorld } from '../src/ecs'
 
 /** Everything a failed call could have touched. */
 function snapshot(w: BallWorld): string {
@@ -135,6 +136,20 @@ describe('steps', () => {
       expect(listHoles(w), name).toEqual([r.hole])
       expect(w.walls, name).not.toBe(0)
       expect(w.Walls.maxX[w.walls], name).toBe(420)
+    }
+  })
+
+  it("a game's own removeEntity of a hole or of the walls from a system ends the step in an error that says so, and the world is refused after (a ball at its lip crossing took a 'skip' at t = 1e300, and the world went on)", () => {
+    for (const what of ['hole', 'walls'] as const) {
+      const w = createBallWorld()
+      const r = callMidStep(w, (ww, hole) => removeEntity(ww, what === 'hole' ? hole : ww.walls))
+      expect(r.tried, what).toBe(true)
+      const said = what === 'hole' ? `hole ${r.hole} was removed during a step` : 'the walls \\(entity \\d+\\) were removed during a step'
+      expect(String(r.error), what).toMatch(new RegExp(`^Error: step \\(runSchedule\\): ${said} \\(bitECS removeEntity from a system\\?\\), which is not supported: holes and walls change between steps`))
+      expect(w.failed, what).toMatch(new RegExp(`^${said}`))
+      expect(() => runSchedule(w, createSchedule(w.config), 1 / 60), what).toThrow(/was ended part-done by an error/)
+      // (the step's events stay drainable, as a failed step's do, and are as little to be trusted)
+      expect(Array.isArray(drainEvents(w))).toBe(true)
     }
   })
 

@@ -85,6 +85,8 @@ export function clearWalls(world: BallWorld): void {
 /** onRemove(Walls): the panel has no walls any more; rolling balls are re-planned. */
 export function forgetWalls(w: BallWorld, eid: number): void {
   if (eid !== w.walls) return
+  // (as a hole removed mid-step: src/commands/holes.ts, forgetHole)
+  if (w.stepping && w.failed === null) w.failed = `the walls (entity ${eid}) were removed during a step (bitECS removeEntity from a system?), which is not supported: holes and walls change between steps (clearWalls)`
   clearSlot(w.Walls, eid)
   w.walls = 0
   replanRolling(w)
