@@ -416,6 +416,47 @@ describe("a game's own system in the schedule", () => {
     }
   })
 
+  it('a system may step another world (not its own): both worlds end as they do stepped apart, with contacts off and on', () => {
+    for (const BALL_COLLISIONS of ['off', 'on'] as const) {
+      const scene = () => {
+        const sim = createBallPhysics({ BALL_COLLISIONS })
+        addPanel(sim)
+        for (let i = 0; i < 12; i++) sim.throwBall({ x: 80 + 20 * i, y: 460, power: 0.4 + 0.04 * i, angle: 0.2 - 0.03 * i })
+        return sim
+      }
+      const outer = scene()
+      const inner = scene()
+      const alone = scene()
+      const apart = scene()
+      let nested = 0
+      outer.schedule.splice(outer.schedule.findIndex((e) => e.name === 'integration') + 1, 0, {
+        name: 'stepOther',
+        run: (w) => {
+          if (w.pass !== 0) return
+          inner.step(1 / 60)
+          nested++
+        },
+      })
+      alone.schedule.splice(alone.schedule.findIndex((e) => e.name === 'integration') + 1, 0, { name: 'idle', run: () => {} })
+      const log = { outer: [] as BallEvent[], inner: [] as BallEvent[], alone: [] as BallEvent[], apart: [] as BallEvent[] }
+      for (let f = 0; f < 120; f++) {
+        outer.step(1 / 60)
+        alone.step(1 / 60)
+        log.outer.push(...outer.drainEvents())
+        log.alone.push(...alone.drainEvents())
+      }
+      for (let f = 0; f < nested; f++) apart.step(1 / 60)
+      log.inner.push(...inner.drainEvents())
+      log.apart.push(...apart.drainEvents())
+      expect(nested, BALL_COLLISIONS).toBeGreaterThanOrEqual(120)
+      expect(log.outer.length, BALL_COLLISIONS).toBeGreaterThan(20)
+      expect(log.outer).toEqual(log.alone)
+      expect(log.inner).toEqual(log.apart)
+      expect(outer.snapshot()).toEqual(alone.snapshot())
+      expect(() => outer.schedule.push({ name: 'own', run: () => outer.step(1 / 60) }) && outer.step(1 / 60)).toThrow(/a step cannot run inside a step/)
+    }
+  })
+
   it("the ecs entry's motion functions refuse a bad argument, naming it, and change nothing", () => {
     const w = createBallWorld({ BALL_COLLISIONS: 'on' })
     const h = addHole(w, { x: 300, y: 300 })
