@@ -86,30 +86,37 @@ function leaveEvent(w: BallWorld, b: number, moves: boolean): void {
   pushId(list, b)
 }
 
+/** the fields a path's start names in each function's errors (made once: a check that passes builds no string) */
+const START_FIELDS = {
+  launchBall: ['launchBall: ball', 'launchBall: x', 'launchBall: y', 'launchBall: vx', 'launchBall: vy'],
+  startPath: ['startPath: ball', 'startPath: x', 'startPath: y', 'startPath: vx', 'startPath: vy'],
+} as const
+
+/** A path's start, checked (launchBall, startPath): the ball, then x, y, vx, vy, then t; returns the ball. */
+function checkStart(fn: keyof typeof START_FIELDS, w: BallWorld, ball: number, x: number, y: number, vx: number, vy: number, t: number): number {
+  const f = START_FIELDS[fn]
+  const b = checkBall(w, f[0], ball)
+  notHeld(fn, w, b)
+  finite(f[1], x, MAX_COORDINATE)
+  finite(f[2], y, MAX_COORDINATE)
+  velocity(f[3], vx)
+  velocity(f[4], vy)
+  instant(fn, w, t)
+  return b
+}
+
 /** Starts `ball` rolling from (x, y) with velocity (vx, vy) at time t: its new path, planned, and the ball moving. */
 export function launchBall(world: BallWorld, ball: number, x: number, y: number, vx: number, vy: number, t: number): void {
   const w = checkWorld('launchBall', world)
-  const b = checkBall(w, 'launchBall: ball', ball)
-  notHeld('launchBall', w, b)
-  const px = finite('launchBall: x', x, MAX_COORDINATE)
-  const py = finite('launchBall: y', y, MAX_COORDINATE)
-  const pvx = velocity('launchBall: vx', vx)
-  const pvy = velocity('launchBall: vy', vy)
-  const pt = instant('launchBall', w, t)
+  const b = checkStart('launchBall', w, ball, x, y, vx, vy, t)
   leaveEvent(w, b, true)
-  launchBallAt(w, b, px, py, pvx, pvy, pt)
+  launchBallAt(w, b, x, y, vx, vy, t)
 }
 
 /** Writes the start of `ball`'s next straight path (plan it with planRolling); the mode is left as it is. */
 export function startPath(world: BallWorld, ball: number, x: number, y: number, vx: number, vy: number, t: number): void {
   const w = checkWorld('startPath', world)
-  const b = checkBall(w, 'startPath: ball', ball)
-  notHeld('startPath', w, b)
-  const px = finite('startPath: x', x, MAX_COORDINATE)
-  const py = finite('startPath: y', y, MAX_COORDINATE)
-  const pvx = velocity('startPath: vx', vx)
-  const pvy = velocity('startPath: vy', vy)
-  startPathAt(w, b, px, py, pvx, pvy, instant('startPath', w, t))
+  startPathAt(w, checkStart('startPath', w, ball, x, y, vx, vy, t), x, y, vx, vy, t)
 }
 
 /**
