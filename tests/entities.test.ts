@@ -111,6 +111,38 @@ describe('balls are bitECS entities', () => {
     expect(listBalls(w)).toEqual(sorted([c, d]))
   })
 
+  it('a Path or RimContact taken off by hand changes nothing in the simulation; queries of it miss the ball', () => {
+    const run = (strip: boolean) => {
+      const w = createBallWorld()
+      const holes = [addHole(w, { x: 0, y: 0 }), addHole(w, { x: 200, y: 0 }), addHole(w, { x: 400, y: 0 })]
+      // two that roll on a rim (|δ| = 11 at 490 px/s), one captured clean, one that skips, one that stops short
+      const balls = [aimAt(w, 0, 11, 490), aimAt(w, 400, -11, 490), aimAt(w, 200, 0, 60), aimAt(w, 0, 2, 900), addBall(w, { x: 600, y: 50, vx: 100, vy: 0 })]
+      const events: BallEvent[] = []
+      let stripped = 0
+      for (let f = 0; f < 240; f++) {
+        if (strip) {
+          for (const b of balls) {
+            if (!listBalls(w).includes(b)) continue
+            if (hasComponent(w, b, w.Path)) (removeComponent(w, b, w.Path), stripped++)
+            if (hasComponent(w, b, w.RimContact)) (removeComponent(w, b, w.RimContact), stripped++)
+          }
+        }
+        events.push(...step(w, 1 / 60))
+      }
+      expect(listHoles(w)).toEqual(holes)
+      return { events, stripped, states: balls.map((b) => ballState(w, b)), inQuery: sorted(query(w, [w.Ball, w.Path])) }
+    }
+    const plain = run(false)
+    const stripped = run(true)
+    expect(stripped.stripped).toBeGreaterThanOrEqual(7) // every Path, and a RimContact
+    expect(plain.events.filter((e) => e.type === 'rimRoll').length).toBe(2)
+    expect(plain.events.length).toBeGreaterThan(5)
+    expect(stripped.events).toEqual(plain.events)
+    expect(stripped.states).toEqual(plain.states)
+    expect(plain.inQuery.length).toBe(5)
+    expect(stripped.inQuery).toEqual([])
+  })
+
   it('an onAdd(Ball) observer that throws, or removes the entity, fails the command with nothing added, and the world goes on', () => {
     for (const act of ['throws', 'removes'] as const) {
       const w = createBallWorld()
