@@ -550,7 +550,7 @@ describe("a game's own system in the schedule", () => {
     }
   })
 
-  it('with contacts off, a ball a system relaunches from the window start is followed through its events to the window end', () => {
+  it('with contacts off, a ball a system relaunches from the window start, or samples there, is followed through its events to the window end', () => {
     // a system, at the step's first pass, sends a resting ball at a hole from where it rests: the same as
     // launchBall between steps (before: it stayed where it was launched until the next step)
     const make = () => {
@@ -577,6 +577,31 @@ describe("a game's own system in the schedule", () => {
     expect(seen.map((e) => e.type)).toContain('capture')
     expect(seen).toEqual(drainEvents(between.w))
     expect(ballState(inStep.w, inStep.b)).toEqual(ballState(between.w, between.b))
+    // a ball a system samples at another instant (its state there written into the stores) is brought back
+    // to the window's end, as one never sampled
+    const roller = () => {
+      const w = createBallWorld()
+      addHole(w, { x: 100, y: 400 })
+      return { w, b: addBall(w, { x: 100, y: 100, vx: 0, vy: 200 }) }
+    }
+    const plain = roller()
+    const sampled = roller()
+    const peek = createSchedule(sampled.w.config)
+    let peeked = 0
+    peek.splice(peek.findIndex((e) => e.name === 'integration') + 1, 0, {
+      name: 'peek',
+      run: (w2) => {
+        if (w2.pass !== 0) return
+        sampleRolling(w2, sampled.b, w2.time)
+        peeked = w2.Ball.y[sampled.b]!
+      },
+    })
+    for (let f = 0; f < 3; f++) {
+      runSchedule(plain.w, createSchedule(plain.w.config), 1 / 10)
+      runSchedule(sampled.w, peek, 1 / 10)
+      expect(peeked).toBeLessThan(sampled.w.Ball.y[sampled.b]!)
+      expect(ballState(sampled.w, sampled.b)).toEqual(ballState(plain.w, plain.b))
+    }
   })
 
 })

@@ -9,9 +9,10 @@
 //
 // A ball given a new fate in a step (launched, rested, captured) leaves the event it was stopped at: its
 // Path.mark is cleared, so no stage after the game's decides it again from where it was. With contacts off
-// (and the fixed tick), a ball whose path a system restarted is handed to the next pass, which takes it to
-// the window's end through its events (the integration system continues world.marked only); a ball that was
-// not stopped at an event was left at the window's end, and its new path was not followed until the next step.
+// (and the fixed tick), a ball whose path a system restarted, or whose state it sampled at another instant,
+// is handed to the next pass, which takes it to the window's end through its events (the integration
+// system continues world.marked only); a ball that was not stopped at an event was left where the system
+// put it, and its new path was not followed until the next step.
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { RIM_MODE_NAMES } from '../../components/RimContact.js'
@@ -29,7 +30,6 @@ const HOLE_EVENTS = [EventType.Skip, EventType.Capture, EventType.Bounce, EventT
 const EVENT_CODES = Object.values(EventType).filter((c) => c !== EventType.Collision)
 const VIA_CODES = Object.values(CaptureVia)
 const RIM_CODES = RIM_MODE_NAMES.map((_, i) => i)
-
 
 /** t: the world's time between steps; in a step, within the window the step is in. */
 function instant(fn: string, w: BallWorld, t: unknown): number {
@@ -70,17 +70,24 @@ function rimBall(fn: string, w: BallWorld, b: number): void {
   if (w.Ball.mode[b] !== BallMode.RimRoll) throw new RangeError(`${fn}: ball ${b} is not rolling on a rim (its mode is not rimRoll)`)
 }
 
-/** In a step, a ball that leaves the event it was stopped at; with contacts off, its new path is followed. */
+/** In a step, a ball that leaves the event it was stopped at; with contacts off, a new path is followed. */
 function leaveEvent(w: BallWorld, b: number, moves: boolean): void {
   if (!w.stepping) return
-  const P = w.Path
-  const marked = P.mark[b] !== PathEvent.None
-  P.mark[b] = PathEvent.None
-  if (!moves || w.collide !== null || w.config.METHOD !== 'exact') return
+  if (moves) follow(w, b)
+  w.Path.mark[b] = PathEvent.None
+}
+
+/**
+ * In a step with contacts off (or the fixed tick), the next pass takes ball b to the window's end: the
+ * integration system continues the balls in world.marked only. (With exact contacts every moving ball is
+ * sampled at the window's end.)
+ */
+function follow(w: BallWorld, b: number): void {
+  if (!w.stepping || w.collide !== null || w.config.METHOD !== 'exact') return
   // a ball stopped at an event is listed; so is one the stages handled this pass (taken on twice, the second
   // would find it at its next event, marked, and throw): a scan of the pass's list, which a stage that
   // launches a ball before clearing its mark (launchBall clears it) does without
-  if (marked) return
+  if (w.Path.mark[b] !== PathEvent.None) return
   const list = w.marked
   for (let i = 0; i < list.count; i++) if (list.ids[i] === b) return
   pushId(list, b)
@@ -129,7 +136,7 @@ export function planRolling(world: BallWorld, ball: number): void {
   notHeld('planRolling', w, b)
   if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`planRolling: ball ${b} is not rolling (its mode is not rolling)`)
   planRaw(w, b)
-  if (w.stepping && w.Path.mark[b] === PathEvent.None) leaveEvent(w, b, true)
+  follow(w, b)
 }
 
 /** Writes `ball`'s state at time t on its straight path (clamped at its stop) into its stores. */
@@ -138,6 +145,7 @@ export function sampleRolling(world: BallWorld, ball: number, t: number): void {
   const b = checkBall(w, 'sampleRolling: ball', ball)
   if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`sampleRolling: ball ${b} is not rolling (its mode is not rolling)`)
   sampleRaw(w, b, instant('sampleRolling', w, t))
+  follow(w, b)
 }
 
 /** Writes `ball`'s state where its straight path has covered distance d (px, ≥ 0) into its stores. */
@@ -146,6 +154,7 @@ export function sampleAtDistance(world: BallWorld, ball: number, d: number): voi
   const b = checkBall(w, 'sampleAtDistance: ball', ball)
   if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`sampleAtDistance: ball ${b} is not rolling (its mode is not rolling)`)
   atDistanceRaw(w, b, within('sampleAtDistance: d', d, 0, 2 * MAX_COORDINATE))
+  follow(w, b)
 }
 
 /** `ball` stops where it is, at time t, outside every hole: a 'rest' event, mode resting. */
@@ -252,7 +261,7 @@ export function planRimRoll(world: BallWorld, ball: number): void {
   const b = checkBall(w, 'planRimRoll: ball', ball)
   rimBall('planRimRoll', w, b)
   planRimRaw(w, b)
-  if (w.stepping && w.Path.mark[b] === PathEvent.None) leaveEvent(w, b, true)
+  follow(w, b)
 }
 
 /** Writes `ball`'s state at time t on the rim into its stores. */
@@ -261,4 +270,5 @@ export function sampleRimRoll(world: BallWorld, ball: number, t: number): void {
   const b = checkBall(w, 'sampleRimRoll: ball', ball)
   rimBall('sampleRimRoll', w, b)
   sampleRimRaw(w, b, instant('sampleRimRoll', w, t))
+  follow(w, b)
 }
