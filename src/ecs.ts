@@ -24,6 +24,7 @@ export {
   listBalls,
   listHoles,
   removeBall,
+  setBallMass,
   setBallVelocity,
   setHeroBall,
   throwBall,

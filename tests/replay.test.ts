@@ -33,6 +33,7 @@ function session(sim: BallPhysics, steps: number, seed = 9): BallEvent[][] {
     if (step === 10) sim.addBall({ x: 200, y: 300, vx: -0, vy: -350, radius: 9, mass: 0.5 })
     if (step === 20) for (const b of sim.balls().slice(0, 8)) if (sim.ballState(b).mode === 'rolling') sim.setBallVelocity(b, 40 * r(), -250)
     if (step === 25) sim.setHeroBall(sim.balls()[5]!, true)
+    if (step === 26) sim.setBallMass(sim.balls()[7]!, 40)
     if (step === 30) sim.removeBall(sim.balls()[2]!)
     if (step === 35) sim.addHole({ x: 30, y: 30, radius: 12, value: 5 })
     if (step === 50) sim.removeHole(sim.holes()[4]!)

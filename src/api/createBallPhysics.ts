@@ -12,6 +12,7 @@ import {
   listBalls,
   listHoles,
   removeBall,
+  setBallMass,
   setBallVelocity,
   setHeroBall,
   throwBall,
@@ -72,6 +73,11 @@ export interface BallPhysics {
    * of the six stages (systems/heroReference.ts). Costs one reference run per hero lip crossing.
    */
   setHeroBall(ball: number, hero?: boolean): void
+  /**
+   * Sets a ball's mass for ball-ball contacts (units of a default ball, in [MIN_MASS, MAX_MASS]), from its
+   * next contact on; with contacts off it is not kept (as addBall's).
+   */
+  setBallMass(ball: number, mass: number): void
   /** True for a hero ball. */
   isHeroBall(ball: number): boolean
   /** Puts walls round the panel (or replaces them); rolling balls are re-planned from where they are. */
@@ -140,6 +146,7 @@ export function physicsFor(w: BallWorld): BallPhysics {
     removeBall: (ball) => removeBall(w, ball),
     setBallVelocity: (ball, vx, vy) => setBallVelocity(w, ball, vx, vy),
     setHeroBall: (ball, hero = true) => setHeroBall(w, ball, hero),
+    setBallMass: (ball, mass) => setBallMass(w, ball, mass),
     isHeroBall: (ball) => isHeroBall(w, ball),
     setWalls: (spec) => setWalls(w, spec),
     clearWalls: () => clearWalls(w),

@@ -229,6 +229,21 @@ export function setBallVelocity(world: BallWorld, ball: number, vx: number, vy: 
 }
 
 /**
+ * Sets a ball's mass for ball-ball contacts (in units of a default ball, in [MIN_MASS, MAX_MASS]), from its
+ * next contact on: a power-up's heavy ball. Between steps, as velocities. With contacts off a ball's mass is
+ * not kept (as addBall's): the call checks its input and changes nothing.
+ */
+export function setBallMass(world: BallWorld, ball: number, mass: number): void {
+  const w = checkWorld('setBallMass', world)
+  betweenSteps(w, 'setBallMass', 'set masses between steps (the contacts of a step under way read them)')
+  const b = checkBall(w, 'ball', ball)
+  const m = within('mass', mass, MIN_MASS, MAX_MASS)
+  if (w.recorder !== null) record(w, ['setBallMass', b, m])
+  if (w.collide !== null) w.collide.mass[b] = m
+  if (w.fixed !== null) w.fixed.mass[b] = m
+}
+
+/**
  * Makes a ball a hero (or not): from its next lip crossing on, the physical reference decides it instead
  * of the six stages (systems/heroReference.ts). Costs one reference run per hero lip crossing.
  */

@@ -16,7 +16,7 @@ import type { BallWorld } from '../world/createWorld.js'
 import type { ReplayInput } from '../world/recorder.js'
 import { createSchedule, runSchedule, type ScheduleEntry } from '../schedule.js'
 import { prepareRimTable } from '../reference/rimTables.js'
-import { addBall, removeBall, setBallVelocity, setHeroBall, throwBall, type BallSpec, type ThrowSpec } from './balls.js'
+import { addBall, removeBall, setBallMass, setBallVelocity, setHeroBall, throwBall, type BallSpec, type ThrowSpec } from './balls.js'
 import { MAX_CAPACITY, createBallWorld } from './createBallWorld.js'
 import { addHole, addHoles, removeHole, type HoleSpec } from './holes.js'
 import { restoreWorld, snapshotWorld } from './snapshot.js'
@@ -147,6 +147,8 @@ function apply(w: BallWorld, schedule: readonly ScheduleEntry[], input: ReplayIn
       return setBallVelocity(w, a[1] as number, a[2] as number, a[3] as number)
     case 'setHeroBall':
       return setHeroBall(w, a[1] as number, a[2] as boolean)
+    case 'setBallMass':
+      return setBallMass(w, a[1] as number, a[2] as number)
     case 'addHole':
       return void addHole(w, a[1] as HoleSpec)
     case 'addHoles':
@@ -160,7 +162,7 @@ function apply(w: BallWorld, schedule: readonly ScheduleEntry[], input: ReplayIn
     case 'prepareRimTable':
       return void prepareRimTable(w, a[1] as number, a[2] as number, { inertia: a[3] as number })
     default:
-      throw new RangeError(`unknown command; allowed: step, addBall, throwBall, removeBall, setBallVelocity, setHeroBall, addHole, addHoles, removeHole, setWalls, clearWalls, prepareRimTable`)
+      throw new RangeError(`unknown command; allowed: step, addBall, throwBall, removeBall, setBallVelocity, setHeroBall, setBallMass, addHole, addHoles, removeHole, setWalls, clearWalls, prepareRimTable`)
   }
 }
 
