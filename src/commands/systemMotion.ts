@@ -134,7 +134,7 @@ export function planRolling(world: BallWorld, ball: number): void {
   const w = checkWorld('planRolling', world)
   const b = checkBall(w, 'planRolling: ball', ball)
   notHeld('planRolling', w, b)
-  if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`planRolling: ball ${b} is not rolling (its mode is not rolling)`)
+  if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`planRolling: ball ${b} is not rolling (its mode is not rolling; launchBall puts a ball in motion)`)
   planRaw(w, b)
   follow(w, b)
 }
