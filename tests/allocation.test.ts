@@ -14,7 +14,8 @@ import { PerformanceObserver } from 'node:perf_hooks'
 import { setFlagsFromString } from 'node:v8'
 import { runInNewContext } from 'node:vm'
 import { describe, expect, it } from 'vitest'
-import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../src/index'
+import { createBallPhysics, type BallPhysics } from '../src/index'
+import { skipping } from './alloc/harness'
 
 const root = resolve(import.meta.dirname, '..')
 
@@ -57,24 +58,8 @@ function field(mode: 'on' | 'fixed'): BallPhysics {
   return sim
 }
 
-/**
- * Tiles of the default panel side by side in closed walls, N balls at 1,200 px/s (above every capture speed)
- * and no deceleration: they skip over holes, miss them and bounce off the walls for ever, 70 events a step.
- */
-function skipping(): BallPhysics {
-  let seed = 99
-  const random = () => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
-  const W = DEFAULT_PANEL.width
-  const H = DEFAULT_PANEL.height
-  const sim = createBallPhysics({ ROLLING_DECEL: 0 }, { capacity: N + 8 })
-  sim.setWalls({ minX: 0, minY: 0, maxX: 5 * W, maxY: 5 * H, restitution: 0.9 })
-  for (let t = 0; t < 25; t++) for (const h of DEFAULT_PANEL.holes) sim.addHole({ x: h.x + (t % 5) * W, y: h.y + Math.floor(t / 5) * H })
-  for (let i = 0; i < N; i++) {
-    const a = random() * 2 * Math.PI
-    sim.addBall({ x: 5 * W * random(), y: 5 * H * random(), vx: 1200 * Math.cos(a), vy: 1200 * Math.sin(a) })
-  }
-  return sim
-}
+/** The harness's skipping scene (tests/alloc/harness.ts) of N balls. */
+const skippingN = (): BallPhysics => skipping(N)
 
 /**
  * A crowd of unlike masses under the fixed tick: N balls at area fraction 0.45 in a closed elastic box, one
@@ -251,7 +236,7 @@ describe('allocation per ball-step', () => {
     }, 30_000)
   }
   it(`contacts off: balls skipping over holes and off walls, events every step, allocate under ${LIMIT} bytes a ball-step`, async () => {
-    const { least, windows, moving } = await leastBytesPerBallStep(skipping, 300)
+    const { least, windows, moving } = await leastBytesPerBallStep(skippingN, 300)
     expect(moving).toBe(N)
     expect(least, `bytes per ball-step in each window (NaN: a collection ran): ${windows.join(', ')}`).toBeLessThan(LIMIT)
   }, 30_000)

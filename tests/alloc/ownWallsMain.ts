@@ -7,28 +7,16 @@
 // each scene is measured in the process it warmed up in.
 // Prints one line of JSON: the heap's growth per ball-step in each window (null: a collection ran in it),
 // the moving balls, and how many wall hits the game's stage handled.
-import { PerformanceObserver } from 'node:perf_hooks'
-import { DEFAULT_PANEL, createBallPhysics, type BallPhysics } from '../../src/index.js'
+import type { BallPhysics } from '../../src/index.js'
 import { EventType, HOT, H_NEXT_T, PathEvent, WallEdge, launchBall, pushEvent, type BallWorld } from '../../src/ecs.js'
-
-declare const gc: () => void
+import { heapWindow, run, skipping } from './harness.js'
 
 const N = 1000
 const WINDOW = 300
 let hits = 0
 
 function scene(): BallPhysics {
-  let seed = 99
-  const random = (): number => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
-  const W = DEFAULT_PANEL.width
-  const H = DEFAULT_PANEL.height
-  const sim = createBallPhysics({ ROLLING_DECEL: 0 }, { capacity: N + 8 })
-  sim.setWalls({ minX: 0, minY: 0, maxX: 5 * W, maxY: 5 * H, restitution: 0.9 })
-  for (let t = 0; t < 25; t++) for (const h of DEFAULT_PANEL.holes) sim.addHole({ x: h.x + (t % 5) * W, y: h.y + Math.floor(t / 5) * H })
-  for (let i = 0; i < N; i++) {
-    const a = random() * 2 * Math.PI
-    sim.addBall({ x: 5 * W * random(), y: 5 * H * random(), vx: 1200 * Math.cos(a), vy: 1200 * Math.sin(a) })
-  }
+  const sim = skipping(N)
   // the default's bounce off a closed wall (systems/walls.ts), as a game would write it
   const own = (w: BallWorld): void => {
     const P = w.Path
@@ -50,36 +38,13 @@ function scene(): BallPhysics {
   return sim
 }
 
-function run(sim: BallPhysics, steps: number): void {
-  for (let s = 0; s < steps; s++) {
-    sim.step(1 / 120)
-    sim.world.events.count = 0
-  }
-}
-
-let collections = 0
-new PerformanceObserver((list) => {
-  collections += list.getEntries().length
-}).observe({ entryTypes: ['gc'] })
-
 run(scene(), 1500)
 const sim = scene()
 run(sim, 300)
 hits = 0
 const perBallStep: (number | null)[] = []
 for (let w = 0; w < 4; w++) {
-  gc()
-  await new Promise((r) => setTimeout(r, 10))
-  const seen = collections
-  let ballSteps = 0
-  const before = process.memoryUsage().heapUsed
-  for (let s = 0; s < WINDOW; s++) {
-    ballSteps += sim.world.moving.count
-    sim.step(1 / 120)
-    sim.world.events.count = 0
-  }
-  const grown = process.memoryUsage().heapUsed - before
-  await new Promise((r) => setTimeout(r, 10))
-  perBallStep.push(collections === seen ? grown / ballSteps : null)
+  const { grown, ballSteps, clean } = await heapWindow(sim, WINDOW)
+  perBallStep.push(clean ? grown / ballSteps : null)
 }
 console.log(JSON.stringify({ perBallStep, moving: sim.world.moving.count, hits }))

@@ -8,10 +8,8 @@
 // then a fresh one is measured over windows of WINDOW steps, each after a collection.
 // Prints one line of JSON: the heap's growth per ball-step and per contact tick in each window (NaN: a
 // collection ran in it), the moving balls, and the ticks a step.
-import { PerformanceObserver } from 'node:perf_hooks'
 import { MAX_SPEED, createBallPhysics, type BallPhysics } from '../../src/index.js'
-
-declare const gc: () => void
+import { heapWindow, run } from './harness.js'
 
 const WINDOW = 60
 
@@ -31,18 +29,6 @@ function pumpedBox(): BallPhysics {
   return sim
 }
 
-function run(sim: BallPhysics, steps: number): void {
-  for (let s = 0; s < steps; s++) {
-    sim.step(1 / 120)
-    sim.world.events.count = 0
-  }
-}
-
-let collections = 0
-new PerformanceObserver((list) => {
-  collections += list.getEntries().length
-}).observe({ entryTypes: ['gc'] })
-
 run(pumpedBox(), 2000)
 const sim = pumpedBox()
 run(sim, 600)
@@ -51,20 +37,8 @@ const perBallStep: number[] = []
 const perTick: number[] = []
 const ticks0 = F.ticks
 for (let w = 0; w < 6; w++) {
-  gc()
-  await new Promise((r) => setTimeout(r, 10))
-  const seen = collections
   const ticks = F.ticks
-  let ballSteps = 0
-  const before = process.memoryUsage().heapUsed
-  for (let s = 0; s < WINDOW; s++) {
-    ballSteps += sim.world.moving.count
-    sim.step(1 / 120)
-    sim.world.events.count = 0
-  }
-  const grown = process.memoryUsage().heapUsed - before
-  await new Promise((r) => setTimeout(r, 10))
-  const clean = collections === seen
+  const { grown, ballSteps, clean } = await heapWindow(sim, WINDOW)
   perBallStep.push(clean ? grown / ballSteps : NaN)
   perTick.push(clean ? grown / (F.ticks - ticks) : NaN)
 }
