@@ -103,7 +103,14 @@ export function fixedContactsSystem(w: BallWorld): void {
     if (!joinPushed(w, F)) break
     solvePositions(w, F)
     if (round + 1 < MAX_WIDEN_ROUNDS) continue
-    if (lean(F) || F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
+    if (lean(F)) {
+      // the lean rounds' bound: a ball the last projection pushed into one the tick has not paired stays in
+      // it until the next tick, and the tick counts as capped, as when the projection's budget runs out (the
+      // search pairs what it finds; nothing solves those pairs in this tick)
+      if (joinPushed(w, F)) F.capped++
+      break
+    }
+    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
   }
   // a row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
   // push carried along it by more than the gaps between its balls: a ball moved up to one closing on it,

@@ -1088,6 +1088,21 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0, budget: 1 }, ops, ['overlap'])
   })
 
+  // 89 balls put down on one point of the top wall at 5,000 px/s with CONTACT_WORK_BUDGET 1, e = 0 (found at 37×
+  // the long run): a lean tick whose widening rounds reached their bound (MAX_WIDEN_ROUNDS) left a resting
+  // ball the last projection pushed 0.085 px into one the tick had not paired, and did not count the tick as
+  // capped, so the overlap check took it for a tick that had solved its overlaps (the next tick took it out;
+  // the positions are the same bits either way: only the count changed)
+  it('fixed-tick contacts with a work budget: a lean tick whose widening rounds end at their bound with a pushed ball in an unpaired one counts as capped', () => {
+    const ops = [
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 0, open: { bottom: true } },
+      { t: 'burst', n: 89, x: 197.59794, y: 0, spread: 0, speed: 5000, radius: 1.0115794542598986, mass: 1, seed: 2, aim: undefined },
+      { t: 'step', dt: 0.25 },
+      { t: 'addHole', x: -20, y: -20, radius: 1 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0, budget: 1 }, ops, ['overlap'])
+  })
+
   // 82 balls of radius 0.1 at 1e5 px/s in the closed elastic walls with CONTACT_WORK_BUDGET 1, and 60 more put
   // down among them (found at 29x the long run): the tick was halved 9 times for their speed, and each span's
   // 512 ticks were solved lean after its budget, 1,024 a frame at about 150 us each: the run's steps took

@@ -11,7 +11,8 @@
 // velocity call of LEAN_ITERATIONS sweeps without widening rounds, and a projection of at most
 // LEAN_PROJECTION_BUDGET × pairs visits (an overlap it leaves counts the tick as capped; later ticks take it
 // out), followed by up to MAX_WIDEN_ROUNDS rounds that pair a ball it pushed into one the tick had not paired
-// it with and project again, each as lean (without them a lean tick left such a ball 1.4 px deep in a crowd).
+// it with and project again, each as lean (without them a lean tick left such a ball 1.4 px deep in a crowd;
+// one the last round's projection pushes into an unpaired ball counts the tick as capped too).
 // Once the lean ticks too have spent LEAN_SHARE × the budget, the span's remaining ticks are skipped: no
 // solve until the next span's first tick (a span of a tick halved 9 times has 512 ticks, and solved lean
 // they cost a 146-ball crowd at 1e5 px/s 150 ms a frame of 1/60 s; tests/adversarial.test.ts). So a span
