@@ -26,9 +26,10 @@ function panelRun(o: number, config: ConfigOverrides, n: number, burst: boolean)
   return events
 }
 
-/** Each event as kind:ball:hole-or-other, sorted (events at one instant may tie in another order). */
-const outline = (ev: BallEvent[]): string[] =>
-  ev.map((e) => `${e.type}:${e.ball}:${'hole' in e ? e.hole : 'other' in e ? e.other : ''}`).sort()
+/** An event as kind:ball:hole-or-other. */
+const label = (e: BallEvent): string => `${e.type}:${e.ball}:${'hole' in e ? e.hole : 'other' in e ? e.other : ''}`
+/** Each event's label, sorted (events at one instant may tie in another order). */
+const outline = (ev: BallEvent[]): string[] => ev.map(label).sort()
 
 const SCENES: [string, ConfigOverrides, number, boolean][] = [
   ['the design, 200 throws', {}, 200, false],
@@ -52,8 +53,7 @@ describe('far from the origin', () => {
   }
 
   it('the design: every event time within 1e-7 s, every lip offset δ within 1e-5 px, at 9.9e8 px (measured 7.9e-9 s, 1.2e-6 px)', () => {
-    const key = (e: BallEvent): string => `${e.type}:${e.ball}:${'hole' in e ? e.hole : ''}`
-    const byKey = (ev: BallEvent[]): BallEvent[] => [...ev].sort((a, b) => (key(a) < key(b) ? -1 : key(a) > key(b) ? 1 : a.time - b.time))
+    const byKey = (ev: BallEvent[]): BallEvent[] => [...ev].sort((a, b) => (label(a) < label(b) ? -1 : label(a) > label(b) ? 1 : a.time - b.time))
     const home = byKey(panelRun(0, {}, 200, false))
     const far = byKey(panelRun(9.9e8, {}, 200, false))
     expect(far.length).toBe(home.length)
@@ -62,7 +62,7 @@ describe('far from the origin', () => {
     let lips = 0
     for (let i = 0; i < home.length; i++) {
       const a = home[i]!, b = far[i]!
-      expect(key(b)).toBe(key(a))
+      expect(label(b)).toBe(label(a))
       dt = Math.max(dt, Math.abs(a.time - b.time))
       if ('delta' in a && a.delta !== undefined && 'delta' in b && b.delta !== undefined) { dd = Math.max(dd, Math.abs(a.delta - b.delta)); lips++ }
     }
