@@ -1317,8 +1317,9 @@ describe('shrunk counterexamples of the long run', () => {
     // the whole run, 43 steps, within 1.5 s on the development machine (2.7 s on the one above; the 0.25 s
     // step alone took longer before)
     expect(performance.now() - t0).toBeLessThan(1500 * SLOWDOWN)
-    // the jam is the one the long run found: its ticks spend the projection's budget
-    expect(capped).toBeGreaterThan(30)
+    // the jam is the one the long run found: its ticks spend the projection's budget (28 ticks; 108 before the
+    // velocity sweeps wedged the balls wider than the 21 px box's height, as the walls system does)
+    expect(capped).toBeGreaterThan(20)
   })
 
   // the long run at 43×, after a tick of many pairs a candidate was first solved again for a push's front

@@ -382,8 +382,11 @@ function wallVelocity(w: BallWorld, F: FixedContactState, i: number): number {
   const settle = S[S_SETTLE]!
   let vx = F.vx[i]!
   let vy = F.vy[i]!
-  if ((into & 1) !== 0) vx = Math.abs(vx) < settle ? 0 : -walls.e * vx
-  if ((into & 2) !== 0) vy = Math.abs(vy) < settle ? 0 : -walls.e * vy
+  // a ball wider than its box on an axis (both faces closed: an open one is at infinity) is wedged there, as
+  // the walls system leaves it (systems/walls.ts): turned, it would meet the far face at once, each sweep
+  const r2 = 2 * F.r[i]!
+  if ((into & 1) !== 0) vx = Math.abs(vx) < settle || walls.maxX - walls.minX <= r2 ? 0 : -walls.e * vx
+  if ((into & 2) !== 0) vy = Math.abs(vy) < settle || walls.maxY - walls.minY <= r2 ? 0 : -walls.e * vy
   // its 'wall' event is written once the tick is solved, if it keeps the turn (src/contacts/fixedWallTurn.ts)
   if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) F.changed[i]! |= WALL_DUE
   F.vx[i] = vx

@@ -52,7 +52,9 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
   const before = m2a * (F.vx[a]! * F.vx[a]! + F.vy[a]! * F.vy[a]!) + m2b * (F.vx[b]! * F.vx[b]! + F.vy[b]! * F.vy[b]!)
   // the wall's restitution acts in series with the pair's: the push reaches the wall through q, and q's own
   // motion into the wall comes back at the wall's restitution (u2 < 0 is into the wall)
-  const ew = walls.e
+  // (none for a ball wider than the box across that wall: it is wedged there, src/contacts/fixedSolve.ts)
+  const across = face.x !== 0 ? walls.maxX - walls.minX : walls.maxY - walls.minY
+  const ew = across <= 2 * F.r[q]! ? 0 : walls.e
   const back = u2 < 0 ? -ew * u2 : 0
   const ax = F.vx[a]!
   const ay = F.vy[a]!

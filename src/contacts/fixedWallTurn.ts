@@ -122,8 +122,9 @@ function meetsAfterWall(F: FixedContactState, a: number, b: number): boolean {
   // where a meets the wall, and its velocity back from it (both axes at a corner)
   const ax = F.x[a]! + vx * tw
   const ay = F.y[a]! + vy * tw
-  if (hitX <= hitY) vx = -walls.e * vx
-  if (hitY <= hitX) vy = -walls.e * vy
+  // (a ball wider than its box on that axis is wedged there: src/contacts/fixedSolve.ts)
+  if (hitX <= hitY) vx = walls.maxX - walls.minX <= 2 * r ? 0 : -walls.e * vx
+  if (hitY <= hitX) vy = walls.maxY - walls.minY <= 2 * r ? 0 : -walls.e * vy
   const rest = F.tick - tw
   // a second wall within the tick
   if ((vx < 0 && ax - r - walls.minX < -vx * rest) || (vx > 0 && walls.maxX - ax - r < vx * rest)) return true

@@ -43,6 +43,30 @@ describe('walls system', () => {
     }
   })
 
+  // the fixed tick's velocity sweeps turned such a ball at the wall with −e·v in every sweep: with e = 1 a
+  // crowd of them never converged (each sweep turned every one back, so every call ran all its sweeps: a long
+  // adversarial run's crowd in a 1e-6 px box took 0.5–0.8 s a frame) and a ball could leave a tick still
+  // moving across the box (550 px/s in this scene)
+  it('a crowd wedged in a box narrower than its balls keeps no speed across it, in every contact mode', () => {
+    for (const contacts of ['off', 'on', 'fixed'] as const) {
+      for (const e of [1, 0.5]) {
+        const sim = createBallPhysics({ ROLLING_DECEL: 0, BALL_COLLISIONS: contacts, BALL_RESTITUTION: e })
+        sim.setWalls({ minX: 0, minY: 0, maxX: 1e-6, maxY: 400, restitution: e })
+        const next = rng(7)
+        const ids: number[] = []
+        for (let i = 0; i < 16; i++) ids.push(sim.addBall({ x: 6 * (next() - 0.5), y: 12 + 23 * i, vx: 0, vy: 3000 * (next() - 0.5) }))
+        let collisions = 0
+        for (let k = 0; k < 60; k++) {
+          sim.step(1 / 60)
+          collisions += sim.drainEvents().filter((ev) => ev.type === 'collision').length
+          for (const b of ids) expect(Math.abs(sim.ballState(b).vx), `${contacts} e ${e} step ${k} ball ${b}`).toBe(0)
+        }
+        // the balls did meet (their impulses had a part across the box, their centres not in line)
+        if (contacts !== 'off') expect(collisions, `${contacts} e ${e}`).toBeGreaterThan(100)
+      }
+    }
+  })
+
   it('lets a ball out through an open edge: a gutter event at the crossing, then it is out of play', () => {
     const sim = createBallPhysics({ ROLLING_DECEL: 0 })
     sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, open: { bottom: true } })
