@@ -3,6 +3,8 @@
 // Prints each property's result, runs, slowest step and slowest runs (in development-machine ms, against the
 // run budget), and writes docs/results/adversarial.json. A run that failed its time budget was stopped where
 // it crossed it; the suite runs it again (as drawn) without the run budget and this prints how long it took.
+// A property whose slowest run stepped more than half its budget keeps that run's calls (a repro to paste
+// into a script) as `slowestRunCalls` in the results file.
 //
 //   npm run bench:adversarial [-- --scale 10]
 import { spawnSync } from 'node:child_process'
@@ -23,7 +25,7 @@ const run = spawnSync(process.platform === 'win32' ? 'npx.cmd' : 'npx', ['vitest
 const seconds = (Date.now() - t0) / 1000
 /** a failing run run again to its end (tests/adversarial.test.ts, runToEnd) */
 type ToEnd = { ms: number; devMs: number; overBudget: number; steps: number; ticks: number; time: number; stopped: string | null }
-let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; firstFailure?: string | null; runBudgetDevMs?: number; slowestRunsDevMs?: number[]; runsOverHalfBudget?: number; budgetRechecks?: { over: number; within: number }; firstFailureToEnd?: ToEnd | null; failure: string | null }> = {}
+let report: Record<string, { passed: boolean; numRuns: number; runs: number; discarded: number; steps: number; slowestStepMs: number; firstFailure?: string | null; runBudgetDevMs?: number; slowestRunsDevMs?: number[]; runsOverHalfBudget?: number; slowestRunCalls?: string; budgetRechecks?: { over: number; within: number }; firstFailureToEnd?: ToEnd | null; failure: string | null }> = {}
 try {
   report = JSON.parse(readFileSync(file, 'utf8'))
 } catch {
@@ -31,7 +33,7 @@ try {
   throw new Error('the adversarial suite wrote no report')
 }
 for (const [name, r] of Object.entries(report)) {
-  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.slowestRunsDevMs?.length ? `  slowest runs ${r.slowestRunsDevMs.join(', ')} ms dev. (budget ${r.runBudgetDevMs}; ${r.runsOverHalfBudget} runs over half)` : ''}${r.budgetRechecks && r.budgetRechecks.over > 0 ? `  (${r.budgetRechecks.over} runs over a budget at the start's scale, ${r.budgetRechecks.within} of them within at the scale measured then)` : ''}${r.failure ? `\n      ${r.failure.split('\n').filter((l, i) => i < 3 || l.startsWith('Got ')).join('\n      ')}${r.firstFailure ? `\n      the first failing run, before shrinking: ${r.firstFailure}` : ''}${toEnd(r.firstFailureToEnd)}` : ''}`)
+  console.log(`${r.passed ? 'pass' : 'FAIL'}  ${name.padEnd(24)} ${String(r.runs).padStart(5)} runs  ${String(r.steps).padStart(7)} steps  slowest step ${r.slowestStepMs.toFixed(0).padStart(5)} ms${r.slowestRunsDevMs?.length ? `  slowest runs ${r.slowestRunsDevMs.join(', ')} ms dev. (budget ${r.runBudgetDevMs}; ${r.runsOverHalfBudget} runs over half${r.slowestRunCalls ? '; the slowest one\'s calls: slowestRunCalls in the results file' : ''})` : ''}${r.budgetRechecks && r.budgetRechecks.over > 0 ? `  (${r.budgetRechecks.over} runs over a budget at the start's scale, ${r.budgetRechecks.within} of them within at the scale measured then)` : ''}${r.failure ? `\n      ${r.failure.split('\n').filter((l, i) => i < 3 || l.startsWith('Got ')).join('\n      ')}${r.firstFailure ? `\n      the first failing run, before shrinking: ${r.firstFailure}` : ''}${toEnd(r.firstFailureToEnd)}` : ''}`)
 }
 /**
  * A run over its budget is stopped where it crosses it, so the time it fails with is always just over the

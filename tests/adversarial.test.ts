@@ -281,18 +281,21 @@ const worst: Record<string, number> = {}
  * stepping over the budget scale it was judged at; one the watchdog stopped, what it had reached), and how
  * many runs stepped more than half the run budget. Runs a shrink tries are left out.
  */
-const heavy: Record<string, { slowestRunsDevMs: number[]; runsOverHalfBudget: number }> = {}
+const heavy: Record<string, { slowestRunsDevMs: number[]; runsOverHalfBudget: number; slowestRunCalls?: string }> = {}
 /** per property, the run budget its runs were judged by (RUN_DEV_MS, or a property's own: 'quiet') */
 const runBudgets: Record<string, number> = {}
 const SLOWEST_RUNS = 5
 let shrinking = false
-function noteRun(name: string, ms: number, scale: number, runDevMs: number): void {
+function noteRun(name: string, ms: number, scale: number, runDevMs: number, repro: () => string): void {
   if (shrinking) return
   runBudgets[name] = runDevMs
   const h = (heavy[name] ??= { slowestRunsDevMs: [], runsOverHalfBudget: 0 })
   const dev = ms / scale
   if (dev > runDevMs / 2) h.runsOverHalfBudget++
   const list = h.slowestRunsDevMs
+  // the long run's report keeps the calls of a property's slowest run when it stepped more than half its
+  // budget (a repro of the run nearest to failing; only those, to keep the results file small)
+  if (REPORT && dev > runDevMs / 2 && (list.length === 0 || dev > list[0]!)) h.slowestRunCalls = repro()
   if (list.length === SLOWEST_RUNS && dev <= list[SLOWEST_RUNS - 1]!) return
   list.push(Math.round(dev))
   list.sort((a, b) => b - a)
@@ -586,7 +589,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         try {
           sim.step(op.dt)
         } catch (err) {
-          if (err instanceof OverBudget) noteRun(name, stepping + performance.now() - stepStart, budget.scale, runDevMs)
+          if (err instanceof OverBudget) noteRun(name, stepping + performance.now() - stepStart, budget.scale, runDevMs, repro)
           if (err instanceof OverBudget && on('time')) fail(`slow step: ${err.message}`)
           throw err
         }
@@ -600,7 +603,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
         worst[name] = Math.max(worst[name] ?? 0, ms)
         const slowStep = overBudget(name, budget, ms, STEP_DEV_MS)
         if (slowStep || overBudget(name, budget, stepping, runDevMs)) {
-          noteRun(name, stepping, budget.scale, runDevMs)
+          noteRun(name, stepping, budget.scale, runDevMs, repro)
           const what = slowStep ? `step took ${ms.toFixed(0)} ms` : `steps took ${stepping.toFixed(0)} ms in all`
           if (on('time')) fail(`slow: ${what}`)
           throw new OverBudget(what)
@@ -665,7 +668,7 @@ function runScenario(name: string, cfg: Cfg, ops: readonly Op[], checks: readonl
       if (o.depth > 1e-3) fail(`overlap: balls ${o.a} and ${o.b} overlap by ${o.depth} px at t = ${sim.time} (last spawn at ${lastSpawn})`)
     }
   }
-  noteRun(name, stepping, budget.scale, runDevMs)
+  noteRun(name, stepping, budget.scale, runDevMs, repro)
   if (on('quiet') && quiet.last > 2 * quiet.first + QUIET_FLOOR_DEV_MS * budget.scale) {
     // judged again at the machine's slowness now, as the budgets are (overBudget)
     budget.scale = Math.max(budget.scale, slowdownNow())
