@@ -33,7 +33,7 @@ import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, pushed, wallAhead } from './fixedAhead.js'
 import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
-import { STRUCK, VELOCITY, WALL_DUE, WALL_TURNED } from './fixedWallTurn.js'
+import { STRUCK, VELOCITY, WALL_DUE, WALL_TURNED, wedgedOn } from './fixedWallTurn.js'
 import { block, capBall, pairWithWall } from './fixedWallPair.js'
 import { changedAt, OTHER, PARTING, REFUSED, reserveStamps, testedAs, testedAt } from './fixedStamps.js'
 
@@ -382,11 +382,10 @@ function wallVelocity(w: BallWorld, F: FixedContactState, i: number): number {
   const settle = S[S_SETTLE]!
   let vx = F.vx[i]!
   let vy = F.vy[i]!
-  // a ball wider than its box on an axis (both faces closed: an open one is at infinity) is wedged there, as
-  // the walls system leaves it (systems/walls.ts): turned, it would meet the far face at once, each sweep
-  const r2 = 2 * F.r[i]!
-  if ((into & 1) !== 0) vx = Math.abs(vx) < settle || walls.maxX - walls.minX <= r2 ? 0 : -walls.e * vx
-  if ((into & 2) !== 0) vy = Math.abs(vy) < settle || walls.maxY - walls.minY <= r2 ? 0 : -walls.e * vy
+  // a ball wider than its box on an axis is wedged there (wedgedOn): turned back, it would meet the far face
+  // at once, and every sweep would turn it again
+  if ((into & 1) !== 0) vx = Math.abs(vx) < settle || wedgedOn(F, i, 1) ? 0 : -walls.e * vx
+  if ((into & 2) !== 0) vy = Math.abs(vy) < settle || wedgedOn(F, i, 2) ? 0 : -walls.e * vy
   // its 'wall' event is written once the tick is solved, if it keeps the turn (src/contacts/fixedWallTurn.ts)
   if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) F.changed[i]! |= WALL_DUE
   F.vx[i] = vx

@@ -10,7 +10,7 @@ import { capped, capVelocity, largestShare, overSpeed, pastLimit, share, shareRo
 import { face } from './fixedAhead.js'
 import { walls } from './fixedGrid.js'
 import { nrm, S_APPROACH, S_IMA, S_IMB, S_LIMIT, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
-import { WALL_REPORTED } from './fixedWallTurn.js'
+import { WALL_REPORTED, wedgedOn } from './fixedWallTurn.js'
 
 /** Candidate i's velocity with no component beyond MAX_SPEED (capVelocity, src/motion/speedLimit.ts). */
 export function capBall(F: FixedContactState, i: number): void {
@@ -52,9 +52,8 @@ export function pairWithWall(w: BallWorld, F: FixedContactState, a: number, b: n
   const before = m2a * (F.vx[a]! * F.vx[a]! + F.vy[a]! * F.vy[a]!) + m2b * (F.vx[b]! * F.vx[b]! + F.vy[b]! * F.vy[b]!)
   // the wall's restitution acts in series with the pair's: the push reaches the wall through q, and q's own
   // motion into the wall comes back at the wall's restitution (u2 < 0 is into the wall)
-  // (none for a ball wider than the box across that wall: it is wedged there, src/contacts/fixedSolve.ts)
-  const across = face.x !== 0 ? walls.maxX - walls.minX : walls.maxY - walls.minY
-  const ew = across <= 2 * F.r[q]! ? 0 : walls.e
+  // (none for a ball wider than the box across that wall: wedgedOn)
+  const ew = wedgedOn(F, q, face.x !== 0 ? 1 : 2) ? 0 : walls.e
   const back = u2 < 0 ? -ew * u2 : 0
   const ax = F.vx[a]!
   const ay = F.vy[a]!

@@ -122,13 +122,23 @@ function meetsAfterWall(F: FixedContactState, a: number, b: number): boolean {
   // where a meets the wall, and its velocity back from it (both axes at a corner)
   const ax = F.x[a]! + vx * tw
   const ay = F.y[a]! + vy * tw
-  // (a ball wider than its box on that axis is wedged there: src/contacts/fixedSolve.ts)
-  if (hitX <= hitY) vx = walls.maxX - walls.minX <= 2 * r ? 0 : -walls.e * vx
-  if (hitY <= hitX) vy = walls.maxY - walls.minY <= 2 * r ? 0 : -walls.e * vy
+  if (hitX <= hitY) vx = wedgedOn(F, a, 1) ? 0 : -walls.e * vx
+  if (hitY <= hitX) vy = wedgedOn(F, a, 2) ? 0 : -walls.e * vy
   const rest = F.tick - tw
   // a second wall within the tick
   if ((vx < 0 && ax - r - walls.minX < -vx * rest) || (vx > 0 && walls.maxX - ax - r < vx * rest)) return true
   if ((vy < 0 && ay - r - walls.minY < -vy * rest) || (vy > 0 && walls.maxY - ay - r < vy * rest)) return true
   // the swept test from the wall on, b where it is then
   return swept(F.x[b]! + F.vx[b]! * tw - ax, F.y[b]! + F.vy[b]! * tw - ay, F.vx[b]! - vx, F.vy[b]! - vy, r + F.r[b]!, rest)
+}
+
+/**
+ * Whether candidate i is wider than the box on the axis of `axis` (intoWalls' bits: 1 x, 2 y), both faces
+ * closed (an open one is at infinity): it is wedged there, as the walls system leaves such a ball
+ * (systems/walls.ts), and a wall turns it to no speed along that axis (turned back, it would meet the far
+ * face at once). The solve's wall turn, the wall pair and the lone-ball check all take the wall by this.
+ */
+export function wedgedOn(F: FixedContactState, i: number, axis: number): boolean {
+  const across = axis === 1 ? walls.maxX - walls.minX : walls.maxY - walls.minY
+  return across <= 2 * F.r[i]!
 }
