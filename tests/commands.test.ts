@@ -532,7 +532,11 @@ describe("a game's own system in the schedule", () => {
       ['lock delta', () => lockAtLip(w, b, h, -1, 10, t, 1), /lockAtLip: delta must be in \[0, 1000000000\], got -1/, RangeError],
       ['rim roll without a lock', () => startRimRoll(w, b, h, t), /startRimRoll: ball \d+ holds no lock at hole \d+/, RangeError],
       ['plan a rim roll of a rolling ball', () => planRimRoll(w, b), /planRimRoll: ball \d+ is not rolling on a rim/, RangeError],
-      ['pushEvent time', () => pushEvent(w.events, EventType.Skip, b, h, NaN, false, 0, 0), /pushEvent: time must be a finite number/, RangeError],
+      ['pushEvent NaN time', () => pushEvent(w.events, EventType.Skip, b, h, NaN, false, 0, 0), /pushEvent: t must be the world's time between steps \(0\.025\), got NaN/, RangeError],
+      ['pushEvent time in the past', () => pushEvent(w.events, EventType.Skip, b, h, t - 0.01, false, 0, 0), /pushEvent: t must be the world's time between steps \(0\.025\), got 0\.015/, RangeError],
+      ['pushEvent removed ball', () => pushEvent(w.events, EventType.Gutter, 999, 0, t, false, 0, 0), /pushEvent: ball 999 is not a live ball of this world/, RangeError],
+      ['pushEvent hole that is a ball', () => pushEvent(w.events, EventType.Skip, b, b, t, false, 0, 0), /pushEvent: hole \(0: none\) \d+ is not a live hole of this world: it is a ball/, RangeError],
+      ["pushEvent another world's buffer copied", () => pushEvent({ ...w.events }, EventType.Skip, b, h, t, false, 0, 0), /pushEvent: buf must be a world's event buffer/, TypeError],
       ['pushEvent collision', () => pushEvent(w.events, EventType.Collision, b, h, t, false, 0, 0), /pushEvent: type must be one of the codes 0, 1, 2, 3, 4, 5, 6, 7, 8, got 9/, RangeError],
       ['pushEvent buffer', () => pushEvent({} as never, EventType.Skip, b, h, t, false, 0, 0), /pushEvent: buf must be a world's event buffer/, TypeError],
     ]
@@ -561,8 +565,24 @@ describe("a game's own system in the schedule", () => {
         }
       },
     })
+    let pushed = ''
+    s.push({
+      name: 'pusher',
+      run: (w2) => {
+        if (w2.pass !== 0) return
+        try {
+          pushEvent(w2.events, EventType.Skip, b, h, w2.time - 1e-9, false, 0, 0)
+        } catch (e) {
+          pushed = (e as Error).message
+        }
+        pushEvent(w2.events, EventType.Skip, b, h, w2.tickEnd, false, 0, 0) // the window's end: taken
+      },
+    })
     runSchedule(w, s, 1 / 60)
     expect(inStep).toMatch(/^restBall: t \(in a step: within the window \[world\.time, world\.tickEnd\]\) must be in \[0\.0333\d*, 0\.041\d*\], got 0\.04166/)
+    expect(pushed).toMatch(/^pushEvent: t \(in a step: within the window \[world\.time, world\.tickEnd\]\) must be in \[0\.0333\d*, 0\.041\d*\], got 0\.0333/)
+    // one event at the end of each window the step ran (two: the launcher's instant split it)
+    expect(drainEvents(w).filter((e) => e.type === 'skip' && e.ball === b && e.hole === h).map((e) => e.time)).toEqual([0.03333333333333333, 0.041666666666666664])
   })
 
   it('a ball a system relaunches at its own lip crossing leaves that event (no stage decides it after), the same at every frame rate, with contacts off, on and fixed', () => {

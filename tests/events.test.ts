@@ -145,9 +145,23 @@ describe('drainEventsWith', () => {
 
   it('allocates nothing: draining 400,000 events runs no garbage collection (drainEvents runs several)', async () => {
     const sim = createBallPhysics()
+    const ids: number[] = []
+    for (let i = 0; i < 97; i++) ids.push(sim.addBall({ x: 20 + 30 * (i % 10), y: 20 + 30 * Math.floor(i / 10) }))
+    sim.drainEvents()
+    // a system of the game's pushes them in a step, at times spread over the step's window, out of order
+    let pushing = false
+    sim.schedule.push({
+      name: 'pusher',
+      run: (w) => {
+        if (!pushing || w.pass !== 0) return
+        const span = w.tickEnd - w.time
+        for (let i = 0; i < 400_000; i++) pushEvent(w.events, EventType.Skip, ids[i % 97]!, 0, w.time + (((i * 7919) % 1000) / 1000) * span, true, 3, 400)
+      },
+    })
     const fill = () => {
-      const buf = sim.world.events
-      for (let i = 0; i < 400_000; i++) pushEvent(buf, EventType.Skip, 1 + (i % 97), 0, (i * 7919) % 1000, true, 3, 400)
+      pushing = true
+      sim.step(1 / 60)
+      pushing = false
     }
     const gcsDuring = async (drain: () => void): Promise<number> => {
       let count = 0

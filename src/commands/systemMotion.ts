@@ -23,7 +23,7 @@ import { planRimRoll as planRimRaw, sampleRimRoll as sampleRimRaw, startRimRoll 
 import { planRolling as planRaw, sampleAtDistance as atDistanceRaw, sampleRolling as sampleRaw, startPathAt } from '../motion/rolling.js'
 import { lockAtLip as lockRaw, releaseRim as releaseRaw } from '../world/rimSlots.js'
 import { pushId } from '../world/idLists.js'
-import type { BallWorld } from '../world/createWorld.js'
+import { worldOfEvents, type BallWorld } from '../world/createWorld.js'
 import { checkBall, checkHole, checkWorld, describe, finite, within } from './validate.js'
 
 const HOLE_EVENTS = [EventType.Skip, EventType.Capture, EventType.Bounce, EventType.RimRoll, EventType.LipOut, EventType.NearMiss] as const
@@ -190,8 +190,9 @@ export function emitHoleEvent(world: BallWorld, type: (typeof HOLE_EVENTS)[numbe
 }
 
 /**
- * Appends an event to an event buffer (world.events): type (any but a collision, which names two balls),
- * ball and hole ids (0: none), time, and (δ, v) when hasDV.
+ * Appends an event to a world's event buffer (world.events): type (any but a collision, which names two
+ * balls), a live ball of that world and a live hole (0: none), the time (as the other functions take it:
+ * the world's time between steps, in a step within the window the step is in), and (δ, v) when hasDV.
  */
 export function pushEvent(
   buf: EventBuffer,
@@ -204,14 +205,13 @@ export function pushEvent(
   speed: number,
   via: CaptureViaCode = CaptureVia.None,
 ): void {
-  if (buf === null || typeof buf !== 'object' || !(buf.time instanceof Float64Array) || typeof buf.count !== 'number') {
-    throw new TypeError(`pushEvent: buf must be a world's event buffer (world.events), got ${describe(buf)}`)
-  }
+  const owner = buf !== null && typeof buf === 'object' ? worldOfEvents(buf) : undefined
+  if (owner === undefined) throw new TypeError(`pushEvent: buf must be a world's event buffer (world.events), got ${describe(buf)}`)
+  const w = checkWorld('pushEvent', owner)
   const ty = code('pushEvent', 'type', type, EVENT_CODES) as EventTypeCode
-  const b = within('pushEvent: ball', ball, 1, 0x7fffffff)
-  const h = within('pushEvent: hole (0: none)', hole, 0, 0x7fffffff)
-  if (!Number.isInteger(b) || !Number.isInteger(h)) throw new RangeError(`pushEvent: ball and hole must be entity ids (integers), got ${ball} and ${hole}`)
-  const t = finite('pushEvent: time', time, Number.MAX_VALUE)
+  const b = checkBall(w, 'pushEvent: ball', ball)
+  const h = hole === 0 ? 0 : checkHole(w, 'pushEvent: hole (0: none)', hole)
+  const t = instant('pushEvent', w, time)
   if (typeof hasDV !== 'boolean') throw new TypeError(`pushEvent: hasDV must be a boolean, got ${describe(hasDV)}`)
   const d = hasDV ? within('pushEvent: delta', delta, 0, MAX_COORDINATE) : 0
   const s = hasDV ? within('pushEvent: speed', speed, 0, MAX_SPEED) : 0

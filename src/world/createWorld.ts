@@ -188,7 +188,21 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     recorder: null,
     failed: null,
   }
-  return createWorld<BallWorldData>(data, entityIndex)
+  const w = createWorld<BallWorldData>(data, entityIndex)
+  bufferWorlds.set(w.events, w)
+  return w
+}
+
+/**
+ * Each world's event buffer, to its world: the ecs entry's pushEvent is given the buffer alone, and checks
+ * the ball, the hole and the time against the world's (the buffer is the world's for its life: growing it
+ * and restoring a snapshot write into it).
+ */
+const bufferWorlds = new WeakMap<EventBuffer, BallWorld>()
+
+/** The world whose event buffer `buf` is, if any. */
+export function worldOfEvents(buf: EventBuffer): BallWorld | undefined {
+  return bufferWorlds.get(buf)
 }
 
 /** The hole count from which the planner walks the grid, for a broadphase option. */
