@@ -121,4 +121,34 @@ describe('fixed-tick contacts: a ball near a wall that the tick did not pair', (
     expect(tiny.vx).toBe(-1e5)
     expect(tiny.x).toBeCloseTo(1.192, 9)
   })
+
+  // Paired is not enough: the tick's pairs are the balls whose reach discs meet (radius plus speed times the
+  // tick, every way), and a ball at 1e5 px/s reaches 833 px a tick. On straight lines turned at the walls
+  // (the path between ticks) a ball keeps within its speed times the tick on each axis, so a pair whose two
+  // such boxes do not meet cannot meet within the tick, however the walls turn either. The 173x adversarial
+  // run's slowest sequence: 88 balls at 1e5 px/s bouncing between the lines of a 5-px band, each on its own
+  // line across it, the tick halved 8-10 times (about 1,000 ticks a frame, 10.6 s for 0.71 s).
+  function band(): { ticks: number; redone: number; balls: ReturnType<ReturnType<typeof createBallPhysics>['ballState']>[] } {
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 0, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 5, maxY: 1000, restitution: 1 })
+    const ids: number[] = []
+    for (let k = 0; k < 20; k++) ids.push(sim.addBall({ x: 0.6 + 0.19 * k, y: 100 + 3 * k, vx: k % 2 === 0 ? 1e5 : -1e5, vy: 0, radius: 0.58 }))
+    const before = ticksRedone()
+    for (let i = 0; i < 6; i++) sim.step(1 / 60)
+    return { ticks: sim.world.fixed!.ticks, redone: ticksRedone() - before, balls: ids.map((b) => sim.ballState(b)) }
+  }
+
+  it('balls rattling across a 5-px channel at 1e5 px/s, 3 px apart along it, paired but out of each other\'s reach, do not halve the tick', () => {
+    const { ticks, redone, balls } = band()
+    // 12 ticks of 1/120 s in the 0.1 s, none solved again (6,146 ticks when the pairs counted: 15 redone
+    // ticks halved the spacing, and the pairs kept it there)
+    expect(ticks).toBeLessThan(50)
+    expect(redone).toBe(0)
+    // none met another: each is where its own wall bounces put it, on its own line
+    balls.forEach((b, k) => {
+      expect(b.y).toBe(100 + 3 * k)
+      expect(Math.abs(b.vx)).toBe(1e5)
+      expect(b.vy).toBe(0)
+    })
+  })
 })
