@@ -163,7 +163,8 @@ function slides(B: BallWorld['Ball'], a: number, b: number, nx: number, ny: numb
 
 /**
  * The cluster touching a and b (collectCluster, just run, at clusterAt[0]) leaves with its centre-of-mass
- * velocity (less motion into walls).
+ * velocity; off a closed wall it touches and moves into, as one body at the balls' restitution times the
+ * wall's (stopped on that axis where that is slower than BALL_SETTLE_SPEED or it touches the opposite wall).
  */
 function settleCluster(w: BallWorld, a: number, b: number): void {
   const t = clusterAt[0]!
@@ -188,16 +189,28 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
     const W = w.Walls
     const e = w.walls
     const open = W.open[e]!
+    // the closed walls a member touches
+    let touched = 0
     for (let k = 0; k < n; k++) {
       const eid = C.cluster[k]!
       const x = B.x[eid]!
       const y = B.y[eid]!
       const r = B.radius[eid]!
-      if (vx < 0 && (open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= TOUCH_GAP) vx = 0
-      if (vx > 0 && (open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= TOUCH_GAP) vx = 0
-      if (vy < 0 && (open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= TOUCH_GAP) vy = 0
-      if (vy > 0 && (open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= TOUCH_GAP) vy = 0
+      if ((open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= TOUCH_GAP) touched |= WallEdge.Left
+      if ((open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= TOUCH_GAP) touched |= WallEdge.Right
+      if ((open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= TOUCH_GAP) touched |= WallEdge.Top
+      if ((open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= TOUCH_GAP) touched |= WallEdge.Bottom
     }
+    // a cluster moving into a wall it touches leaves it as one body at the balls' restitution times the
+    // wall's (a squeeze of many contacts ends as the two-body law's limit would: a default ball pressing a
+    // tiny one against an elastic wall rebounds), or stops on that axis when that is slower than
+    // BALL_SETTLE_SPEED or the cluster touches the wall opposite too
+    const k = w.config.BALL_RESTITUTION * W.restitution[e]!
+    const floor = w.config.BALL_SETTLE_SPEED
+    if (vx < 0 && (touched & WallEdge.Left) !== 0) vx = (touched & WallEdge.Right) === 0 && -k * vx >= floor ? -k * vx : 0
+    else if (vx > 0 && (touched & WallEdge.Right) !== 0) vx = (touched & WallEdge.Left) === 0 && k * vx >= floor ? -k * vx : 0
+    if (vy < 0 && (touched & WallEdge.Top) !== 0) vy = (touched & WallEdge.Bottom) === 0 && -k * vy >= floor ? -k * vy : 0
+    else if (vy > 0 && (touched & WallEdge.Bottom) !== 0) vy = (touched & WallEdge.Top) === 0 && k * vy >= floor ? -k * vy : 0
   }
   for (let k = 0; k < n; k++) {
     const eid = C.cluster[k]!

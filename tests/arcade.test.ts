@@ -227,6 +227,32 @@ describe('a squeezed light ball does not stop the world', () => {
     storesFinite(sim)
   })
 
+  it.each([
+    [1, 1],
+    [1, 0.5],
+    [0.5, 1],
+  ])('balls of restitution %s squeezing a tiny ball against a wall of restitution %s: the default ball rebounds at their product of its speed', (e, wallE) => {
+    // the squeeze settles as one cluster (the tick's contacts spent); it leaves the wall as one body at the
+    // balls' restitution times the wall's, as the two-body law's many contacts tend to (it stopped dead)
+    const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: e, ROLLING_DECEL: 0 })
+    sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: wallE })
+    const tiny = sim.addBall({ x: 20, y: 240, vx: 0, vy: 0, radius: 0.001 })
+    const ball = sim.addBall({ x: 60, y: 240, vx: -200, vy: 0 })
+    const mass = (b: number) => sim.world.collide!.mass[b]!
+    const energy = () => [tiny, ball].reduce((k, b) => k + 0.5 * mass(b) * (sim.ballState(b).vx ** 2 + sim.ballState(b).vy ** 2), 0)
+    const before = energy()
+    for (let i = 0; i < 60; i++) {
+      sim.step(1 / 60)
+      sim.drainEvents()
+    }
+    // (to 1e-8 of it: the tiny ball's bounces off the wall before the squeeze settled took a little momentum)
+    expect(sim.ballState(ball).vx).toBeCloseTo(200 * e * wallE, 4)
+    expect(sim.ballState(ball).vy).toBe(0)
+    expect(sim.ballState(ball).x).toBeGreaterThan(60)
+    expect(energy()).toBeLessThanOrEqual(before)
+    storesFinite(sim)
+  })
+
   it('a 1e-9 ball between two 1e9 balls closing on it: steps return and a bystander rolls on', () => {
     const sim = createBallPhysics({ BALL_COLLISIONS: 'on', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
     sim.addBall({ x: 0, y: 0, vx: 100, vy: 0, mass: 1e9 })

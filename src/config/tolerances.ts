@@ -36,7 +36,8 @@ export const SINK_DEPTH = 1e-4
 export const CONTACT_DURATION = 1e-4
 /**
  * Gap, px, within which two balls, or a ball and a wall, count as touching: when a settling contact gathers
- * its cluster, and when a settled ball's motion into a wall it touches is removed.
+ * its cluster, and when a settling cluster touches a wall (it leaves a wall it moves into at the
+ * restitutions' product, systems/collisions.ts).
  */
 export const TOUCH_GAP = 1e-6
 /** Most balls one settling contact moves together. */
