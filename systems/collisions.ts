@@ -6,8 +6,9 @@
 //     CONTACT_DURATION (a push runs along a row of touching balls as in Newton's cradle)
 //   settling contact (approach slower than BALL_SETTLE_SPEED, or the same two balls touching again with
 //     nothing between, or a ball past MAX_TICK_CONTACTS contacts in this contact tick: a light ball squeezed
-//     between heavy ones): the touching cluster around them leaves with its centre-of-mass velocity, less any
-//     motion into a closed wall a member touches; then nothing in it can touch again (inelastic collapse ends).
+//     between heavy ones): the touching cluster around them leaves with its centre-of-mass velocity, and off a
+//     closed wall a member touches that it moves into as one body, at the balls' restitution times the wall's;
+//     then nothing in it can touch again (inelastic collapse ends).
 //     Two balls alone that approach that slowly while sliding past each other at GRAZE_SLIDE times
 //     BALL_SETTLE_SPEED or more (a graze), with restitution above 0, take the normal impulse instead,
 //     keeping their tangential motion
