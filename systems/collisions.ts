@@ -23,7 +23,7 @@ import { WallEdge } from '../components/Walls.js'
 import { CONTACT_DURATION, GRAZE_SLIDE, MAX_TICK_CONTACTS, NEVER, TOUCH_GAP } from '../src/config/tolerances.js'
 import { clusterAt, collectCluster } from '../src/contacts/cluster.js'
 import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, isRepeatContact, resolveContactIn, strikeLeavesRim } from '../src/contacts/law.js'
-import { appendCollision } from '../src/events.js'
+import { appendCollision, appendEvent, EventType } from '../src/events.js'
 import { launchBall } from '../src/motion/ballFate.js'
 import { PS_T, PS_VX, PS_VY, PS_X, PS_Y, pathStart, planRolling } from '../src/motion/rolling.js'
 import { planRimRoll } from '../src/motion/rimRoll.js'
@@ -168,6 +168,7 @@ function slides(B: BallWorld['Ball'], a: number, b: number, nx: number, ny: numb
  * wall's (stopped on that axis where that is slower than BALL_SETTLE_SPEED or it touches the opposite wall).
  */
 function settleCluster(w: BallWorld, a: number, b: number): void {
+  bounced = 0
   const t = clusterAt[0]!
   const C = w.collide!
   const B = w.Ball
@@ -189,30 +190,25 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
   if (w.walls !== 0) {
     const W = w.Walls
     const e = w.walls
-    const open = W.open[e]!
     // the closed walls a member touches
     let touched = 0
-    for (let k = 0; k < n; k++) {
-      const eid = C.cluster[k]!
-      const x = B.x[eid]!
-      const y = B.y[eid]!
-      const r = B.radius[eid]!
-      if ((open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= TOUCH_GAP) touched |= WallEdge.Left
-      if ((open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= TOUCH_GAP) touched |= WallEdge.Right
-      if ((open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= TOUCH_GAP) touched |= WallEdge.Top
-      if ((open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= TOUCH_GAP) touched |= WallEdge.Bottom
-    }
+    for (let k = 0; k < n; k++) touched |= wallsTouched(w, C.cluster[k]!)
     // a cluster moving into a wall it touches leaves it as one body at the balls' restitution times the
     // wall's (a squeeze of many contacts ends as the two-body law's limit would: a default ball pressing a
     // tiny one against an elastic wall rebounds), or stops on that axis when that is slower than
-    // BALL_SETTLE_SPEED or the cluster touches the wall opposite too
+    // BALL_SETTLE_SPEED or the cluster touches the wall opposite too; the walls it leaves, for settleWallEvents
     const k = w.config.BALL_RESTITUTION * W.restitution[e]!
     const floor = w.config.BALL_SETTLE_SPEED
+    const ux = vx
+    const uy = vy
     if (vx < 0 && (touched & WallEdge.Left) !== 0) vx = (touched & WallEdge.Right) === 0 && -k * vx >= floor ? -k * vx : 0
     else if (vx > 0 && (touched & WallEdge.Right) !== 0) vx = (touched & WallEdge.Left) === 0 && k * vx >= floor ? -k * vx : 0
     if (vy < 0 && (touched & WallEdge.Top) !== 0) vy = (touched & WallEdge.Bottom) === 0 && -k * vy >= floor ? -k * vy : 0
     else if (vy > 0 && (touched & WallEdge.Bottom) !== 0) vy = (touched & WallEdge.Top) === 0 && k * vy >= floor ? -k * vy : 0
+    if (vx !== 0 && vx !== ux) bounced |= ux < 0 ? WallEdge.Left : WallEdge.Right
+    if (vy !== 0 && vy !== uy) bounced |= uy < 0 ? WallEdge.Top : WallEdge.Bottom
   }
+  settleWallEvents(w, t)
   for (let k = 0; k < n; k++) {
     const eid = C.cluster[k]!
     C.lastContact[eid] = t
@@ -226,6 +222,49 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
     restart(w, eid)
     // the others are predicted again next pass with a and b
     if (k >= 2) pushId(w.marked, eid)
+  }
+}
+
+/** The closed walls the last settleCluster sent its cluster back from (WallEdge bits; 0: none). */
+let bounced = 0
+
+/** The closed walls (WallEdge bits) ball eid touches: within TOUCH_GAP of their lines. */
+function wallsTouched(w: BallWorld, eid: number): number {
+  const W = w.Walls
+  const e = w.walls
+  const B = w.Ball
+  const open = W.open[e]!
+  const x = B.x[eid]!
+  const y = B.y[eid]!
+  const r = B.radius[eid]!
+  let touched = 0
+  if ((open & WallEdge.Left) === 0 && x - r - W.minX[e]! <= TOUCH_GAP) touched |= WallEdge.Left
+  if ((open & WallEdge.Right) === 0 && W.maxX[e]! - x - r <= TOUCH_GAP) touched |= WallEdge.Right
+  if ((open & WallEdge.Top) === 0 && y - r - W.minY[e]! <= TOUCH_GAP) touched |= WallEdge.Top
+  if ((open & WallEdge.Bottom) === 0 && W.maxY[e]! - y - r <= TOUCH_GAP) touched |= WallEdge.Bottom
+  return touched
+}
+
+/**
+ * A 'wall' event at time t for each member of the cluster being settled (its velocities not yet changed)
+ * that touches a wall the cluster is sent back from and is not moving away from it (a ball that bounced
+ * off it at this instant has its own).
+ */
+function settleWallEvents(w: BallWorld, t: number): void {
+  if (bounced === 0) return
+  const C = w.collide!
+  const B = w.Ball
+  for (let k = 0, n = C.clusterCount; k < n; k++) {
+    const eid = C.cluster[k]!
+    const walls = wallsTouched(w, eid) & bounced
+    if (walls === 0) continue
+    const vx = B.vx[eid]!
+    const vy = B.vy[eid]!
+    const away =
+      ((walls & WallEdge.Left) === 0 || vx > 0) && ((walls & WallEdge.Right) === 0 || vx < 0) && ((walls & WallEdge.Top) === 0 || vy > 0) && ((walls & WallEdge.Bottom) === 0 || vy < 0)
+    if (away) continue
+    const ev = appendEvent(w.events, EventType.Wall, eid, 0, false)
+    w.events.time[ev] = t
   }
 }
 
