@@ -197,14 +197,14 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
     // wall's (a squeeze of many contacts ends as the two-body law's limit would: a default ball pressing a
     // tiny one against an elastic wall rebounds), or stops on that axis when that is slower than
     // BALL_SETTLE_SPEED or the cluster touches the wall opposite too; the walls it leaves, for settleWallEvents
-    const k = w.config.BALL_RESTITUTION * W.restitution[e]!
+    const keep = w.config.BALL_RESTITUTION * W.restitution[e]!
     const floor = w.config.BALL_SETTLE_SPEED
     const ux = vx
     const uy = vy
-    if (vx < 0 && (touched & WallEdge.Left) !== 0) vx = (touched & WallEdge.Right) === 0 && -k * vx >= floor ? -k * vx : 0
-    else if (vx > 0 && (touched & WallEdge.Right) !== 0) vx = (touched & WallEdge.Left) === 0 && k * vx >= floor ? -k * vx : 0
-    if (vy < 0 && (touched & WallEdge.Top) !== 0) vy = (touched & WallEdge.Bottom) === 0 && -k * vy >= floor ? -k * vy : 0
-    else if (vy > 0 && (touched & WallEdge.Bottom) !== 0) vy = (touched & WallEdge.Top) === 0 && k * vy >= floor ? -k * vy : 0
+    if (vx < 0 && (touched & WallEdge.Left) !== 0) vx = (touched & WallEdge.Right) === 0 && -keep * vx >= floor ? -keep * vx : 0
+    else if (vx > 0 && (touched & WallEdge.Right) !== 0) vx = (touched & WallEdge.Left) === 0 && keep * vx >= floor ? -keep * vx : 0
+    if (vy < 0 && (touched & WallEdge.Top) !== 0) vy = (touched & WallEdge.Bottom) === 0 && -keep * vy >= floor ? -keep * vy : 0
+    else if (vy > 0 && (touched & WallEdge.Bottom) !== 0) vy = (touched & WallEdge.Top) === 0 && keep * vy >= floor ? -keep * vy : 0
     if (vx !== 0 && vx !== ux) bounced |= ux < 0 ? WallEdge.Left : WallEdge.Right
     if (vy !== 0 && vy !== uy) bounced |= uy < 0 ? WallEdge.Top : WallEdge.Bottom
   }
