@@ -168,7 +168,6 @@ function slides(B: BallWorld['Ball'], a: number, b: number, nx: number, ny: numb
  * wall's (stopped on that axis where that is slower than BALL_SETTLE_SPEED or it touches the opposite wall).
  */
 function settleCluster(w: BallWorld, a: number, b: number): void {
-  bounced = 0
   const t = clusterAt[0]!
   const C = w.collide!
   const B = w.Ball
@@ -187,6 +186,8 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
   let vy = py / m
   // the impulse reported is the one on a
   contactOut.impulse = C.mass[a]! * hypot(vx - B.vx[a]!, vy - B.vy[a]!)
+  // the closed walls it is sent back from (WallEdge bits)
+  let bounced = 0
   if (w.walls !== 0) {
     const W = w.Walls
     const e = w.walls
@@ -196,7 +197,7 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
     // a cluster moving into a wall it touches leaves it as one body at the balls' restitution times the
     // wall's (a squeeze of many contacts ends as the two-body law's limit would: a default ball pressing a
     // tiny one against an elastic wall rebounds), or stops on that axis when that is slower than
-    // BALL_SETTLE_SPEED or the cluster touches the wall opposite too; the walls it leaves, for settleWallEvents
+    // BALL_SETTLE_SPEED or the cluster touches the wall opposite too
     const keep = w.config.BALL_RESTITUTION * W.restitution[e]!
     const floor = w.config.BALL_SETTLE_SPEED
     const ux = vx
@@ -208,7 +209,7 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
     if (vx !== 0 && vx !== ux) bounced |= ux < 0 ? WallEdge.Left : WallEdge.Right
     if (vy !== 0 && vy !== uy) bounced |= uy < 0 ? WallEdge.Top : WallEdge.Bottom
   }
-  settleWallEvents(w, t)
+  if (bounced !== 0) settleWallEvents(w, t, bounced)
   for (let k = 0; k < n; k++) {
     const eid = C.cluster[k]!
     C.lastContact[eid] = t
@@ -224,9 +225,6 @@ function settleCluster(w: BallWorld, a: number, b: number): void {
     if (k >= 2) pushId(w.marked, eid)
   }
 }
-
-/** The closed walls the last settleCluster sent its cluster back from (WallEdge bits; 0: none). */
-let bounced = 0
 
 /** The closed walls (WallEdge bits) ball eid touches: within TOUCH_GAP of their lines. */
 function wallsTouched(w: BallWorld, eid: number): number {
@@ -247,11 +245,10 @@ function wallsTouched(w: BallWorld, eid: number): number {
 
 /**
  * A 'wall' event at time t for each member of the cluster being settled (its velocities not yet changed)
- * that touches a wall the cluster is sent back from and is not moving away from it (a ball that bounced
- * off it at this instant has its own).
+ * that touches one of the walls `bounced` (WallEdge bits) the cluster is sent back from and is not moving
+ * away from it (a ball that bounced off it at this instant has its own).
  */
-function settleWallEvents(w: BallWorld, t: number): void {
-  if (bounced === 0) return
+function settleWallEvents(w: BallWorld, t: number, bounced: number): void {
   const C = w.collide!
   const B = w.Ball
   for (let k = 0, n = C.clusterCount; k < n; k++) {
