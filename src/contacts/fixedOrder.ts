@@ -13,8 +13,14 @@ import { BallMode } from '../../components/Ball.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushListed, pushPair, reserveCandidates, reserveSort, type FixedContactState } from '../world/fixedState.js'
 import { gridShape } from './fixedDense.js'
-import { radixSort, sortByKeys, sweepPairs } from './fixedSweep.js'
+import { radixSort, sortByKeys, sortKeys, sweepPairs } from './fixedSweep.js'
 import { renumberCapsules } from './fixedCapsule.js'
+
+/** Up to this many keys, a tick's pairs (and packed ids not sorted through a bitmap) are sorted by sortKeys, not by radix. */
+const FEW_KEYS = 512
+
+/** The largest K for which every joined key first·K + second (both below K) is an exact double. */
+const MAX_JOINED = 94906265
 
 /** Finds the tick's pairs (F.pairA, F.pairB, F.pairCount, in solve order) and packs their balls. */
 export function findPairs(w: BallWorld, F: FixedContactState): void {
@@ -103,28 +109,67 @@ function isMoving(B: BallWorld['Ball'], e: number): boolean {
   return m === BallMode.Rolling || m === BallMode.RimRoll
 }
 
-/** Sorts ids[0..n) ascending (insertion for a few, else by radix through F.perm). */
+/**
+ * Sorts the distinct ids[0..n) ascending: insertion for a few; through a bitmap of the ids when it has at
+ * most 4n words (set each id's bit, read the words in order); else as numbers (sortKeys), or by radix
+ * through F.perm for many.
+ */
 function sortIds(F: FixedContactState, ids: Uint32Array, n: number): void {
-  if (n > 32) {
-    reserveSort(F, n)
-    let top = 0
-    for (let i = 0; i < n; i++) {
-      F.key1[i] = ids[i]!
-      F.perm[i] = i
-      if (ids[i]! > top) top = ids[i]!
+  if (n <= 16) {
+    for (let i = 1; i < n; i++) {
+      const v = ids[i]!
+      let j = i - 1
+      while (j >= 0 && ids[j]! > v) {
+        ids[j + 1] = ids[j]!
+        j--
+      }
+      ids[j + 1] = v
     }
-    radixSort(F, n, top)
-    for (let i = 0; i < n; i++) ids[i] = F.key1[F.perm[i]!]!
     return
   }
-  for (let i = 1; i < n; i++) {
-    const v = ids[i]!
-    let j = i - 1
-    while (j >= 0 && ids[j]! > v) {
-      ids[j + 1] = ids[j]!
-      j--
+  let top = 0
+  for (let i = 0; i < n; i++) if (ids[i]! > top) top = ids[i]!
+  const words = (top >>> 5) + 1
+  if (words <= 4 * n) {
+    sortByBits(ids, n, words)
+    return
+  }
+  reserveSort(F, n)
+  if (n <= FEW_KEYS) {
+    for (let i = 0; i < n; i++) F.key1[i] = ids[i]!
+    sortKeys(F, n)
+    for (let i = 0; i < n; i++) ids[i] = F.key1[i]!
+    return
+  }
+  for (let i = 0; i < n; i++) {
+    F.key1[i] = ids[i]!
+    F.perm[i] = i
+  }
+  radixSort(F, n, top)
+  for (let i = 0; i < n; i++) ids[i] = F.key1[F.perm[i]!]!
+}
+
+/** sortByBits' bitmap of ids (scratch: every word it sets is zero again when it returns). */
+let idBits = new Int32Array(64)
+
+/** Sorts the distinct ids[0..n), all below 32·words, through idBits. */
+function sortByBits(ids: Uint32Array, n: number, words: number): void {
+  if (idBits.length < words) idBits = new Int32Array(Math.max(words, 2 * idBits.length))
+  const bits = idBits
+  for (let i = 0; i < n; i++) {
+    const e = ids[i]!
+    bits[e >>> 5]! |= 1 << (e & 31)
+  }
+  let k = 0
+  for (let wd = 0; wd < words; wd++) {
+    let b = bits[wd]!
+    if (b === 0) continue
+    bits[wd] = 0
+    while (b !== 0) {
+      const low = b & -b
+      ids[k++] = (wd << 5) | (31 - Math.clz32(low))
+      b ^= low
     }
-    ids[j + 1] = v
   }
 }
 
@@ -163,8 +208,32 @@ function orderPairs(F: FixedContactState): void {
       k1[t] = bigBase + g
       k2[t] = place[s]! * n + s
     }
-    F.perm[t] = t
   }
+  const K = bigBase + n
+  if (count <= FEW_KEYS && K <= MAX_JOINED) {
+    // few pairs: one key a pair, first·K + second (exact: below 2^53), sorted as numbers (a radix sort's
+    // 256 buckets a pass cost more below some hundreds of keys); the keys are distinct, so the order is the
+    // two keys' order whatever the sort, and each pair is read back from its key
+    for (let t = 0; t < count; t++) k1[t] = k1[t]! * K + k2[t]!
+    sortKeys(F, count)
+    for (let k = 0; k < count; k++) {
+      const c = k1[k]!
+      let first = Math.floor(c / K)
+      let second = c - first * K
+      if (second < 0) {
+        first--
+        second += K
+      } else if (second >= K) {
+        first++
+        second -= K
+      }
+      const a = first >= bigBase ? first - bigBase : indexOf(first, n)
+      const b = second >= bigBase ? second - bigBase : indexOf(second, n)
+      pushPair(F, a < b ? a : b, a < b ? b : a)
+    }
+    return
+  }
+  for (let t = 0; t < count; t++) F.perm[t] = t
   if (bigBase + n < 2147483648) {
     // by the first key (whole numbers), then runs of equal first keys by the second
     radixSort(F, count, bigBase + n)
@@ -185,6 +254,12 @@ function orderPairs(F: FixedContactState): void {
     const b = F.packAt[F.pe2[t]!]!
     pushPair(F, a < b ? a : b, a < b ? b : a)
   }
+}
+
+/** The packed index in a small ball's key, place·n + index (key % n, which V8 computes as a call on doubles). */
+function indexOf(key: number, n: number): number {
+  const i = key - Math.floor(key / n) * n
+  return i < 0 ? i + n : i >= n ? i - n : i
 }
 
 /**

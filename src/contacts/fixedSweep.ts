@@ -137,6 +137,44 @@ export function sortByKeys(F: FixedContactState, n: number, two: boolean): void 
   if (a !== F.perm) for (let i = 0; i < n; i++) F.perm[i] = a[i]!
 }
 
+/** Runs sorted by insertion before sortKeys merges them. */
+const RUN = 8
+
+/**
+ * Sorts F.key1[0..n) ascending, in place (F.key2 the scratch): insertion within runs of RUN, then bottom-up
+ * merges. For the tick's few keys (pairs, packed ids): a radix sort's 256 buckets a pass cost more than
+ * this below some hundreds of keys.
+ */
+export function sortKeys(F: FixedContactState, n: number): void {
+  let a = F.key1
+  let b = F.key2
+  for (let lo = 0; lo < n; lo += RUN) {
+    const hi = lo + RUN < n ? lo + RUN : n
+    for (let i = lo + 1; i < hi; i++) {
+      const v = a[i]!
+      let j = i - 1
+      while (j >= lo && a[j]! > v) {
+        a[j + 1] = a[j]!
+        j--
+      }
+      a[j + 1] = v
+    }
+  }
+  for (let width = RUN; width < n; width *= 2) {
+    for (let lo = 0; lo < n; lo += 2 * width) {
+      const mid = lo + width < n ? lo + width : n
+      const hi = lo + 2 * width < n ? lo + 2 * width : n
+      let i = lo
+      let j = mid
+      for (let o = lo; o < hi; o++) b[o] = i < mid && (j >= hi || a[i]! <= a[j]!) ? a[i++]! : a[j++]!
+    }
+    const t = a
+    a = b
+    b = t
+  }
+  if (a !== F.key1) for (let i = 0; i < n; i++) F.key1[i] = a[i]!
+}
+
 /** True when entry p sorts after entry q. */
 function after(k1: Float64Array, k2: Float64Array, two: boolean, p: number, q: number): boolean {
   return k1[p]! > k1[q]! || (two && k1[p] === k1[q] && k2[p]! > k2[q]!)

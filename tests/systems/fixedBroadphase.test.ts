@@ -111,6 +111,37 @@ describe('fixed-tick broadphases', () => {
     expect(same(make, scene, 120, 1 / 120)).toBeGreaterThan(500)
   })
 
+  it('packed ids far apart (sorted as numbers, not through a bitmap of the ids), and a crowd of more than 512 pairs a tick (sorted by radix)', () => {
+    // ids are reused last out, first in: after 5,000 balls are removed, the gas's ids are 5,000 and down
+    const sparse = () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0 }, { capacity: 6000 })
+      const gone: number[] = []
+      for (let i = 0; i < 5000; i++) gone.push(sim.addBall({ x: 10 + (i % 100) * 30, y: 10 + Math.floor(i / 100) * 30 }))
+      for (const e of gone) sim.removeBall(e)
+      sim.step(1 / 60)
+      sim.setWalls({ minX: 0, minY: 0, maxX: 240, maxY: 240, restitution: 1 })
+      const r = rng(5)
+      for (let i = 0; i < 40; i++) {
+        const a = r() * 2 * Math.PI
+        sim.addBall({ x: 20 + 32 * (i % 7) + r() * 4, y: 20 + 32 * Math.floor(i / 7) + r() * 4, vx: 500 * Math.cos(a), vy: 500 * Math.sin(a) })
+      }
+      expect(Math.min(...sim.balls())).toBeGreaterThan(4900)
+      return sim
+    }
+    expect(same(sparse, () => {}, 90, 1 / 60)).toBeGreaterThan(100)
+    const crowd = () => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', ROLLING_DECEL: 0, BALL_RESTITUTION: 0.9 }, { capacity: 1024 })
+      sim.setWalls({ minX: 0, minY: 0, maxX: 400, maxY: 400, restitution: 0.9 })
+      const r = rng(9)
+      for (let i = 0; i < 700; i++) {
+        const a = r() * 2 * Math.PI
+        sim.addBall({ x: 8 + 14.5 * (i % 27) + r() * 2, y: 8 + 14.5 * Math.floor(i / 27) + r() * 2, vx: 400 * Math.cos(a), vy: 400 * Math.sin(a), radius: 5 })
+      }
+      return sim
+    }
+    expect(same(crowd, () => {}, 20, 1 / 60)).toBeGreaterThan(500)
+  })
+
   it('a pile at rest struck by a stream (resting balls looked up, then all candidates), with walls all round', () => {
     const make = () => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed' }, { capacity: 512 })
