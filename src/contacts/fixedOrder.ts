@@ -15,6 +15,7 @@ import { nextMark, pushListed, pushPair, reserveCandidates, reserveSort, type Fi
 import { gridShape } from './fixedDense.js'
 import { radixSort, sortByKeys, sortKeys, sweepPairs } from './fixedSweep.js'
 import { renumberCapsules } from './fixedCapsule.js'
+import { sortIdRange } from '../world/idLists.js'
 
 /** Up to this many keys, a tick's pairs (and packed ids not sorted through a bitmap) are sorted by sortKeys, not by radix. */
 const FEW_KEYS = 512
@@ -116,15 +117,7 @@ function isMoving(B: BallWorld['Ball'], e: number): boolean {
  */
 function sortIds(F: FixedContactState, ids: Uint32Array, n: number): void {
   if (n <= 16) {
-    for (let i = 1; i < n; i++) {
-      const v = ids[i]!
-      let j = i - 1
-      while (j >= 0 && ids[j]! > v) {
-        ids[j + 1] = ids[j]!
-        j--
-      }
-      ids[j + 1] = v
-    }
+    sortIdRange(ids, 0, n)
     return
   }
   let top = 0
