@@ -1169,7 +1169,9 @@ describe('shrunk counterexamples of the long run', () => {
   // the 1,462nd sequence of 'crowds (fixed)' at 30x the long run, shrunk: 84 balls at 1e5 px/s put down among 72
   // of mass 1e-9 and 28 specks in the closed elastic box. With no budget its steps take 19 s here (7,636 ticks
   // for 0.67 s simulated; drawn in full, 3.1 times the run budget). Its pairs are mostly of masses 1e9 apart:
-  // the default UNLIKE_MASS_BUDGET meters their work, and its spans go lean (3.7 s, 2,664 ticks)
+  // the default UNLIKE_MASS_BUDGET meters their work, and its spans go lean (3.7 s, 2,664 ticks; 1.1 s, 631
+  // ticks, 553 of them lean and 78 spans' last ticks skipped, since that budget counts the pairs of the span's
+  // first try instead of every pair of its balls)
   it('fixed-tick contacts, no CONTACT_WORK_BUDGET: light balls pumped by a stream at 1e5 px/s take the budget for unlike masses and step within the run budget', () => {
     const ops = [
       { t: 'burst', n: 69, x: -20, y: 204.27704, spread: 22, speed: 30000, mass: 1e-9, seed: 182, aim: { p: 'aim', k: 10, d: 9.7834, off: -1.1953682, a: 5.5090854 } },
@@ -1184,8 +1186,69 @@ describe('shrunk counterexamples of the long run', () => {
       { t: 'addHole', x: 210, y: 190, radius: 500 },
     ] as unknown as Op[]
     let lean = 0
-    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0 }, ops, ['finite', 'events', 'time', 'overlap'], (sim) => (lean = sim.world.fixed!.lean))
-    expect(lean).toBeGreaterThan(1000)
+    let skipped = 0
+    runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0 }, ops, ['finite', 'events', 'time', 'overlap'], (sim) => {
+      lean = sim.world.fixed!.lean
+      skipped = sim.world.fixed!.budget[3]!
+    })
+    expect(lean).toBeGreaterThan(300)
+    expect(skipped).toBeGreaterThan(20)
+  })
+
+  // the long run's two slowest pumped crowds, shrunk: 'crowds (fixed)' at 83x (the 2,065th sequence: 76 specks of
+  // mass 1e9 at 3e4 px/s among 76 balls of mass 6e4 and 169 of mass 1) and at 101x (the 2,348th: 114 specks of
+  // mass 1e9 at 1e5 px/s and 120 of mass 1 among 134 light balls), both in the closed elastic box. With the
+  // budget for unlike masses at 16 visits to every pair of the span's balls (about 1.04 M a span for 370 balls),
+  // they solved 2,217 and 2,998 ticks and stepped in 8.0 and 8.4 s alone (1.6 and 1.3 times the run budget in
+  // the long run, on a loaded machine); at 16 visits to each pair the span's first try pairs (about 2,400),
+  // 634 and 477 ticks, most spans' last ticks skipped, 1.4-2.0 s (src/contacts/fixedBudget.ts)
+  it('fixed-tick contacts, no CONTACT_WORK_BUDGET: pumped crowds of specks of mass 1e9 spend the budget for unlike masses by the pairs they have, skip the last ticks of their spans, and step within the run budget', () => {
+    const scale83 = [
+        { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { bottom: false } },
+        { t: 'step', dt: 1e-9 },
+        { t: 'burst', n: 76, x: 288.92174, y: 30, spread: 1, speed: 300, radius: undefined, mass: 60255.95860743581, seed: 704, aim: { p: 'aim', k: 31, d: 107.9006, off: 0.6312256799999999, a: 0.5723423999999999, lip: 483.3595 } },
+        { t: 'removeBall', k: 32 },
+        { t: 'addBall', x: 230, y: 109.51847999999998, radius: 2.958012466551546, mass: 4.24619563946313e-8, place: { p: 'free' }, queue: undefined, vx: -352.3708710424873, vy: -0 },
+        { t: 'burst', n: 76, x: 338.74204, y: 2.524840000000001, spread: 22, speed: 30000, radius: 0.11641260294104912, mass: 1000000000, seed: 793, aim: { p: 'aim', k: 45, d: 66.9996, off: -0.58131684, a: 3.7373616, lip: 503.271145 } },
+        { t: 'setVel', k: 14, vx: 1.3628036707740054, vy: 3.1108356969045827 },
+        { t: 'addBall', x: 400, y: 128.99092000000002, radius: 0.002884031503126606, mass: 0.07328245331389041, place: { p: 'overlap', k: 17, f: 1.9324293, a: 4.3639281 }, queue: 'front', vx: 0.019423480397050948, vy: -0.021229003108429564 },
+        { t: 'addBall', x: 70.37988, y: 265.39004, radius: 0.012050359403717974, mass: undefined, place: { p: 'overlap', k: 15, f: 1.55544569, a: 5.8776732 }, queue: undefined, vx: -100000, vy: -0 },
+        { t: 'burst', n: 133, x: 120, y: -17.1478, spread: 60, speed: 5000, radius: undefined, mass: undefined, seed: 197, aim: { p: 'aim', k: 13, d: 145.16039999999998, off: 0.6738544799999999, a: 1.6951409999999998, lip: 495.88399 } },
+        { t: 'addHole', x: 370, y: 130, radius: 28.109851 },
+        { t: 'throw', x: 210, y: 450, power: 0.950777, angle: 5.330465919051946, radius: 0.07906786279998249, mass: 76.38357835776907, place: { p: 'aim', k: 44, d: 178.1244, off: -0.10946260000000008, a: 4.4406621 }, queue: undefined },
+        { t: 'setVel', k: 15, vx: -11.194378834671515, vy: -0 },
+        { t: 'burst', n: 36, x: 152.10762, y: 170, spread: 22, speed: 5000, radius: undefined, mass: undefined, seed: 795, aim: { p: 'aim', k: 36, d: 124.8588, off: 1.0699728000000002, a: 4.4262350999999995 } },
+        { t: 'addBall', x: 179.62022, y: -13.223880000000001, radius: 2.306747188720069, mass: 1000000000, place: { p: 'overlap', k: 23, f: 0.54206207, a: 3.6893745 }, queue: undefined, vx: 5e-324, vy: 5e-324 },
+        { t: 'addBall', x: 348.07544, y: 195.38036, radius: undefined, mass: 12882495.51693135, place: { p: 'stack', k: 0 }, queue: 'front', vx: 35809.64371026363, vy: -0 },
+        { t: 'step', dt: 0.004166666666666667 },
+        { t: 'step', dt: 0.1 },
+    ] as unknown as Op[]
+    const scale101 = [
+        { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { bottom: false } },
+        { t: 'burst', n: 31, x: 0, y: 263.41612000000003, spread: 400, speed: 300, radius: undefined, mass: 3.944573020752785e-9, seed: 104, aim: { p: 'aim', k: 1, d: 199.9992, off: -0.6495357599999999, a: 2.7456785999999997, lip: 504.999955 } },
+        { t: 'step', dt: 0.016666666666666666 },
+        { t: 'removeBall', k: 9 },
+        { t: 'burst', n: 114, x: 227.61891999999997, y: 379.08752000000004, spread: 1, speed: 100000, radius: 0.004477133041763623, mass: 1000000000, seed: 290, aim: { p: 'aim', k: 43, d: 6.7206, off: -1.2100608, a: 5.3988606 } },
+        { t: 'step', dt: 0.004166666666666667 },
+        { t: 'addHole', x: 210, y: 370, radius: 0.01 },
+        { t: 'throw', x: 240, y: 52.67363999999999, power: 0.922345, angle: -3.930685329947863, radius: 0.0015452544395384142, mass: undefined, place: { p: 'free' }, queue: undefined },
+        { t: 'setVel', k: 19, vx: -0, vy: 41.87935651179185 },
+        { t: 'throw', x: 210, y: 450, power: 1, angle: 4.844675163842048, radius: undefined, mass: undefined, place: { p: 'aim', k: 9, d: 121.3878, off: 1.1739780000000002, a: 3.7563812999999997 }, queue: undefined },
+        { t: 'addHole', x: 210, y: 130, radius: undefined },
+        { t: 'burst', n: 120, x: 382.60442, y: 18.514320000000005, spread: 22, speed: 100000, radius: 0.022698648518838224, mass: undefined, seed: 835, aim: { p: 'aim', k: 31, d: 84.23079999999999, off: 0.67872996, a: 1.4477967, lip: 483.917005 } },
+        { t: 'burst', n: 103, x: 22698.648518838214, y: 31.216879999999996, spread: 400, speed: 5000, radius: undefined, mass: 3.9627803425543934e-5, seed: 433, aim: { p: 'aim', k: 47, d: 187.571, off: 0.5725954, a: 5.7591198 } },
+        { t: 'addHole', x: 343.95062, y: 450, radius: 52.619631000000005 },
+    ] as unknown as Op[]
+    for (const [ops, most] of [[scale83, 1200], [scale101, 1200]] as const) {
+      let ticks = 0
+      let skipped = 0
+      runScenario('counterexample', { contacts: 'fixed', e: 1, decel: 0 }, ops, ['finite', 'events', 'time', 'overlap'], (sim) => {
+        ticks = sim.world.fixed!.ticks
+        skipped = sim.world.fixed!.budget[3]!
+      })
+      expect(ticks).toBeLessThan(most)
+      expect(skipped).toBeGreaterThan(20)
+    }
   })
 
   // exact contacts, e = 0: a ball of mass 1e-3 settled against one of mass 1,000 in a corner, which a third

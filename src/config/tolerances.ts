@@ -330,7 +330,8 @@ export const GRAZE_SLIDE = 64
 /**
  * Fixed-tick contacts: the work meter (src/contacts/fixedBudget.ts). A CONTACT_TICK span of the clock may
  * spend config.CONTACT_WORK_BUDGET visits to every pair of its balls, counted as at least MIN_WORK_BALLS
- * balls. Past that, the span's remaining ticks are lean: one try, one velocity call of LEAN_ITERATIONS sweeps
+ * balls (config.UNLIKE_MASS_BUDGET: visits to each pair its first try pairs, counted as at least
+ * MIN_WORK_BALLS' n·(n − 1)/2 pairs). Past that, the span's remaining ticks are lean: one try, one velocity call of LEAN_ITERATIONS sweeps
  * and no widening rounds, a projection of at most LEAN_PROJECTION_BUDGET × pairs pair visits (and as many
  * again after each of up to MAX_WIDEN_ROUNDS join rounds); past LEAN_SHARE × the budget more, the span's last
  * ticks are skipped.

@@ -30,7 +30,13 @@
 // squeezed between two heavy ones closing takes about π·√(M/m) meetings to turn them (M/m up to 1e18 here), and
 // the solve takes them all: 100 balls of mass 1 at 1e5 px/s among 100 of mass 1e-9 cost 30,686 sweeps in 0.1
 // s. Such crowds spend this budget and go lean; scenes of like masses, and a row struck by a heavier ball (one
-// unlike pair among many), spend none of it and are solved as with no budget, bit for bit.
+// unlike pair among many), spend none of it and are solved as with no budget, bit for bit. This budget is
+// UNLIKE_MASS_BUDGET visits to each pair the span's first try pairs (counted as at least MIN_WORK_BALLS'
+// n·(n − 1)/2 pairs), set at that pairing: a crowd has about ten pairs a ball within reach, not n/2. At 16
+// visits to every pair of its balls, a pumped crowd of 370 balls could spend about 1.04 M visits a span
+// before going lean, about 28 times its budget now (about 2,400 pairs), and seldom reached the mark past
+// which a span's last ticks are skipped: the long adversarial run's two slowest such sequences stepped in
+// 8.0–8.4 s, run alone, against 1.4–2.0 s now.
 import { LEAN_ITERATIONS, LEAN_SHARE, MIN_WORK_BALLS, UNLIKE_MASS_RATIO } from '../config/tolerances.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
@@ -44,6 +50,10 @@ const WORK = 1
 const LIMIT = 2
 const SKIPPED = 3
 const SHARE = 4
+/** LIMIT of a span whose budget is UNLIKE_MASS_BUDGET until its first pairing sets it */
+const UNSET = -2
+/** the fewest pairs an UNLIKE_MASS_BUDGET span's budget counts */
+const MIN_WORK_PAIRS = (MIN_WORK_BALLS * (MIN_WORK_BALLS - 1)) / 2
 
 /** Whether the spans' budget is UNLIKE_MASS_BUDGET: the game set no CONTACT_WORK_BUDGET (the config is the world's for life). */
 function unlikeBudget(w: BallWorld): boolean {
@@ -51,8 +61,9 @@ function unlikeBudget(w: BallWorld): boolean {
 }
 
 /**
- * At a tick's solve: a new span starts a new count, its budget from the balls on the panel now: the game's
- * CONTACT_WORK_BUDGET, or with none UNLIKE_MASS_BUDGET, which counts the work of unlike pairs only.
+ * At a tick's solve: a new span starts a new count, its budget the game's CONTACT_WORK_BUDGET over the balls
+ * on the panel now, or with none UNLIKE_MASS_BUDGET, which counts the work of unlike pairs only and is set
+ * at the span's first pairing (meterPairs).
  */
 export function meterTick(w: BallWorld, F: FixedContactState): void {
   const span = Math.floor((F.nextTick - 1) / (1 << F.halvings))
@@ -60,18 +71,23 @@ export function meterTick(w: BallWorld, F: FixedContactState): void {
   if (span === B[SPAN]) return
   B[SPAN] = span
   B[WORK] = 0
-  const n = Math.max(MIN_WORK_BALLS, w.moving.count + F.rest.restCount + F.rest.bigRestCount)
   const unlike = unlikeBudget(w)
-  const budget = unlike ? w.config.UNLIKE_MASS_BUDGET : w.config.CONTACT_WORK_BUDGET
-  B[LIMIT] = budget === 0 ? -1 : (budget * n * (n - 1)) / 2
   B[SHARE] = unlike ? 0 : 1
+  if (unlike) {
+    B[LIMIT] = UNSET
+    return
+  }
+  const n = Math.max(MIN_WORK_BALLS, w.moving.count + F.rest.restCount + F.rest.bigRestCount)
+  const budget = w.config.CONTACT_WORK_BUDGET
+  B[LIMIT] = budget === 0 ? -1 : (budget * n * (n - 1)) / 2
 }
 
 /**
  * At a try's pairing, where the span's budget is UNLIKE_MASS_BUDGET: the share of the try's work the meter
  * counts is that of its pairs whose masses are UNLIKE_MASS_RATIO apart or more (by the balls' own masses).
  * A crowd of light balls pumped among heavy ones spends it; a row struck by a heavy ball, one unlike pair
- * among many like ones, or any scene of like masses, does not.
+ * among many like ones, or any scene of like masses, does not. The span's first pairing sets its budget:
+ * UNLIKE_MASS_BUDGET visits to each of its pairs, at least MIN_WORK_PAIRS of them.
  */
 export function meterPairs(w: BallWorld, F: FixedContactState): void {
   if (!unlikeBudget(w)) return
@@ -85,6 +101,7 @@ export function meterPairs(w: BallWorld, F: FixedContactState): void {
     if (ma >= UNLIKE_MASS_RATIO * mb || mb >= UNLIKE_MASS_RATIO * ma) unlike++
   }
   B[SHARE] = pairs === 0 ? 0 : unlike / pairs
+  if (B[LIMIT] === UNSET) B[LIMIT] = w.config.UNLIKE_MASS_BUDGET * Math.max(pairs, MIN_WORK_PAIRS)
 }
 
 /** Counts `visits` pair visits (or candidates) to the span, at the share the meter counts. */
@@ -92,7 +109,7 @@ export function spend(F: FixedContactState, visits: number): void {
   F.budget[WORK] += visits * F.budget[SHARE]!
 }
 
-/** Whether the span has spent its budget (there is one: −1 is none): the rest of it is solved lean. */
+/** Whether the span has spent its budget (there is one: −1 is none, and UNSET none yet): the rest of it is solved lean. */
 export function lean(F: FixedContactState): boolean {
   const limit = F.budget[LIMIT]!
   return limit >= 0 && F.budget[WORK]! > limit

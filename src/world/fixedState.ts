@@ -156,7 +156,7 @@ export interface FixedContactState {
   inelastic: number
   /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
   capped: number
-  /** the work meter (src/contacts/fixedBudget.ts): the CONTACT_TICK span it meters, the work spent in it, its budget (−1: none), the spans whose last ticks it skipped (over the world's life), the share of a try's work it counts; `lean`: ticks that ended past their budget (over the world's life) */
+  /** the work meter (src/contacts/fixedBudget.ts): the CONTACT_TICK span it meters, the work spent in it, its budget (−1: none; −2: UNLIKE_MASS_BUDGET's, not yet set by the span's first pairing), the spans whose last ticks it skipped (over the world's life), the share of a try's work it counts; `lean`: ticks that ended past their budget (over the world's life) */
   budget: Float64Array
   lean: number
   /** pairs of a pushed ball and a moving ball listed after a projection (src/contacts/fixedJoin.ts), counted over the world's life */

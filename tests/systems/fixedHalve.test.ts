@@ -310,7 +310,9 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     // behind it: 2-4 more of the 138 wait at the start, and seed 5's crowd, released otherwise, takes 816
     // ticks against 658; 571-785, 0.93-0.99, since a ball a pumped one meets is pumped too, seeds 1-9;
     // 546-732, 0.96-0.99, seeds 1-5, since a speck closes deep only past 0.5 px; without the travel rule
-    // 206-256 ticks, 0.85-0.99)
+    // 206-256 ticks, 0.85-0.99; since the budget for unlike masses counts the pairs of a span's first try,
+    // not every pair of its balls, 319-324 ticks with the rule and 286-333 without, 0.93-1.00 of the
+    // energy kept, 13-19 of the 24 spans' last ticks skipped: src/contacts/fixedBudget.ts)
     for (const travel of [0, 4]) {
       const kept: number[] = []
       for (const seed of [1, 2, 3, 4, 5]) {
@@ -320,7 +322,7 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
         const start = energy()
         for (let i = 0; i < 12; i++) sim.step(1 / 60)
         // 24 ticks at 1/120 s, 16 times that (384) at 4 halvings
-        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 300 : 850)
+        expect(F.ticks, `seed ${seed}`).toBeLessThan(travel === 0 ? 400 : 850)
         const share = energy() / start
         expect(share).toBeLessThanOrEqual(1)
         kept.push(share)
