@@ -63,6 +63,23 @@ function states(sim: BallPhysics): number[] {
 }
 
 /**
+ * A snapshot of `a` (its events drained) restored into a new world: both step `frames` frames of 1/60 s with
+ * the same events, and end with the same states and work meter.
+ */
+function expectSnapshotGoesOn(a: BallPhysics, frames: number): void {
+  a.drainEvents()
+  const b = createBallPhysics(a.config)
+  b.restore(a.snapshot())
+  for (let i = 0; i < frames; i++) {
+    a.step(1 / 60)
+    b.step(1 / 60)
+    expect(b.drainEvents()).toEqual(a.drainEvents())
+  }
+  expect(states(b)).toEqual(states(a))
+  expect(b.world.fixed!.budget).toEqual(a.world.fixed!.budget)
+}
+
+/**
  * A probe right after the fixed-contacts system: after each tick's solve it holds the kinetic energy to no
  * rise and calls `tick` with the work its span had spent before the tick and after it, and the span's budget;
  * `same` is false for a span's first tick the probe sees and for a tick that came to it with another (the
@@ -176,17 +193,7 @@ describe('fixed-tick contacts: the work meter', () => {
       expect(other.states).toEqual(at60.states)
     }
     // a snapshot taken after skipped spans goes on with the same bits
-    const a = at60.sim
-    a.drainEvents()
-    const b = createBallPhysics(a.config)
-    b.restore(a.snapshot())
-    for (let i = 0; i < 10; i++) {
-      a.step(1 / 60)
-      b.step(1 / 60)
-      expect(b.drainEvents()).toEqual(a.drainEvents())
-    }
-    expect(states(b)).toEqual(states(a))
-    expect(b.world.fixed!.budget).toEqual(a.world.fixed!.budget)
+    expectSnapshotGoesOn(at60.sim, 10)
     // without a budget the same third of a second takes many times the ticks (the tick is halved for the balls' speed)
     const free = fast('none')
     for (let i = 0; i < 20; i++) free.step(1 / 60)
@@ -323,16 +330,7 @@ describe('fixed-tick contacts: the work meter', () => {
     for (let i = 0; i < 3; i++) a.step(1 / 60)
     // a third of a CONTACT_TICK on: within a span
     a.step(a.config.CONTACT_TICK / 3)
-    a.drainEvents()
-    const b = createBallPhysics(a.config)
-    b.restore(a.snapshot())
-    for (let i = 0; i < 3; i++) {
-      a.step(1 / 60)
-      b.step(1 / 60)
-      expect(b.drainEvents()).toEqual(a.drainEvents())
-    }
-    expect(states(b)).toEqual(states(a))
-    expect(b.world.fixed!.budget).toEqual(a.world.fixed!.budget)
+    expectSnapshotGoesOn(a, 3)
   })
 
   it('CONTACT_WORK_BUDGET or UNLIKE_MASS_BUDGET outside 0…1e6, or not an integer, is refused with its name and range', () => {
