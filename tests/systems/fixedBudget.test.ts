@@ -43,6 +43,17 @@ function fast(budget: Budget): BallPhysics {
   return boxed(11, 1, 420, 480, 145, budget, (i, a, random) => ({ x: 10 + 400 * random(), y: 10 + 460 * random(), vx: 1e5 * Math.cos(a), vy: 1e5 * Math.sin(a), radius: 0.1, mass: i % 10 === 0 ? 6e6 : 1 }))
 }
 
+/**
+ * 200 balls in a closed elastic 420 × 480 box, every other one of mass 1 at 1e5 px/s, the rest at 100 px/s
+ * and of mass 1e-9 (of mass 1 too when `like`)
+ */
+function stream(budget: Budget, like: boolean): BallPhysics {
+  return boxed(7, 1, 420, 480, 200, budget, (i, a) => {
+    const speed = i % 2 === 0 ? 1e5 : 100
+    return { x: 15 + 390 * ((i * 0.618034) % 1), y: 15 + 450 * ((i * 0.381966 + 0.5 * Math.floor(i / 40) / 5) % 1), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: like || i % 2 === 0 ? 1 : 1e-9 }
+  })
+}
+
 function energy(sim: BallPhysics): number {
   let k = 0
   const F = sim.world.fixed!
@@ -275,11 +286,6 @@ describe('fixed-tick contacts: the work meter', () => {
   // tests/systems/fixedJam.test.ts). (The pumped crowd above does most of its work on pairs of light balls: 4
   // of its 132 ticks lean by this meter when it counted every pair of the span's balls, 142 of 166 now)
   it('with no CONTACT_WORK_BUDGET a span takes UNLIKE_MASS_BUDGET over the work of its unlike pairs: light balls among heavy ones at 1e5 px/s go lean and take under a twentieth of the unbounded sweeps; at one mass nothing is metered and the bits are those of no budget', () => {
-    const stream = (budget: Budget, like: boolean) =>
-      boxed(7, 1, 420, 480, 200, budget, (i, a) => {
-        const speed = i % 2 === 0 ? 1e5 : 100
-        return { x: 15 + 390 * ((i * 0.618034) % 1), y: 15 + 450 * ((i * 0.381966 + 0.5 * Math.floor(i / 40) / 5) % 1), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: like || i % 2 === 0 ? 1 : 1e-9 }
-      })
     const run = (budget: Budget, like: boolean) => {
       const sim = stream(budget, like)
       const sweeps = sweepsRun()
@@ -303,13 +309,8 @@ describe('fixed-tick contacts: the work meter', () => {
   // the budget for unlike masses is set at each span's first pairing, from the pairs of that try: a tick of
   // the clock, whatever the frame rate (heavy balls at 1e5 px/s among light ones, as above)
   it('the budget for unlike masses, 16 visits to each pair a span first pairs: the same events and states at 30, 60 and 240 Hz, spans gone lean and their last ticks skipped; a snapshot mid-span goes on with the same bits', () => {
-    const crowd = () =>
-      boxed(7, 1, 420, 480, 200, undefined, (i, a) => {
-        const speed = i % 2 === 0 ? 1e5 : 100
-        return { x: 15 + 390 * ((i * 0.618034) % 1), y: 15 + 450 * ((i * 0.381966 + 0.5 * Math.floor(i / 40) / 5) % 1), vx: speed * Math.cos(a), vy: speed * Math.sin(a), mass: i % 2 === 0 ? 1 : 1e-9 }
-      })
     const run = (hz: number) => {
-      const sim = crowd()
+      const sim = stream(undefined, false)
       const events: string[] = []
       for (let i = 0; i < hz / 10; i++) {
         sim.step(1 / hz)
@@ -326,7 +327,7 @@ describe('fixed-tick contacts: the work meter', () => {
       expect(other.events).toEqual(at60.events)
       expect(other.states).toEqual(at60.states)
     }
-    const a = crowd()
+    const a = stream(undefined, false)
     for (let i = 0; i < 3; i++) a.step(1 / 60)
     // a third of a CONTACT_TICK on: within a span
     a.step(a.config.CONTACT_TICK / 3)
