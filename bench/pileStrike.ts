@@ -1,6 +1,6 @@
 // A heavy ball struck into a resting pile: how much kinetic energy each contact method keeps.
 //   A 5 × 5 pile of default balls (radius 11, mass 1) at rest in the corner of a closed 420 × 480 px box,
-//   touching one another and the walls (gap 0) or 2 px apart, struck by one ball of mass 1, 4, 10 or 100
+//   its outer balls touching the walls and the balls touching one another (gap 0) or 2 px apart, struck by one ball of mass 1, 4, 10 or 100
 //   at 850 px/s from (100, 100) toward the corner; balls and walls of restitution 1, 0.9 or 0.5, no rolling
 //   deceleration, no holes; 2 s at 120 Hz. The striker starts at AIMS points along the line x + y = 200
 //   (up to 15 px either side of (100, 100)): a pile's outcome turns on where it is struck. With restitution
@@ -102,7 +102,7 @@ for (const gap of GAPS) {
 }
 
 const file = writeResult('pile-strike', {
-  scene: `a 5 × 5 pile of radius-${RADIUS} balls of mass 1 at rest in the corner of a closed 420 × 480 px box (gap px between balls and from the walls), struck by one ball of the given mass at ${SPEED} px/s toward the corner from ${AIMS} points 5 px apart along x + y = 200; balls and walls of the given restitution; no deceleration; ${STEPS} steps of 1/120 s`,
+  scene: `a 5 × 5 pile of radius-${RADIUS} balls of mass 1 at rest in the corner of a closed 420 × 480 px box (its outer balls touching the walls, gap px between its balls), struck by one ball of the given mass at ${SPEED} px/s toward the corner from ${AIMS} points along x + y = 200, 5 px apart in x; balls and walls of the given restitution; no deceleration; ${STEPS} steps of 1/120 s`,
   kept: 'kinetic energy of every ball after the run over the striker\'s at the start, the mean over the aims (least: the least); exact: BALL_COLLISIONS \'on\'; fixed: \'fixed\' at the default CONTACT_TICK (1/120 s); fixed480: at 1/480 s',
   inelastic: 'world.fixed.inelastic at the end: impulses closed inelastically past RESTITUTION_VISITS (or MAX_TICK_CONTACTS) though restitution > 0',
   rows,
