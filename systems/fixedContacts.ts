@@ -31,7 +31,7 @@ import { anchoredCount } from '../src/contacts/fixedLayered.js'
 import { joinPushed, markCandidatesSeen } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { coarsenTick, fewPairs, halveTick, recordGrowth } from '../src/contacts/fixedHalve.js'
-import { beginTry, elasticFiner, redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
+import { redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
@@ -65,7 +65,6 @@ export function fixedContactsSystem(w: BallWorld): void {
   let tries = 0
   let atLeast = 0
   for (;;) {
-    beginTry()
     const h = solveTick(w, F, atLeast)
     if (h === NO_PAIRS) {
       recordGrowth(F, false)
@@ -82,8 +81,7 @@ export function fixedContactsSystem(w: BallWorld): void {
       const dense = F.n > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
       if (dense && !fewPairs(F)) break
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
-      // or one whose solve closed pairs apart at the tick inelastically past their visits (fixedRedo.ts)
-      if (!deepFiner(w, F, dense ? fronts : -1) && !elasticFiner(F)) break
+      if (!deepFiner(w, F, dense ? fronts : -1)) break
     }
     // past the span's work budget, no finer try (src/contacts/fixedBudget.ts)
     if (lean(F)) break

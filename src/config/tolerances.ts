@@ -211,24 +211,6 @@ export const DEEP_UNSEEN_DEPTH = 0.5
  */
 export const SMALL_TICK_BALLS = 64
 /**
- * Fixed-tick contacts: a pair whose gap at its tick is more than APART_SHARE of its two radii is apart for the
- * rule that solves a tick of few pairs again finer when its pairs closed inelastically past their restitution
- * visits (src/contacts/fixedRedo.ts); nearer, it touches. A heavier ball into a 5 × 5 pile of radius-11
- * balls 2 px apart (0.09 of the two radii) with restitution 1 left 0.48–0.61 of the energy without the rule;
- * with it 1.000, 0.934 and 0.681 for strikers of mass 4, 10 and 100 (npm run bench:pile-strike). At a gap of
- * 1e-3 px instead, 1.000 for all three, but rows of radius-0.5 balls 0.01–0.05 px apart struck end on (and
- * a light ball between two heavy ones 1 px from each) were solved again and let a ball through or took more
- * sweeps than their bounds: 8 fixed-tick tests failed; at 0.01 of the radii, 1.000, 0.978 and 0.817, and a
- * row 0.05 px apart failed.
- */
-export const APART_SHARE = 0.02
-/**
- * Fixed-tick contacts: the most pairs a tick may have for that rule (src/contacts/fixedRedo.ts): a try costs
- * little there. Counted in pairs, which both broadphases find alike (the dense one packs more candidates:
- * gated on SMALL_TICK_BALLS candidates, the two parted on one of 60 random scenes).
- */
-export const SMALL_TICK_PAIRS = 64
-/**
  * Fixed-tick contacts: as DEEP_FRONTS, for a tick that had at most one pair a candidate before its widening
  * rounds (a push along a row). At a tick of 1/1,920 s a mass-100 ball striking 120 radius-0.5 balls 0.3 px
  * apart at 3,000 px/s leaves three (the push part-way along the row, balls at its speed behind balls at

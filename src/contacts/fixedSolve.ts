@@ -36,7 +36,6 @@ import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J, SQ_J1, SQ_J2, SQ_OTHER, pairWith
 import { STRUCK, VELOCITY, WALL_DUE, WALL_TURNED, wedgedOn } from './fixedWallTurn.js'
 import { block, capBall, pairWithWall } from './fixedWallPair.js'
 import { changedAt, OTHER, PARTING, REFUSED, reserveStamps, testedAs, testedAt } from './fixedStamps.js'
-import { closedPastVisits } from './fixedRedo.js'
 
 /**
  * A sweep's impulses: pairs met past RESTITUTION_VISITS whose one ball is SQUEEZE_MASS_RATIO times lighter
@@ -239,7 +238,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   if (visits < RESTITUTION_VISITS) F.pairHit[p] = hit + (1 << VISIT_SHIFT)
-  if (bound && e > 0) closedPastVisits(F, a, b, visits >= RESTITUTION_VISITS)
+  if (bound && e > 0) F.inelastic++
   // a pumped ball's other meetings go on only while the heavy ones turn it (docs/decisions.md §12), with
   // restitution 1: below it, piles of light balls a heavy one pressed into a corner kept velocities they
   // could not move at (2 and 4 balls at e = 0 and 0.5)
@@ -314,7 +313,7 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     // the second pair as the sweeps take a pair they meet: a visit, an inelastic meeting counted, reported
     const hit2 = F.pairHit[second]!
     if (hit2 >> VISIT_SHIFT < RESTITUTION_VISITS) F.pairHit[second] = hit2 + (1 << VISIT_SHIFT)
-    if (squeeze[SQ_BOUND] === 1 && e > 0) closedPastVisits(F, F.pairA[second]!, F.pairB[second]!, hit2 >> VISIT_SHIFT >= RESTITUTION_VISITS)
+    if (squeeze[SQ_BOUND] === 1 && e > 0) F.inelastic++
     S[S_APPROACH] = squeeze[SQ_APPROACH]!
     S[S_J] = squeeze[SQ_J2]!
     reportPair(w, F, second, F.pairA[second]!, F.pairB[second]!)

@@ -5,7 +5,6 @@
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32, type BallPhysics } from '../../src/index'
 import { ticksHalvedForTravel } from '../../src/contacts/fixedTravel'
-import { ticksRedone } from '../../src/contacts/fixedRedo'
 
 function kinetic(sim: BallPhysics): number {
   const F = sim.world.fixed
@@ -167,14 +166,13 @@ describe('fixed-tick contacts, restitution 1: the energy kept', () => {
     }
   })
 
-  it('a heavier striker into a resting pile in a corner: the exact method keeps the energy; the fixed tick solves a small tick again finer where pairs apart closed past their visits, and counts what it still loses; it never rises', () => {
+  it('a heavier striker into a resting pile in a corner: the exact method keeps the energy, the fixed tick loses some and counts it; it never rises', () => {
     // bench/pileStrike.ts's scene from one aim: a 5 × 5 pile of default balls in the corner of the closed
-    // elastic 420 × 480 box, 2 px apart (or touching), struck toward the corner at 850 px/s by a ball 4, 10 or
-    // 100 times heavier. The struck balls cross their gaps and meet the pile, the walls and the striker again
-    // within the tick, past their RESTITUTION_VISITS. Such a tick of pairs apart is now solved again finer
-    // (src/contacts/fixedRedo.ts: elasticFiner); the pile 2 px apart kept 0.388, 0.234 and 0.514 of the
-    // energy without that, 1.000, 0.926 and 0.731 with it. A touching pile is left as it was (1.000, 0.908
-    // and 0.304: its pairs meet as often at any tick, docs/known-failures.md)
+    // elastic 420 × 480 box, 2 px apart (or touching), struck toward the corner at 850 px/s by a ball 4 or 10
+    // times heavier. The struck balls cross their gaps and meet the pile and the walls within the tick, so
+    // pairs meet past their RESTITUTION_VISITS: a known loss of the fixed tick (docs/known-failures.md, "A
+    // heavier striker into a resting pile"), kept here above what it is now (0.388 and 0.234 of the energy
+    // 2 px apart, 1.000 and 0.908 touching); the exact method keeps all of it 2 px apart
     const run = (collisions: 'on' | 'fixed', mass: number, gap: number) => {
       const sim = createBallPhysics({ BALL_COLLISIONS: collisions, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
       sim.setWalls({ minX: 0, minY: 0, maxX: 420, maxY: 480, restitution: 1 })
@@ -182,24 +180,20 @@ describe('fixed-tick contacts, restitution 1: the energy kept', () => {
         for (let j = 0; j < 5; j++) sim.addBall({ x: 409 - i * (22 + gap), y: 469 - j * (22 + gap), vx: 0, vy: 0 })
       }
       sim.addBall({ x: 100, y: 100, vx: 850 * Math.SQRT1_2, vy: 850 * Math.SQRT1_2, mass })
-      const redone = ticksRedone()
       const kept = stepNeverRising(sim, 120)
-      return { kept, inelastic: sim.world.fixed?.inelastic ?? 0, redone: ticksRedone() - redone }
+      return { kept, inelastic: sim.world.fixed?.inelastic ?? 0 }
     }
-    for (const mass of [4, 10, 100]) {
+    for (const mass of [4, 10]) {
       expect(run('on', mass, 2).kept, `exact, mass ${mass}`).toBeGreaterThan(0.999)
       for (const gap of [0, 2]) {
         const fixed = run('fixed', mass, gap)
-        expect(fixed.kept, `fixed, mass ${mass}, gap ${gap}`).toBeGreaterThan(0.3)
-        // whatever it still loses went through impulses closed past their visits, and the count says so
+        expect(fixed.kept, `fixed, mass ${mass}, gap ${gap}`).toBeGreaterThan(0.2)
+        // whatever it loses went through impulses closed past their visits, and the count says so
         if (fixed.kept < 0.999) expect(fixed.inelastic, `fixed, mass ${mass}, gap ${gap}`).toBeGreaterThan(0)
       }
     }
-    const apart = [run('fixed', 4, 2), run('fixed', 10, 2), run('fixed', 100, 2)]
-    expect(apart[0]!.kept).toBeGreaterThan(0.999)
-    expect(apart[1]!.kept).toBeGreaterThan(0.9)
-    expect(apart[2]!.kept).toBeGreaterThan(0.7)
-    for (const r of apart) expect(r.redone).toBeGreaterThan(0)
+    // the loss itself, where it is largest: mass 10, 2 px apart
+    expect(run('fixed', 10, 2).kept).toBeLessThan(0.5)
   })
 })
 
