@@ -42,6 +42,7 @@ import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 import { outsideStep } from '../src/world/system.js'
 import { keepWallTurns } from '../src/contacts/fixedWallTurn.js'
+import { activeCount, activeLeastRadius, beginActive, halvedActive } from '../src/contacts/fixedActive.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
   if (!w.stepping) outsideStep('fixedContactsSystem', w)
@@ -78,7 +79,8 @@ export function fixedContactsSystem(w: BallWorld): void {
     // them when it had at most one pair a candidate before those rounds (a push along a row at a fine tick
     // leaves three fronts: a crowd's tick that leaves as many has about four pairs a candidate)
     if (h === SOLVED) {
-      const dense = F.n > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n
+      const taking = activeCount(F)
+      const dense = taking > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * taking
       if (dense && !fewPairs(F)) break
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
       if (!deepFiner(w, F, dense ? fronts : -1)) break
@@ -110,7 +112,7 @@ export function fixedContactsSystem(w: BallWorld): void {
       if (joinPushed(w, F)) F.capped++
       break
     }
-    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || round + 1 >= MAX_PASS_ROUNDS) break
+    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F) || round + 1 >= MAX_PASS_ROUNDS) break
   }
   // a row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
   // push carried along it by more than the gaps between its balls: a ball moved up to one closing on it,
@@ -124,7 +126,7 @@ export function fixedContactsSystem(w: BallWorld): void {
     solveVelocities(w, F, iterationsNow(w, F))
     if (!lean(F) && mayPass(F)) {
       markCandidatesSeen(F)
-      for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * F.n && !lean(F) && mayPass(F); round++) {
+      for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * activeCount(F) && !lean(F) && mayPass(F); round++) {
         if (!widenReach(w, F)) break
         solveVelocities(w, F, iterationsNow(w, F))
       }
@@ -161,7 +163,9 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   }
   if (F.dense === 1) findPairsDense(F)
   else findPairs(w, F)
+  beginActive(F)
   const h = halveTick(w, F, atLeast)
+  halvedActive(F)
   meterPairs(w, F)
   spend(F, F.full + F.pairCount)
   tryHalvings = h
@@ -188,13 +192,13 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   for (let round = 0; ; round++) {
     // past the span's work budget: no more rounds (src/contacts/fixedBudget.ts)
     if (lean(F)) return SOLVED
-    if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * F.n)) return SOLVED
+    if (round >= MAX_CHAIN_ROUNDS && (lastCallChanges() < 0 || round >= CHAIN_ROUNDS_PER_CANDIDATE * activeCount(F))) return SOLVED
     const extra = round >= MAX_WIDEN_ROUNDS
     if (extra) {
-      if (!mayPass(F) && !(added > 0 && F.pairCount <= CHAIN_PAIRS_PER_BALL * F.n)) return SOLVED
-      if (F.pairCount > PASS_PAIRS_PER_BALL * F.n || added > PASS_PAIRS_PER_WIDENED * widened) return h
+      if (!mayPass(F) && !(added > 0 && F.pairCount <= CHAIN_PAIRS_PER_BALL * activeCount(F))) return SOLVED
+      if (F.pairCount > PASS_PAIRS_PER_BALL * activeCount(F) || added > PASS_PAIRS_PER_WIDENED * widened) return h
     }
-    if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * F.n) return mayPass(F) ? h : SOLVED
+    if (round >= MAX_PASS_ROUNDS && F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F)) return mayPass(F) ? h : SOLVED
     const pairs = F.pairCount
     const walled = F.nearWallCount
     if (!widenReach(w, F)) return SOLVED
@@ -203,7 +207,7 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
     // back through the balls behind it; a ball the wall cannot send back, one wider than its box, kept the
     // rounds going to their bound)
     if (extra && F.pairCount === pairs) {
-      if (wallAgain || F.pairCount > CHAIN_PAIRS_PER_BALL * F.n || !wallsPending(F, walled)) return SOLVED
+      if (wallAgain || F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F) || !wallsPending(F, walled)) return SOLVED
       wallAgain = true
     }
     added = F.pairCount - pairs
@@ -247,13 +251,17 @@ let minPacking = -1
  * pass through a ball instead of ending inside it.
  */
 function mayPass(F: FixedContactState): boolean {
-  // the smallest radius: candidates only join within a tick, last unless they are renumbered
-  if (minPacking !== packings()) {
-    minPacking = packings()
-    minUpTo = 0
+  // the smallest radius of the balls taking part (src/contacts/fixedActive.ts): a dense tick's are marked;
+  // a sweep tick's are its packed candidates, which only join within a tick, last unless renumbered
+  let rMin = activeLeastRadius(F)
+  if (rMin < 0) {
+    if (minPacking !== packings()) {
+      minPacking = packings()
+      minUpTo = 0
+    }
+    for (; minUpTo < F.n; minUpTo++) if (F.r[minUpTo]! < minR[0]!) minR[0] = F.r[minUpTo]!
+    rMin = minR[0]!
   }
-  for (; minUpTo < F.n; minUpTo++) if (F.r[minUpTo]! < minR[0]!) minR[0] = F.r[minUpTo]!
-  const rMin = minR[0]!
   // a candidate neither the last solve nor the last cut touched was looked at by the last round's widening
   // (src/contacts/fixedRounds.ts), and gives no to this
   const listed = roundCandidates(F, false)

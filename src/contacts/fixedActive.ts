@@ -1,0 +1,90 @@
+// The fixed-tick method's count of the balls that take part in a tick, and their smallest radius, the same
+// whichever broadphase found the pairs (config.BALL_COLLISIONS = 'fixed'). The tick's bounds that scale
+// with its balls (pairs a ball, rounds a ball, the small-tick redo: systems/fixedContacts.ts) read them.
+// The sweep (src/contacts/fixedOrder.ts) packs only the balls of its pairs, those near a closed wall and the
+// big ones, and those the rounds join, so there they are the packed candidates (F.n). The dense broadphase
+// (src/contacts/fixedDense.ts) packs every candidate, those that touch nothing too, so there the same balls
+// are marked: those of the pairs found (before the halving drops some, as the sweep has packed them by
+// then), near a closed wall or big, then, as the rounds go, those of every pair added. Counting the dense
+// broadphase's candidates instead parted the two broadphases (4 of 40 scenes of a struck pile with balls
+// moving alone elsewhere): a bound on pairs a ball or the smallest radius read other balls.
+// Work: O(pairs) per try of a tick, once per pair; nothing when the sweep takes the tick.
+import type { FixedContactState } from '../world/fixedState.js'
+
+/** By dense candidate index: the try's stamp when it takes part */
+let mark = new Uint32Array(256)
+let stamp = 0
+let count = 0
+/** pairs marked so far (the dense tick's pairs only grow after its halving) */
+let upTo = 0
+/** smallest radius of the balls marked, in a slot (a module-level double would box at each write) */
+const least = new Float64Array(1)
+
+function take(F: FixedContactState, i: number): void {
+  if (mark[i] === stamp) return
+  mark[i] = stamp
+  count++
+  if (F.r[i]! < least[0]!) least[0] = F.r[i]!
+}
+
+function grow(F: FixedContactState): void {
+  if (mark.length >= F.n) return
+  const next = new Uint32Array(2 * F.n)
+  next.set(mark)
+  mark = next
+}
+
+/**
+ * A dense try's pairs are found: its balls in pairs, near a closed wall and big are marked. Call before the
+ * halving (the sweep packs them all before it).
+ */
+export function beginActive(F: FixedContactState): void {
+  if (F.dense !== 1) return
+  grow(F)
+  if (++stamp === 0xffffffff) {
+    mark.fill(0)
+    stamp = 1
+  }
+  count = 0
+  least[0] = 1 / 0
+  for (let k = 0; k < F.nearWallCount; k++) take(F, F.nearWall[k]!)
+  for (let k = 0; k < F.bigCount; k++) take(F, F.big[k]!)
+  for (let p = 0; p < F.pairCount; p++) {
+    take(F, F.pairA[p]!)
+    take(F, F.pairB[p]!)
+  }
+  upTo = Number.MAX_SAFE_INTEGER
+}
+
+/** The halving has kept a subset of the pairs: from here on, only the pairs added are new. */
+export function halvedActive(F: FixedContactState): void {
+  upTo = F.pairCount
+}
+
+/** Marks the balls of the pairs added since the last call (dense ticks). */
+function sync(F: FixedContactState): void {
+  if (upTo >= F.pairCount) return
+  grow(F)
+  for (let p = upTo; p < F.pairCount; p++) {
+    take(F, F.pairA[p]!)
+    take(F, F.pairB[p]!)
+  }
+  upTo = F.pairCount
+}
+
+/** The balls that take part in the tick so far: the same count in both broadphases. */
+export function activeCount(F: FixedContactState): number {
+  if (F.dense !== 1) return F.n
+  sync(F)
+  return count
+}
+
+/**
+ * The smallest radius among the balls that take part so far, for a dense tick; −1 for a sweep tick (its
+ * packed candidates are those balls: the caller reads F.r over them).
+ */
+export function activeLeastRadius(F: FixedContactState): number {
+  if (F.dense !== 1) return -1
+  sync(F)
+  return least[0]!
+}
