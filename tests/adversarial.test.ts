@@ -1534,8 +1534,13 @@ describe('shrunk counterexamples of the long run', () => {
     // before a ball only a wall turns in a tick kept its path to the wall (src/contacts/fixedWallTurn.ts), 44
     // (154) since; this one ends with 2 pairs (e = 0) and 1 (e = 0.5) since, none before. At e = 0.5 the
     // tick is also halved for the heavy balls' travel (CONTACT_TRAVEL_HALVINGS, 4 by default) while they
-    // close on the pile: 372 ticks
-    expect(pressing).toBeLessThanOrEqual(4)
+    // close on the pile: 372 ticks. Since a projection whose last sweep left no overlap over the slop is no
+    // longer counted as capped (src/contacts/fixedProject.ts: settled), its tick goes on to pair the balls it
+    // pushed into resting ones: over the 72 variants, 35 end with pairs closing (132 pair sides), against 33
+    // (122) the day before; this one with 1 pair (e = 0) and 4 (e = 0.5: closing at 104–525 px/s, with 84 of
+    // its 184 balls moving faster than 100 px/s), against 1 and none. The failure this guards against left
+    // 76 balls standing at up to 3.3e4 px/s
+    expect(pressing).toBeLessThanOrEqual(8)
     expect(halvings).toBe(0)
     expect(ticks).toBeLessThan(e === 0 ? 300 : 450)
   })
