@@ -79,8 +79,11 @@ export function fixedContactsSystem(w: BallWorld): void {
     // them when it had at most one pair a candidate before those rounds (a push along a row at a fine tick
     // leaves three fronts: a crowd's tick that leaves as many has about four pairs a candidate)
     if (h === SOLVED) {
-      const taking = activeCount(F)
-      const dense = taking > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * taking
+      // (more than CHAIN_PAIRS_PER_BALL · SMALL_TICK_BALLS pairs first: implied by the rest, and most ticks
+      // then need no count of their balls, src/contacts/fixedActive.ts)
+      const few = F.pairCount <= CHAIN_PAIRS_PER_BALL * SMALL_TICK_BALLS
+      const taking = few ? 0 : activeCount(F)
+      const dense = !few && taking > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * taking
       if (dense && !fewPairs(F)) break
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
       if (!deepFiner(w, F, dense ? fronts : -1)) break

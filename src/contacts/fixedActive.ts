@@ -8,15 +8,16 @@
 // then), near a closed wall or big, then, as the rounds go, those of every pair added. Counting the dense
 // broadphase's candidates instead parted the two broadphases (4 of 40 scenes of a struck pile with balls
 // moving alone elsewhere): a bound on pairs a ball or the smallest radius read other balls.
-// Work: O(pairs) per try of a tick, once per pair; nothing when the sweep takes the tick.
+// Work: O(pairs) per try of a dense tick that asks or is halved, once per pair; nothing otherwise.
 import type { FixedContactState } from '../world/fixedState.js'
 
 /** By dense candidate index: the try's stamp when it takes part */
 let mark = new Uint32Array(256)
 let stamp = 0
 let count = 0
-/** pairs marked so far (the dense tick's pairs only grow after its halving) */
+/** pairs marked so far; whether the near-wall and big lists are marked (both lazily, when first asked) */
 let upTo = 0
+let based = false
 /** smallest radius of the balls marked, in a slot (a module-level double would box at each write) */
 const least = new Float64Array(1)
 
@@ -27,44 +28,46 @@ function take(F: FixedContactState, i: number): void {
   if (F.r[i]! < least[0]!) least[0] = F.r[i]!
 }
 
-function grow(F: FixedContactState): void {
-  if (mark.length >= F.n) return
-  const next = new Uint32Array(2 * F.n)
-  next.set(mark)
-  mark = next
-}
-
 /**
- * A dense try's pairs are found: its balls in pairs, near a closed wall and big are marked. Call before the
- * halving (the sweep packs them all before it).
+ * A dense try's pairs are found. Its balls in pairs, near a closed wall and big are marked when first asked
+ * (most ticks never ask), or before the halving drops pairs (keepActive): the sweep has packed them all by
+ * then.
  */
 export function beginActive(F: FixedContactState): void {
   if (F.dense !== 1) return
-  grow(F)
   if (++stamp === 0xffffffff) {
     mark.fill(0)
     stamp = 1
   }
   count = 0
   least[0] = 1 / 0
-  for (let k = 0; k < F.nearWallCount; k++) take(F, F.nearWall[k]!)
-  for (let k = 0; k < F.bigCount; k++) take(F, F.big[k]!)
-  for (let p = 0; p < F.pairCount; p++) {
-    take(F, F.pairA[p]!)
-    take(F, F.pairB[p]!)
-  }
-  upTo = Number.MAX_SAFE_INTEGER
+  upTo = 0
+  based = false
 }
 
-/** The halving has kept a subset of the pairs: from here on, only the pairs added are new. */
+/** The halving is about to drop pairs: a dense try's balls are marked first. */
+export function keepActive(F: FixedContactState): void {
+  if (F.dense === 1) sync(F)
+}
+
+/** The halving is done: the pairs it kept are all marked (if it marked them); those added later are new. */
 export function halvedActive(F: FixedContactState): void {
-  upTo = F.pairCount
+  if (based) upTo = F.pairCount
 }
 
-/** Marks the balls of the pairs added since the last call (dense ticks). */
+/** Marks the balls of the lists and of the pairs added since the last call (dense ticks). */
 function sync(F: FixedContactState): void {
-  if (upTo >= F.pairCount) return
-  grow(F)
+  if (mark.length < F.n) {
+    const next = new Uint32Array(2 * F.n)
+    next.set(mark)
+    mark = next
+  }
+  if (!based) {
+    // the lists only grow by balls the rounds widened, which are in pairs
+    for (let k = 0; k < F.nearWallCount; k++) take(F, F.nearWall[k]!)
+    for (let k = 0; k < F.bigCount; k++) take(F, F.big[k]!)
+    based = true
+  }
   for (let p = upTo; p < F.pairCount; p++) {
     take(F, F.pairA[p]!)
     take(F, F.pairB[p]!)

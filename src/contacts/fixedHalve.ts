@@ -25,6 +25,7 @@ import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, T
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { countTravelHalving, holdsForTravel, travelApplies, travelHalvings } from './fixedTravel.js'
+import { keepActive } from './fixedActive.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 
 /** Per packed candidate: its speed, and its reach at each further halving (level h at [h·n + k]; scratch). */
@@ -99,7 +100,11 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
     // nearest partner too far a tick: at least that many
     if (h < atLeast) h = Math.min(atLeast, levels)
     if (byTravel && h > 0) countTravelHalving()
-    if (h > 0) halve(w, F, h)
+    if (h > 0) {
+      // the balls taking part are counted before the halving drops pairs (src/contacts/fixedActive.ts)
+      keepActive(F)
+      halve(w, F, h)
+    }
     // a halved tick whose pairs a finer one would not thin (half of them or more kept: balls sped up beyond
     // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser
     // ticks, as when its pairs are few
