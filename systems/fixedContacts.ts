@@ -20,7 +20,7 @@
 // timing: a contact acts at the tick, up to one tick early (docs/decisions.md §12).
 // Reads Ball, the walls, the fixed state; writes Ball, Path, RimContact; emits 'collision' and 'wall'.
 import { gatherCandidates, wallsPending } from '../src/contacts/fixedGrid.js'
-import { findPairs, packings } from '../src/contacts/fixedOrder.js'
+import { findPairs } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { solveVelocities } from '../src/contacts/fixedSolve.js'
 import { applyChanges } from '../src/contacts/fixedApply.js'
@@ -42,7 +42,7 @@ import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 import { outsideStep } from '../src/world/system.js'
 import { keepWallTurns } from '../src/contacts/fixedWallTurn.js'
-import { activeCount, activeLeastRadius, beginActive, halvedActive } from '../src/contacts/fixedActive.js'
+import { activeCount, activeLeastRadius, beginActive } from '../src/contacts/fixedActive.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
   if (!w.stepping) outsideStep('fixedContactsSystem', w)
@@ -168,7 +168,6 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   else findPairs(w, F)
   beginActive(F)
   const h = halveTick(w, F, atLeast)
-  halvedActive(F)
   meterPairs(w, F)
   spend(F, F.full + F.pairCount)
   tryHalvings = h
@@ -180,8 +179,6 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   let converged = solveVelocities(w, F, iterations)
   beginWidening()
   beginNear(F)
-  minUpTo = 0
-  minR[0] = 1 / 0
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
   // could pass through another within the tick and the pairs keep within PASS_PAIRS_PER_BALL a candidate
   // (src/config/tolerances.ts), and past MAX_PASS_ROUNDS only while the tick has CHAIN_PAIRS_PER_BALL pairs a
@@ -240,31 +237,13 @@ function chooseBroadphase(F: FixedContactState): void {
 }
 
 /**
- * mayPass's smallest candidate radius so far in the tick (of the candidates below minUpTo, numbered as at
- * renumbering minPacking; reset each tick), in a slot: a module-level `let` holding a double gets a fresh
- * heap number at every write (V8)
- */
-const minR = new Float64Array(1)
-let minUpTo = 0
-let minPacking = -1
-
-/**
  * Whether a ball the solve sped up beyond its reach (one the next widening round would pair again) moves
  * more in a tick than its radius and the smallest candidate's: the distance at which, unpaired, it could
  * pass through a ball instead of ending inside it.
  */
 function mayPass(F: FixedContactState): boolean {
-  // the smallest radius of the balls taking part (src/contacts/fixedActive.ts): a dense tick's are marked;
-  // a sweep tick's are its packed candidates, which only join within a tick, last unless renumbered
-  let rMin = activeLeastRadius(F)
-  if (rMin < 0) {
-    if (minPacking !== packings()) {
-      minPacking = packings()
-      minUpTo = 0
-    }
-    for (; minUpTo < F.n; minUpTo++) if (F.r[minUpTo]! < minR[0]!) minR[0] = F.r[minUpTo]!
-    rMin = minR[0]!
-  }
+  // the smallest radius of the balls taking part (src/contacts/fixedActive.ts)
+  const rMin = activeLeastRadius(F)
   // a candidate neither the last solve nor the last cut touched was looked at by the last round's widening
   // (src/contacts/fixedRounds.ts), and gives no to this
   const listed = roundCandidates(F, false)

@@ -8,8 +8,10 @@
 // then), near a closed wall or big, then, as the rounds go, those of every pair added. Counting the dense
 // broadphase's candidates instead parted the two broadphases (4 of 40 scenes of a struck pile with balls
 // moving alone elsewhere): a bound on pairs a ball or the smallest radius read other balls.
-// Work: O(pairs) per try of a dense tick that asks or is halved, once per pair; nothing otherwise.
+// Work: O(pairs) per try of a dense tick that asks or is halved, once per pair; on a sweep tick, each packed
+// candidate's radius read once when the smallest is asked; nothing otherwise.
 import type { FixedContactState } from '../world/fixedState.js'
+import { packings } from './fixedOrder.js'
 
 /** By dense candidate index: the try's stamp when it takes part */
 let mark = new Uint32Array(256)
@@ -18,8 +20,11 @@ let count = 0
 /** pairs marked so far; whether the near-wall and big lists are marked (both lazily, when first asked) */
 let upTo = 0
 let based = false
-/** smallest radius of the balls marked, in a slot (a module-level double would box at each write) */
+/** smallest radius of the balls marked (dense) or read (sweep), in a slot (a module-level double would box at each write) */
 const least = new Float64Array(1)
+/** sweep ticks: packed candidates read so far, numbered as at renumbering leastPacking */
+let leastUpTo = 0
+let leastPacking = -1
 
 function take(F: FixedContactState, i: number): void {
   if (mark[i] === stamp) return
@@ -29,18 +34,19 @@ function take(F: FixedContactState, i: number): void {
 }
 
 /**
- * A dense try's pairs are found. Its balls in pairs, near a closed wall and big are marked when first asked
- * (most ticks never ask), or before the halving drops pairs (keepActive): the sweep has packed them all by
- * then.
+ * A try's pairs are found. A dense try's balls in pairs, near a closed wall and big are marked when first
+ * asked (most ticks never ask), or before the halving drops pairs (keepActive): the sweep has packed them
+ * all by then.
  */
 export function beginActive(F: FixedContactState): void {
+  least[0] = 1 / 0
+  leastUpTo = 0
   if (F.dense !== 1) return
   if (++stamp === 0xffffffff) {
     mark.fill(0)
     stamp = 1
   }
   count = 0
-  least[0] = 1 / 0
   upTo = 0
   based = false
 }
@@ -50,9 +56,9 @@ export function keepActive(F: FixedContactState): void {
   if (F.dense === 1) sync(F)
 }
 
-/** The halving is done: the pairs it kept are all marked (if it marked them); those added later are new. */
+/** The halving is done: the pairs it kept are marked; those added later are new. */
 export function halvedActive(F: FixedContactState): void {
-  if (based) upTo = F.pairCount
+  if (F.dense === 1) upTo = F.pairCount
 }
 
 /** Marks the balls of the lists and of the pairs added since the last call (dense ticks). */
@@ -82,12 +88,17 @@ export function activeCount(F: FixedContactState): number {
   return count
 }
 
-/**
- * The smallest radius among the balls that take part so far, for a dense tick; −1 for a sweep tick (its
- * packed candidates are those balls: the caller reads F.r over them).
- */
+/** The smallest radius among the balls that take part so far. */
 export function activeLeastRadius(F: FixedContactState): number {
-  if (F.dense !== 1) return -1
-  sync(F)
+  if (F.dense === 1) {
+    sync(F)
+    return least[0]!
+  }
+  // a sweep tick's are its packed candidates, which only join within a tick, last unless renumbered
+  if (leastPacking !== packings()) {
+    leastPacking = packings()
+    leastUpTo = 0
+  }
+  for (; leastUpTo < F.n; leastUpTo++) if (F.r[leastUpTo]! < least[0]!) least[0] = F.r[leastUpTo]!
   return least[0]!
 }

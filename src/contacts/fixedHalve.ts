@@ -25,7 +25,7 @@ import { GROWTH_TICKS, MAX_TICK_HALVINGS, TICK_PAIRS_PER_CANDIDATE, TICK_SNAP, T
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { countTravelHalving, holdsForTravel, travelApplies, travelHalvings } from './fixedTravel.js'
-import { keepActive } from './fixedActive.js'
+import { halvedActive, keepActive } from './fixedActive.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 
 /** Per packed candidate: its speed, and its reach at each further halving (level h at [h·n + k]; scratch). */
@@ -104,6 +104,7 @@ export function halveTick(w: BallWorld, F: FixedContactState, atLeast = 0): numb
       // the balls taking part are counted before the halving drops pairs (src/contacts/fixedActive.ts)
       keepActive(F)
       halve(w, F, h)
+      halvedActive(F)
     }
     // a halved tick whose pairs a finer one would not thin (half of them or more kept: balls sped up beyond
     // any spacing, as light ones struck by heavy ones) gains nothing from its spacing: back to coarser
