@@ -42,6 +42,7 @@ import type { BallWorld } from '../src/world/createWorld.js'
 import type { FixedContactState } from '../src/world/fixedState.js'
 import { outsideStep } from '../src/world/system.js'
 import { keepWallTurns } from '../src/contacts/fixedWallTurn.js'
+import { guardPasses } from '../src/contacts/fixedGuard.js'
 import { activeCount, activeLeastRadius, beginActive } from '../src/contacts/fixedActive.js'
 
 export function fixedContactsSystem(w: BallWorld): void {
@@ -126,12 +127,12 @@ export function fixedContactsSystem(w: BallWorld): void {
   // radius-3 balls 1 px apart, e = 0: the front ball went from 640 to 946 px/s, through its neighbour at
   // rest, which was not a candidate)
   if (anchoredCount() !== anchored) {
-    solveVelocities(w, F, iterationsNow(w, F))
+    unsettled = !solveVelocities(w, F, iterationsNow(w, F))
     if (!lean(F) && mayPass(F)) {
       markCandidatesSeen(F)
       for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * activeCount(F) && !lean(F) && mayPass(F); round++) {
         if (!widenReach(w, F)) break
-        solveVelocities(w, F, iterationsNow(w, F))
+        unsettled = !solveVelocities(w, F, iterationsNow(w, F))
       }
     }
   }
@@ -139,9 +140,16 @@ export function fixedContactsSystem(w: BallWorld): void {
   recordGrowth(F, true)
   // a candidate only a wall turned goes on to meet the wall at its instant (src/contacts/fixedWallTurn.ts)
   keepWallTurns(w, F)
+  // a pair still closing deep, or a ball a wall would turn into a partner it then closes deep on: the last
+  // guard (src/contacts/fixedGuard.ts); every pair where the last velocity sweeps did not converge or the
+  // projection ran
+  guardPasses(w, F, unsettled || F.overlap)
   countTickContacts(w, F)
   applyChanges(w, F)
 }
+
+/** whether the last velocity solve of the tick stopped at a bound, not converged (the guard then looks) */
+let unsettled = false
 
 /** the halvings the last try took (halveTick): the next try takes more */
 let tryHalvings = 0
@@ -177,6 +185,7 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   F.hitCount = 0
   F.overlap = false
   let converged = solveVelocities(w, F, iterations)
+  unsettled = !converged
   beginWidening()
   beginNear(F)
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
@@ -213,6 +222,7 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
     converged = solveVelocities(w, F, iterations, extra && converged ? pairs : 0, pairs)
+    unsettled = !converged
   }
 }
 

@@ -346,3 +346,8 @@ export const UNLIKE_MASS_RATIO = 1e4
 export const LEAN_ITERATIONS = 2
 export const LEAN_PROJECTION_BUDGET = 2
 export const LEAN_SHARE = 1
+/**
+ * Fixed-tick contacts: rounds of the tick's last guard against a pair left closing deep (src/contacts/fixedGuard.ts),
+ * each a walk over the tick's pairs that closes such pairs inelastically.
+ */
+export const GUARD_ROUNDS = 16

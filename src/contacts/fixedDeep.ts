@@ -43,7 +43,7 @@ import { finestTick, intoWalls } from './fixedGrid.js'
  * of the larger radius, whichever is less (a boolean, not the amount, and no double passed: V8 boxes those
  * for a call it does not inline).
  */
-function closesDeep(F: FixedContactState, a: number, b: number, finest: boolean): boolean {
+export function closesDeep(F: FixedContactState, a: number, b: number, finest: boolean): boolean {
   const tick = finest ? finestTick[0]! : F.tick
   const unseen = !finest
   const dx = F.x[b]! - F.x[a]!
