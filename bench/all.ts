@@ -1,5 +1,5 @@
 // npm run bench: every benchmark, each in a Node process of its own (pipeline, scale, peers, contacts, pairing,
-// contact-accuracy, first-contact, passes, piles, pile-strike, rows, horizon, the adversarial suite's long version, resting, recycling, dense, big-hole, solver, then
+// contact-accuracy, first-contact, passes, piles, pile-strike, rows, piston-rows, horizon, the adversarial suite's long version, resting, recycling, dense, big-hole, solver, then
 // the physical reference's fidelity against cost, the independent model's map and the tick-sampled methods'
 // accuracy), then
 // a summary of the results files with the floors checked. The floors print PASS or FAIL; they are not
@@ -31,6 +31,7 @@ const benches: [string, string[]][] = [
   ['bench/piles.ts', quick ? ['--balls', '2500'] : []],
   ['bench/pileStrike.ts', []],
   ['bench/rows.ts', []],
+  ['bench/pistonRows.ts', []],
   ['bench/horizon.ts', []],
   ['bench/adversarial.ts', quick ? ['--scale', '2'] : []],
   ['bench/resting.ts', quick ? ['--resting', '100000'] : []],
