@@ -8,7 +8,7 @@
 // out from an anchor, and neither is tried again; and the solve's walls turn only the balls listed near a
 // wall, so a ball struck toward a wall after its sweeps converged turns there between ticks, back through the
 // ball that struck it. A ball 1e3–1e9 times heavier than a row of radius-0.5 balls driving it into a closed
-// wall at restitution 1 let a ball through its neighbour in 140 of 1,000 random rows (tests/systems/fixedGuard.test.ts).
+// wall at restitution 1 let a ball through its neighbour in 140 of 1,000 random rows (npm run bench:piston-rows).
 // So, where the tick's last velocity sweeps stopped at a bound, or the projection ran, or a ball the tick
 // changed still moves into a closed wall, the pairs are looked at once more: each pair that closes deep is
 // closed inelastically (the two-body impulse that leaves it no approach: momentum kept, kinetic energy not
@@ -30,7 +30,7 @@ import { closesDeep } from './fixedDeep.js'
 import { intoWalls, walls } from './fixedGrid.js'
 import { VELOCITY, WALL_REPORTED, WALL_TURNED, wedgedOn } from './fixedWallTurn.js'
 
-/** Per packed candidate: intoWalls' bits for a near-wall candidate this round (scratch, grown by doubling). */
+/** Per packed candidate: intoWalls' bits this round, 0 once the guard turned it (scratch, grown by doubling). */
 let into = new Uint8Array(64)
 
 /** Pairs closed and balls turned by the guard over the process's life (tests and benchmarks). */

@@ -152,7 +152,7 @@ export interface FixedContactState {
   /** contacts reported (impulses with approach of at least BALL_SETTLE_SPEED), and ticks solved */
   contacts: number
   ticks: number
-  /** impulses closed inelastically past RESTITUTION_VISITS or MAX_TICK_CONTACTS though BALL_RESTITUTION > 0 (the world's life; docs/fixed-tick.md) */
+  /** impulses closed inelastically past RESTITUTION_VISITS or MAX_TICK_CONTACTS, or by the tick's last guard (src/contacts/fixedGuard.ts), though BALL_RESTITUTION > 0 (the world's life; docs/fixed-tick.md) */
   inelastic: number
   /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
   capped: number

@@ -1,6 +1,6 @@
 // The fixed tick's last guard against a pair left closing deep (src/contacts/fixedGuard.ts): a ball much
 // heavier than a row of light ones drives it into a closed wall at restitution 1, every ball on one line, so
-// a ball that passes another shows as two neighbours out of order. Rows drawn as bench-like settings: 5–24
+// a ball that passes another shows as two neighbours out of order. The rows of npm run bench:piston-rows: 5–24
 // radius-0.5 balls 0.5, 2 or 5 px apart, each at up to ±1e4–1e5 px/s, a ball of mass 1e3, 1e6 or 1e9 at
 // the row's left end, 1 s at 60 or 120 Hz. Of 1,000 such rows, 140 let a ball through its neighbour before
 // the guard and 91 with it (64 of those 140 hold now; 15 others part differently and fail). The seeds below
