@@ -3,8 +3,8 @@
 // a ball that passes another shows as two neighbours out of order. The rows of npm run bench:piston-rows: 5–24
 // radius-0.5 balls 0.5, 2 or 5 px apart, each at up to ±1e4–1e5 px/s, a ball of mass 1e3, 1e6 or 1e9 at
 // the row's left end, 1 s at 60 or 120 Hz. Of 1,000 such rows, 140 let a ball through its neighbour before
-// the guard and 91 with it (64 of those 140 hold now; 15 others part differently and fail). The seeds below
-// are the first 24 it mended; each failed without it.
+// the guard and 62 with it (92 of those 140 hold now; 14 others part differently and fail). The seeds below
+// are 24 it mends; each failed without it.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32 } from '../../src/index'
 import { guardedCount } from '../../src/contacts/fixedGuard'
