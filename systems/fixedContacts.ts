@@ -22,7 +22,7 @@
 import { gatherCandidates, wallsPending } from '../src/contacts/fixedGrid.js'
 import { findPairs } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
-import { solveVelocities } from '../src/contacts/fixedSolve.js'
+import { lastSolveConverged, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { applyChanges } from '../src/contacts/fixedApply.js'
 import { countTickContacts } from '../src/contacts/fixedCount.js'
 import { deepFiner } from '../src/contacts/fixedDeep.js'
@@ -127,12 +127,12 @@ export function fixedContactsSystem(w: BallWorld): void {
   // radius-3 balls 1 px apart, e = 0: the front ball went from 640 to 946 px/s, through its neighbour at
   // rest, which was not a candidate)
   if (anchoredCount() !== anchored) {
-    unsettled = !solveVelocities(w, F, iterationsNow(w, F))
+    solveVelocities(w, F, iterationsNow(w, F))
     if (!lean(F) && mayPass(F)) {
       markCandidatesSeen(F)
       for (let round = 0; round < MAX_PASS_ROUNDS && F.pairCount <= PASS_PAIRS_PER_BALL * activeCount(F) && !lean(F) && mayPass(F); round++) {
         if (!widenReach(w, F)) break
-        unsettled = !solveVelocities(w, F, iterationsNow(w, F))
+        solveVelocities(w, F, iterationsNow(w, F))
       }
     }
   }
@@ -143,13 +143,10 @@ export function fixedContactsSystem(w: BallWorld): void {
   // a pair still closing deep, or a ball a wall would turn into a partner it then closes deep on: the last
   // guard (src/contacts/fixedGuard.ts); every pair where the last velocity sweeps did not converge or the
   // projection ran
-  guardPasses(w, F, unsettled || F.overlap)
+  guardPasses(w, F, !lastSolveConverged() || F.overlap)
   countTickContacts(w, F)
   applyChanges(w, F)
 }
-
-/** whether the last velocity solve of the tick stopped at a bound, not converged (the guard then looks) */
-let unsettled = false
 
 /** the halvings the last try took (halveTick): the next try takes more */
 let tryHalvings = 0
@@ -185,7 +182,6 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
   F.hitCount = 0
   F.overlap = false
   let converged = solveVelocities(w, F, iterations)
-  unsettled = !converged
   beginWidening()
   beginNear(F)
   // a push runs one ball further along a row with gaps each round; past MAX_WIDEN_ROUNDS only while a ball
@@ -222,7 +218,6 @@ function solveTick(w: BallWorld, F: FixedContactState, atLeast: number): number 
     added = F.pairCount - pairs
     widened = F.widenedCount > 0 ? F.widenedCount : 1
     converged = solveVelocities(w, F, iterations, extra && converged ? pairs : 0, pairs)
-    unsettled = !converged
   }
 }
 

@@ -64,6 +64,20 @@ let calls = 0
  * and velocities it left (a widening round in between): their stamps are kept (src/contacts/fixedCalls.ts).
  */
 export function solveVelocities(w: BallWorld, F: FixedContactState, iterations: number, fresh = 0, old = 0): boolean {
+  converged = sweepVelocities(w, F, iterations, fresh, old)
+  return converged
+}
+
+/** whether the last solveVelocities call converged */
+let converged = true
+
+/** Whether the last velocity solve converged (the tick's last guard looks at every pair when it did not: src/contacts/fixedGuard.ts). */
+export function lastSolveConverged(): boolean {
+  return converged
+}
+
+/** solveVelocities' sweeps (see there). */
+function sweepVelocities(w: BallWorld, F: FixedContactState, iterations: number, fresh: number, old: number): boolean {
   S[S_T] = w.time
   S[S_E] = w.config.BALL_RESTITUTION
   S[S_SETTLE] = w.config.BALL_SETTLE_SPEED
