@@ -20,8 +20,9 @@
 // tests/systems/fixedHalve.test.ts kept 0.85 of their energy instead of 0.97. A ball turned counts once,
 // however many partners it would close deep on (a heavy ball turned at its wall is paired with the fifteen
 // light balls its travel reaches: counted by pair, the guard left 91 of the rows passing, not 62). With the
-// bound, 62 of the 1,000 rows let a ball through (33 of them on lean ticks past the work budget, which the
-// guard leaves alone).
+// bound, 62 of the 1,000 rows let a ball through, and 58 once a ball the projection lays out within its travel
+// of one the tick did not pair is paired with it (src/contacts/fixedJoin.ts; 34 of them in rows with lean
+// ticks past the work budget, which the guard leaves alone).
 // A tick whose solve converged with no ball struck into a wall is left as it was, to the bit: the gas and the
 // panel of the contacts benchmark step to the same bits.
 import { EventType, appendEvent } from '../events.js'

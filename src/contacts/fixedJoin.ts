@@ -8,9 +8,13 @@
 // (found in the dense grid, or through the sweep order, and packed in their places if they were not), and
 // the projection runs again: at most MAX_WIDEN_ROUNDS times a tick (systems/fixedContacts.ts). Two balls that
 // overlap by more than the slop after a projection that finished are never a pair of it, so no pair is
-// listed twice; the moving ones are listed in packed order, the same on both broadphases.
+// listed twice; the moving ones are listed in packed order, the same on both broadphases. A ball it moved
+// that ends short of a packed ball it then closes deep on (src/contacts/fixedDeep.ts) is paired with it
+// too, when the tick has at most DEEP_FRONTS such pairs and not that pair already, and the tick's last
+// guard (fixedGuard.ts) closes the pair: it would go through itself before the next tick.
 import { BallMode } from '../../components/Ball.js'
-import { PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import { DEEP_FRONTS, PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
+import { closesDeep } from './fixedDeep.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { nextMark, pushCandidate, pushListed, pushPair, reserveCandidates, reserveSort, sweepStores, type FixedContactState } from '../world/fixedState.js'
 import { setRestingCandidate } from './fixedReach.js'
@@ -123,13 +127,18 @@ function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: numbe
   const dense = F.dense === 1
   let found = 0
   let joining = 0
+  deepCount = 0
   for (let f = 0; f < farCount; f++) {
     const i = far[f]!
     for (let m = 0; m < F.bigCount; m++) {
       const j = F.big[m]!
       if (overlapsMoving(w, F, i, F.id[j]!, j)) found = record(F, found, i, dense ? j : F.id[j]!, dense)
+      else noteDeep(F, i, j)
     }
-    const range = F.r[i]! + half + shift
+    // and as far again as it travels in the tick, for the moving candidates it now closes deep on
+    const vx = F.vx[i]!
+    const vy = F.vy[i]!
+    const range = F.r[i]! + half + shift + Math.sqrt(vx * vx + vy * vy) * F.tick
     if (dense) {
       boxRange[0] = range
       if (!gridBox(F, i)) continue
@@ -137,6 +146,7 @@ function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: numbe
         for (let q = F.start[gy * F.cols + box[0]!]!, end = F.start[gy * F.cols + box[1]! + 1]!; q < end; q++) {
           const j = F.si[q]!
           if (overlapsMoving(w, F, i, F.id[j]!, j)) found = record(F, found, i, j, true)
+          else noteDeep(F, i, j)
         }
       }
       continue
@@ -149,7 +159,10 @@ function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: numbe
       const e = F.found[q]!
       if (F.reachOf[e]! > half) continue // a big one: in F.big
       const packed = F.packMark[e] === st && F.packAt[e]! >= 0
-      if (!overlapsMoving(w, F, i, e, packed ? F.packAt[e]! : -1)) continue
+      if (!overlapsMoving(w, F, i, e, packed ? F.packAt[e]! : -1)) {
+        if (packed) noteDeep(F, i, F.packAt[e]!)
+        continue
+      }
       found = record(F, found, i, e, false)
       if (F.packMark[e] !== st) {
         F.packMark[e] = st
@@ -158,7 +171,8 @@ function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: numbe
       }
     }
   }
-  if (found === 0) return false
+  const deep = joinDeep(F)
+  if (found === 0) return deep
   if (joining > 0) unpackedJoin(w, F, F.fresh, joining)
   // as packed indices, lower first, in order; a pair both of whose balls were pushed far is found twice
   reserveSort(F, found)
@@ -180,6 +194,69 @@ function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: numbe
     F.movingJoins++
   }
   return true
+}
+
+/**
+ * The packed candidates a pushed one closes deep on without overlapping them (noteDeep; lower index first),
+ * DEEP_FRONTS of them at most, or one more: then none is paired (scratch, one tick at a time).
+ */
+/** Pairs joinDeep paired over the process's life (tests). */
+let deepJoined = 0
+
+/** Pairs joinDeep paired since the process started. */
+export function deepJoinedCount(): number {
+  return deepJoined
+}
+
+const deepA = new Int32Array(2 * DEEP_FRONTS + 2)
+const deepB = new Int32Array(2 * DEEP_FRONTS + 2)
+let deepCount = 0
+
+/**
+ * Notes candidates i and j (packed) when they close deep within the tick (src/contacts/fixedDeep.ts), each
+ * pair once, up to one past DEEP_FRONTS: a ball the projection pushed out of one ball to within its travel of
+ * another, closing on it, that the tick did not pair (a row pressed by a ball 1e6 times heavier against a
+ * wall: its second-last ball laid out 0.23 px from the last, closing at 2,400 px/s on a 5.2e-4 s tick, went
+ * through it before the next tick).
+ */
+function noteDeep(F: FixedContactState, i: number, j: number): void {
+  if (deepCount > DEEP_FRONTS || i === j) return
+  // closing deep needs the pair to close by more than its smaller radius within the tick (no square root)
+  const ux = F.vx[j]! - F.vx[i]!
+  const uy = F.vy[j]! - F.vy[i]!
+  const r = F.r[i]! < F.r[j]! ? F.r[i]! : F.r[j]!
+  if ((ux * ux + uy * uy) * F.tick * F.tick <= r * r || !closesDeep(F, i, j, false)) return
+  const a = i < j ? i : j
+  const b = i < j ? j : i
+  for (let d = 0; d < deepCount; d++) if (deepA[d] === a && deepB[d] === b) return
+  deepA[deepCount] = a
+  deepB[deepCount] = b
+  deepCount++
+}
+
+/**
+ * Pairs what noteDeep found, when it found at most DEEP_FRONTS (past them the tick's last guard leaves the
+ * tick alone: src/contacts/fixedGuard.ts), but not a pair the tick has already (one pass over its pairs).
+ * Their velocities are left to that guard. Returns whether it paired any.
+ */
+function joinDeep(F: FixedContactState): boolean {
+  if (deepCount === 0 || deepCount > DEEP_FRONTS) return false
+  for (let p = 0; p < F.pairCount && deepCount > 0; p++) {
+    const a = F.pairA[p]!
+    const b = F.pairB[p]!
+    for (let d = 0; d < deepCount; d++) {
+      if (deepA[d] !== a || deepB[d] !== b) continue
+      deepA[d] = deepA[deepCount - 1]!
+      deepB[d] = deepB[deepCount - 1]!
+      deepCount--
+      break
+    }
+  }
+  for (let d = 0; d < deepCount; d++) pushPair(F, deepA[d]!, deepB[d]!)
+  deepJoined += deepCount
+  const paired = deepCount > 0
+  deepCount = 0
+  return paired
 }
 
 /**
