@@ -14,15 +14,16 @@
 // closed inelastically (the two-body impulse that leaves it no approach: momentum kept, kinetic energy not
 // raised), and a paired ball that a closed wall would turn within the tick into a partner it then closes deep
 // on is turned at the tick (as the solve turns a ball within reach of its wall), round after round up to
-// GUARD_ROUNDS. Only on a tick that leaves at most DEEP_FRONTS of them (a push's front along a row and the
+// GUARD_ROUNDS. Only on a tick that leaves at most DEEP_FRONTS fronts (a push's front along a row and the
 // wall ahead, as for solving a tick again): a crowd whose light balls heavy ones pump leaves many, by design
 // (docs/fixed-tick.md), and closed inelastically at every tick the pumped crowds of
-// tests/systems/fixedHalve.test.ts kept 0.85 of their energy instead of 0.97. A ball turned counts once,
-// however many partners it would close deep on (a heavy ball turned at its wall is paired with the fifteen
-// light balls its travel reaches: counted by pair, the guard left 91 of the rows passing, not 62). With the
-// bound, 62 of the 1,000 rows let a ball through, and 58 once a ball the projection lays out within its travel
-// of one the tick did not pair is paired with it (src/contacts/fixedJoin.ts; 34 of them in rows with lean
-// ticks past the work budget, which the guard leaves alone).
+// tests/systems/fixedHalve.test.ts kept 0.85 of their energy instead of 0.97. A front is a group of balls
+// joined by such pairs and turns, however many pairs it has: a heavy ball turned at its wall is paired with
+// the fifteen light balls its travel reaches (counted by pair, the guard left 91 of the rows passing, not
+// 62), and a ball a solve sends back into a row closes deep on three of its balls at once (counted with a
+// turned ball once but by pair otherwise, 58 of the rows passed, with the projection's deep join of
+// src/contacts/fixedJoin.ts; by group, 45, 33 of them in rows with lean ticks past the work budget, which
+// the guard leaves alone).
 // A tick whose solve converged with no ball struck into a wall is left as it was, to the bit: the gas and the
 // panel of the contacts benchmark step to the same bits.
 import { EventType, appendEvent } from '../events.js'
@@ -31,13 +32,12 @@ import { lean, spend } from './fixedBudget.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { closesDeep } from './fixedDeep.js'
+import { unite } from './fixedUnion.js'
 import { intoWalls, walls } from './fixedGrid.js'
 import { VELOCITY, WALL_REPORTED, WALL_TURNED, wedgedOn } from './fixedWallTurn.js'
 
 /** Per packed candidate: intoWalls' bits this round, 0 once the guard turned it (scratch, grown by doubling). */
 let into = new Uint8Array(64)
-/** into's bit for a ball countFronts counted */
-const COUNTED = 4
 
 /** Pairs closed and balls turned by the guard over the process's life (tests and benchmarks). */
 let guarded = 0
@@ -50,7 +50,7 @@ export function guardedCount(): number {
 /**
  * Closes inelastically every pair of the tick that closes deep, and turns at the tick a ball that a closed
  * wall would turn into a partner it then closes deep on, round after round until none is left or
- * GUARD_ROUNDS, on a tick that leaves at most DEEP_FRONTS of them (see above). `full`: the last velocity
+ * GUARD_ROUNDS, on a tick that leaves at most DEEP_FRONTS groups of them (see above). `full`: the last velocity
  * sweeps stopped at a bound or the projection ran; else only a ball the tick changed that still moves into
  * a closed wall sets it looking. Not on a lean tick (src/contacts/fixedBudget.ts); each round is metered.
  * Returns the pairs and balls it changed.
@@ -87,29 +87,42 @@ export function guardPasses(w: BallWorld, F: FixedContactState, full: boolean): 
   return changed
 }
 
+/** Per packed candidate: its group of fronts (union-find, src/contacts/fixedUnion.ts; scratch). */
+let parent = new Int32Array(64)
+
 /**
- * The pairs closing deep and the balls guardPasses would turn at its first round (each once, however many
- * partners it closes deep on), counted up to most + 1; nothing is changed.
+ * The fronts guardPasses would act on at its first round, counted up to most + 1: the groups of balls joined
+ * by a pair closing deep, or by a ball a wall would turn into a partner it then closes deep on (a push's
+ * front is one group however many of its balls close deep on each other); nothing is changed.
  */
 function countFronts(w: BallWorld, F: FixedContactState, walled: boolean, most: number): number {
+  if (parent.length < F.n) parent = new Int32Array(2 * F.n)
+  for (let i = 0; i < F.n; i++) parent[i] = -1
   let count = 0
   for (let p = 0; p < F.pairCount && count <= most; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
     if (walled) {
-      if (into[a]! !== 0 && (into[a]! & COUNTED) === 0 && turnsInto(w, F, a, b, false)) {
-        into[a] = into[a]! | COUNTED
-        count++
-      }
-      if (into[b]! !== 0 && (into[b]! & COUNTED) === 0 && turnsInto(w, F, b, a, false)) {
-        into[b] = into[b]! | COUNTED
-        count++
-      }
+      if (into[a]! !== 0 && turnsInto(w, F, a, b, false)) count += joinFront(a, b)
+      if (into[b]! !== 0 && turnsInto(w, F, b, a, false)) count += joinFront(a, b)
     }
-    if (fastEnough(F, a, b) && closesDeep(F, a, b, false)) count++
+    if (fastEnough(F, a, b) && closesDeep(F, a, b, false)) count += joinFront(a, b)
   }
-  if (walled) for (let i = 0; i < F.n; i++) into[i] = into[i]! & ~COUNTED
   return count
+}
+
+/** Joins candidates a and b into one group of fronts: the change in the number of groups. */
+function joinFront(a: number, b: number): number {
+  let change = 0
+  if (parent[a] === -1) {
+    parent[a] = a
+    change++
+  }
+  if (parent[b] === -1) {
+    parent[b] = b
+    change++
+  }
+  return unite(parent, a, b) ? change - 1 : change
 }
 
 /**

@@ -4,8 +4,9 @@
 // radius-0.5 balls 0.5, 2 or 5 px apart, each at up to ±1e4–1e5 px/s, a ball of mass 1e3, 1e6 or 1e9 at
 // the row's left end, 1 s at 60 or 120 Hz. Of 1,000 such rows, 140 let a ball through its neighbour before
 // the guard and 62 with it (92 of those 140 hold now; 14 others part differently and fail), 58 with the
-// projection's deep join (src/contacts/fixedJoin.ts). The seeds below are 24 the guard mends, each failed
-// without it, and 5 the deep join mends.
+// projection's deep join (src/contacts/fixedJoin.ts), 45 with fronts counted as groups of balls, not pairs.
+// The seeds below are 24 the guard mends, each failed without it, 5 the deep join mends and 13 the count by
+// groups mends.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32 } from '../../src/index'
 import { guardedCount } from '../../src/contacts/fixedGuard'
@@ -57,6 +58,15 @@ describe('fixed tick: the last guard against a pair left closing deep', () => {
     const joined = deepJoinedCount()
     expect(passes([10, 263, 297, 415, 765])).toEqual([])
     expect(deepJoinedCount()).toBeGreaterThan(joined)
+  })
+
+  it('rows whose one front has several pairs closing deep: the guard counts it once, and no pass', () => {
+    // a velocity solve after the projection sent the second-last ball but one back at the heavy ball's speed
+    // into three balls of its row at once (seed 183): three pairs closing deep, one front; counted by pair
+    // the guard left them, and each of these 13 seeds let a ball pass its neighbour
+    const guarded = guardedCount()
+    expect(passes([123, 183, 189, 202, 327, 348, 404, 562, 567, 583, 745, 792, 976])).toEqual([])
+    expect(guardedCount()).toBeGreaterThan(guarded)
   })
 
   it('a gas whose solve converges: the guard changes nothing', () => {
