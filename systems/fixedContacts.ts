@@ -103,7 +103,10 @@ export function fixedContactsSystem(w: BallWorld): void {
   // ball a round): while each round pairs one ball more and the tick has CHAIN_PAIRS_PER_BALL pairs a
   // candidate or fewer, up to MAX_PASS_ROUNDS. A lean tick takes the first MAX_WIDEN_ROUNDS only (each with a
   // lean projection): without them it left a ball the projection pushed 7 px, out of one ball into another
-  // it had not paired, 1.4 px deep in it (src/contacts/fixedBudget.ts)
+  // it had not paired, 1.4 px deep in it (src/contacts/fixedBudget.ts). Rounds that stop at a bound leave
+  // what the last projection pushed into balls it has not paired until the next tick: the search pairs
+  // them, and the tick counts as capped (a push through balls at rest, two balls joined in its fourth
+  // round, left a ball 0.0032 px into another at rest, the tick not counted; tests/adversarial.test.ts)
   for (let round = 0; F.overlap && F.capped === capped; round++) {
     const pairs = F.pairCount
     if (!joinPushed(w, F)) break
@@ -116,7 +119,10 @@ export function fixedContactsSystem(w: BallWorld): void {
       if (joinPushed(w, F)) F.capped++
       break
     }
-    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F) || round + 1 >= MAX_PASS_ROUNDS) break
+    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F) || round + 1 >= MAX_PASS_ROUNDS) {
+      if (joinPushed(w, F)) F.capped++
+      break
+    }
   }
   // a row the projection took out from one of its balls (src/contacts/fixedLayered.ts) can have had a
   // push carried along it by more than the gaps between its balls: a ball moved up to one closing on it,

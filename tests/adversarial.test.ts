@@ -1312,6 +1312,67 @@ describe('shrunk counterexamples of the long run', () => {
     runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 0 }, ops, ['overlap'])
   })
 
+  // the 319th sequence of 'crowds (fixed)' at 30x the long run (after the last guard counted its fronts as
+  // groups of balls): a push through balls at rest that its projection's join rounds stopped at their bound
+  // (past MAX_WIDEN_ROUNDS, a round that paired more than one ball) left a radius-11 ball at rest pushed
+  // 0.0032 px into another at rest that the tick had not paired, and the tick was not counted as capped. Such a
+  // tick now pairs what its last projection pushed and counts as capped, as a lean tick does at its bound;
+  // the next ticks take the overlap out
+  it('fixed-tick contacts: a tick whose join rounds stop at their bound with a pushed ball in an unpaired one counts as capped, and the overlap goes', () => {
+    const ops = [
+      { t: 'walls', minX: 0, minY: 0, w: 420, h: 480, e: 1, open: { bottom: false } },
+      { t: 'addHole', x: 50, y: 130 },
+      { t: 'addHole', x: 50, y: 190 },
+      { t: 'addHole', x: 50, y: 250 },
+      { t: 'addHole', x: 50, y: 310 },
+      { t: 'addHole', x: 50, y: 370 },
+      { t: 'addHole', x: 130, y: 130 },
+      { t: 'addHole', x: 130, y: 190 },
+      { t: 'addHole', x: 130, y: 250 },
+      { t: 'addHole', x: 130, y: 310 },
+      { t: 'addHole', x: 130, y: 370 },
+      { t: 'addHole', x: 210, y: 130 },
+      { t: 'addHole', x: 210, y: 190 },
+      { t: 'addHole', x: 210, y: 250 },
+      { t: 'addHole', x: 210, y: 310 },
+      { t: 'addHole', x: 210, y: 370 },
+      { t: 'addHole', x: 290, y: 130 },
+      { t: 'addHole', x: 290, y: 190 },
+      { t: 'addHole', x: 290, y: 250 },
+      { t: 'addHole', x: 290, y: 310 },
+      { t: 'addHole', x: 290, y: 370 },
+      { t: 'addHole', x: 370, y: 130 },
+      { t: 'addHole', x: 370, y: 190 },
+      { t: 'addHole', x: 370, y: 250 },
+      { t: 'addHole', x: 370, y: 310 },
+      { t: 'addHole', x: 370, y: 370 },
+      { t: 'burst', n: 98, x: 439.99908000000005, y: 80, spread: 0, speed: 100000, radius: undefined, mass: undefined, seed: 6, aim: undefined },
+      { t: 'throw', x: 0, y: -20, power: 0.221968, angle: -6.283185307179586, radius: undefined, mass: 1e-9, place: { p: 'aim', k: 36, d: 149.7168, off: 0.6535188, a: 5.4148122, lip: 460 }, queue: undefined },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'burst', n: 13, x: 0, y: 0, spread: 60, speed: 5000, radius: undefined, mass: undefined, seed: 482, aim: { p: 'aim', k: 48, d: 86.0906, off: -0.49674299999999993, a: 0.6887349 } },
+      { t: 'burst', n: 133, x: 25.3054, y: 223.36676, spread: 60, speed: 300, radius: undefined, mass: undefined, seed: 455, aim: { p: 'aim', k: 11, d: 143.90259999999998, off: -0.7414316000000001, a: 1.1952297 } },
+      { t: 'addBall', x: 0, y: 454.26184, radius: 0.03614098626396133, mass: undefined, place: { p: 'free' }, queue: 'front', vx: 0, vy: 6.998419960022734 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'addHole', x: 409.47164, y: 150.64892, radius: 500 },
+      { t: 'burst', n: 64, x: 57.93458, y: 376.80576, spread: 0, speed: 300, radius: 0.0017619760464116293, mass: 2.6121613543992052e-9, seed: 492, aim: { p: 'aim', k: 32, d: 145.2288, off: -0.849862, a: 2.0289906 } },
+      { t: 'removeHole', k: 23 },
+      { t: 'step', dt: 1e-9 },
+      { t: 'step', dt: 1e-9 },
+      { t: 'addBall', x: 350, y: 14.288800000000002, radius: 0.004988844874600122, mass: undefined, place: { p: 'aim', k: 22, d: 81.3326, off: 0.6302435999999999, a: 5.0995098, lip: 497.90521 }, queue: 'front', vx: -100000, vy: -0 },
+      { t: 'addBall', x: 332.10515999999996, y: 203.93903999999998, radius: 0.07294575102545686, mass: 4.8305880203977284e-8, place: { p: 'stack', k: 21 }, queue: undefined, vx: 8241.38115013002, vy: -0 },
+      { t: 'setVel', k: 19, vx: -0, vy: 0.01374041975012515 },
+      { t: 'addBall', x: -1.283900025861806e-61, y: 157.0964, radius: 383.70724549227884, mass: undefined, place: { p: 'free' }, queue: undefined, vx: 1.981527025805098, vy: -0 },
+      { t: 'throw', x: 0.3366000000000007, y: 150, power: 1, angle: 2.9526572714029022, radius: 0.014028137045619582, mass: undefined, place: { p: 'free' }, queue: undefined },
+      { t: 'addHole', x: 60, y: 272.33568, radius: undefined },
+      { t: 'step', dt: 10 },
+      { t: 'step', dt: 0.016666666666666666 },
+      { t: 'step', dt: 0.25 },
+      { t: 'throw', x: 299.4079, y: 376.4324, power: 0.481514, angle: -5.161159207764684, radius: undefined, mass: 0.24660393372343392, place: { p: 'aim', k: 39, d: 32.190200000000004, off: 0.6274429199999999, a: 2.6513739, lip: 470.081035 }, queue: undefined },
+      { t: 'addHole', x: 50, y: 190, radius: 34.632478000000006 },
+    ] as unknown as Op[]
+    runScenario('counterexample', { contacts: 'fixed', e: 0, decel: 300 }, ops, ['finite', 'events', 'time', 'overlap'])
+  })
+
   // a heavy ball drives a column into the corner (walls of restitution 0): a settling contact's cluster took
   // a ball touching a member across a grid-cell boundary only when that ball's capsule in the hash happened
   // to reach over it, which depends on when the ball was last predicted, so the trace differed with the

@@ -154,7 +154,7 @@ export interface FixedContactState {
   ticks: number
   /** impulses closed inelastically past RESTITUTION_VISITS or MAX_TICK_CONTACTS, or by the tick's last guard (src/contacts/fixedGuard.ts), though BALL_RESTITUTION > 0 (the world's life; docs/fixed-tick.md) */
   inelastic: number
-  /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, or balls held by the walls) */
+  /** ticks whose projection stopped with an overlap deeper than PROJECTION_SLOP left (its budget spent, balls held by the walls, or its rounds that pair the balls it pushed into unpaired ones stopped at their bound) */
   capped: number
   /** the work meter (src/contacts/fixedBudget.ts): the CONTACT_TICK span it meters, the work spent in it, its budget (−1: none; −2: UNLIKE_MASS_BUDGET's, not yet set by the span's first pairing), the spans whose last ticks it skipped (over the world's life), the share of a try's work it counts; `lean`: ticks that ended past their budget (over the world's life) */
   budget: Float64Array
