@@ -196,10 +196,6 @@ function joinMoving(w: BallWorld, F: FixedContactState, shift: number, st: numbe
   return true
 }
 
-/**
- * The packed candidates a pushed one closes deep on without overlapping them (noteDeep; lower index first),
- * DEEP_FRONTS of them at most, or one more: then none is paired (scratch, one tick at a time).
- */
 /** Pairs joinDeep paired over the process's life (tests). */
 let deepJoined = 0
 
@@ -208,6 +204,10 @@ export function deepJoinedCount(): number {
   return deepJoined
 }
 
+/**
+ * The packed candidates a pushed one closes deep on without overlapping them (noteDeep; lower index first),
+ * DEEP_FRONTS of them at most, or one more: then none is paired (scratch, one tick at a time).
+ */
 const deepA = new Int32Array(2 * DEEP_FRONTS + 2)
 const deepB = new Int32Array(2 * DEEP_FRONTS + 2)
 let deepCount = 0
