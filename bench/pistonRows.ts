@@ -11,35 +11,11 @@
 // Writes docs/results/piston-rows.json. About two minutes (the exact method takes most of it).
 //
 //   npm run bench:piston-rows
-import { createBallPhysics, mulberry32, type BallPhysics } from '../src/index'
 import { writeResult } from './lib'
+import { PISTON_MASSES as MASSES, PISTON_SPEEDS as SPEEDS, pistonRow, type PistonRow as Row } from './rowScenes'
 
 const ROWS = 1000
 const EXACT_ROWS = 100
-const MASSES = [1e3, 1e6, 1e9]
-const SPEEDS = [1e4, 3e4, 1e5]
-
-interface Row {
-  sim: BallPhysics
-  ids: number[]
-  hz: number
-  mass: number
-  speed: number
-}
-
-function pistonRow(seed: number, mode: 'fixed' | 'on'): Row {
-  const r = mulberry32(seed + 1)
-  const n = 5 + Math.floor(r() * 20)
-  const gap = [0.5, 2, 5][Math.floor(r() * 3)]!
-  const mass = MASSES[Math.floor(r() * 3)]!
-  const speed = SPEEDS[Math.floor(r() * 3)]!
-  const hz = r() < 0.5 ? 60 : 120
-  const sim = createBallPhysics({ BALL_COLLISIONS: mode, BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
-  sim.setWalls({ minX: -3, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: 1 })
-  const ids = [sim.addBall({ x: -1 - gap / 2, y: 0, vx: (r() - 0.5) * 2 * speed, vy: 0, mass })]
-  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: (r() - 0.5) * 2 * speed, vy: 0 }))
-  return { sim, ids, hz, mass, speed }
-}
 
 function kinetic(row: Row): number {
   const { sim, ids } = row

@@ -112,14 +112,10 @@ export function fixedContactsSystem(w: BallWorld): void {
     if (!joinPushed(w, F)) break
     solvePositions(w, F)
     if (round + 1 < MAX_WIDEN_ROUNDS) continue
-    if (lean(F)) {
-      // the lean rounds' bound: a ball the last projection pushed into one the tick has not paired stays in
-      // it until the next tick, and the tick counts as capped, as when the projection's budget runs out (the
-      // search pairs what it finds; nothing solves those pairs in this tick)
-      if (joinPushed(w, F)) F.capped++
-      break
-    }
-    if (F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F) || round + 1 >= MAX_PASS_ROUNDS) {
+    // the rounds' bounds (a lean tick's at MAX_WIDEN_ROUNDS): a ball the last projection pushed into one the
+    // tick has not paired stays in it until the next tick, and the tick counts as capped, as when the
+    // projection's budget runs out (the search pairs what it finds; nothing solves those pairs in this tick)
+    if (lean(F) || F.pairCount - pairs > 1 || F.pairCount > CHAIN_PAIRS_PER_BALL * activeCount(F) || round + 1 >= MAX_PASS_ROUNDS) {
       if (joinPushed(w, F)) F.capped++
       break
     }

@@ -11,26 +11,13 @@ import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32 } from '../../src/index'
 import { guardedCount } from '../../src/contacts/fixedGuard'
 import { deepJoinedCount } from '../../src/contacts/fixedJoin'
-
-function pistonRow(seed: number) {
-  const r = mulberry32(seed + 1)
-  const n = 5 + Math.floor(r() * 20)
-  const gap = [0.5, 2, 5][Math.floor(r() * 3)]!
-  const heavy = [1e3, 1e6, 1e9][Math.floor(r() * 3)]!
-  const v = [1e4, 3e4, 1e5][Math.floor(r() * 3)]!
-  const hz = r() < 0.5 ? 60 : 120
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, BALL_RADIUS: 0.5 })
-  sim.setWalls({ minX: -3, minY: -20, maxX: n * (1 + gap) + 5, maxY: 20, restitution: 1 })
-  const ids = [sim.addBall({ x: -1 - gap / 2, y: 0, vx: (r() - 0.5) * 2 * v, vy: 0, mass: heavy })]
-  for (let i = 0; i < n; i++) ids.push(sim.addBall({ x: i * (1 + gap), y: 0, vx: (r() - 0.5) * 2 * v, vy: 0 }))
-  return { sim, ids, hz }
-}
+import { pistonRow } from '../../bench/rowScenes'
 
 /** The seeds whose row had two neighbours out of order after some frame of 1 s, with that frame. */
 function passes(seeds: number[]): string[] {
   const failing: string[] = []
   for (const seed of seeds) {
-    const { sim, ids, hz } = pistonRow(seed)
+    const { sim, ids, hz } = pistonRow(seed, 'fixed')
     const x = sim.world.Ball.x
     let passed = -1
     for (let f = 0; f < hz && passed < 0; f++) {
