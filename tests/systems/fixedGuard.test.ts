@@ -5,9 +5,9 @@
 // the row's left end, 1 s at 60 or 120 Hz. Of 1,000 such rows, 140 let a ball through its neighbour before
 // the guard and 62 with it (92 of those 140 hold now; 14 others part differently and fail), 58 with the
 // projection's deep join (src/contacts/fixedJoin.ts), 45 with fronts counted as groups of balls, not pairs,
-// 44 with a projection undone when it carried a ball past one it was not paired with. The seeds below are 24
-// the guard mends, each failed without it, 5 the deep join mends, 1 the undo mends and 13 the count by groups
-// mends.
+// 44 with a projection undone when it carried a ball past one it was not paired with, 43 with 32 rounds of the
+// guard instead of 16. The seeds below are 24 the guard mends, each failed without it, 5 the deep join mends,
+// 1 the undo mends, 1 the rounds mend and 13 the count by groups mends.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32 } from '../../src/index'
 import { guardedCount } from '../../src/contacts/fixedGuard'
@@ -56,6 +56,12 @@ describe('fixed tick: the last guard against a pair left closing deep', () => {
     const crossed = crossedCount()
     expect(passes([42])).toEqual([])
     expect(crossedCount()).toBeGreaterThan(crossed)
+  })
+
+  it('a row whose guard needs more than 16 rounds: no pass', () => {
+    // seed 274: 18 balls behind a ball 1e9 times heavier at 77,000 px/s; one tick's guard walked its pairs 26
+    // times before no pair closed deep, and the row passed when the rounds stopped at 16 (GUARD_ROUNDS)
+    expect(passes([274])).toEqual([])
   })
 
   it('rows whose one front has several pairs closing deep: the guard counts it once, and no pass', () => {
