@@ -6,8 +6,9 @@
 // the guard and 62 with it (92 of those 140 hold now; 14 others part differently and fail), 58 with the
 // projection's deep join (src/contacts/fixedJoin.ts), 45 with fronts counted as groups of balls, not pairs,
 // 44 with a projection undone when it carried a ball past one it was not paired with, 43 with 32 rounds of the
-// guard instead of 16. The seeds below are 24 the guard mends, each failed without it, 5 the deep join mends,
-// 1 the undo mends, 1 the rounds mend and 13 the count by groups mends.
+// guard instead of 16, 39 with any number of fronts on a tick of at most 64 balls. The seeds below are 24 the
+// guard mends, each failed without it, 5 the deep join mends, 1 the undo mends, 1 the rounds mend, 4 the small
+// ticks mend and 13 the count by groups mends.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32 } from '../../src/index'
 import { guardedCount } from '../../src/contacts/fixedGuard'
@@ -62,6 +63,16 @@ describe('fixed tick: the last guard against a pair left closing deep', () => {
     // seed 274: 18 balls behind a ball 1e9 times heavier at 77,000 px/s; one tick's guard walked its pairs 26
     // times before no pair closed deep, and the row passed when the rounds stopped at 16 (GUARD_ROUNDS)
     expect(passes([274])).toEqual([])
+  })
+
+  it('rows whose velocities solved after the projection leave three fronts or more, on a small tick: closed, no pass', () => {
+    // seed 127: 13 balls behind a ball 1e9 times heavier; the velocities solved again where the projection had
+    // laid the row out left three pairs of neighbours closing through each other, apart from one another (the
+    // guard acts on at most two fronts, DEEP_FRONTS, unless the tick has at most SMALL_TICK_BALLS balls);
+    // each of these four seeds let a ball pass its neighbour with the bound on every tick
+    const guarded = guardedCount()
+    expect(passes([127, 565, 818, 964])).toEqual([])
+    expect(guardedCount()).toBeGreaterThan(guarded)
   })
 
   it('rows whose one front has several pairs closing deep: the guard counts it once, and no pass', () => {
