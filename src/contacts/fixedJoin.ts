@@ -11,9 +11,7 @@
 // listed twice; the moving ones are listed in packed order, the same on both broadphases. A ball it moved
 // that ends short of a packed ball it then closes deep on (src/contacts/fixedDeep.ts) is paired with it
 // too, when the tick has at most DEEP_FRONTS such pairs and not that pair already, and the tick's last
-// guard (fixedGuard.ts) closes the pair: it would go through itself before the next tick. A pair the join
-// lists whose balls the projection carried past each other's centres undoes the tick's projections: the next
-// one starts from the tick's positions, the pair on its right sides (crossedJoin).
+// guard (fixedGuard.ts) closes the pair: it would go through itself before the next tick.
 import { BallMode } from '../../components/Ball.js'
 import { DEEP_FRONTS, PROJECTION_SLOP, TOUCH_GAP } from '../config/tolerances.js'
 import { closesDeep } from './fixedDeep.js'
@@ -53,7 +51,6 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
   // a new overlap deeper than the slop needs the two balls to have closed by more than it: one of them moved
   // more than half of it
   if (movers === 0) return false
-  const pairs0 = F.pairCount
   let paired = false
   const resting = C.restCount > 0 || C.bigRestCount > 0
   // the candidates by id, for the resting pairs and for the moving ones of a sweep tick (those pairIfPushed
@@ -86,52 +83,7 @@ export function joinPushed(w: BallWorld, F: FixedContactState): boolean {
     }
   }
   if (joinMoving(w, F, shift, st)) paired = true
-  if (paired && crossedJoin(w, F, pairs0)) restorePositions(w, F, n0)
   return paired
-}
-
-/** Pairs whose projection was undone because it had pushed a ball past one it was not paired with (tests). */
-let crossings = 0
-
-/** Projections joinPushed undid since the process started. */
-export function crossedCount(): number {
-  return crossings
-}
-
-/**
- * Whether a pair joinPushed listed (from index `from`) is one the projection pushed past the other's centre:
- * the line between their centres turned by more than a right angle from where they were at the tick (the
- * stores hold the tick's positions). The projection moved them along the pairs it had, and a row laid out
- * from a heavy ball can be carried past a ball it was not paired with (a row pressed by a ball 1e6 times
- * heavier toward a wall: its second-last ball laid out 0.57 px beyond the last, unpaired, which the next
- * projection then pushed on the far side).
- */
-function crossedJoin(w: BallWorld, F: FixedContactState, from: number): boolean {
-  const B = w.Ball
-  for (let p = from; p < F.pairCount; p++) {
-    const a = F.pairA[p]!
-    const b = F.pairB[p]!
-    const ea = F.id[a]!
-    const eb = F.id[b]!
-    const dot = (B.x[eb]! - B.x[ea]!) * (F.x[b]! - F.x[a]!) + (B.y[eb]! - B.y[ea]!) * (F.y[b]! - F.y[a]!)
-    if (dot < 0) return true
-  }
-  return false
-}
-
-/**
- * Undoes the tick's projections: the first n candidates back at the tick's positions, not moved; the next
- * projection starts again from there with the pairs joinPushed added.
- */
-function restorePositions(w: BallWorld, F: FixedContactState, n: number): void {
-  const B = w.Ball
-  for (let k = 0; k < n; k++) {
-    const e = F.id[k]!
-    F.x[k] = B.x[e]!
-    F.y[k] = B.y[e]!
-    F.changed[k] = F.changed[k]! & ~MOVED
-  }
-  crossings++
 }
 
 /**

@@ -29,7 +29,7 @@ export function widenReach(w: BallWorld, F: FixedContactState): boolean {
   widenHits(F)
   if (F.widenedCount === 0) return false
   // through a slot, as the calls below read it (V8 boxes a double passed to a call it does not inline)
-  roundReach[0] = Math.max(F.cell / 2, roundReach[1]!)
+  roundReach[0] = Math.max(F.cell / 2, roundReach[2]!)
   const smallReach = roundReach[0]!
   const restFrom = F.n
   if (F.dense === 1) {
@@ -183,7 +183,7 @@ function markSwept(F: FixedContactState, g: number): void {
   listNearWall(F, g)
 }
 
-/** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); the widest new reach into roundReach[1]. */
+/** Lists the candidates the last round sped up beyond their reach (F.widened, with F.wide, F.grown); the widest new reach into roundReach[1] (and [2]). */
 function widenHits(F: FixedContactState): void {
   const tick = F.tick
   F.widenedCount = 0
@@ -209,6 +209,7 @@ function widenHits(F: FixedContactState): void {
     if (wide > widest) widest = wide
   }
   roundReach[1] = widest
+  if (widest > roundReach[2]!) roundReach[2] = widest
 }
 
 /**
