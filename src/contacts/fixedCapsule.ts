@@ -43,11 +43,11 @@ export const circle = new Float64Array(3)
 
 /**
  * A widening round's reaches (src/contacts/fixedReach.ts): [0] a small ball's, the larger of half the cell
- * and [2]; [1] the round's widest new reach; [2] the widest reach any round of the tick has widened a ball to
- * (a ball widened in an earlier round reaches that far: bounded by this round's alone, a ball sped up later
- * missed a neighbour sped up before, 4.76 px away with reaches of 2.29 and 3.72 px, and the two passed
- * through each other before the next tick). Slots, not arguments or returned values: V8 boxes a double passed to or
- * returned from a call it does not inline (a heap number a round, and one a widened ball).
+ * and [2]; [1] the round's widest new reach; [2] the widest reach any round of the try has widened a ball to
+ * (a ball widened in an earlier round reaches that far: bounded by the round's own widest, a ball sped up
+ * later missed a neighbour sped up before, 4.76 px away with reaches of 2.29 and 3.72 px, and the two passed
+ * through each other before the next tick). Slots, not arguments or returned values: V8 boxes a double
+ * passed to or returned from a call it does not inline (a heap number a round, and one a widened ball).
  */
 export const roundReach = new Float64Array(3)
 

@@ -26,7 +26,7 @@
 // the guard leaves alone). On a tick of at most SMALL_TICK_BALLS balls it acts however many fronts there are,
 // as such a tick is solved again finer however many pairs it has (a walk over its pairs costs little): a
 // velocity solve after the projection left three pairs of neighbours closing through each other, apart
-// from one another, in 4 of the 43 rows still passing (39 now; 60 small elastic crowds in closed boxes,
+// from one another, in 4 of the 43 rows still passing (39 then; 60 small elastic crowds in closed boxes,
 // radius 0.5–2 at 2e3–1e5 px/s, some with a ball 1e4–1e6 times heavier, step to the same bits).
 // A tick whose solve converged with no ball struck into a wall is left as it was, to the bit: the gas and the
 // panel of the contacts benchmark step to the same bits.
@@ -55,10 +55,9 @@ export function guardedCount(): number {
 /**
  * Closes inelastically every pair of the tick that closes deep, and turns at the tick a ball that a closed
  * wall would turn into a partner it then closes deep on, round after round until none is left or
- * GUARD_ROUNDS, on a tick that leaves at most DEEP_FRONTS groups of them or has at most SMALL_TICK_BALLS balls
- * (see above). `full`: the last velocity
- * sweeps stopped at a bound or the projection ran; else only a ball the tick changed that still moves into
- * a closed wall sets it looking. Not on a lean tick (src/contacts/fixedBudget.ts); each round is metered.
+ * GUARD_ROUNDS, on a tick that leaves at most DEEP_FRONTS groups of them or has at most SMALL_TICK_BALLS
+ * balls (see above). `full`: the last velocity sweeps stopped at a bound or the projection ran; else only a
+ * ball the tick changed that still moves into a closed wall sets it looking. Not on a lean tick (src/contacts/fixedBudget.ts); each round is metered.
  * Returns the pairs and balls it changed.
  */
 export function guardPasses(w: BallWorld, F: FixedContactState, full: boolean): number {

@@ -54,9 +54,8 @@ describe('fixed tick: the last guard against a pair left closing deep', () => {
     // seed 497: a ball 1e3 times heavier; in one tick's rounds a light ball sped to 6,181 px/s (reach 3.72 px)
     // and, a round later, its neighbour 4.76 px away to 3,438 px/s the other way (reach 2.29): the later
     // round looked for partners within its new reach plus that round's widest, 2.29, not 3.72, and the two,
-    // never paired,
-    // passed through each other before the next tick (src/contacts/fixedReach.ts); each of these five seeds let
-    // a ball pass its neighbour with that bound
+    // never paired, passed through each other before the next tick (src/contacts/fixedReach.ts); each of these
+    // five seeds let a ball pass its neighbour with that bound
     expect(passes([42, 184, 346, 497, 731])).toEqual([])
   })
 
