@@ -7,9 +7,10 @@
 // projection's deep join (src/contacts/fixedJoin.ts), 45 with fronts counted as groups of balls, not pairs,
 // 44 with a projection undone when it carried a ball past one it was not paired with (withdrawn since), 43
 // with 32 rounds of the guard instead of 16, 39 with any number of fronts on a tick of at most 64 balls, 37
-// with the widening rounds bounded by the tick's widest reach (src/contacts/fixedReach.ts). The seeds below
-// are 24 the guard mends, each failed without it, 5 the deep join mends, 1 the rounds mend, 4 the small ticks
-// mend, 5 the widening's bound mends and 13 the count by groups mends.
+// with the widening rounds bounded by the tick's widest reach (src/contacts/fixedReach.ts), 26 with the guard
+// on lean ticks of at most 64 balls. The seeds below are 24 the guard mends, each failed without it, 5 the
+// deep join mends, 1 the rounds mend, 4 the small ticks mend, 5 the widening's bound mends, 5 the guard on
+// small lean ticks mends and 13 the count by groups mends.
 import { describe, expect, it } from 'vitest'
 import { createBallPhysics, mulberry32 } from '../../src/index'
 import { guardedCount } from '../../src/contacts/fixedGuard'
@@ -73,6 +74,21 @@ describe('fixed tick: the last guard against a pair left closing deep', () => {
     // since the widening rounds' bound, above; the other three still do)
     const guarded = guardedCount()
     expect(passes([127, 565, 818, 964])).toEqual([])
+    expect(guardedCount()).toBeGreaterThan(guarded)
+  })
+
+  it('rows with lean ticks past the budget for unlike masses, on small ticks: guarded too, no pass', () => {
+    // a lean tick (src/contacts/fixedBudget.ts) spends no widening rounds and a short projection; on a tick of
+    // at most SMALL_TICK_BALLS balls the guard now closes what it leaves closing deep too (a walk over a few
+    // pairs), and each of these five seeds, whose rows go lean, let a ball pass its neighbour without that
+    const { sim, hz } = pistonRow(279, 'fixed')
+    for (let f = 0; f < hz / 4; f++) {
+      sim.step(1 / hz)
+      sim.drainEventsWith(() => {})
+    }
+    expect(sim.world.fixed!.lean).toBeGreaterThan(0)
+    const guarded = guardedCount()
+    expect(passes([236, 279, 322, 412, 737])).toEqual([])
     expect(guardedCount()).toBeGreaterThan(guarded)
   })
 
