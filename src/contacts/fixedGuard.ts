@@ -78,7 +78,8 @@ export function guardPasses(w: BallWorld, F: FixedContactState, full: boolean): 
       into[i] = bits
       if (bits !== 0) walled = true
     }
-    if (round === 0 && countFronts(w, F, walled, DEEP_FRONTS) > DEEP_FRONTS && activeCount(F) > SMALL_TICK_BALLS) return 0
+    // (a small tick is guarded however many fronts it leaves: not counted there)
+    if (round === 0 && activeCount(F) > SMALL_TICK_BALLS && countFronts(w, F, walled, DEEP_FRONTS) > DEEP_FRONTS) return 0
     spend(F, F.n + 2 * F.pairCount)
     let acted = 0
     for (let p = 0; p < F.pairCount; p++) {
