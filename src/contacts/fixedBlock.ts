@@ -75,7 +75,16 @@ export function holds(F: FixedContactState, i: number): boolean {
   const vx = blk[B_VX]!
   const vy = blk[B_VY]!
   const settle = solveSlots[S_SETTLE]!
-  return i >= F.restFrom && F.vx[i] === 0 && F.vy[i] === 0 && vx * vx + vy * vy < settle * settle
+  return stillAtRest(F, i) && vx * vx + vy * vy < settle * settle
+}
+
+/**
+ * Whether candidate i was gathered at rest and the tick has given it no velocity yet. Such a ball that a
+ * contact would leave slower than BALL_SETTLE_SPEED stays at rest (src/contacts/fixedApply.ts), so the
+ * solve, the wall pair and the guard hold it like a wall: the other ball takes the whole impulse.
+ */
+export function stillAtRest(F: FixedContactState, i: number): boolean {
+  return i >= F.restFrom && F.vx[i] === 0 && F.vy[i] === 0
 }
 
 /** Whether candidates i and j touch, within PROJECTION_SLOP (a boolean, not the gap: a returned double is boxed). */

@@ -42,8 +42,9 @@ import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { closesDeep } from './fixedDeep.js'
 import { unite } from './fixedUnion.js'
-import { intoWalls, walls } from './fixedGrid.js'
-import { VELOCITY, WALL_REPORTED, WALL_TURNED, wedgedOn } from './fixedWallTurn.js'
+import { intoWalls } from './fixedGrid.js'
+import { turnAtWalls, VELOCITY, WALL_REPORTED, WALL_TURNED } from './fixedWallTurn.js'
+import { stillAtRest } from './fixedBlock.js'
 
 /** Per packed candidate: intoWalls' bits this round, 0 once the guard turned it (scratch, grown by doubling). */
 let into = new Uint8Array(64)
@@ -82,15 +83,7 @@ export function guardPasses(w: BallWorld, F: FixedContactState, full: boolean): 
     if (round === 0 && activeCount(F) > SMALL_TICK_BALLS && countFronts(w, F, walled, DEEP_FRONTS) > DEEP_FRONTS) return 0
     spend(F, F.n + 2 * F.pairCount)
     let acted = 0
-    for (let p = 0; p < F.pairCount; p++) {
-      const a = F.pairA[p]!
-      const b = F.pairB[p]!
-      if (walled) {
-        if (into[a]! !== 0 && turnsInto(w, F, a, b, true)) acted++
-        if (into[b]! !== 0 && turnsInto(w, F, b, a, true)) acted++
-      }
-      if (fastEnough(F, a, b) && closesDeep(F, a, b, false) && closeInelastic(w, F, a, b)) acted++
-    }
+    for (let p = 0; p < F.pairCount; p++) acted += fronts(w, F, F.pairA[p]!, F.pairB[p]!, walled, true)
     changed += acted
     if (acted === 0) break
   }
@@ -113,13 +106,25 @@ function countFronts(w: BallWorld, F: FixedContactState, walled: boolean, most: 
   for (let p = 0; p < F.pairCount && count <= most; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
-    if (walled) {
-      if (into[a]! !== 0 && turnsInto(w, F, a, b, false)) count += joinFront(a, b)
-      if (into[b]! !== 0 && turnsInto(w, F, b, a, false)) count += joinFront(a, b)
-    }
-    if (fastEnough(F, a, b) && closesDeep(F, a, b, false)) count += joinFront(a, b)
+    if (fronts(w, F, a, b, walled, false) !== 0) count += joinFront(a, b)
   }
   return count
+}
+
+/**
+ * Pair (a, b)'s tests of a round: a ball of it that a closed wall would turn into the other, which it then
+ * closes deep on (`walled`: some candidate moves into a closed wall this round), and the pair closing deep.
+ * `act`: each turns the ball or closes the pair as it finds it (guardPasses); else nothing is changed
+ * (countFronts). Returns how many it found (acting: how many changed something).
+ */
+function fronts(w: BallWorld, F: FixedContactState, a: number, b: number, walled: boolean, act: boolean): number {
+  let found = 0
+  if (walled) {
+    if (into[a]! !== 0 && turnsInto(w, F, a, b, act)) found++
+    if (into[b]! !== 0 && turnsInto(w, F, b, a, act)) found++
+  }
+  if (fastEnough(F, a, b) && closesDeep(F, a, b, false) && (!act || closeInelastic(w, F, a, b))) found++
+  return found
 }
 
 /** Joins candidates a and b into one group of fronts: the change in the number of groups. */
@@ -167,11 +172,9 @@ function fastEnough(F: FixedContactState, a: number, b: number): boolean {
  * else it is left as it was.
  */
 function turnsInto(w: BallWorld, F: FixedContactState, i: number, o: number, apply: boolean): boolean {
-  const bits = into[i]! & 3
   const vx = F.vx[i]!
   const vy = F.vy[i]!
-  if ((bits & 1) !== 0) F.vx[i] = wedgedOn(F, i, 1) ? 0 : -walls.e * vx
-  if ((bits & 2) !== 0) F.vy[i] = wedgedOn(F, i, 2) ? 0 : -walls.e * vy
+  turnAtWalls(F, i, into[i]! & 3, false)
   const deep = fastEnough(F, i, o) && closesDeep(F, i, o, false)
   if (!apply || !deep) {
     F.vx[i] = vx
@@ -207,10 +210,8 @@ function closeInelastic(w: BallWorld, F: FixedContactState, a: number, b: number
   let ima = F.im[a]!
   let imb = F.im[b]!
   let j = approach / (ima + imb)
-  const pinA = a >= F.restFrom && j * ima < settle && F.vx[a] === 0 && F.vy[a] === 0
-  const pinB = b >= F.restFrom && j * imb < settle && F.vx[b] === 0 && F.vy[b] === 0
-  if (pinA) ima = 0
-  if (pinB) imb = 0
+  if (j * ima < settle && stillAtRest(F, a)) ima = 0
+  if (j * imb < settle && stillAtRest(F, b)) imb = 0
   if (ima + imb === 0) return false
   j = approach / (ima + imb)
   F.vx[a] = F.vx[a]! - j * ima * nx

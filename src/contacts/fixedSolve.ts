@@ -22,7 +22,7 @@
 import { spend } from './fixedBudget.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
-import { bouncesBetween, intoWalls, walls } from './fixedGrid.js'
+import { bouncesBetween, intoWalls } from './fixedGrid.js'
 import { beginCall, beginSweep, lastCallN, listChange, nextPair } from './fixedCalls.js'
 import { meetsWithinTick, nrm, touch, PAIR_VISIT_SHIFT as VISIT_SHIFT, reportPair, S_APPROACH, S_CLOCK, S_E, S_IMA, S_IMB, S_J, S_LIMIT, S_SEPARATE, S_SETTLE, S_T, solveSlots as S } from './fixedPairs.js'
 import { jammed, settleJams } from './fixedJam.js'
@@ -33,8 +33,9 @@ import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
 import { aheadOf, pushed, wallAhead } from './fixedAhead.js'
 import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
-import { STRUCK, VELOCITY, WALL_DUE, WALL_TURNED, wedgedOn } from './fixedWallTurn.js'
+import { STRUCK, turnAtWalls, VELOCITY, WALL_DUE, WALL_TURNED } from './fixedWallTurn.js'
 import { block, capBall, pairWithWall } from './fixedWallPair.js'
+import { stillAtRest } from './fixedBlock.js'
 import { changedAt, OTHER, PARTING, REFUSED, reserveStamps, testedAs, testedAt } from './fixedStamps.js'
 
 /**
@@ -243,8 +244,8 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
   // a ball at rest that this impulse would leave slower than BALL_SETTLE_SPEED stays at rest (applyChanges),
   // so it holds like a wall: the other ball takes the whole impulse (else it would go on into a ball that
   // does not move, and overlap it until the next tick)
-  const pinA = a >= F.restFrom && j * ima < settle && F.vx[a] === 0 && F.vy[a] === 0
-  const pinB = b >= F.restFrom && j * imb < settle && F.vx[b] === 0 && F.vy[b] === 0
+  const pinA = j * ima < settle && stillAtRest(F, a)
+  const pinB = j * imb < settle && stillAtRest(F, b)
   if (pinA || pinB) {
     if (pinA) ima = 0
     if (pinB) imb = 0
@@ -393,17 +394,13 @@ function wallVelocities(w: BallWorld, F: FixedContactState): number {
 function wallVelocity(w: BallWorld, F: FixedContactState, i: number): number {
   const into = intoWalls(F, i)
   if (into === 0) return 0
-  const settle = S[S_SETTLE]!
-  let vx = F.vx[i]!
-  let vy = F.vy[i]!
+  const vx = F.vx[i]!
+  const vy = F.vy[i]!
   // a ball wider than its box on an axis is wedged there (wedgedOn): turned back, it would meet the far face
   // at once, and every sweep would turn it again
-  if ((into & 1) !== 0) vx = Math.abs(vx) < settle || wedgedOn(F, i, 1) ? 0 : -walls.e * vx
-  if ((into & 2) !== 0) vy = Math.abs(vy) < settle || wedgedOn(F, i, 2) ? 0 : -walls.e * vy
+  turnAtWalls(F, i, into, true)
   // its 'wall' event is written once the tick is solved, if it keeps the turn (src/contacts/fixedWallTurn.ts)
-  if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= settle) F.changed[i]! |= WALL_DUE
-  F.vx[i] = vx
-  F.vy[i] = vy
+  if (Math.max(Math.abs(F.vx[i]! - vx), Math.abs(F.vy[i]! - vy)) >= S[S_SETTLE]!) F.changed[i]! |= WALL_DUE
   noteChange(F, i)
   changedAt[i] = ++clock
   F.changed[i]! |= VELOCITY | WALL_TURNED

@@ -11,7 +11,7 @@ import { EventType, appendEvent } from '../events.js'
 import type { BallWorld } from '../world/createWorld.js'
 import type { FixedContactState } from '../world/fixedState.js'
 import { walls } from './fixedGrid.js'
-import { meetsWithinTick, swept } from './fixedPairs.js'
+import { meetsWithinTick, S_SETTLE, solveSlots, swept } from './fixedPairs.js'
 
 /** changed bit of a candidate whose wall hit this tick was reported */
 export const WALL_REPORTED = 4
@@ -130,6 +130,20 @@ function meetsAfterWall(F: FixedContactState, a: number, b: number): boolean {
   if ((vy < 0 && ay - r - walls.minY < -vy * rest) || (vy > 0 && walls.maxY - ay - r < vy * rest)) return true
   // the swept test from the wall on, b where it is then
   return swept(F.x[b]! + F.vx[b]! * tw - ax, F.y[b]! + F.vy[b]! * tw - ay, F.vx[b]! - vx, F.vy[b]! - vy, r + F.r[b]!, rest)
+}
+
+/**
+ * Turns candidate i at its closed walls on the axes of `bits` (intoWalls' bits: 1 x, 2 y), in F.vx and F.vy:
+ * by the walls' restitution, or to no speed along an axis it is wedged on (wedgedOn) or, when `floored`, along
+ * which it moves slower than BALL_SETTLE_SPEED (the solve's turn: such a ball stops at its wall). The solve's
+ * wall turn and the guard's (src/contacts/fixedGuard.ts) take a wall by this.
+ */
+export function turnAtWalls(F: FixedContactState, i: number, bits: number, floored: boolean): void {
+  const floor = floored ? solveSlots[S_SETTLE]! : 0
+  const vx = F.vx[i]!
+  const vy = F.vy[i]!
+  if ((bits & 1) !== 0) F.vx[i] = Math.abs(vx) < floor || wedgedOn(F, i, 1) ? 0 : -walls.e * vx
+  if ((bits & 2) !== 0) F.vy[i] = Math.abs(vy) < floor || wedgedOn(F, i, 2) ? 0 : -walls.e * vy
 }
 
 /**
