@@ -31,7 +31,7 @@ import { anchoredCount } from '../src/contacts/fixedLayered.js'
 import { joinPushed, markCandidatesSeen } from '../src/contacts/fixedJoin.js'
 import { widenReach } from '../src/contacts/fixedReach.js'
 import { coarsenTick, fewPairs, halveTick, recordGrowth } from '../src/contacts/fixedHalve.js'
-import { redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
+import { beginTry, finerForRestitution, redoHalvings, restoreTick, saveTick } from '../src/contacts/fixedRedo.js'
 import { beginWidening, withinCapsule } from '../src/contacts/fixedCapsule.js'
 import { roundCandidates, roundList } from '../src/contacts/fixedRounds.js'
 import { beginNear } from '../src/contacts/fixedNear.js'
@@ -67,6 +67,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   let tries = 0
   let atLeast = 0
   for (;;) {
+    beginTry()
     const h = solveTick(w, F, atLeast)
     if (h === NO_PAIRS) {
       recordGrowth(F, false)
@@ -87,7 +88,9 @@ export function fixedContactsSystem(w: BallWorld): void {
       const dense = !few && taking > SMALL_TICK_BALLS && F.pairCount > CHAIN_PAIRS_PER_BALL * taking
       if (dense && !fewPairs(F)) break
       const fronts = F.tickPairs > 0 && F.tickPairs <= F.tickFull ? DEEP_ROW_FRONTS : DEEP_FRONTS
-      if (!deepFiner(w, F, dense ? fronts : -1)) break
+      // and a small tick of like masses that closed a pair apart at its start past its restitution visits
+      // (src/contacts/fixedRedo.ts, finerForRestitution)
+      if (!deepFiner(w, F, dense ? fronts : -1) && !finerForRestitution(F, tries)) break
     }
     // past the span's work budget, no finer try (src/contacts/fixedBudget.ts)
     if (lean(F)) break

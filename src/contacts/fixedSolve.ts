@@ -31,6 +31,7 @@ import { capImpulse } from './law.js'
 import { overSpeed } from '../motion/speedLimit.js'
 import { RESTITUTION_VISITS, SQUEEZE_MASS_RATIO } from '../config/tolerances.js'
 import { clockTick, spent } from './fixedCount.js'
+import { noteClosedApart } from './fixedRedo.js'
 import { aheadOf, pushed, wallAhead } from './fixedAhead.js'
 import { SQ_APPROACH, SQ_BOUND, SQ_CHAIN, SQ_J, SQ_J1, SQ_J2, SQ_OTHER, pairWithBall, squeeze, squeezeChain } from './fixedSqueeze.js'
 import { STRUCK, turnAtWalls, VELOCITY, WALL_DUE, WALL_TURNED } from './fixedWallTurn.js'
@@ -253,7 +254,11 @@ function applyImpulse(w: BallWorld, F: FixedContactState, p: number): boolean {
     j = k / (ima + imb)
   }
   if (visits < RESTITUTION_VISITS) F.pairHit[p] = hit + (1 << VISIT_SHIFT)
-  if (bound && e > 0) F.inelastic++
+  if (bound && e > 0) {
+    F.inelastic++
+    // a pair apart at the tick's start: a finer tick may part its meetings (src/contacts/fixedRedo.ts)
+    noteClosedApart(F, a, b)
+  }
   // a pumped ball's other meetings go on only while the heavy ones turn it (docs/decisions.md §12), with
   // restitution 1: below it, piles of light balls a heavy one pressed into a corner kept velocities they
   // could not move at (2 and 4 balls at e = 0 and 0.5)
