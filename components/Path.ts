@@ -29,6 +29,8 @@ export const PathEvent = Object.freeze({
   Collide: 11,
   /** a tabulated bounce or skip reaches the reference's exit point (integration, or the tabulated rim system with exact contacts) */
   Landing: 12,
+  /** touches another ball alone at a fixed contact tick, at its instant (src/contacts/fixedMeet.ts; nextHole holds the other ball) */
+  Meet: 13,
 } as const)
 export type PathEventCode = (typeof PathEvent)[keyof typeof PathEvent]
 

@@ -13,6 +13,7 @@ export {
   CAPTURE_WINDOW_SHAPES,
   RIM_MODELS,
   COLLISION_MODES,
+  CONTACT_TIMINGS,
   CONFIG_CHOICES,
   CONFIG_RANGES,
   DEFAULT_CONFIG,
@@ -21,7 +22,7 @@ export {
   resolveConfig,
   skipFromGravity,
 } from './config/design.js'
-export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, RimModel, SimulationMethod } from './config/design.js'
+export type { BallPhysicsConfig, CaptureWindowShape, CollisionMode, ConfigOverrides, ContactTiming, RimModel, SimulationMethod } from './config/design.js'
 export { PHYSICAL_CONFIG, TABULATED_CONFIG } from './config/presets.js'
 export { prepareRimTable, tabulatedCaptureSpeed } from './reference/rimTables.js'
 export { DEFAULT_PANEL, addPanel } from './panel.js'

@@ -24,6 +24,7 @@ import { findPairs } from '../src/contacts/fixedOrder.js'
 import { findPairsDense, gatherDense } from '../src/contacts/fixedDense.js'
 import { lastSolveConverged, solveVelocities } from '../src/contacts/fixedSolve.js'
 import { applyChanges } from '../src/contacts/fixedApply.js'
+import { timeMeets } from '../src/contacts/fixedMeet.js'
 import { countTickContacts } from '../src/contacts/fixedCount.js'
 import { deepFiner } from '../src/contacts/fixedDeep.js'
 import { solvePositions } from '../src/contacts/fixedProject.js'
@@ -61,6 +62,7 @@ export function fixedContactsSystem(w: BallWorld): void {
   // past its budget and as much again on lean ticks, the span's last ticks are skipped (src/contacts/fixedBudget.ts)
   if (skipRest(F)) return
   F.ticks++
+  const eventsFrom = w.events.count
   // a try that stopped with a ball that may pass through another is dropped, and the tick solved again at a
   // finer spacing (src/contacts/fixedRedo.ts)
   saveTick(w, F)
@@ -150,6 +152,8 @@ export function fixedContactsSystem(w: BallWorld): void {
   // projection ran
   guardPasses(w, F, !lastSolveConverged() || F.overlap)
   countTickContacts(w, F)
+  // a pair alone at the tick meets at its instant instead (src/contacts/fixedMeet.ts)
+  timeMeets(w, F, eventsFrom)
   applyChanges(w, F)
 }
 

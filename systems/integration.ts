@@ -14,7 +14,7 @@ import { BallMode } from '../components/Ball.js'
 import { PathEvent } from '../components/Path.js'
 import { RIDE_DROPS } from '../components/RimContact.js'
 import { EventType, appendEvent } from '../src/events.js'
-import { pathOffset, planRolling, sampleAtDistance, sampleTime } from '../src/motion/rolling.js'
+import { pathOffset, planRolling, sampleAtDistance, sampleDistance, sampleTime } from '../src/motion/rolling.js'
 import { capturesClean, fliesOver } from '../src/geometry.js'
 import { sampleMovingAt, sampleRimRoll, sampleRimRollAt } from '../src/motion/rimRoll.js'
 import { HeapKind, heapPop, heapPush, pushTime, heapTopA, heapTopB, heapTopKind, heapTopLive, heapTopT } from '../src/contacts/eventHeap.js'
@@ -30,6 +30,7 @@ import { endRide, landCrossing } from '../src/motion/rimOutcome.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
 import { outsideStep } from '../src/world/system.js'
+import { meetAt } from '../src/contacts/fixedMeet.js'
 
 export function integrationSystem(w: BallWorld): void {
   if (!w.stepping) outsideStep('integrationSystem', w)
@@ -351,6 +352,11 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
       return
     }
     const kind = P.nextKind[eid]!
+    if (kind === PathEvent.Meet) {
+      // a pair alone at a fixed contact tick meets here (src/contacts/fixedMeet.ts)
+      meetAt(w, eid)
+      continue
+    }
     const hole = P.nextHole[eid]!
     if (kind === PathEvent.RollEnd) {
       // (a tabulated ride that drops in is not sampled at its end: the capture puts the ball at the hole's
@@ -358,7 +364,8 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
       if (w.RimContact.ride[w.Ball.rim[eid]!] !== RIDE_DROPS) sampleRimRoll(w, eid, t)
     } else {
       const s = H[eid * HOT + H_NEXT_S]!
-      sampleAtDistance(w, eid, s)
+      sampleDistance[0] = s
+      sampleAtDistance(w, eid)
       P.s[eid] = s
       P.sHole[eid] = hole
     }

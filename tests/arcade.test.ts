@@ -1382,12 +1382,13 @@ describe('a launcher firing many balls from one point', () => {
 })
 
 describe('the fixed tick: events at one instant in the same order at every frame rate', () => {
-  // A held ball leaves at a tick T and meets a ball there, in a solve after the tick's own (which met two
-  // other balls at T). At 30 and 60 Hz both solves fell in one step, and the drain put the equal times in
-  // ball-id order; at 120 and 240 Hz a step ends on T, so the tick's own solve was drained first: the
-  // ordered events parted at the 1,783rd (T = 6175/120 s), though the states stayed the same. An event now
-  // keeps the start of the window that recorded it (src/events.ts), and at one instant the drain puts what a
-  // window starting there recorded after the rest, before the ball id.
+  // A held ball leaves at a tick T and meets a ball there, in a solve after the tick's own (which met another
+  // pair at T). At 30 and 60 Hz both solves fell in one step, and the drain put the equal times in ball-id
+  // order; at 120 and 240 Hz a step ends on T, so the tick's own solve was drained first: the ordered events
+  // parted (at the 1,783rd, T = 6175/120 s, before a pair alone at its tick met at its instant; now T =
+  // 5661/120 s, the 1,539th), though the states stayed the same. An event now keeps the start of the window
+  // that recorded it (src/events.ts), and at one instant the drain puts what a window starting there recorded
+  // after the rest, before the ball id.
   it('a launcher thrown at 8 balls a second for 52 s, captured and gutter balls removed: the same ordered events at 30, 60, 120 and 240 Hz', () => {
     const run = (hz: number): string[] => {
       const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed' })
@@ -1406,10 +1407,10 @@ describe('the fixed tick: events at one instant in the same order at every frame
       return out
     }
     const at30 = run(30)
-    const T = 6175 / 120
-    // the instant where they parted: two collisions there
+    const T = 5661 / 120
+    // the instant where they parted: two collisions there, the 1,539th and 1,540th events
     expect(at30.filter((e) => e.startsWith('collision') && e.endsWith(` ${T}`)).length).toBeGreaterThanOrEqual(2)
-    expect(at30.length).toBeGreaterThan(1783)
+    expect(at30.findIndex((e) => e.endsWith(` ${T}`))).toBe(1538)
     for (const hz of [60, 120, 240]) {
       const other = run(hz)
       const first = other.findIndex((e, i) => e !== at30[i])

@@ -20,7 +20,7 @@ import { MAX_COORDINATE, MAX_SPEED } from '../config/limits.js'
 import { CaptureVia, EventType, pushEvent as pushEventRaw, type CaptureViaCode, type EventBuffer, type EventTypeCode } from '../events.js'
 import { captureBall as captureRaw, emitHoleEvent as emitRaw, launchBallAt, restBall as restRaw } from '../motion/ballFate.js'
 import { planRimRoll as planRimRaw, sampleRimRoll as sampleRimRaw, startRimRoll as startRimRaw } from '../motion/rimRoll.js'
-import { planRolling as planRaw, sampleAtDistance as atDistanceRaw, sampleRolling as sampleRaw, startPathAt } from '../motion/rolling.js'
+import { planRolling as planRaw, sampleAtDistance as atDistanceRaw, sampleDistance, sampleRolling as sampleRaw, startPathAt } from '../motion/rolling.js'
 import { lockAtLip as lockRaw, releaseRim as releaseRaw } from '../world/rimSlots.js'
 import { pushId } from '../world/idLists.js'
 import { worldOfEvents, type BallWorld } from '../world/createWorld.js'
@@ -153,7 +153,8 @@ export function sampleAtDistance(world: BallWorld, ball: number, d: number): voi
   const w = checkWorld('sampleAtDistance', world)
   const b = checkBall(w, 'sampleAtDistance: ball', ball)
   if (w.Ball.mode[b] !== BallMode.Rolling) throw new RangeError(`sampleAtDistance: ball ${b} is not rolling (its mode is not rolling)`)
-  atDistanceRaw(w, b, within('sampleAtDistance: d', d, 0, 2 * MAX_COORDINATE))
+  sampleDistance[0] = within('sampleAtDistance: d', d, 0, 2 * MAX_COORDINATE)
+  atDistanceRaw(w, b)
   follow(w, b)
 }
 

@@ -16,6 +16,9 @@ export type SimulationMethod = (typeof METHODS)[number]
  */
 export const COLLISION_MODES = Object.freeze(['off', 'on', 'fixed'] as const)
 export type CollisionMode = (typeof COLLISION_MODES)[number]
+/** When the fixed tick's pairs alone at their tick meet (config.CONTACT_TIMING). */
+export const CONTACT_TIMINGS = Object.freeze(['instant', 'tick'] as const)
+export type ContactTiming = (typeof CONTACT_TIMINGS)[number]
 
 export interface BallPhysicsConfig {
   /** R, hole radius, px. */
@@ -81,6 +84,13 @@ export interface BallPhysicsConfig {
   PREDICTION_HORIZON: number
   /** With BALL_COLLISIONS 'fixed': the contact tick, s; contacts are solved at k·CONTACT_TICK. */
   CONTACT_TICK: number
+  /**
+   * With BALL_COLLISIONS 'fixed': 'instant' (default): a pair alone at its tick (each ball in no other pair,
+   * moved by no wall or rule) meets at the instant its balls touch, as the exact method's pairs do, and its
+   * collision event is at that instant; 'tick': every contact acts at its tick, up to one tick early (cheaper
+   * where most contacts are such pairs: about 15 % of a gas's contact time).
+   */
+  CONTACT_TIMING: ContactTiming
   /**
    * With BALL_COLLISIONS 'fixed' and BALL_RESTITUTION above 0: most halvings of CONTACT_TICK taken where
    * balls close on their nearest partner by more than half their size a tick, which would otherwise lose an
@@ -172,6 +182,7 @@ export const DEFAULT_CONFIG: Readonly<BallPhysicsConfig> = Object.freeze({
   BALL_COLLISIONS: 'off',
   PREDICTION_HORIZON: 0.1,
   CONTACT_TICK: 1 / 120,
+  CONTACT_TIMING: 'instant',
   CONTACT_TRAVEL_HALVINGS: 4,
   CONTACT_ITERATIONS: 32,
   CONTACT_WORK_BUDGET: 0,
@@ -192,7 +203,7 @@ interface Range {
 }
 
 /** Keys whose value is one of a list of names. */
-export type ChoiceKey = 'CAPTURE_WINDOW' | 'RIM_MODEL' | 'METHOD' | 'BALL_COLLISIONS'
+export type ChoiceKey = 'CAPTURE_WINDOW' | 'RIM_MODEL' | 'METHOD' | 'BALL_COLLISIONS' | 'CONTACT_TIMING'
 type NumericKey = Exclude<keyof BallPhysicsConfig, ChoiceKey>
 
 /** Allowed values of every key that names a choice. */
@@ -201,6 +212,7 @@ export const CONFIG_CHOICES: Readonly<Record<ChoiceKey, readonly string[]>> = Ob
   RIM_MODEL: RIM_MODELS,
   METHOD: METHODS,
   BALL_COLLISIONS: COLLISION_MODES,
+  CONTACT_TIMING: CONTACT_TIMINGS,
 })
 
 /** Allowed range of every numeric key. Open lower bounds are for values that divide or must be positive. */

@@ -21,6 +21,8 @@ export function delayMotion(w: BallWorld, eid: number, delta: number): void {
     w.pathHot[eid * HOT + H_T0]! += delta
   } else return
   w.pathHot[eid * HOT + H_NEXT_T]! += delta
+  // a fixed tick's pair that was to meet (src/contacts/fixedMeet.ts): this ball no longer meets the other then
+  if (w.meet !== null && w.meet.with[eid] !== 0) w.meet.t[eid]! += delta
 }
 
 /** The time a moving ball's stored state is at: its last event on the current path (or rim roll). */

@@ -77,6 +77,7 @@ export function startPath(w: BallWorld, eid: number): void {
   P.sHole[eid] = 0
   P.fromHole[eid] = 0
   if (C !== null) C.partner[eid] = 0
+  if (w.meet !== null) w.meet.with[eid] = 0 // a fixed tick's meeting at its instant was the old path's
   B.x[eid] = x
   B.y[eid] = y
   // the closed form's velocity at the origin, ux·v0 (what every later sample of the path gives; without
@@ -367,8 +368,9 @@ export function pathOffset(w: BallWorld, eid: number, hole: number): number {
   return (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
 }
 
-/** The time sampleRollingAt samples at, s (a slot: a double passed to a function V8 does not inline is boxed). */
+/** The time sampleRollingAt samples at, s, and the distance sampleAtDistance samples at, px (slots: a boxed double otherwise). */
 export const sampleTime = new Float64Array(1)
+export const sampleDistance = new Float64Array(1)
 
 /** Ball state at time t on its straight path (clamped at its stop). */
 export function sampleRolling(w: BallWorld, eid: number, t: number): void {
@@ -399,8 +401,9 @@ export function sampleRollingAt(w: BallWorld, eid: number): void {
   P.speed[eid] = v
 }
 
-/** Ball state at distance d along its straight path: exact geometry for an event found at that distance. */
-export function sampleAtDistance(w: BallWorld, eid: number, d: number): void {
+/** Ball state at distance sampleDistance[0] along its straight path: exact geometry for an event found there. */
+export function sampleAtDistance(w: BallWorld, eid: number): void {
+  const d = sampleDistance[0]!
   const P = w.Path
   const B = w.Ball
   const H = w.pathHot

@@ -21,6 +21,7 @@ import type { BallPhysicsConfig } from '../config/design.js'
 import { createEventBuffer, type EventBuffer } from '../events.js'
 import { createCollisionState, growCollisionState, type CollisionState } from './contactState.js'
 import { createFixedState, growFixedMass, grownTo, type FixedContactState } from './fixedState.js'
+import { createMeetState, growMeetState, type MeetState } from './meetState.js'
 import { GRID_MIN_HOLES } from '../config/tolerances.js'
 import { createHoleGrid, type HoleGrid } from './holeGrid.js'
 import { createHoleTable, type HoleCells, type HoleTable } from './holeTable.js'
@@ -85,6 +86,8 @@ export interface BallWorldData {
   collide: CollisionState | null
   /** fixed-tick contact state when config.BALL_COLLISIONS is 'fixed', else null */
   fixed: FixedContactState | null
+  /** the fixed tick's pairs alone at their tick that meet at their instant (src/contacts/fixedMeet.ts); null without it */
+  meet: MeetState | null
   /** true while runSchedule runs (a nested step is refused) */
   stepping: boolean
   /**
@@ -177,6 +180,7 @@ export function createWorldData(config: Readonly<BallPhysicsConfig>, capacity: n
     events: createEventBuffer(),
     collide: config.BALL_COLLISIONS === 'on' ? createCollisionState(capacity, config.BALL_RADIUS) : null,
     fixed: config.BALL_COLLISIONS === 'fixed' ? createFixedState(capacity, config) : null,
+    meet: config.BALL_COLLISIONS === 'fixed' ? createMeetState(capacity) : null,
     stepping: false,
     ballStores: [],
     held: createIdList(16),
@@ -226,6 +230,7 @@ export function ensureCapacity(world: BallWorld, eid: number): void {
   if (world.collide !== null) growCollisionState(world.collide, cap)
   if (world.fixed !== null) {
     growFixedMass(world.fixed, cap)
+    growMeetState(world.meet!, cap)
     growCollisionState(world.fixed.rest, cap)
   }
   world.capacity = cap

@@ -282,17 +282,24 @@ describe('fixed tick: halved where balls cover many spacings a tick', () => {
     // every pair stays listed through the first halvings (the box bounds the reach), so a model that counted a
     // pair as one candidate never halved: the visits bound on restitution then drained the gas to 0.72 of its
     // energy in 1/6 s
-    const sim = gas(300, 1e5, { side: 100, radius: 0.3, seed: 11 })
-    const ke = () => sim.balls().reduce((e, b) => e + sim.ballState(b).vx ** 2 + sim.ballState(b).vy ** 2, 0)
-    const start = ke()
-    let halved = 0
-    for (let i = 0; i < 10; i++) {
-      sim.step(1 / 60)
-      halved = Math.max(halved, sim.world.fixed!.halvings)
+    // energy of four draws: the gas is chaotic, and one draw's share says little (over 24 draws, 0.961–1.000,
+    // mean 0.9925; the failure above gave 0.72)
+    const kept: number[] = []
+    for (const seed of [11, 12, 13, 14]) {
+      const sim = gas(300, 1e5, { side: 100, radius: 0.3, seed })
+      const ke = () => sim.balls().reduce((e, b) => e + sim.ballState(b).vx ** 2 + sim.ballState(b).vy ** 2, 0)
+      const start = ke()
+      let halved = 0
+      for (let i = 0; i < 10; i++) {
+        sim.step(1 / 60)
+        halved = Math.max(halved, sim.world.fixed!.halvings)
+      }
+      expect(halved).toBeGreaterThanOrEqual(4)
+      kept.push(ke() / start)
     }
-    expect(halved).toBeGreaterThanOrEqual(4)
-    expect(ke() / start).toBeGreaterThan(0.98)
-  })
+    expect(Math.min(...kept)).toBeGreaterThan(0.95)
+    expect(kept.reduce((a, b) => a + b, 0) / kept.length).toBeGreaterThan(0.985)
+  }, 60_000)
 
   it('light balls pumped by heavy ones (restitution 1): past MAX_TICK_CONTACTS contacts in a contact tick of the clock a light ball meets balls 100 times heavier without restitution, so the crowd keeps its energy on fewer ticks', () => {
     // 50 tiny balls of mass 3.5e5 at 5,000 px/s, 8 of mass 4.3e6 at 3e4 px/s and 80 light ones at 1e5 px/s in

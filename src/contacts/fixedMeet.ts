@@ -1,0 +1,359 @@
+// The fixed-tick method's isolated pairs meet at their instant (config.BALL_COLLISIONS = 'fixed'). A tick
+// solves every contact at the tick, up to one tick before the two balls touch: the pair leaves from where
+// the balls were at the tick, not from where they touch, and along a burst's paths that error (up to the
+// approach speed times a tick) changes which hole a ball ends in. Where a pair is alone at its tick (each of
+// its balls in no other pair of the tick, rolling, moved by no wall, no rest rule and no projection, the two
+// touching within the tick on their own paths, each path's own next event later than that), the tick's
+// impulse is dropped and the pair is given a Meet event on both paths at the instant the two touch on
+// their paths (decelerations included). There the integration takes the two-body law with the velocities
+// the balls have then, as the exact method does, and each ball starts a fresh path from that instant
+// (meetAt). Nothing else can reach either ball before the instant: no third ball within the tick (the pair
+// is alone in it), no event of its own (each path's next event is later), and the next tick is not before
+// it. The pair's collision event is given at the instant, not at the tick. Between the tick and the
+// instant: walls or holes changed plan each path again from where it is, and the meeting stays its next
+// event unless the new path has one of its own before it (keepMeet); a ball given a new path (a command's
+// velocity, which also asks for a solve that pairs the balls again) gives up its meeting, and a ball whose
+// partner gave it up goes on as it was: neither takes the impulse, and the next solve finds the pair again.
+// So does a ball that a step out of passes holds back (src/motion/pause.ts).
+import { BallMode } from '../../components/Ball.js'
+import { PathEvent } from '../../components/Path.js'
+import { appendCollision, EventType } from '../events.js'
+import { launchBall } from '../motion/ballFate.js'
+import { pathStart, planRolling, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
+import type { BallWorld } from '../world/createWorld.js'
+import { instantOut, tickInstant } from '../world/gridTime.js'
+import { grownTo, type FixedContactState } from '../world/fixedState.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
+import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, resolveContactIn, strikeLeavesRim } from './law.js'
+import { MAX_SPEED } from '../config/limits.js'
+
+/** Newton steps toward the instant of touch on the two paths, from the straight-line instant */
+const TOUCH_STEPS = 8
+/**
+ * the gap at that instant within which the steps have found it: this share of the two radii, or, far from
+ * the origin, this many times the positions' size (their rounding: a gap 1e9 px out is known to about 1e-7 px)
+ */
+const TOUCH_TOLERANCE = 1e-9
+const ROUNDING = 1e-15
+
+/** the law's slots: CONTACT_SPEED_LIMIT, MAX_SPEED, then the velocities after the contact (a, b) and its impulse */
+const LAW = new Float64Array([0, MAX_SPEED, 0, 0, 0, 0, 0])
+
+/** each packed ball's pairs in the tick's last pair list (scratch) */
+let degree = new Int32Array(256)
+/** by ball id: the stamp of the tick that timed its pair (scratch for dropping the tick's collision events) */
+let timedAt = new Uint32Array(256)
+/** the stamp (a slot: a module-level number that may leave the small integers is boxed at every write) */
+const STAMP = new Uint32Array(1)
+
+/** scratch of a pair's state at the touch: a's position and velocity, b's, the instant */
+const P0 = new Float64Array(10)
+const AXp = 0
+const AYp = 1
+const AVX = 2
+const AVY = 3
+const BXp = 4
+const BYp = 5
+const BVX = 6
+const BVY = 7
+const TT = 8
+/** the next tick's instant: no pair is timed past it */
+const UNTIL = 9
+
+/**
+ * After a tick's solve, before its changes are applied: each pair alone at the tick is given a Meet event at
+ * its instant instead of its impulse now (see above). `eventsFrom`: the events buffer's count when the tick
+ * began (the tick's collision events of those pairs are dropped).
+ */
+export function timeMeets(w: BallWorld, F: FixedContactState, eventsFrom: number): void {
+  const n = F.n
+  const pairs = F.pairCount
+  if (pairs === 0 || w.config.CONTACT_TIMING !== 'instant') return
+  if (degree.length < n) degree = grownTo(degree, 2 * n)
+  degree.fill(0, 0, n)
+  for (let p = 0; p < pairs; p++) {
+    degree[F.pairA[p]!]!++
+    degree[F.pairB[p]!]!++
+  }
+  tickInstant(w, F.halvings, F.nextTick)
+  P0[UNTIL] = instantOut[0]!
+  let timed = 0
+  for (let p = 0; p < pairs; p++) {
+    const a = F.pairA[p]!
+    const b = F.pairB[p]!
+    if (degree[a] !== 1 || degree[b] !== 1 || !alone(w, F, a, b)) continue
+    const ea = F.id[a]!
+    const eb = F.id[b]!
+    if (timed === 0) {
+      STAMP[0] = STAMP[0] === 0xffffffff ? 1 : STAMP[0]! + 1
+      if (STAMP[0] === 1) timedAt.fill(0)
+    }
+    if (timedAt.length < w.capacity) timedAt = grownTo(timedAt, w.capacity)
+    timedAt[ea] = STAMP[0]!
+    timedAt[eb] = STAMP[0]!
+    timed++
+    // the tick's impulse dropped: the two keep their paths, up to the instant
+    F.changed[a] = 0
+    F.changed[b] = 0
+    setMeet(w, ea, eb)
+    setMeet(w, eb, ea)
+  }
+  if (timed === 0) return
+  w.meet!.timed += timed
+  dropTickCollisions(w, eventsFrom)
+}
+
+/**
+ * Whether packed pair (a, b), each in no other pair, is alone at the tick as above; if so the instant of touch
+ * and the balls' states there are in P0.
+ */
+function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolean {
+  // the solve changed their velocities only, by a pair's impulse (no wall's bit, no projection's)
+  const ca = F.changed[a]!
+  const cb = F.changed[b]!
+  if ((ca & 1) === 0 || (cb & 1) === 0 || ((ca | cb) & ~(1 | 32)) !== 0) return false
+  const B = w.Ball
+  const ea = F.id[a]!
+  const eb = F.id[b]!
+  if (B.mode[ea] !== BallMode.Rolling || B.mode[eb] !== BallMode.Rolling) return false
+  // momentum passed between the two alone (a ball at rest held like a wall takes none); the velocities
+  // before the solve are the stores', the rest the tick's packed arrays
+  const vax = B.vx[ea]!
+  const vay = B.vy[ea]!
+  const vbx = B.vx[eb]!
+  const vby = B.vy[eb]!
+  const ima = F.im[a]!
+  const imb = F.im[b]!
+  const dax = F.vx[a]! - vax
+  const day = F.vy[a]! - vay
+  const dbx = F.vx[b]! - vbx
+  const dby = F.vy[b]! - vby
+  // (absolute values written out: Math.abs, where V8 calls it as a function, boxes its argument)
+  const px = dax * imb + dbx * ima
+  const py = day * imb + dby * ima
+  const scale = imb * ((dax < 0 ? -dax : dax) + (day < 0 ? -day : day))
+  if (!(scale > 0) || (px < 0 ? -px : px) + (py < 0 ? -py : py) > 1e-9 * scale) return false
+  // the straight-line touch (exact without rolling deceleration), else Newton's steps on the gap along the
+  // two paths from there
+  const S = F.r[a]! + F.r[b]!
+  const xa = F.x[a]!
+  const ya = F.y[a]!
+  const dx = F.x[b]! - xa
+  const dy = F.y[b]! - ya
+  const ux = vbx - vax
+  const uy = vby - vay
+  const c = dx * dx + dy * dy - S * S
+  const half = dx * ux + dy * uy
+  if (!(c > 0) || !(half < 0)) return false
+  const disc = half * half - (ux * ux + uy * uy) * c
+  if (!(disc >= 0)) return false
+  const now = w.time
+  const until = P0[UNTIL]!
+  let t = now + c / (-half + Math.sqrt(disc))
+  let found = w.config.ROLLING_DECEL === 0
+  const tol = TOUCH_TOLERANCE * S + ROUNDING * ((xa < 0 ? -xa : xa) + (ya < 0 ? -ya : ya))
+  for (let k = 0; !found && k < TOUCH_STEPS && t > now && t <= until; k++) {
+    P0[TT] = t
+    statesAt(w, ea, eb)
+    const gx = P0[BXp]! - P0[AXp]!
+    const gy = P0[BYp]! - P0[AYp]!
+    const dist = Math.sqrt(gx * gx + gy * gy)
+    const gap = dist - S
+    const rate = (gx * (P0[BVX]! - P0[AVX]!) + gy * (P0[BVY]! - P0[AVY]!)) / dist
+    if (!(rate < 0)) return false
+    if (gap <= tol && gap >= -tol) found = true
+    else t -= gap / rate
+  }
+  if (!found || !(t > now && t <= until)) return false
+  // nothing of their own before it (a meeting of an earlier tick's, for the same pair, given up: a command
+  // between the two asked for this solve)
+  if (w.Path.nextKind[ea] === PathEvent.Meet) planRolling(w, ea)
+  if (w.Path.nextKind[eb] === PathEvent.Meet) planRolling(w, eb)
+  const H = w.pathHot
+  if (!(H[ea * HOT + H_NEXT_T]! > t) || !(H[eb * HOT + H_NEXT_T]! > t)) return false
+  P0[TT] = t
+  return true
+}
+
+/** Both balls' states at time P0[TT] on their paths (both rolling), into P0. */
+function statesAt(w: BallWorld, ea: number, eb: number): void {
+  rollingAt(w, ea, AXp)
+  rollingAt(w, eb, BXp)
+}
+
+/**
+ * Rolling ball e's position and velocity at time P0[TT] on its path, into P0 from slot k on: the formulas of
+ * src/contacts/evalMotion.ts (evalBall), term for term, so the state is the one the stores get.
+ */
+function rollingAt(w: BallWorld, e: number, k: number): void {
+  const H = w.pathHot
+  const h = e * HOT
+  const v0 = H[h + H_V0]!
+  const decel = w.config.ROLLING_DECEL
+  let tau = P0[TT]! - H[h + H_T0]!
+  if (tau < 0) tau = 0
+  if (decel > 0 && tau * decel > v0) tau = v0 / decel
+  const d = v0 * tau - 0.5 * decel * tau * tau
+  const v = v0 - decel * tau
+  const ux = H[h + H_UX]!
+  const uy = H[h + H_UY]!
+  P0[k] = H[h + H_X0]! + ux * d
+  P0[k + 1] = H[h + H_Y0]! + uy * d
+  P0[k + 2] = ux * v
+  P0[k + 3] = uy * v
+}
+
+/** Ball e's path meets ball other at P0's instant: its next event. */
+function setMeet(w: BallWorld, e: number, other: number): void {
+  const M = w.meet!
+  M.with[e] = other
+  M.t[e] = P0[TT]!
+  meetEvent(w, e)
+}
+
+/** Ball e's next event: its meeting (M.with, M.t), on its present path. */
+function meetEvent(w: BallWorld, e: number): void {
+  const H = w.pathHot
+  const h = e * HOT
+  const t = w.meet!.t[e]!
+  const v0 = H[h + H_V0]!
+  const decel = w.config.ROLLING_DECEL
+  const tau = t - H[h + H_T0]!
+  H[h + H_NEXT_T] = t
+  H[h + H_NEXT_S] = v0 * tau - 0.5 * decel * tau * tau
+  w.Path.nextKind[e] = PathEvent.Meet
+  w.Path.nextHole[e] = w.meet!.with[e]!
+}
+
+/**
+ * Ball b's path was planned again from where it is, at the same velocity (src/commands/replan.ts: the walls
+ * or the holes changed), its meeting with `other` cleared by the new path: the meeting is its next event
+ * again when the new path's own next event is later.
+ */
+export function keepMeet(w: BallWorld, b: number, other: number): void {
+  const M = w.meet!
+  if (!(w.pathHot[b * HOT + H_NEXT_T]! > M.t[b]!)) return
+  M.with[b] = other
+  meetEvent(w, b)
+}
+
+/** Drops the collision events the tick gave the pairs it timed (each pair's event comes at its instant). */
+function dropTickCollisions(w: BallWorld, from: number): void {
+  const ev = w.events
+  let out = from
+  for (let i = from; i < ev.count; i++) {
+    if (ev.type[i] === EventType.Collision && timedAt[ev.ball[i]!] === STAMP[0] && w.Path.nextHole[ev.ball[i]!] === ev.other[i]) continue
+    if (out !== i) {
+      ev.type[out] = ev.type[i]!
+      ev.ball[out] = ev.ball[i]!
+      ev.hole[out] = ev.hole[i]!
+      ev.time[out] = ev.time[i]!
+      ev.delta[out] = ev.delta[i]!
+      ev.speed[out] = ev.speed[i]!
+      ev.hasDV[out] = ev.hasDV[i]!
+      ev.via[out] = ev.via[i]!
+      ev.other[out] = ev.other[i]!
+      ev.impulse[out] = ev.impulse[i]!
+      ev.from[out] = ev.from[i]!
+    }
+    out++
+  }
+  ev.count = out
+}
+
+/**
+ * Ball eid's Meet event, at time t (the integration): with its partner's Meet still at t, the two-body law
+ * with both balls' states at t, and a fresh path from t for both (the partner's Meet is then replaced by its
+ * new path's own next event: whether the integration advances it before or after this ball in the pass, it
+ * goes on from t); with the partner's path changed since, this ball goes on as it was.
+ */
+export function meetAt(w: BallWorld, eid: number): void {
+  const F = w.fixed!
+  const M = w.meet!
+  const H = w.pathHot
+  const t = H[eid * HOT + H_NEXT_T]!
+  const other = w.Path.nextHole[eid]!
+  M.with[eid] = 0
+  if (M.t[eid] !== t || w.Ball.live[other] !== 1 || M.with[other] !== eid || M.t[other] !== t || w.Path.nextKind[other] !== PathEvent.Meet || H[other * HOT + H_NEXT_T] !== t) {
+    // the partner's path changed: this one is planned again as it was
+    planRolling(w, eid)
+    return
+  }
+  M.with[other] = 0
+  P0[TT] = t
+  statesAt(w, eid, other)
+  const gx = P0[BXp]! - P0[AXp]!
+  const gy = P0[BYp]! - P0[AYp]!
+  const dist = Math.sqrt(gx * gx + gy * gy)
+  const nx = gx / dist
+  const ny = gy / dist
+  const approach = -((P0[BVX]! - P0[AVX]!) * nx + (P0[BVY]! - P0[AVY]!) * ny)
+  // the two-body law of src/contacts/law.ts (resolveContact), written out: below BALL_SETTLE_SPEED without
+  // restitution, as the tick's solve; where a component would leave beyond CONTACT_SPEED_LIMIT or MAX_SPEED,
+  // resolveContact itself (its lower restitution). Not a call for every meeting: where V8 did not inline it,
+  // its doubles were boxed (a pumped box's dozens of meetings a tick, tests/allocation.test.ts)
+  const ma = F.mass[eid]!
+  const mb = F.mass[other]!
+  const settle = w.config.BALL_SETTLE_SPEED
+  const e = approach >= settle ? w.config.BALL_RESTITUTION : 0
+  const j = approach > 0 ? ((1 + e) * approach) / (1 / ma + 1 / mb) : 0
+  const ax = P0[AVX]! - (j / ma) * nx
+  const ay = P0[AVY]! - (j / ma) * ny
+  const bx = P0[BVX]! + (j / mb) * nx
+  const by = P0[BVY]! + (j / mb) * ny
+  LAW[0] = w.config.CONTACT_SPEED_LIMIT
+  const lim = LAW[0]! < LAW[1]! ? LAW[0]! : LAW[1]!
+  if (ax > lim || ax < -lim || ay > lim || ay < -lim || bx > lim || bx < -lim || by > lim || by < -lim) {
+    const I = contactIn
+    I[CI_MA] = ma
+    I[CI_MB] = mb
+    I[CI_VAX] = P0[AVX]!
+    I[CI_VAY] = P0[AVY]!
+    I[CI_VBX] = P0[BVX]!
+    I[CI_VBY] = P0[BVY]!
+    I[CI_NX] = nx
+    I[CI_NY] = ny
+    I[CI_E] = e
+    I[CI_LIMIT] = LAW[0]!
+    resolveContactIn()
+    const o = contactOut
+    LAW[2] = o.vax
+    LAW[3] = o.vay
+    LAW[4] = o.vbx
+    LAW[5] = o.vby
+    LAW[6] = o.impulse
+  } else {
+    LAW[2] = ax
+    LAW[3] = ay
+    LAW[4] = bx
+    LAW[5] = by
+    LAW[6] = j
+  }
+  if (approach >= settle) {
+    const ev = w.events
+    const i = appendCollision(ev, eid < other ? eid : other, eid < other ? other : eid)
+    ev.time[i] = t
+    ev.speed[i] = approach
+    ev.impulse[i] = LAW[6]!
+  }
+  pathStart[PS_X] = P0[BXp]!
+  pathStart[PS_Y] = P0[BYp]!
+  pathStart[PS_VX] = LAW[4]!
+  pathStart[PS_VY] = LAW[5]!
+  pathStart[PS_T] = t
+  restart(w, other)
+  pathStart[PS_X] = P0[AXp]!
+  pathStart[PS_Y] = P0[AYp]!
+  pathStart[PS_VX] = LAW[2]!
+  pathStart[PS_VY] = LAW[3]!
+  pathStart[PS_T] = t
+  restart(w, eid)
+}
+
+/** A fresh path for ball eid from pathStart (its state at the instant, the new velocity). */
+function restart(w: BallWorld, eid: number): void {
+  w.Ball.x[eid] = pathStart[PS_X]!
+  w.Ball.y[eid] = pathStart[PS_Y]!
+  strikeLeavesRim(w, eid)
+  launchBall(w, eid)
+}

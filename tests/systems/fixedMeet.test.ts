@@ -1,0 +1,185 @@
+// The fixed tick's pairs alone at their tick meet at their instant (src/contacts/fixedMeet.ts).
+import { describe, expect, it } from 'vitest'
+import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type BallPhysics, type ConfigOverrides } from '../../src/index'
+import { rng } from '../helpers'
+import { delayMotion } from '../../src/motion/pause'
+
+const FIXED: ConfigOverrides = { BALL_COLLISIONS: 'fixed' }
+
+function run(sim: BallPhysics, steps: number, dt: number): BallEvent[] {
+  const out: BallEvent[] = []
+  for (let i = 0; i < steps; i++) {
+    sim.step(dt)
+    out.push(...sim.drainEvents())
+  }
+  return out
+}
+
+/** Every ball's state, to the bit. */
+function states(sim: BallPhysics): string {
+  return sim
+    .balls()
+    .map((b) => {
+      const s = sim.ballState(b)
+      return `${b}:${s.mode}:${s.x}:${s.y}:${s.vx}:${s.vy}`
+    })
+    .join(' ')
+}
+
+/** Two balls on the default panel's deceleration meeting at an angle, the second slower and heavier. */
+function glancing(config: ConfigOverrides): BallPhysics {
+  const sim = createBallPhysics({ BALL_RESTITUTION: 0.9, ...config })
+  sim.addBall({ x: 100, y: 300, vx: 420, vy: -130 })
+  sim.addBall({ x: 190, y: 262, vx: -60, vy: 15, mass: 2 })
+  return sim
+}
+
+describe('fixed tick: a pair alone at its tick meets at its instant', () => {
+  it('with deceleration, at an angle, unequal masses: the time, the velocities and the positions of the exact method', () => {
+    const exact = glancing({ BALL_COLLISIONS: 'on' })
+    const fixed = glancing(FIXED)
+    const ee = run(exact, 60, 1 / 120).filter((e) => e.type === 'collision')
+    const ef = run(fixed, 60, 1 / 120).filter((e) => e.type === 'collision')
+    expect(ee).toHaveLength(1)
+    expect(ef).toHaveLength(1)
+    // the exact method stops its search within 1e-7 px of the touch: its instant is that much earlier
+    expect(Math.abs(ef[0]!.time - ee[0]!.time)).toBeLessThan(1e-9)
+    expect(ef[0]!.time * 120 % 1).toBeGreaterThan(0.01)
+    expect(ef[0]!.impulse).toBeCloseTo(ee[0]!.impulse, 5)
+    for (const b of exact.balls()) {
+      const s = exact.ballState(b)
+      const f = fixed.ballState(b)
+      expect(Math.abs(f.x - s.x) + Math.abs(f.y - s.y)).toBeLessThan(1e-5)
+      expect(Math.abs(f.vx - s.vx) + Math.abs(f.vy - s.vy)).toBeLessThan(1e-5)
+    }
+    expect(fixed.world.meet!.timed).toBe(1)
+  })
+
+  it('the same bits at 30, 60, 120 and 240 Hz, and momentum kept, over a burst of 40 balls on the panel', () => {
+    const burst = (hz: number): { bits: string; sim: BallPhysics } => {
+      const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 0.9 })
+      addPanel(sim)
+      sim.setWalls({ minX: 0, minY: 0, maxX: DEFAULT_PANEL.width, maxY: DEFAULT_PANEL.height, restitution: 0.9, open: { bottom: true } })
+      const r = rng(5)
+      for (let i = 0; i < 40; i++) {
+        const x = 30 + 40 * (i % 10) + (r() - 0.5) * 16
+        const y = DEFAULT_PANEL.height - 150 + 40 * Math.floor(i / 10) + (r() - 0.5) * 16
+        const speed = 175 + (0.2 + 0.7 * r()) * 525
+        const angle = (r() - 0.5) * 0.8
+        sim.addBall({ x, y, vx: speed * Math.sin(angle), vy: -speed * Math.cos(angle) })
+      }
+      run(sim, hz, 1 / hz)
+      return { bits: states(sim), sim }
+    }
+    const at30 = burst(30)
+    expect(at30.sim.world.meet!.timed).toBeGreaterThan(10)
+    for (const hz of [60, 120, 240]) expect(burst(hz).bits).toBe(at30.bits)
+  })
+
+  it("with CONTACT_TIMING 'tick' the pair meets at its tick, up to one tick early", () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_TIMING: 'tick' })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    const b = sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+    const ev = run(sim, 60, 1 / 120).filter((e) => e.type === 'collision')
+    expect(ev).toHaveLength(1)
+    // paired at 18/120 s, 0.006 s before the touch
+    expect(ev[0]!.time).toBe(18 / 120)
+    expect(sim.world.meet!.timed).toBe(0)
+    expect(sim.ballState(a).vx).toBeCloseTo(-200, 9)
+    // leaving from where they were at the tick: 3 px apart, not touching
+    expect(sim.ballState(b).x - sim.ballState(a).x).toBeCloseTo(22 + 3 + 500 * (0.5 - 0.15), 9)
+    expect(() => createBallPhysics({ ...FIXED, CONTACT_TIMING: 'exact' as never })).toThrow(/CONTACT_TIMING/)
+  })
+
+  it('a pair and its instant between steps: a snapshot taken there steps on to the same bits', () => {
+    // touch at 0.156 s, paired at the tick 18/120 s = 0.15 s; steps of 1/480 s end at 0.1541667 s in between
+    const make = () => {
+      const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+      sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+      sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+      return sim
+    }
+    const whole = make()
+    run(whole, 74, 1 / 480)
+    const bytes = whole.snapshot()
+    run(whole, 200, 1 / 480)
+    const copy = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    copy.restore(bytes)
+    const ev = run(copy, 200, 1 / 480).filter((e) => e.type === 'collision')
+    expect(ev).toHaveLength(1)
+    expect(Math.abs(ev[0]!.time - 0.156)).toBeLessThan(1e-12)
+    expect(states(copy)).toBe(states(whole))
+  })
+
+  it('a new velocity given to one ball before the instant: the solve it asks for times the pair again', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    const b = sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+    run(sim, 74, 1 / 480)
+    expect(sim.drainEvents()).toHaveLength(0)
+    // at 74/480 s: a at 46.25, b at 69.1667, 0.91667 px apart, now closing at 450 px/s
+    sim.setBallVelocity(a, 250, 0)
+    const touch = 74 / 480 + (100 - 22 - 500 * (74 / 480)) / 450
+    const ev = run(sim, 200, 1 / 480).filter((e) => e.type === 'collision')
+    expect(ev).toHaveLength(1)
+    expect(Math.abs(ev[0]!.time - touch)).toBeLessThan(1e-12)
+    expect(sim.world.meet!.timed).toBe(2)
+    // equal masses, e = 1: exchanged
+    expect(sim.ballState(a).vx).toBeCloseTo(-200, 9)
+    expect(sim.ballState(b).vx).toBeCloseTo(250, 9)
+  })
+
+  it('walls set between the tick and the instant: the two still meet at it', () => {
+    const make = (walls: boolean) => {
+      const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+      sim.addBall({ x: 100, y: 100, vx: 300, vy: 0 })
+      sim.addBall({ x: 200, y: 100, vx: -200, vy: 0 })
+      run(sim, 74, 1 / 480)
+      if (walls) sim.setWalls({ minX: 0, minY: 0, maxX: 1000, maxY: 1000, restitution: 1 })
+      return sim
+    }
+    const walled = make(true)
+    const ev = run(walled, 20, 1 / 480).filter((e) => e.type === 'collision')
+    expect(ev).toHaveLength(1)
+    expect(Math.abs(ev[0]!.time - 0.156)).toBeLessThan(1e-12)
+    const open = make(false)
+    run(open, 20, 1 / 480)
+    for (const b of open.balls()) {
+      expect(walled.ballState(b).x).toBeCloseTo(open.ballState(b).x, 9)
+      expect(walled.ballState(b).vx).toBe(open.ballState(b).vx)
+    }
+  })
+
+  it('a ball of the pair delayed (a step out of passes waits it out): neither takes the impulse at the instant', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    const b = sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+    run(sim, 74, 1 / 480)
+    const M = sim.world.meet!
+    expect([M.with[a], M.with[b]]).toEqual([b, a])
+    expect(M.t[a]).toBe(M.t[b])
+    // as src/motion/pause.ts does to a ball still behind at a step's end: its motion 1 ms later
+    delayMotion(sim.world, a, 0.001)
+    const ev = run(sim, 200, 1 / 480).filter((e) => e.type === 'collision')
+    expect(ev).toHaveLength(1)
+    // met by the next tick instead
+    expect(ev[0]!.time).toBe(19 / 120)
+    expect(sim.ballState(a).vx + sim.ballState(b).vx).toBeCloseTo(100, 9)
+    expect(sim.ballState(b).x - sim.ballState(a).x).toBeGreaterThan(22)
+  })
+
+  it('one ball of the pair removed before the instant: the other goes on as it was', () => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    const b = sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+    run(sim, 74, 1 / 480)
+    sim.removeBall(b)
+    // a new ball takes b's id and is put down far away, at rest
+    const c = sim.addBall({ x: 400, y: 400, vx: 0, vy: 0 })
+    const ev = run(sim, 100, 1 / 480)
+    expect(ev.filter((e) => e.type === 'collision')).toHaveLength(0)
+    expect(sim.ballState(a).vx).toBe(300)
+    expect(sim.ballState(a).x).toBeCloseTo(300 * (174 / 480), 9)
+    expect(sim.ballState(c).x).toBe(400)
+  })
+})
