@@ -6,8 +6,8 @@
 // touching within the tick on their own paths, each path's own next event later than that), the tick's
 // impulse is dropped and the pair is given a Meet event on both paths at the instant the two touch on
 // their paths (decelerations included). There the integration takes the two-body law with the velocities
-// the balls have then, as the exact method does, and each ball starts a fresh path from that instant
-// (meetAt). Nothing else can reach either ball before the instant: no third ball within the tick (the pair
+// the balls have then, as the exact method does, at the restitution the tick's solve gave the pair (its rules
+// can take some or all of it), and each ball starts a fresh path from that instant (meetAt). Nothing else can reach either ball before the instant: no third ball within the tick (the pair
 // is alone in it), no event of its own (each path's next event is later), and the next tick is not before
 // it. The pair's collision event is given at the instant, not at the tick. Between the tick and the
 // instant: walls or holes changed plan each path again from where it is, and the meeting stays its next
@@ -47,7 +47,7 @@ let timedAt = new Uint32Array(256)
 const STAMP = new Uint32Array(1)
 
 /** scratch of a pair's state at the touch: a's position and velocity, b's, the instant */
-const P0 = new Float64Array(10)
+const P0 = new Float64Array(11)
 const AXp = 0
 const AYp = 1
 const AVX = 2
@@ -59,6 +59,8 @@ const BVY = 7
 const TT = 8
 /** the next tick's instant: no pair is timed past it */
 const UNTIL = 9
+/** the restitution the tick's solve gave the pair */
+const EFF = 10
 
 /**
  * After a tick's solve, before its changes are applied: each pair alone at the tick is given a Meet event at
@@ -149,7 +151,26 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   if (!(disc >= 0)) return false
   const now = w.time
   const until = P0[UNTIL]!
-  let t = now + c / (-half + Math.sqrt(disc))
+  const tau = c / (-half + Math.sqrt(disc))
+  // the restitution the tick's solve gave the pair (its rules take some or all of it: a pair met past its
+  // visits, a pumped light ball, the speed limit, a closing slower than BALL_SETTLE_SPEED), along the normal
+  // at the straight-line touch, as the solve's: the meeting takes the same, so the balls leave as fast as the
+  // tick's widening rounds paired them for (a light ball the solve sent on inelastically, met at its instant
+  // at the full restitution, went through a ball it was not paired with)
+  const mx = dx + ux * tau
+  const my = dy + uy * tau
+  const m = Math.sqrt(mx * mx + my * my)
+  const nx = mx / m
+  const ny = my / m
+  const approach = -(ux * nx + uy * ny)
+  const across = dax * ny - day * nx
+  const along = dax * nx + day * ny
+  if (!(approach > 0) || !(along < 0) || (across < 0 ? -across : across) > 1e-9 * -along) return false
+  let e = ((dbx - dax) * nx + (dby - day) * ny) / approach - 1
+  if (!(e > 0)) e = 0
+  if (e > w.config.BALL_RESTITUTION) e = w.config.BALL_RESTITUTION
+  P0[EFF] = e
+  let t = now + tau
   let found = w.config.ROLLING_DECEL === 0
   const tol = TOUCH_TOLERANCE * S + ROUNDING * ((xa < 0 ? -xa : xa) + (ya < 0 ? -ya : ya))
   for (let k = 0; !found && k < TOUCH_STEPS && t > now && t <= until; k++) {
@@ -208,6 +229,7 @@ function setMeet(w: BallWorld, e: number, other: number): void {
   const M = w.meet!
   M.with[e] = other
   M.t[e] = P0[TT]!
+  M.e[e] = P0[EFF]!
   meetEvent(w, e)
 }
 
@@ -288,14 +310,14 @@ export function meetAt(w: BallWorld, eid: number): void {
   const nx = gx / dist
   const ny = gy / dist
   const approach = -((P0[BVX]! - P0[AVX]!) * nx + (P0[BVY]! - P0[AVY]!) * ny)
-  // the two-body law of src/contacts/law.ts (resolveContact), written out: below BALL_SETTLE_SPEED without
-  // restitution, as the tick's solve; where a component would leave beyond CONTACT_SPEED_LIMIT or MAX_SPEED,
+  // the two-body law of src/contacts/law.ts (resolveContact), written out, at the restitution the tick's solve
+  // gave the pair (alone); where a component would leave beyond CONTACT_SPEED_LIMIT or MAX_SPEED,
   // resolveContact itself (its lower restitution). Not a call for every meeting: where V8 did not inline it,
   // its doubles were boxed (a pumped box's dozens of meetings a tick, tests/allocation.test.ts)
   const ma = F.mass[eid]!
   const mb = F.mass[other]!
   const settle = w.config.BALL_SETTLE_SPEED
-  const e = approach >= settle ? w.config.BALL_RESTITUTION : 0
+  const e = M.e[eid]!
   const j = approach > 0 ? ((1 + e) * approach) / (1 / ma + 1 / mb) : 0
   const ax = P0[AVX]! - (j / ma) * nx
   const ay = P0[AVY]! - (j / ma) * ny

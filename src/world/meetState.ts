@@ -6,12 +6,14 @@ export interface MeetState {
   /** the other ball of the ball's meeting (0: none; a new path clears it), and the meeting's instant, s */
   with: Uint32Array
   t: Float64Array
+  /** the restitution the meeting takes: what the tick's solve gave the pair */
+  e: Float64Array
   /** pairs given their instant instead of the tick, over the world's life */
   timed: number
 }
 
 export function createMeetState(capacity: number): MeetState {
-  return { with: new Uint32Array(capacity), t: new Float64Array(capacity), timed: 0 }
+  return { with: new Uint32Array(capacity), t: new Float64Array(capacity), e: new Float64Array(capacity), timed: 0 }
 }
 
 /** Rows for every ball id below `cap`, the old ones kept. */
@@ -19,4 +21,5 @@ export function growMeetState(M: MeetState, cap: number): void {
   if (M.with.length >= cap) return
   M.with = grownTo(M.with, cap)
   M.t = grownTo(M.t, cap)
+  M.e = grownTo(M.e, cap)
 }
