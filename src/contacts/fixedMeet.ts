@@ -70,7 +70,9 @@ const EFF = 10
 export function timeMeets(w: BallWorld, F: FixedContactState, eventsFrom: number): void {
   const n = F.n
   const pairs = F.pairCount
-  if (pairs === 0 || w.config.CONTACT_TIMING !== 'instant') return
+  // CONTACT_TIMING 'auto': only where there are holes for the instants to decide between
+  const timing = w.config.CONTACT_TIMING
+  if (pairs === 0 || timing === 'tick' || (timing === 'auto' && w.holes.count === 0)) return
   if (degree.length < n) degree = grownTo(degree, 2 * n)
   degree.fill(0, 0, n)
   for (let p = 0; p < pairs; p++) {

@@ -4,7 +4,7 @@ import { DEFAULT_PANEL, addPanel, createBallPhysics, type BallEvent, type BallPh
 import { rng } from '../helpers'
 import { delayMotion } from '../../src/motion/pause'
 
-const FIXED: ConfigOverrides = { BALL_COLLISIONS: 'fixed' }
+const FIXED: ConfigOverrides = { BALL_COLLISIONS: 'fixed', CONTACT_TIMING: 'instant' }
 
 function run(sim: BallPhysics, steps: number, dt: number): BallEvent[] {
   const out: BallEvent[] = []
@@ -89,6 +89,19 @@ describe('fixed tick: a pair alone at its tick meets at its instant', () => {
     // leaving from where they were at the tick: 3 px apart, not touching
     expect(sim.ballState(b).x - sim.ballState(a).x).toBeCloseTo(22 + 3 + 500 * (0.5 - 0.15), 9)
     expect(() => createBallPhysics({ ...FIXED, CONTACT_TIMING: 'exact' as never })).toThrow(/CONTACT_TIMING/)
+  })
+
+  it("CONTACT_TIMING 'auto' (the default): at the instant while the world has holes, at the tick without", () => {
+    const pair = (hole: boolean) => {
+      const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+      expect(sim.world.config.CONTACT_TIMING).toBe('auto')
+      if (hole) sim.addHole({ x: 5000, y: 5000 })
+      sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+      sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+      return run(sim, 60, 1 / 120).filter((e) => e.type === 'collision')[0]!.time
+    }
+    expect(Math.abs(pair(true) - 0.156)).toBeLessThan(1e-12)
+    expect(pair(false)).toBe(18 / 120)
   })
 
   it('a pair and its instant between steps: a snapshot taken there steps on to the same bits', () => {

@@ -126,10 +126,8 @@ describe('contacts never leave a velocity beyond MAX_SPEED', () => {
     // px/s in 10 s (seeds 7–9); at 3e5, 8.1e6 within 1 s with seed 8 (seed 7 took 8.8e6 until a ball only
     // a wall turned in a tick kept its path to the wall, src/contacts/fixedWallTurn.ts; 4.8e6 since, and 4.4e6
     // since the tick's last guard closes pairs left closing deep on lean ticks of at most 64 balls too,
-    // src/contacts/fixedGuard.ts; seed 9 5.7e6, and 4.1e6 since a pair alone at its tick meets at its
-    // instant, src/contacts/fixedMeet.ts: over seeds 1–14, 4.1e6–6.8e6 before it and 4.1e6–7.0e6 with it;
-    // seed 11 7.0e6)
-    const fastest = pumpedBox('fixed', 3e5, MAX_SPEED, false, 11)
+    // src/contacts/fixedGuard.ts; seed 9 5.7e6)
+    const fastest = pumpedBox('fixed', 3e5, MAX_SPEED, false, 9)
     expect(fastest).toBeLessThanOrEqual(MAX_SPEED)
     // the scene does reach the cap: the test would pass without a scene that pumps
     expect(fastest).toBeGreaterThan(0.5 * MAX_SPEED)
