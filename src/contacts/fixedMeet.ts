@@ -23,9 +23,10 @@ import { pathStart, planRolling, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motio
 import type { BallWorld } from '../world/createWorld.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
-import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../world/pathHot.js'
+import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
 import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, resolveContactIn, strikeLeavesRim } from './law.js'
 import { MAX_SPEED } from '../config/limits.js'
+import { E, AT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 
 /** Newton steps toward the instant of touch on the two paths, from the straight-line instant */
 const TOUCH_STEPS = 8
@@ -198,32 +199,20 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   return true
 }
 
-/** Both balls' states at time P0[TT] on their paths (both rolling), into P0. */
+/** Both balls' states at time P0[TT] on their paths (both rolling), into P0: what the stores get there. */
 function statesAt(w: BallWorld, ea: number, eb: number): void {
-  rollingAt(w, ea, AXp)
-  rollingAt(w, eb, BXp)
-}
-
-/**
- * Rolling ball e's position and velocity at time P0[TT] on its path, into P0 from slot k on: the formulas of
- * src/contacts/evalMotion.ts (evalBall), term for term, so the state is the one the stores get.
- */
-function rollingAt(w: BallWorld, e: number, k: number): void {
-  const H = w.pathHot
-  const h = e * HOT
-  const v0 = H[h + H_V0]!
-  const decel = w.config.ROLLING_DECEL
-  let tau = P0[TT]! - H[h + H_T0]!
-  if (tau < 0) tau = 0
-  if (decel > 0 && tau * decel > v0) tau = v0 / decel
-  const d = v0 * tau - 0.5 * decel * tau * tau
-  const v = v0 - decel * tau
-  const ux = H[h + H_UX]!
-  const uy = H[h + H_UY]!
-  P0[k] = H[h + H_X0]! + ux * d
-  P0[k + 1] = H[h + H_Y0]! + uy * d
-  P0[k + 2] = ux * v
-  P0[k + 3] = uy * v
+  E[AT] = P0[TT]!
+  evalBall(w, ea)
+  P0[AXp] = E[X]!
+  P0[AYp] = E[Y]!
+  P0[AVX] = E[VX]!
+  P0[AVY] = E[VY]!
+  E[AT] = P0[TT]!
+  evalBall(w, eb)
+  P0[BXp] = E[X]!
+  P0[BYp] = E[Y]!
+  P0[BVX] = E[VX]!
+  P0[BVY] = E[VY]!
 }
 
 /** Ball e's path meets ball other at P0's instant: its next event. */
@@ -360,22 +349,20 @@ export function meetAt(w: BallWorld, eid: number): void {
     ev.speed[i] = approach
     ev.impulse[i] = LAW[6]!
   }
-  pathStart[PS_X] = P0[BXp]!
-  pathStart[PS_Y] = P0[BYp]!
-  pathStart[PS_VX] = LAW[4]!
-  pathStart[PS_VY] = LAW[5]!
-  pathStart[PS_T] = t
-  restart(w, other)
-  pathStart[PS_X] = P0[AXp]!
-  pathStart[PS_Y] = P0[AYp]!
-  pathStart[PS_VX] = LAW[2]!
-  pathStart[PS_VY] = LAW[3]!
-  pathStart[PS_T] = t
-  restart(w, eid)
+  restart(w, other, BXp, 4)
+  restart(w, eid, AXp, 2)
 }
 
-/** A fresh path for ball eid from pathStart (its state at the instant, the new velocity). */
-function restart(w: BallWorld, eid: number): void {
+/**
+ * A fresh path for ball eid from the instant P0[TT], at its position there (P0 from slot `at`) and its
+ * velocity after the contact (LAW from slot `v`).
+ */
+function restart(w: BallWorld, eid: number, at: number, v: number): void {
+  pathStart[PS_X] = P0[at]!
+  pathStart[PS_Y] = P0[at + 1]!
+  pathStart[PS_VX] = LAW[v]!
+  pathStart[PS_VY] = LAW[v + 1]!
+  pathStart[PS_T] = P0[TT]!
   w.Ball.x[eid] = pathStart[PS_X]!
   w.Ball.y[eid] = pathStart[PS_Y]!
   strikeLeavesRim(w, eid)

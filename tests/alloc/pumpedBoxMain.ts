@@ -12,11 +12,13 @@ import { MAX_SPEED, createBallPhysics, type BallPhysics } from '../../src/index.
 import { heapWindow, run } from './harness.js'
 
 const WINDOW = 60
+/** CONTACT_TIMING from the environment ('instant': the pairs alone at their tick meet at their instant, src/contacts/fixedMeet.ts) */
+const TIMING = process.env.CONTACT_TIMING === 'instant' ? 'instant' : 'auto'
 
 function pumpedBox(): BallPhysics {
   let seed = 3
   const random = (): number => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646
-  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_SPEED_LIMIT: MAX_SPEED }, { capacity: 730 })
+  const sim = createBallPhysics({ BALL_COLLISIONS: 'fixed', BALL_RESTITUTION: 1, ROLLING_DECEL: 0, CONTACT_SPEED_LIMIT: MAX_SPEED, CONTACT_TIMING: TIMING }, { capacity: 730 })
   sim.setWalls({ minX: 0, minY: 0, maxX: 600, maxY: 600, restitution: 1 })
   for (let i = 0; i < 240; i++) {
     const a = random() * 6.283
@@ -42,4 +44,4 @@ for (let w = 0; w < 6; w++) {
   perBallStep.push(clean ? grown / ballSteps : NaN)
   perTick.push(clean ? grown / (F.ticks - ticks) : NaN)
 }
-console.log(JSON.stringify({ perBallStep, perTick, moving: sim.world.moving.count, ticksPerStep: (F.ticks - ticks0) / (6 * WINDOW) }))
+console.log(JSON.stringify({ perBallStep, perTick, moving: sim.world.moving.count, ticksPerStep: (F.ticks - ticks0) / (6 * WINDOW), timed: sim.world.meet!.timed }))
