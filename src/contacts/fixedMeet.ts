@@ -201,18 +201,18 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
 
 /** Both balls' states at time P0[TT] on their paths (both rolling), into P0: what the stores get there. */
 function statesAt(w: BallWorld, ea: number, eb: number): void {
+  stateAt(w, ea, AXp)
+  stateAt(w, eb, BXp)
+}
+
+/** Ball e's position and velocity at time P0[TT] (src/contacts/evalMotion.ts), into P0 from slot k on. */
+function stateAt(w: BallWorld, e: number, k: number): void {
   E[AT] = P0[TT]!
-  evalBall(w, ea)
-  P0[AXp] = E[X]!
-  P0[AYp] = E[Y]!
-  P0[AVX] = E[VX]!
-  P0[AVY] = E[VY]!
-  E[AT] = P0[TT]!
-  evalBall(w, eb)
-  P0[BXp] = E[X]!
-  P0[BYp] = E[Y]!
-  P0[BVX] = E[VX]!
-  P0[BVY] = E[VY]!
+  evalBall(w, e)
+  P0[k] = E[X]!
+  P0[k + 1] = E[Y]!
+  P0[k + 2] = E[VX]!
+  P0[k + 3] = E[VY]!
 }
 
 /** Ball e's path meets ball other at P0's instant: its next event. */
