@@ -1,20 +1,21 @@
-// The fixed-tick method's isolated pairs meet at their instant (config.BALL_COLLISIONS = 'fixed'). A tick
-// solves every contact at the tick, up to one tick before the two balls touch: the pair leaves from where
-// the balls were at the tick, not from where they touch, and along a burst's paths that error (up to the
-// approach speed times a tick) changes which hole a ball ends in. Where a pair is alone at its tick (each of
-// its balls in no other pair of the tick, rolling, moved by no wall, no rest rule and no projection, the two
-// touching within the tick on their own paths, each path's own next event later than that), the tick's
-// impulse is dropped and the pair is given a Meet event on both paths at the instant the two touch on
-// their paths (decelerations included). There the integration takes the two-body law with the velocities
-// the balls have then, as the exact method does, at the restitution the tick's solve gave the pair (its rules
-// can take some or all of it), and each ball starts a fresh path from that instant (meetAt). Nothing else can reach either ball before the instant: no third ball within the tick (the pair
-// is alone in it), no event of its own (each path's next event is later), and the next tick is not before
-// it. The pair's collision event is given at the instant, not at the tick. Between the tick and the
-// instant: walls or holes changed plan each path again from where it is, and the meeting stays its next
-// event unless the new path has one of its own before it (keepMeet); a ball given a new path (a command's
-// velocity, which also asks for a solve that pairs the balls again) gives up its meeting, and a ball whose
-// partner gave it up goes on as it was: neither takes the impulse, and the next solve finds the pair again.
-// So does a ball that a step out of passes holds back (src/motion/pause.ts).
+// The fixed-tick method's pairs alone at their tick meet at their instant (config.BALL_COLLISIONS = 'fixed',
+// CONTACT_TIMING 'instant', or 'auto' while the world has holes). A tick solves every contact at the tick, up
+// to one tick before the two balls touch: the pair leaves from where the balls were at the tick, not from
+// where they touch, and along a burst's paths that error (up to the approach speed times a tick) changes
+// which hole a ball ends in. Where a pair is alone at its tick (each of its balls in no other pair of the
+// tick, rolling, moved by no wall, no rest rule and no projection, the two touching within the tick on their
+// own paths, each path's own next event later than that), the tick's impulse is dropped and the pair is given
+// a Meet event on both paths at the instant the two touch on their paths (decelerations included). There the
+// integration takes the two-body law with the velocities the balls have then, as the exact method does, at
+// the restitution the tick's solve gave the pair (its rules can take some or all of it), and both balls start
+// fresh paths from that instant (meetAt). Nothing else can reach either ball before the instant: no third
+// ball within the tick (the pair is alone in it), no event of its own (each path's next event is later), and
+// the next tick is not before it. The pair's collision event is given at the instant, not at the tick.
+// Between the tick and the instant: walls or holes changed plan each path again from where it is, and the
+// meeting stays its next event unless the new path has one of its own before it (keepMeet); a ball given a
+// new path (a command's velocity, which also asks for a solve that pairs the balls again) gives up its
+// meeting, and a ball whose partner gave it up goes on as it was: neither takes the impulse, and the next
+// solve finds the pair again. So does a ball that a step out of passes holds back (src/motion/pause.ts).
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { appendCollision, EventType } from '../events.js'
