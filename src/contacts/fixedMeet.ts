@@ -26,7 +26,6 @@ import { instantOut, tickInstant } from '../world/gridTime.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
 import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, resolveContactIn, strikeLeavesRim } from './law.js'
-import { MAX_SPEED } from '../config/limits.js'
 import { E, AT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 
 /** Newton steps toward the instant of touch on the two paths, from the straight-line instant */
@@ -37,9 +36,6 @@ const TOUCH_STEPS = 8
  */
 const TOUCH_TOLERANCE = 1e-9
 const ROUNDING = 1e-15
-
-/** the law's slots: CONTACT_SPEED_LIMIT, MAX_SPEED, then the velocities after the contact (a, b) and its impulse */
-const LAW = new Float64Array([0, MAX_SPEED, 0, 0, 0, 0, 0])
 
 /** each packed ball's pairs in the tick's last pair list (scratch) */
 let degree = new Int32Array(256)
@@ -299,70 +295,41 @@ export function meetAt(w: BallWorld, eid: number): void {
   const gx = P0[BXp]! - P0[AXp]!
   const gy = P0[BYp]! - P0[AYp]!
   const dist = Math.sqrt(gx * gx + gy * gy)
-  const nx = gx / dist
-  const ny = gy / dist
-  const approach = -((P0[BVX]! - P0[AVX]!) * nx + (P0[BVY]! - P0[AVY]!) * ny)
-  // the two-body law of src/contacts/law.ts (resolveContact), written out, at the restitution the tick's solve
-  // gave the pair (alone); where a component would leave beyond CONTACT_SPEED_LIMIT or MAX_SPEED,
-  // resolveContact itself (its lower restitution). Not a call for every meeting: where V8 did not inline it,
-  // its doubles were boxed (a pumped box's dozens of meetings a tick, tests/allocation.test.ts)
-  const ma = F.mass[eid]!
-  const mb = F.mass[other]!
-  const settle = w.config.BALL_SETTLE_SPEED
-  const e = M.e[eid]!
-  const j = approach > 0 ? ((1 + e) * approach) / (1 / ma + 1 / mb) : 0
-  const ax = P0[AVX]! - (j / ma) * nx
-  const ay = P0[AVY]! - (j / ma) * ny
-  const bx = P0[BVX]! + (j / mb) * nx
-  const by = P0[BVY]! + (j / mb) * ny
-  LAW[0] = w.config.CONTACT_SPEED_LIMIT
-  const lim = LAW[0]! < LAW[1]! ? LAW[0]! : LAW[1]!
-  if (ax > lim || ax < -lim || ay > lim || ay < -lim || bx > lim || bx < -lim || by > lim || by < -lim) {
-    const I = contactIn
-    I[CI_MA] = ma
-    I[CI_MB] = mb
-    I[CI_VAX] = P0[AVX]!
-    I[CI_VAY] = P0[AVY]!
-    I[CI_VBX] = P0[BVX]!
-    I[CI_VBY] = P0[BVY]!
-    I[CI_NX] = nx
-    I[CI_NY] = ny
-    I[CI_E] = e
-    I[CI_LIMIT] = LAW[0]!
-    resolveContactIn()
-    const o = contactOut
-    LAW[2] = o.vax
-    LAW[3] = o.vay
-    LAW[4] = o.vbx
-    LAW[5] = o.vby
-    LAW[6] = o.impulse
-  } else {
-    LAW[2] = ax
-    LAW[3] = ay
-    LAW[4] = bx
-    LAW[5] = by
-    LAW[6] = j
-  }
-  if (approach >= settle) {
+  // the two-body law (src/contacts/law.ts), at the restitution the tick's solve gave the pair alone
+  const I = contactIn
+  I[CI_MA] = F.mass[eid]!
+  I[CI_MB] = F.mass[other]!
+  I[CI_VAX] = P0[AVX]!
+  I[CI_VAY] = P0[AVY]!
+  I[CI_VBX] = P0[BVX]!
+  I[CI_VBY] = P0[BVY]!
+  I[CI_NX] = gx / dist
+  I[CI_NY] = gy / dist
+  I[CI_E] = M.e[eid]!
+  I[CI_LIMIT] = w.config.CONTACT_SPEED_LIMIT
+  resolveContactIn()
+  const o = contactOut
+  if (o.approach >= w.config.BALL_SETTLE_SPEED) {
     const ev = w.events
     const i = appendCollision(ev, eid < other ? eid : other, eid < other ? other : eid)
     ev.time[i] = t
-    ev.speed[i] = approach
-    ev.impulse[i] = LAW[6]!
+    ev.speed[i] = o.approach
+    ev.impulse[i] = o.impulse
   }
-  restart(w, other, BXp, 4)
-  restart(w, eid, AXp, 2)
+  restart(w, other, BXp, true)
+  restart(w, eid, AXp, false)
 }
 
 /**
  * A fresh path for ball eid from the instant P0[TT], at its position there (P0 from slot `at`) and its
- * velocity after the contact (LAW from slot `v`).
+ * velocity after the contact (contactOut: the second ball's when `second`).
  */
-function restart(w: BallWorld, eid: number, at: number, v: number): void {
+function restart(w: BallWorld, eid: number, at: number, second: boolean): void {
+  const o = contactOut
   pathStart[PS_X] = P0[at]!
   pathStart[PS_Y] = P0[at + 1]!
-  pathStart[PS_VX] = LAW[v]!
-  pathStart[PS_VY] = LAW[v + 1]!
+  pathStart[PS_VX] = second ? o.vbx : o.vax
+  pathStart[PS_VY] = second ? o.vby : o.vay
   pathStart[PS_T] = P0[TT]!
   w.Ball.x[eid] = pathStart[PS_X]!
   w.Ball.y[eid] = pathStart[PS_Y]!
