@@ -174,6 +174,12 @@ export function pushEvent(
   }
 }
 
+/** Copies event `from` over event `to`, in every per-event array: for a system that drops events it appended. */
+export function moveEvent(buf: EventBuffer, to: number, from: number): void {
+  const arrays = buf as unknown as Record<string, Float64Array>
+  for (let f = 0; f < PER_EVENT.length; f++) arrays[PER_EVENT[f]!]![to] = arrays[PER_EVENT[f]!]![from]!
+}
+
 /**
  * Appends a collision of balls `ball` and `other` and returns its index: the caller writes its time, approach
  * speed and normal impulse into buf.time[i], buf.speed[i], buf.impulse[i] (as appendEvent, no double passed).

@@ -18,7 +18,7 @@
 // solve finds the pair again. So does a ball that a step out of passes holds back (src/motion/pause.ts).
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
-import { appendCollision, EventType } from '../events.js'
+import { appendCollision, EventType, moveEvent } from '../events.js'
 import { launchBall } from '../motion/ballFate.js'
 import { pathStart, planRolling, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
@@ -253,19 +253,7 @@ function dropTickCollisions(w: BallWorld, from: number): void {
   let out = from
   for (let i = from; i < ev.count; i++) {
     if (ev.type[i] === EventType.Collision && timedAt[ev.ball[i]!] === STAMP[0] && w.Path.nextHole[ev.ball[i]!] === ev.other[i]) continue
-    if (out !== i) {
-      ev.type[out] = ev.type[i]!
-      ev.ball[out] = ev.ball[i]!
-      ev.hole[out] = ev.hole[i]!
-      ev.time[out] = ev.time[i]!
-      ev.delta[out] = ev.delta[i]!
-      ev.speed[out] = ev.speed[i]!
-      ev.hasDV[out] = ev.hasDV[i]!
-      ev.via[out] = ev.via[i]!
-      ev.other[out] = ev.other[i]!
-      ev.impulse[out] = ev.impulse[i]!
-      ev.from[out] = ev.from[i]!
-    }
+    if (out !== i) moveEvent(ev, out, i)
     out++
   }
   ev.count = out
