@@ -2,15 +2,19 @@
 // CONTACT_TIMING 'instant', or 'auto' while the world has holes). A tick solves every contact at the tick, up
 // to one tick before the two balls touch: the pair leaves from where the balls were at the tick, not from
 // where they touch, and along a burst's paths that error (up to the approach speed times a tick) changes
-// which hole a ball ends in. Where a pair is alone at its tick (each of its balls in no other pair of the
+// which hole a ball ends in. Where a pair is alone at its tick (each of its balls in no other contact of the
 // tick, rolling, moved by no wall, no rest rule and no projection, the two touching within the tick on their
 // own paths, each path's own next event later than that), the tick's impulse is dropped and the pair is given
 // a Meet event on both paths at the instant the two touch on their paths (decelerations included). There the
 // integration takes the two-body law with the velocities the balls have then, as the exact method does, at
 // the restitution the tick's solve gave the pair (its rules can take some or all of it), and both balls start
-// fresh paths from that instant (meetAt). Nothing else can reach either ball before the instant: no third
-// ball within the tick (the pair is alone in it), no event of its own (each path's next event is later), and
-// the next tick is not before it. The pair's collision event is given at the instant, not at the tick.
+// fresh paths from that instant (meetAt). Nothing else can reach either ball before the instant: no event of
+// its own (each path's next event is later), the next tick is not before it, and no third ball within the
+// tick. A ball may have been paired with others (within reach, in a burst most are), but each of those the
+// solve left as it was, and on straight lines over the tick (the solve's swept test, by a margin for the
+// paths' deceleration) it touches none of them, neither on its way to the instant nor after it at the
+// velocity the solve gave it (quiet): the third ball is then no nearer the pair than the tick's solve left
+// it. The pair's collision event is given at the instant, not at the tick.
 // Between the tick and the instant: walls or holes changed plan each path again from where it is, and the
 // meeting stays its next event unless the new path has one of its own before it (keepMeet); a ball given a
 // new path (a command's velocity, which also asks for a solve that pairs the balls again) gives up its
@@ -27,6 +31,7 @@ import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
 import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, resolveContactIn, strikeLeavesRim } from './law.js'
 import { E, AT, VX, VY, X, Y, evalBall } from './evalMotion.js'
+import { TOUCH_GAP } from '../config/tolerances.js'
 
 /** Newton steps toward the instant of touch on the two paths, from the straight-line instant */
 const TOUCH_STEPS = 8
@@ -79,18 +84,17 @@ export function timeMeets(w: BallWorld, F: FixedContactState, eventsFrom: number
   }
   tickInstant(w, F.halvings, F.nextTick)
   P0[UNTIL] = instantOut[0]!
+  listed = false
+  STAMP[0] = STAMP[0] === 0xffffffff ? 1 : STAMP[0]! + 1
+  if (timedAt.length < w.capacity) timedAt = grownTo(timedAt, w.capacity)
+  if (STAMP[0] === 1) timedAt.fill(0)
   let timed = 0
   for (let p = 0; p < pairs; p++) {
     const a = F.pairA[p]!
     const b = F.pairB[p]!
-    if (degree[a] !== 1 || degree[b] !== 1 || !alone(w, F, a, b)) continue
+    if (!alone(w, F, a, b)) continue
     const ea = F.id[a]!
     const eb = F.id[b]!
-    if (timed === 0) {
-      STAMP[0] = STAMP[0] === 0xffffffff ? 1 : STAMP[0]! + 1
-      if (STAMP[0] === 1) timedAt.fill(0)
-    }
-    if (timedAt.length < w.capacity) timedAt = grownTo(timedAt, w.capacity)
     timedAt[ea] = STAMP[0]!
     timedAt[eb] = STAMP[0]!
     timed++
@@ -106,8 +110,8 @@ export function timeMeets(w: BallWorld, F: FixedContactState, eventsFrom: number
 }
 
 /**
- * Whether packed pair (a, b), each in no other pair, is alone at the tick as above; if so the instant of touch
- * and the balls' states there are in P0.
+ * Whether packed pair (a, b) is alone at the tick as above; if so the instant of touch and the balls' states
+ * there are in P0.
  */
 function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolean {
   // the solve changed their velocities only, by a pair's impulse (no wall's bit, no projection's)
@@ -186,6 +190,9 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
     else t -= gap / rate
   }
   if (!found || !(t > now && t <= until)) return false
+  // each other pair of either ball untouched by the solve, and clear of the meeting within the tick
+  P0[TT] = t
+  if ((degree[a]! > 1 || degree[b]! > 1) && !(quiet(w, F, a, b) && quiet(w, F, b, a))) return false
   // nothing of their own before it (a meeting of an earlier tick's, for the same pair, given up: a command
   // between the two asked for this solve)
   if (w.Path.nextKind[ea] === PathEvent.Meet) planRolling(w, ea)
@@ -193,6 +200,76 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   const H = w.pathHot
   if (!(H[ea * HOT + H_NEXT_T]! > t) || !(H[eb * HOT + H_NEXT_T]! > t)) return false
   P0[TT] = t
+  return true
+}
+
+/** whether the tick's partners of each packed ball are listed (adjStart, adjOther) */
+let listed = false
+let adjStart = new Int32Array(257)
+let adjOther = new Int32Array(256)
+
+/** Lists each packed ball's partners in the tick's pairs (CSR: adjStart, n + 1 entries, into adjOther). */
+function listPartners(F: FixedContactState): void {
+  const n = F.n
+  const pairs = F.pairCount
+  if (adjStart.length < n + 1) adjStart = grownTo(adjStart, 2 * n + 2)
+  if (adjOther.length < 2 * pairs) adjOther = grownTo(adjOther, 4 * pairs)
+  adjStart[0] = 0
+  for (let i = 0; i < n; i++) adjStart[i + 1] = adjStart[i]! + degree[i]!
+  const fill = degree // counted down to 0 while filling, from each ball's end
+  for (let p = 0; p < pairs; p++) {
+    const a = F.pairA[p]!
+    const b = F.pairB[p]!
+    adjOther[adjStart[a]! + --fill[a]!] = b
+    adjOther[adjStart[b]! + --fill[b]!] = a
+  }
+  for (let i = 0; i < n; i++) fill[i] = adjStart[i + 1]! - adjStart[i]!
+  listed = true
+}
+
+/**
+ * Whether packed ball a, meeting b at the instant P0[TT], keeps clear of each other ball it was paired with
+ * in the tick: that ball untouched by the solve, and the two not touching within the tick on straight lines,
+ * a at its velocity before the tick up to the instant and at the one the solve gave it after (the solve's
+ * swept test, written out: a double passed to a call V8 does not inline is boxed), by a margin for the
+ * paths' deceleration over the tick.
+ */
+function quiet(w: BallWorld, F: FixedContactState, a: number, b: number): boolean {
+  if (degree[a] === 1) return true
+  if (!listed) listPartners(F)
+  const ea = F.id[a]!
+  const now = w.time
+  const tau = P0[TT]! - now
+  const span = P0[UNTIL]! - now
+  const margin = w.config.ROLLING_DECEL * span * span + TOUCH_GAP
+  const end = adjStart[a + 1]!
+  for (let k = adjStart[a]!; k < end; k++) {
+    const c = adjOther[k]!
+    if (c === b) continue
+    if (F.changed[c] !== 0 || timedAt[F.id[c]!] === STAMP[0]) return false
+    const S = F.r[a]! + F.r[c]! + margin
+    let dx = F.x[c]! - F.x[a]!
+    let dy = F.y[c]! - F.y[a]!
+    let ux = F.vx[c]! - w.Ball.vx[ea]!
+    let uy = F.vy[c]! - w.Ball.vy[ea]!
+    let length = tau
+    for (let part = 0; part < 2; part++) {
+      if (part === 1) {
+        dx += ux * tau
+        dy += uy * tau
+        ux = F.vx[c]! - F.vx[a]!
+        uy = F.vy[c]! - F.vy[a]!
+        length = span - tau
+      }
+      const gap = dx * dx + dy * dy - S * S
+      if (!(gap > 0)) return false
+      const half = dx * ux + dy * uy
+      if (half < 0) {
+        const disc = half * half - (ux * ux + uy * uy) * gap
+        if (disc >= 0 && gap / (-half + Math.sqrt(disc)) <= length) return false
+      }
+    }
+  }
   return true
 }
 

@@ -195,4 +195,42 @@ describe('fixed tick: a pair alone at its tick meets at its instant', () => {
     expect(sim.ballState(a).x).toBeCloseTo(300 * (174 / 480), 9)
     expect(sim.ballState(c).x).toBe(400)
   })
+
+  // the head-on pair of the tests above (touch at 0.156 s, paired at the tick 18/120 s) with a third ball
+  // within reach of the first, which no contact of the tick touches
+  const withThird = (third: { x: number; y: number; vx: number; vy: number }) => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    const a = sim.addBall({ x: 0, y: 0, vx: 300, vy: 0 })
+    sim.addBall({ x: 100, y: 0, vx: -200, vy: 0 })
+    const c = sim.addBall(third)
+    const ev = run(sim, 24, 1 / 120).filter((e) => e.type === 'collision')
+    return { sim, a, c, ev }
+  }
+
+  it('a third ball within reach that keeps clear of the meeting: the pair still meets at its instant', () => {
+    // 25 px above the first ball (radii 11), moving with it: paired with it at every tick, never touching
+    const { sim, a, c, ev } = withThird({ x: 0, y: 25, vx: 300, vy: 0 })
+    expect(ev).toHaveLength(1)
+    expect(Math.abs(ev[0]!.time - 0.156)).toBeLessThan(1e-12)
+    expect(sim.world.meet!.timed).toBe(1)
+    expect(sim.ballState(a).vx).toBeCloseTo(-200, 9)
+    expect(sim.ballState(c)).toMatchObject({ vx: 300, vy: 0, y: 25 })
+  })
+
+  it('a third ball the first would reach on its way to the instant: the pair meets at its tick', () => {
+    // at the tick 18/120 s the first ball is at (45, 0) and this one at (55, 20), 22.4 px apart (radii 11);
+    // sent back at the tick, the first ball leaves it, but going on to the instant (46.8, 0) it would be
+    // 21.6 px from it: the pair is solved at the tick, as without the instant
+    const { sim, c, ev } = withThird({ x: 55, y: 20 - 0.15, vx: 0, vy: 1 })
+    expect(ev).toHaveLength(1)
+    expect(ev[0]!.time).toBe(18 / 120)
+    expect(sim.world.meet!.timed).toBe(0)
+    expect(sim.ballState(c)).toMatchObject({ vx: 0, vy: 1 })
+    for (const b of sim.balls()) for (const o of sim.balls()) {
+      if (o <= b) continue
+      const p = sim.ballState(b)
+      const q = sim.ballState(o)
+      expect(Math.hypot(p.x - q.x, p.y - q.y)).toBeGreaterThan(22 - 1e-9)
+    }
+  })
 })
