@@ -42,8 +42,12 @@ const TOUCH_STEPS = 8
 const TOUCH_TOLERANCE = 1e-9
 const ROUNDING = 1e-15
 
-/** each packed ball's pairs in the tick's last pair list (scratch) */
-let degree = new Int32Array(256)
+/**
+ * each packed ball's pairs in the tick's last pair list, as a list through their entries (entry 2p: pair p's
+ * first ball, 2p + 1: its second): a ball's first entry, −1 for none, and each entry's next (scratch)
+ */
+let first = new Int32Array(256)
+let after = new Int32Array(512)
 /** by ball id: the stamp of the tick that timed its pair (scratch for dropping the tick's collision events) */
 let timedAt = new Uint32Array(256)
 /** the stamp (a slot: a module-level number that may leave the small integers is boxed at every write) */
@@ -76,15 +80,19 @@ export function timeMeets(w: BallWorld, F: FixedContactState, eventsFrom: number
   // CONTACT_TIMING 'auto': only where there are holes for the instants to decide between
   const timing = w.config.CONTACT_TIMING
   if (pairs === 0 || timing === 'tick' || (timing === 'auto' && w.holes.count === 0)) return
-  if (degree.length < n) degree = grownTo(degree, 2 * n)
-  degree.fill(0, 0, n)
+  if (first.length < n) first = grownTo(first, 2 * n)
+  if (after.length < 2 * pairs) after = grownTo(after, 4 * pairs)
+  first.fill(-1, 0, n)
   for (let p = 0; p < pairs; p++) {
-    degree[F.pairA[p]!]!++
-    degree[F.pairB[p]!]!++
+    const a = F.pairA[p]!
+    const b = F.pairB[p]!
+    after[2 * p] = first[a]!
+    first[a] = 2 * p
+    after[2 * p + 1] = first[b]!
+    first[b] = 2 * p + 1
   }
   tickInstant(w, F.halvings, F.nextTick)
   P0[UNTIL] = instantOut[0]!
-  listed = false
   STAMP[0] = STAMP[0] === 0xffffffff ? 1 : STAMP[0]! + 1
   if (timedAt.length < w.capacity) timedAt = grownTo(timedAt, w.capacity)
   if (STAMP[0] === 1) timedAt.fill(0)
@@ -192,7 +200,7 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   if (!found || !(t > now && t <= until)) return false
   // each other pair of either ball untouched by the solve, and clear of the meeting within the tick
   P0[TT] = t
-  if ((degree[a]! > 1 || degree[b]! > 1) && !(quiet(w, F, a, b) && quiet(w, F, b, a))) return false
+  if (!(quiet(w, F, a, b) && quiet(w, F, b, a))) return false
   // nothing of their own before it (a meeting of an earlier tick's, for the same pair, given up: a command
   // between the two asked for this solve)
   if (w.Path.nextKind[ea] === PathEvent.Meet) planRolling(w, ea)
@@ -203,30 +211,6 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   return true
 }
 
-/** whether the tick's partners of each packed ball are listed (adjStart, adjOther) */
-let listed = false
-let adjStart = new Int32Array(257)
-let adjOther = new Int32Array(256)
-
-/** Lists each packed ball's partners in the tick's pairs (CSR: adjStart, n + 1 entries, into adjOther). */
-function listPartners(F: FixedContactState): void {
-  const n = F.n
-  const pairs = F.pairCount
-  if (adjStart.length < n + 1) adjStart = grownTo(adjStart, 2 * n + 2)
-  if (adjOther.length < 2 * pairs) adjOther = grownTo(adjOther, 4 * pairs)
-  adjStart[0] = 0
-  for (let i = 0; i < n; i++) adjStart[i + 1] = adjStart[i]! + degree[i]!
-  const fill = degree // counted down to 0 while filling, from each ball's end
-  for (let p = 0; p < pairs; p++) {
-    const a = F.pairA[p]!
-    const b = F.pairB[p]!
-    adjOther[adjStart[a]! + --fill[a]!] = b
-    adjOther[adjStart[b]! + --fill[b]!] = a
-  }
-  for (let i = 0; i < n; i++) fill[i] = adjStart[i + 1]! - adjStart[i]!
-  listed = true
-}
-
 /**
  * Whether packed ball a, meeting b at the instant P0[TT], keeps clear of each other ball it was paired with
  * in the tick: that ball untouched by the solve, and the two not touching within the tick on straight lines,
@@ -235,16 +219,15 @@ function listPartners(F: FixedContactState): void {
  * paths' deceleration over the tick.
  */
 function quiet(w: BallWorld, F: FixedContactState, a: number, b: number): boolean {
-  if (degree[a] === 1) return true
-  if (!listed) listPartners(F)
+  // (its one pair: the pair's own)
+  if (after[first[a]!] === -1) return true
   const ea = F.id[a]!
   const now = w.time
   const tau = P0[TT]! - now
   const span = P0[UNTIL]! - now
   const margin = w.config.ROLLING_DECEL * span * span + TOUCH_GAP
-  const end = adjStart[a + 1]!
-  for (let k = adjStart[a]!; k < end; k++) {
-    const c = adjOther[k]!
+  for (let k = first[a]!; k !== -1; k = after[k]!) {
+    const c = (k & 1) === 0 ? F.pairB[k >> 1]! : F.pairA[k >> 1]!
     if (c === b) continue
     if (F.changed[c] !== 0 || timedAt[F.id[c]!] === STAMP[0]) return false
     const S = F.r[a]! + F.r[c]! + margin
