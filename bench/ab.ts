@@ -7,9 +7,12 @@
 // summed times: of the runs with contacts, and of their extra time over the runs with contacts off (the
 // denominator: the base build's extra time in the same round). Prints the median and
 // quartiles of the per-round ratios, and whether the two builds end every scene with the same bits (a hash
-// of every ball's state and the event count). Writes nothing.
+// of every ball's state and the event count). Writes nothing. With --work-config, a JSON object of config
+// fields the working tree's build takes on top of the scene's (the base's is left as it is): with --base
+// HEAD, two settings of the same code side by side.
 //
 //   npm run bench:ab -- [--base COMMIT] [--scene panel|gas] [--balls 1000] [--mode fixed|on] [--rounds 15] [--repeats 5]
+//                       [--work-config '{"CONTACT_TIMING":"tick"}']
 import { execFileSync } from 'node:child_process'
 import { mkdirSync, rmSync } from 'node:fs'
 import { join, resolve } from 'node:path'
@@ -89,6 +92,16 @@ const balls = Number(argValue('--balls') ?? 1000)
 const mode = (argValue('--mode') ?? 'fixed') as 'fixed' | 'on'
 const rounds = Number(argValue('--rounds') ?? 15)
 const repeats = Number(argValue('--repeats') ?? 5)
+const workConfigText = argValue('--work-config')
+let workConfig: Record<string, unknown> = {}
+if (workConfigText !== undefined) {
+  try {
+    workConfig = JSON.parse(workConfigText) as Record<string, unknown>
+  } catch {
+    throw new Error(`--work-config must be a JSON object of config fields, got ${workConfigText}`)
+  }
+  if (workConfig === null || typeof workConfig !== 'object' || Array.isArray(workConfig)) throw new Error(`--work-config must be a JSON object of config fields, got ${workConfigText}`)
+}
 if (sceneName !== 'panel' && sceneName !== 'gas') throw new Error(`--scene must be panel or gas, got ${sceneName}`)
 if (mode !== 'fixed' && mode !== 'on') throw new Error(`--mode must be fixed or on, got ${mode}`)
 if (!(Number.isInteger(balls) && balls >= 2)) throw new Error(`--balls must be a whole number of at least 2, got ${balls}`)
@@ -108,11 +121,15 @@ const builds: Record<'base' | 'work', Create> = {
   base: await bundle(baseDir, join(cache, `base-${process.pid}.mjs`)),
   work: await bundle(resolve('.'), join(cache, `work-${process.pid}.mjs`)),
 }
+if (workConfigText !== undefined) {
+  const work = builds.work
+  builds.work = ((config, options) => work({ ...config, ...workConfig }, options)) as Create
+}
 // loaded: the bundles and the extracted sources are not needed any more
 for (const f of [`base-${process.pid}.mjs`, `work-${process.pid}.mjs`]) rmSync(join(cache, f), { force: true })
 rmSync(baseDir, { recursive: true, force: true })
 const sc = sceneName === 'panel' ? panel(balls) : gas(balls)
-console.log(`bench:ab: working tree against ${commit.slice(0, 12)} (${base}), ${sceneName} ${balls} balls, contacts '${mode}', ${rounds} rounds of ${repeats}`)
+console.log(`bench:ab: working tree${workConfigText === undefined ? '' : ` with ${workConfigText}`} against ${commit.slice(0, 12)} (${base}), ${sceneName} ${balls} balls, contacts '${mode}', ${rounds} rounds of ${repeats}`)
 
 // warm each build and setting on a throwaway scene first
 for (const k of ['base', 'work'] as const) for (const m of ['off', mode] as const) run(builds[k], sc, m, WARM_STEPS)
