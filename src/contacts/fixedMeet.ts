@@ -198,7 +198,8 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
     else t -= gap / rate
   }
   if (!found || !(t > now && t <= until)) return false
-  // each other pair of either ball untouched by the solve, and clear of the meeting within the tick
+  // each other pair of either ball untouched by the solve, and clear of the meeting within the tick (the
+  // instant stays in P0[TT] for the caller)
   P0[TT] = t
   if (!(quiet(w, F, a, b) && quiet(w, F, b, a))) return false
   // nothing of their own before it (a meeting of an earlier tick's, for the same pair, given up: a command
@@ -206,9 +207,7 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   if (w.Path.nextKind[ea] === PathEvent.Meet) planRolling(w, ea)
   if (w.Path.nextKind[eb] === PathEvent.Meet) planRolling(w, eb)
   const H = w.pathHot
-  if (!(H[ea * HOT + H_NEXT_T]! > t) || !(H[eb * HOT + H_NEXT_T]! > t)) return false
-  P0[TT] = t
-  return true
+  return H[ea * HOT + H_NEXT_T]! > t && H[eb * HOT + H_NEXT_T]! > t
 }
 
 /**
