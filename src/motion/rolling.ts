@@ -16,6 +16,9 @@ import { NEVER } from '../config/tolerances.js'
 import { capped, capVelocity } from './speedLimit.js'
 import { MAX_SPEED } from '../config/limits.js'
 
+// the samplers of a straight path, kept in their own file (this one's callers import them from here)
+export { sampleAtDistance, sampleDistance, sampleRolling, sampleRollingAt, sampleTime } from './sample.js'
+
 /**
  * The start of the next path (startPath, launchBall): position, velocity and time, written by the caller
  * just before the call. In a typed array, not passed as arguments: V8 boxes every double passed to a
@@ -366,54 +369,4 @@ export function pathOffset(w: BallWorld, eid: number, hole: number): number {
   const H = w.pathHot
   const h = eid * HOT
   return (w.Hole.x[hole]! - H[h + H_X0]!) * H[h + H_UY]! - (w.Hole.y[hole]! - H[h + H_Y0]!) * H[h + H_UX]!
-}
-
-/** The time sampleRollingAt samples at, s, and the distance sampleAtDistance samples at, px (slots: a boxed double otherwise). */
-export const sampleTime = new Float64Array(1)
-export const sampleDistance = new Float64Array(1)
-
-/** Ball state at time t on its straight path (clamped at its stop). */
-export function sampleRolling(w: BallWorld, eid: number, t: number): void {
-  sampleTime[0] = t
-  sampleRollingAt(w, eid)
-}
-
-/** sampleRolling at sampleTime[0]. */
-export function sampleRollingAt(w: BallWorld, eid: number): void {
-  const t = sampleTime[0]!
-  const P = w.Path
-  const B = w.Ball
-  const H = w.pathHot
-  const h = eid * HOT
-  const v0 = H[h + H_V0]!
-  const decel = w.config.ROLLING_DECEL
-  let tau = t - H[h + H_T0]!
-  if (tau < 0) tau = 0
-  if (decel > 0 && tau * decel > v0) tau = v0 / decel
-  const d = v0 * tau - 0.5 * decel * tau * tau
-  const v = v0 - decel * tau
-  const ux = H[h + H_UX]!
-  const uy = H[h + H_UY]!
-  B.x[eid] = H[h + H_X0]! + ux * d
-  B.y[eid] = H[h + H_Y0]! + uy * d
-  B.vx[eid] = ux * v
-  B.vy[eid] = uy * v
-  P.speed[eid] = v
-}
-
-/** Ball state at distance sampleDistance[0] along its straight path: exact geometry for an event found there. */
-export function sampleAtDistance(w: BallWorld, eid: number): void {
-  const d = sampleDistance[0]!
-  const P = w.Path
-  const B = w.Ball
-  const H = w.pathHot
-  const h = eid * HOT
-  const v = speedAtDistance(d, H[h + H_V0]!, w.config.ROLLING_DECEL)
-  const ux = H[h + H_UX]!
-  const uy = H[h + H_UY]!
-  B.x[eid] = H[h + H_X0]! + ux * d
-  B.y[eid] = H[h + H_Y0]! + uy * d
-  B.vx[eid] = ux * v
-  B.vy[eid] = uy * v
-  P.speed[eid] = v
 }
