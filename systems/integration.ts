@@ -353,8 +353,12 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
     }
     const kind = P.nextKind[eid]!
     if (kind === PathEvent.Meet) {
-      // a pair alone at a fixed contact tick meets here (src/contacts/fixedMeet.ts)
-      meetAt(w, eid)
+      // a pair alone at a fixed contact tick meets here (src/contacts/fixedMeet.ts), or this ball waits for
+      // its partner in the next pass
+      if (meetAt(w, eid)) {
+        pushId(w.marked, eid)
+        return
+      }
       continue
     }
     const hole = P.nextHole[eid]!

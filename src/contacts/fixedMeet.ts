@@ -1,30 +1,33 @@
 // The fixed-tick method's pairs alone at their tick meet at their instant (config.BALL_COLLISIONS = 'fixed',
-// CONTACT_TIMING 'instant', or 'auto' while the world has holes). A tick solves every contact at the tick, up
-// to one tick before the two balls touch: the pair leaves from where the balls were at the tick, not from
-// where they touch, and along a burst's paths that error (up to the approach speed times a tick) changes
-// which hole a ball ends in. Where a pair is alone at its tick (each of its balls in no other contact of the
-// tick, rolling, moved by no wall, no rest rule and no projection, the two touching within the tick on their
-// own paths, each path's own next event later than that), the tick's impulse is dropped and the pair is given
-// a Meet event on both paths at the instant the two touch on their paths (decelerations included). There the
-// integration takes the two-body law with the velocities the balls have then, as the exact method does, at
-// the restitution the tick's solve gave the pair (its rules can take some or all of it), and both balls start
-// fresh paths from that instant (meetAt). Nothing else can reach either ball before the instant: no event of
-// its own (each path's next event is later), the next tick is not before it, and no third ball within the
-// tick. A ball may have been paired with others (within reach, in a burst most are), but each of those the
-// solve left as it was, and on straight lines over the tick (the solve's swept test, by a margin for the
-// paths' deceleration) it touches none of them, neither on its way to the instant nor after it at the
-// velocity the solve gave it (quiet): the third ball is then no nearer the pair than the tick's solve left
-// it. The pair's collision event is given at the instant, not at the tick.
-// Between the tick and the instant: walls or holes changed plan each path again from where it is, and the
-// meeting stays its next event unless the new path has one of its own before it (keepMeet); a ball given a
-// new path (a command's velocity, which also asks for a solve that pairs the balls again) gives up its
-// meeting, and a ball whose partner gave it up goes on as it was: neither takes the impulse, and the next
-// solve finds the pair again. So does a ball that a step out of passes holds back (src/motion/pause.ts).
+// CONTACT_TIMING 'instant', or 'auto' while the world has holes). A tick solves every contact at the tick, up to
+// one tick before the two balls touch: the pair leaves from where the balls were at the tick, not from where
+// they touch, and along a burst's paths that error (up to the approach speed times a tick) changes which hole a
+// ball ends in. Where a pair is alone at its tick (each of its balls in no other contact of the tick, rolling,
+// moved by no wall, no rest rule and no projection, the two touching within the tick on their own paths, neither
+// path changed by an event of its own before that), the tick's impulse is dropped and the pair is given a Meet
+// event on both paths at the instant the two touch on their paths (decelerations included). There the
+// integration takes the two-body law with the velocities the balls have then, as the exact method does, at the
+// restitution the tick's solve gave the pair (its rules can take some or all of it), and both balls start fresh
+// paths from that instant (meetAt). Nothing else can reach either ball before the instant: no event of its own
+// that changes its path (a near miss, the exit from a locked hole or a skip-over before it are bookkeeping on
+// the same path: the planner finds how far the path holds, src/motion/rolling.ts planTracked, and gives the
+// meeting back as the next event after them; a ball reaching its meeting while its partner is still short of it,
+// on such events of its own, waits for it in the next pass), the next tick is not before it, and no third ball
+// within the tick. A ball may have been paired with others (within reach, in a burst most are), but each of
+// those the solve left as it was, and on straight lines over the tick (the solve's swept test, by a margin for
+// the paths' deceleration) it touches none of them, neither on its way to the instant nor after it at the
+// velocity the solve gave it (quiet): the third ball is then no nearer the pair than the tick's solve left it.
+// The pair's collision event is given at the instant, not at the tick. Between the tick and the instant: walls
+// or holes changed plan each path again from where it is, and the meeting stays its next event unless the new
+// path has one of its own before it (keepMeet); a ball given a new path (a command's velocity, which also asks
+// for a solve that pairs the balls again) gives up its meeting, and a ball whose partner gave it up goes on as
+// it was: neither takes the impulse, and the next solve finds the pair again. So does a ball that a step out of
+// passes holds back (src/motion/pause.ts).
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { appendCollision, EventType, moveEvent } from '../events.js'
 import { launchBall } from '../motion/ballFate.js'
-import { pathStart, planRolling, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
+import { changeAt, pathStart, planRolling, planTracked, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
@@ -202,12 +205,24 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   // instant stays in P0[TT] for the caller)
   P0[TT] = t
   if (!(quiet(w, F, a, b) && quiet(w, F, b, a))) return false
-  // nothing of their own before it (a meeting of an earlier tick's, for the same pair, given up: a command
-  // between the two asked for this solve)
-  if (w.Path.nextKind[ea] === PathEvent.Meet) planRolling(w, ea)
-  if (w.Path.nextKind[eb] === PathEvent.Meet) planRolling(w, eb)
-  const H = w.pathHot
-  return H[ea * HOT + H_NEXT_T]! > t && H[eb * HOT + H_NEXT_T]! > t
+  return clearTo(w, ea) && clearTo(w, eb)
+}
+
+/**
+ * Whether ball e's path holds up to the instant P0[TT]: its own next event is later, or every event before
+ * it is bookkeeping on the same path (a near miss, the exit from a locked hole, a skip-over: each plans the
+ * path again, and the meeting is its next event again after them, src/motion/rolling.ts). A meeting of an
+ * earlier tick's, for the same pair, is given up first (a command between the two asked for this solve).
+ */
+function clearTo(w: BallWorld, e: number): boolean {
+  const t = P0[TT]!
+  if (w.meet!.with[e] !== 0) {
+    w.meet!.with[e] = 0
+    if (w.Path.nextKind[e] === PathEvent.Meet) planRolling(w, e)
+  }
+  if (w.pathHot[e * HOT + H_NEXT_T]! > t) return true
+  planTracked(w, e)
+  return changeAt[0]! > t
 }
 
 /**
@@ -271,13 +286,16 @@ function stateAt(w: BallWorld, e: number, k: number): void {
   P0[k + 3] = E[VY]!
 }
 
-/** Ball e's path meets ball other at P0's instant: its next event. */
+/**
+ * Ball e's path meets ball other at P0's instant: its next event, or, with bookkeeping of its own before it,
+ * the next event after those (planRolling sets it then).
+ */
 function setMeet(w: BallWorld, e: number, other: number): void {
   const M = w.meet!
   M.with[e] = other
   M.t[e] = P0[TT]!
   M.e[e] = P0[EFF]!
-  meetEvent(w, e)
+  if (w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetEvent(w, e)
 }
 
 /** Ball e's next event: its meeting (M.with, M.t), on its present path. */
@@ -311,7 +329,7 @@ function dropTickCollisions(w: BallWorld, from: number): void {
   const ev = w.events
   let out = from
   for (let i = from; i < ev.count; i++) {
-    if (ev.type[i] === EventType.Collision && timedAt[ev.ball[i]!] === STAMP[0] && w.Path.nextHole[ev.ball[i]!] === ev.other[i]) continue
+    if (ev.type[i] === EventType.Collision && timedAt[ev.ball[i]!] === STAMP[0] && w.meet!.with[ev.ball[i]!] === ev.other[i]) continue
     if (out !== i) moveEvent(ev, out, i)
     out++
   }
@@ -322,19 +340,22 @@ function dropTickCollisions(w: BallWorld, from: number): void {
  * Ball eid's Meet event, at time t (the integration): with its partner's Meet still at t, the two-body law
  * with both balls' states at t, and a fresh path from t for both (the partner's Meet is then replaced by its
  * new path's own next event: whether the integration advances it before or after this ball in the pass, it
- * goes on from t); with the partner's path changed since, this ball goes on as it was.
+ * goes on from t); with the partner's path changed since, this ball goes on as it was. With the partner
+ * still short of the instant, on its way through bookkeeping events of its own, this ball waits at its Meet
+ * for the next pass (returns true; the integration hands it over), so the partner meets it there.
  */
-export function meetAt(w: BallWorld, eid: number): void {
+export function meetAt(w: BallWorld, eid: number): boolean {
   const F = w.fixed!
   const M = w.meet!
   const H = w.pathHot
   const t = H[eid * HOT + H_NEXT_T]!
   const other = w.Path.nextHole[eid]!
+  if (M.with[eid] === other && M.t[eid] === t && M.with[other] === eid && M.t[other] === t && w.Ball.live[other] === 1 && w.Ball.mode[other] === BallMode.Rolling && H[other * HOT + H_NEXT_T]! < t) return true
   M.with[eid] = 0
   if (M.t[eid] !== t || w.Ball.live[other] !== 1 || M.with[other] !== eid || M.t[other] !== t || w.Path.nextKind[other] !== PathEvent.Meet || H[other * HOT + H_NEXT_T] !== t) {
     // the partner's path changed: this one is planned again as it was
     planRolling(w, eid)
-    return
+    return false
   }
   M.with[other] = 0
   P0[TT] = t
@@ -365,6 +386,7 @@ export function meetAt(w: BallWorld, eid: number): void {
   }
   restart(w, other, BXp, true)
   restart(w, eid, AXp, false)
+  return false
 }
 
 /**

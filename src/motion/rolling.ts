@@ -263,7 +263,7 @@ export function planRolling(w: BallWorld, eid: number): void {
   Q.change = Q.best
   // the same path, short of where it was found to change (a skip-over, a near miss, a lip exit since):
   // that distance still holds, and the walk goes only to the next event
-  qTrack = C !== null
+  qTrack = C !== null || tracking[0] === 1
   if (C !== null && C.changeGen[eid] === C.gen[eid] && C.changeS[eid]! > Q.s) {
     qTrack = false
     Q.change = C.changeS[eid]!
@@ -343,6 +343,18 @@ export function planRolling(w: BallWorld, eid: number): void {
     H[h + H_NEXT_S] = Q.best
     H[h + H_NEXT_T] = t
   }
+  // a fixed tick's meeting at its instant (src/contacts/fixedMeet.ts) outlives a plan of the same path: it
+  // is the next event again once the path's own next event is later (a near miss, a lip exit, a skip-over
+  // before it; the meeting was given only where nothing before it changes the path)
+  const M = w.meet
+  if (M !== null && M.with[eid] !== 0 && H[h + H_NEXT_T]! > M.t[eid]!) {
+    const tau = M.t[eid]! - H[h + H_T0]!
+    H[h + H_NEXT_T] = M.t[eid]!
+    H[h + H_NEXT_S] = v0 * tau - 0.5 * decel * tau * tau
+    P.nextKind[eid] = PathEvent.Meet
+    P.nextHole[eid] = M.with[eid]!
+    P.nextEdge[eid] = 0
+  }
   if (C !== null) {
     if (qTrack) {
       C.changeS[eid] = Q.change
@@ -359,6 +371,31 @@ export function planRolling(w: BallWorld, eid: number): void {
     }
     C.formulaEnd[eid] = end
   }
+}
+
+/** planTracked's flag (a slot) and its answer: the time the path's closed form may change next, s */
+const tracking = new Uint8Array(1)
+export const changeAt = new Float64Array(1)
+
+/**
+ * planRolling, and the time at which the ball's path may change next into changeAt[0]: its stop, a wall or an
+ * open edge, a lip crossing the skip-over rule does not fly over, the contact circle or the reference's exit
+ * point of a locked hole (as the exact contacts track it, above). Near misses, the exit from a locked hole and
+ * skip-overs before it are bookkeeping: each plans the same path again. NEVER for none.
+ */
+export function planTracked(w: BallWorld, eid: number): void {
+  tracking[0] = 1
+  planRolling(w, eid)
+  tracking[0] = 0
+  const never = Q.never
+  let t = never
+  if (Q.change < 1 / 0) {
+    Q.d = Q.change
+    timeTo(Q.change === Q.stop)
+    t = w.pathHot[eid * HOT + H_T0]! + Q.t
+    if (!(t < never)) t = never
+  }
+  changeAt[0] = t
 }
 
 /**

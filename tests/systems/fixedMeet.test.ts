@@ -234,3 +234,73 @@ describe('fixed tick: a pair alone at its tick meets at its instant', () => {
     }
   })
 })
+
+describe('fixed tick: a meeting after bookkeeping of its own (a near miss, a skip-over, the exit from a locked hole)', () => {
+  // a at 1,000 px/s meets b at −100 px/s head on at 178 / 1,100 s; paired at the tick 19/120 s, when a is at
+  // x = 158.3, and a is at 161.8 at the instant. A hole beside a's path (radius 18) whose event falls between
+  // the two: a near miss at its closest approach (centre 23 px off the path), or a lip crossing at 17.937 px
+  // off it, which a flies over (v_skip is 53 px/s there), and the exit from its lip circle 3 px later.
+  const TOUCH = 178 / 1100
+  const head = (offset: number | null, firstA: boolean, hz = 120) => {
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    if (offset !== null) sim.addHole({ x: 160, y: offset, radius: 18 })
+    else sim.addHole({ x: 5000, y: 5000 })
+    const A = { x: 0, y: 0, vx: 1000, vy: 0 }
+    const B = { x: 200, y: 0, vx: -100, vy: 0 }
+    const ids = firstA ? [sim.addBall(A), sim.addBall(B)] : [sim.addBall(B), sim.addBall(A)].reverse()
+    const ev = run(sim, hz / 2, 1 / hz)
+    const bits = ids.map((b) => {
+      const s = sim.ballState(b)
+      return `${s.mode}:${s.x}:${s.y}:${s.vx}:${s.vy}`
+    })
+    return { sim, ev, bits, a: ids[0]!, b: ids[1]! }
+  }
+
+  it('a near miss of one ball between the tick and the instant: the pair meets at its instant, with the bits of a panel without the hole', () => {
+    const plain = head(null, true)
+    expect(plain.sim.world.meet!.timed).toBe(1)
+    for (const firstA of [true, false]) {
+      const r = head(23, firstA)
+      const col = r.ev.filter((e) => e.type === 'collision')
+      expect(col).toHaveLength(1)
+      expect(Math.abs(col[0]!.time - TOUCH)).toBeLessThan(1e-12)
+      expect(r.sim.world.meet!.timed).toBe(1)
+      // the near miss on the way in, before the meeting, and again on the way back
+      const near = r.ev.filter((e) => e.type === 'nearMiss' && e.ball === r.a).map((e) => e.time)
+      expect(near[0]).toBeCloseTo(0.16, 12)
+      expect(near[0]!).toBeGreaterThan(19 / 120)
+      expect(near[0]!).toBeLessThan(col[0]!.time)
+      expect(near).toHaveLength(2)
+      expect(r.bits).toEqual(plain.bits)
+    }
+  })
+
+  it('a skip-over and the exit from the lip circle between the tick and the instant: the pair meets at its instant, the same bits at 30, 60, 120 and 240 Hz', () => {
+    const plain = head(null, true)
+    for (const firstA of [true, false]) {
+      const r = head(17.937, firstA)
+      const col = r.ev.filter((e) => e.type === 'collision')
+      expect(col).toHaveLength(1)
+      expect(Math.abs(col[0]!.time - TOUCH)).toBeLessThan(1e-12)
+      const skips = r.ev.filter((e) => e.type === 'skip' && e.ball === r.a).map((e) => e.time)
+      expect(skips[0]!).toBeGreaterThan(19 / 120)
+      expect(skips[0]!).toBeLessThan(col[0]!.time)
+      expect(r.bits).toEqual(plain.bits)
+      for (const hz of [30, 60, 240]) expect(head(17.937, firstA, hz).bits).toEqual(r.bits)
+    }
+  })
+
+  it('a ball whose path a hole changes before the instant (its contact circle: a bounce): the pair meets at its tick', () => {
+    // a at 500 px/s crosses the lip of a hole 10 px beside its path, too slow to fly over, and reaches the
+    // contact circle between the tick 24/120 s and the instant (0.2049 s without the hole), where the COG gate
+    // sends it on a new path
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 1, ROLLING_DECEL: 0 })
+    sim.addHole({ x: 108, y: -10, radius: 18 })
+    sim.addBall({ x: 0, y: 0, vx: 500, vy: 0 })
+    sim.addBall({ x: 115, y: 100, vx: 0, vy: -400 })
+    const col = run(sim, 60, 1 / 120).filter((e) => e.type === 'collision')
+    expect(col).toHaveLength(1)
+    expect(col[0]!.time).toBe(24 / 120)
+    expect(sim.world.meet!.timed).toBe(0)
+  })
+})
