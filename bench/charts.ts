@@ -178,7 +178,7 @@ export function contactAccuracyFigure(points: readonly AccuracyPoint[], seeds: n
     $schema: 'https://vega.github.io/schema/vega-lite/v6.json',
     title: {
       text: 'Contact methods: cost against agreement of outcomes with the exact method',
-      subtitle: `default panel, a burst thrown at once, ${seeds} seeds a scene; agreement: share of balls that end in the same hole (or out, or at rest)`,
+      subtitle: `default panel, a burst thrown at once (the third scene into 40 balls at rest), ${seeds} seeds a scene; agreement: share of balls that end in the same hole (or out, or at rest)`,
     },
     data: { values },
     facet: { column: { field: 'scene', type: 'nominal', title: null } },

@@ -30,7 +30,7 @@ import { endRide, landCrossing } from '../src/motion/rimOutcome.js'
 import { type BallWorld, type IdList } from '../src/world/createWorld.js'
 import { MAX_INLINE_EVENTS } from '../src/config/tolerances.js'
 import { outsideStep } from '../src/world/system.js'
-import { meetAt } from '../src/contacts/fixedMeet.js'
+import { meetAt } from '../src/contacts/fixedMeetAt.js'
 
 export function integrationSystem(w: BallWorld): void {
   if (!w.stepping) outsideStep('integrationSystem', w)
@@ -353,7 +353,7 @@ function advanceThroughEvents(w: BallWorld, eid: number): void {
     }
     const kind = P.nextKind[eid]!
     if (kind === PathEvent.Meet) {
-      // a pair alone at a fixed contact tick meets here (src/contacts/fixedMeet.ts), or this ball waits for
+      // a pair alone at a fixed contact tick meets here (src/contacts/fixedMeetAt.ts), or this ball waits for
       // its partner in the next pass
       if (meetAt(w, eid)) {
         pushId(w.marked, eid)

@@ -2,13 +2,16 @@
 // CONTACT_TIMING 'instant', or 'auto' while the world has holes). A tick solves every contact at the tick, up to
 // one tick before the two balls touch: the pair leaves from where the balls were at the tick, not from where
 // they touch, and along a burst's paths that error (up to the approach speed times a tick) changes which hole a
-// ball ends in. Where a pair is alone at its tick (each of its balls in no other contact of the tick, rolling,
-// moved by no wall, no rest rule and no projection, the two touching within the tick on their own paths, neither
-// path changed by an event of its own before that), the tick's impulse is dropped and the pair is given a Meet
-// event on both paths at the instant the two touch on their paths (decelerations included). There the
-// integration takes the two-body law with the velocities the balls have then, as the exact method does, at the
-// restitution the tick's solve gave the pair (its rules can take some or all of it), and both balls start fresh
-// paths from that instant (meetAt). Nothing else can reach either ball before the instant: no event of its own
+// ball ends in. Where a pair is alone at its tick (each of its balls in no other contact of the tick, both
+// rolling or one rolling into one at rest, moved by no wall, no rest rule and no projection, the two touching
+// within the tick on their own paths, neither path changed by an event of its own before that), the tick's
+// impulse is dropped and the pair is given a Meet event on both paths at the instant the two touch on their
+// paths (decelerations included). There the integration takes the two-body law with the velocities the balls
+// have then, as the exact method does, at the restitution the tick's solve gave the pair (its rules can take
+// some or all of it), and both balls start fresh paths from that instant (meetAt, src/contacts/fixedMeetAt.ts).
+// A ball at rest has no events: it keeps its spot until the instant, where the rolling ball's Meet takes both,
+// and it wakes there as at a tick, when it leaves at BALL_SETTLE_SPEED or more (a ball at rest moved or put
+// elsewhere since is not struck). Nothing else can reach either ball before the instant: no event of its own
 // that changes its path (a near miss, the exit from a locked hole or a skip-over before it are bookkeeping on
 // the same path: the planner finds how far the path holds, src/motion/rolling.ts planTracked, and gives the
 // meeting back as the next event after them; a ball reaching its meeting while its partner is still short of it,
@@ -25,14 +28,12 @@
 // passes holds back (src/motion/pause.ts).
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
-import { appendCollision, EventType, moveEvent } from '../events.js'
-import { launchBall } from '../motion/ballFate.js'
-import { changeAt, pathStart, planRolling, planTracked, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
+import { EventType, moveEvent } from '../events.js'
+import { changeAt, planRolling, planTracked } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
 import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
-import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, resolveContactIn, strikeLeavesRim } from './law.js'
 import { E, AT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 import { TOUCH_GAP } from '../config/tolerances.js'
 
@@ -56,17 +57,17 @@ let timedAt = new Uint32Array(256)
 /** the stamp (a slot: a module-level number that may leave the small integers is boxed at every write) */
 const STAMP = new Uint32Array(1)
 
-/** scratch of a pair's state at the touch: a's position and velocity, b's, the instant */
-const P0 = new Float64Array(11)
-const AXp = 0
-const AYp = 1
-const AVX = 2
-const AVY = 3
-const BXp = 4
-const BYp = 5
-const BVX = 6
-const BVY = 7
-const TT = 8
+/** scratch of a pair's state at the touch: a's position and velocity, b's, the instant (src/contacts/fixedMeetAt.ts uses it too) */
+export const P0 = new Float64Array(11)
+export const AXp = 0
+export const AYp = 1
+export const AVX = 2
+export const AVY = 3
+export const BXp = 4
+export const BYp = 5
+export const BVX = 6
+export const BVY = 7
+export const TT = 8
 /** the next tick's instant: no pair is timed past it */
 const UNTIL = 9
 /** the restitution the tick's solve gave the pair */
@@ -132,7 +133,10 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   const B = w.Ball
   const ea = F.id[a]!
   const eb = F.id[b]!
-  if (B.mode[ea] !== BallMode.Rolling || B.mode[eb] !== BallMode.Rolling) return false
+  // both rolling, or one rolling into one at rest (which keeps its spot until the instant)
+  const ma = B.mode[ea]
+  const mb = B.mode[eb]
+  if (!((ma === BallMode.Rolling && (mb === BallMode.Rolling || mb === BallMode.Resting)) || (ma === BallMode.Resting && mb === BallMode.Rolling))) return false
   // momentum passed between the two alone (a ball at rest held like a wall takes none); the velocities
   // before the solve are the stores', the rest the tick's packed arrays
   const vax = B.vx[ea]!
@@ -216,10 +220,13 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
  */
 function clearTo(w: BallWorld, e: number): boolean {
   const t = P0[TT]!
+  const resting = w.Ball.mode[e] === BallMode.Resting
   if (w.meet!.with[e] !== 0) {
     w.meet!.with[e] = 0
-    if (w.Path.nextKind[e] === PathEvent.Meet) planRolling(w, e)
+    if (!resting && w.Path.nextKind[e] === PathEvent.Meet) planRolling(w, e)
   }
+  // (a ball at rest has no events of its own)
+  if (resting) return true
   if (w.pathHot[e * HOT + H_NEXT_T]! > t) return true
   planTracked(w, e)
   return changeAt[0]! > t
@@ -271,7 +278,7 @@ function quiet(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
 }
 
 /** Both balls' states at time P0[TT] on their paths (both rolling), into P0: what the stores get there. */
-function statesAt(w: BallWorld, ea: number, eb: number): void {
+export function statesAt(w: BallWorld, ea: number, eb: number): void {
   stateAt(w, ea, AXp)
   stateAt(w, eb, BXp)
 }
@@ -295,7 +302,7 @@ function setMeet(w: BallWorld, e: number, other: number): void {
   M.with[e] = other
   M.t[e] = P0[TT]!
   M.e[e] = P0[EFF]!
-  if (w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetEvent(w, e)
+  if (w.Ball.mode[e] === BallMode.Rolling && w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetEvent(w, e)
 }
 
 /** Ball e's next event: its meeting (M.with, M.t), on its present path. */
@@ -334,74 +341,4 @@ function dropTickCollisions(w: BallWorld, from: number): void {
     out++
   }
   ev.count = out
-}
-
-/**
- * Ball eid's Meet event, at time t (the integration): with its partner's Meet still at t, the two-body law
- * with both balls' states at t, and a fresh path from t for both (the partner's Meet is then replaced by its
- * new path's own next event: whether the integration advances it before or after this ball in the pass, it
- * goes on from t); with the partner's path changed since, this ball goes on as it was. With the partner
- * still short of the instant, on its way through bookkeeping events of its own, this ball waits at its Meet
- * for the next pass (returns true; the integration hands it over), so the partner meets it there.
- */
-export function meetAt(w: BallWorld, eid: number): boolean {
-  const F = w.fixed!
-  const M = w.meet!
-  const H = w.pathHot
-  const t = H[eid * HOT + H_NEXT_T]!
-  const other = w.Path.nextHole[eid]!
-  if (M.with[eid] === other && M.t[eid] === t && M.with[other] === eid && M.t[other] === t && w.Ball.live[other] === 1 && w.Ball.mode[other] === BallMode.Rolling && H[other * HOT + H_NEXT_T]! < t) return true
-  M.with[eid] = 0
-  if (M.t[eid] !== t || w.Ball.live[other] !== 1 || M.with[other] !== eid || M.t[other] !== t || w.Path.nextKind[other] !== PathEvent.Meet || H[other * HOT + H_NEXT_T] !== t) {
-    // the partner's path changed: this one is planned again as it was
-    planRolling(w, eid)
-    return false
-  }
-  M.with[other] = 0
-  P0[TT] = t
-  statesAt(w, eid, other)
-  const gx = P0[BXp]! - P0[AXp]!
-  const gy = P0[BYp]! - P0[AYp]!
-  const dist = Math.sqrt(gx * gx + gy * gy)
-  // the two-body law (src/contacts/law.ts), at the restitution the tick's solve gave the pair alone
-  const I = contactIn
-  I[CI_MA] = F.mass[eid]!
-  I[CI_MB] = F.mass[other]!
-  I[CI_VAX] = P0[AVX]!
-  I[CI_VAY] = P0[AVY]!
-  I[CI_VBX] = P0[BVX]!
-  I[CI_VBY] = P0[BVY]!
-  I[CI_NX] = gx / dist
-  I[CI_NY] = gy / dist
-  I[CI_E] = M.e[eid]!
-  I[CI_LIMIT] = w.config.CONTACT_SPEED_LIMIT
-  resolveContactIn()
-  const o = contactOut
-  if (o.approach >= w.config.BALL_SETTLE_SPEED) {
-    const ev = w.events
-    const i = appendCollision(ev, eid < other ? eid : other, eid < other ? other : eid)
-    ev.time[i] = t
-    ev.speed[i] = o.approach
-    ev.impulse[i] = o.impulse
-  }
-  restart(w, other, BXp, true)
-  restart(w, eid, AXp, false)
-  return false
-}
-
-/**
- * A fresh path for ball eid from the instant P0[TT], at its position there (P0 from slot `at`) and its
- * velocity after the contact (contactOut: the second ball's when `second`).
- */
-function restart(w: BallWorld, eid: number, at: number, second: boolean): void {
-  const o = contactOut
-  pathStart[PS_X] = P0[at]!
-  pathStart[PS_Y] = P0[at + 1]!
-  pathStart[PS_VX] = second ? o.vbx : o.vax
-  pathStart[PS_VY] = second ? o.vby : o.vay
-  pathStart[PS_T] = P0[TT]!
-  w.Ball.x[eid] = pathStart[PS_X]!
-  w.Ball.y[eid] = pathStart[PS_Y]!
-  strikeLeavesRim(w, eid)
-  launchBall(w, eid)
 }

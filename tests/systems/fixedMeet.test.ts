@@ -304,3 +304,84 @@ describe('fixed tick: a meeting after bookkeeping of its own (a near miss, a ski
     expect(sim.world.meet!.timed).toBe(0)
   })
 })
+
+describe('fixed tick: a rolling ball alone at its tick with a ball at rest meets it at its instant', () => {
+  // a decelerating ball strikes a resting one off centre; the resting one keeps its spot until the instant
+  const strike = (config: ConfigOverrides, hz = 120) => {
+    const sim = createBallPhysics({ BALL_RESTITUTION: 0.9, ...config })
+    sim.addHole({ x: 5000, y: 5000 })
+    const a = sim.addBall({ x: 100, y: 300, vx: 420, vy: -30 })
+    const r = sim.addBall({ x: 190, y: 285, vx: 0, vy: 0, mass: 1.5 })
+    const ev = run(sim, hz / 2, 1 / hz)
+    return { sim, a, r, ev }
+  }
+
+  it('the time, the velocities and the positions of the exact method; the same bits at 30, 60, 120 and 240 Hz', () => {
+    const exact = strike({ BALL_COLLISIONS: 'on' })
+    const fixed = strike(FIXED)
+    const ee = exact.ev.filter((e) => e.type === 'collision')
+    const ef = fixed.ev.filter((e) => e.type === 'collision')
+    expect(ee).toHaveLength(1)
+    expect(ef).toHaveLength(1)
+    expect(Math.abs(ef[0]!.time - ee[0]!.time)).toBeLessThan(1e-9)
+    // not at a tick
+    expect(ef[0]!.time * 120 % 1).toBeGreaterThan(0.01)
+    expect(ef[0]!.time * 120 % 1).toBeLessThan(0.99)
+    expect(ef[0]!.impulse).toBeCloseTo(ee[0]!.impulse, 5)
+    expect(fixed.sim.world.meet!.timed).toBe(1)
+    for (const b of [fixed.a, fixed.r]) {
+      const s = exact.sim.ballState(b)
+      const f = fixed.sim.ballState(b)
+      expect(f.mode).toBe(s.mode)
+      expect(Math.abs(f.x - s.x) + Math.abs(f.y - s.y)).toBeLessThan(1e-5)
+      expect(Math.abs(f.vx - s.vx) + Math.abs(f.vy - s.vy)).toBeLessThan(1e-5)
+    }
+    for (const hz of [30, 60, 240]) {
+      const other = strike(FIXED, hz)
+      expect(states(other.sim)).toBe(states(fixed.sim))
+    }
+  })
+
+  it('between the tick and the instant the resting ball stays where it is; removed (its id put down elsewhere) or moved, the rolling ball goes on as it was', () => {
+    // the pair's tick is 38/120 s (the touch about 0.3188 s); look at 0.3177 s, between the two
+    const sim = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 0.9 })
+    sim.addHole({ x: 5000, y: 5000 })
+    const a = sim.addBall({ x: 100, y: 300, vx: 420, vy: -30 })
+    const r = sim.addBall({ x: 190, y: 285, vx: 0, vy: 0, mass: 1.5 })
+    const M = sim.world.meet!
+    let steps = 0
+    while (M.with[a] === 0 && steps < 200) {
+      sim.step(1 / 960)
+      steps++
+    }
+    expect(M.with[a]).toBe(r)
+    expect(M.with[r]).toBe(a)
+    const instant = M.t[a]!
+    expect(sim.time).toBeLessThan(instant)
+    expect(instant * 120 % 1).toBeGreaterThan(0.01)
+    expect(sim.ballState(r)).toMatchObject({ mode: 'resting', x: 190, y: 285, vx: 0, vy: 0 })
+    const copy = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 0.9 })
+    copy.restore(sim.snapshot())
+    // the resting ball removed; a new ball takes its id, at rest far away
+    sim.removeBall(r)
+    expect(sim.addBall({ x: 400, y: 100, vx: 0, vy: 0, mass: 1.5 })).toBe(r)
+    const before = sim.ballState(a)
+    const ev = run(sim, 4, 1 / 960)
+    expect(ev.filter((e) => e.type === 'collision')).toHaveLength(0)
+    expect(sim.ballState(r)).toMatchObject({ mode: 'resting', x: 400, y: 100 })
+    expect(sim.ballState(a).vx).toBeLessThan(before.vx)
+    expect(Math.sign(sim.ballState(a).vx)).toBe(1)
+    // moved while at rest (as the projection of a solve between the tick and the instant moves a ball at
+    // rest, src/contacts/fixedApply.ts), 5 px back: the rolling ball goes on as it was, not struck from afar
+    const moved = createBallPhysics({ ...FIXED, BALL_RESTITUTION: 0.9 })
+    moved.restore(copy.snapshot())
+    moved.world.Ball.x[r] = 195
+    expect(run(moved, 4, 1 / 960).filter((e) => e.type === 'collision')).toHaveLength(0)
+    expect(moved.ballState(r)).toMatchObject({ mode: 'resting', x: 195, vx: 0 })
+    // the copy, left alone, meets at the instant
+    const met = run(copy, 4, 1 / 960).filter((e) => e.type === 'collision')
+    expect(met).toHaveLength(1)
+    expect(met[0]!.time).toBe(instant)
+    expect(copy.ballState(r).mode).toBe('rolling')
+  })
+})
