@@ -3,33 +3,35 @@
 // one tick before the two balls touch: the pair leaves from where the balls were at the tick, not from where
 // they touch, and along a burst's paths that error (up to the approach speed times a tick) changes which hole a
 // ball ends in. Where a pair is alone at its tick (each of its balls in no other contact of the tick, both
-// rolling or one rolling into one at rest, moved by no wall, no rest rule and no projection, the two touching
-// within the tick on their own paths, neither path changed by an event of its own before that), the tick's
-// impulse is dropped and the pair is given a Meet event on both paths at the instant the two touch on their
-// paths (decelerations included). There the integration takes the two-body law with the velocities the balls
-// have then, as the exact method does, at the restitution the tick's solve gave the pair (its rules can take
-// some or all of it), and both balls start fresh paths from that instant (meetAt, src/contacts/fixedMeetAt.ts).
-// A ball at rest has no events: it keeps its spot until the instant, where the rolling ball's Meet takes both,
-// and it wakes there as at a tick, when it leaves at BALL_SETTLE_SPEED or more (a ball at rest moved or put
-// elsewhere since is not struck). Nothing else can reach either ball before the instant: no event of its own
-// that changes its path (a near miss, the exit from a locked hole or a skip-over before it are bookkeeping on
-// the same path: the planner finds how far the path holds, src/motion/rolling.ts planTracked, and gives the
-// meeting back as the next event after them; a ball reaching its meeting while its partner is still short of it,
-// on such events of its own, waits for it in the next pass), the next tick is not before it, and no third ball
-// within the tick. A ball may have been paired with others (within reach, in a burst most are), but each of
-// those the solve left as it was, and on straight lines over the tick (the solve's swept test, by a margin for
-// the paths' deceleration) it touches none of them, neither on its way to the instant nor after it at the
-// velocity the solve gave it (quiet): the third ball is then no nearer the pair than the tick's solve left it.
-// The pair's collision event is given at the instant, not at the tick. Between the tick and the instant: walls
-// or holes changed plan each path again from where it is, and the meeting stays its next event unless the new
-// path has one of its own before it (keepMeet); a ball given a new path (a command's velocity, which also asks
-// for a solve that pairs the balls again) gives up its meeting, and a ball whose partner gave it up goes on as
-// it was: neither takes the impulse, and the next solve finds the pair again. So does a ball that a step out of
-// passes holds back (src/motion/pause.ts).
+// moving (rolling, or on a rim: a ball struck there leaves it, as at a tick) or one rolling into one at rest,
+// moved by no wall, no rest rule and no projection, the two touching within the tick on their own paths, neither
+// path changed by an event of its own before that), the tick's impulse is dropped and the pair is given a Meet
+// event on both paths at the instant the two touch on their paths (decelerations included). There the
+// integration takes the two-body law with the velocities the balls have then, as the exact method does, at the
+// restitution the tick's solve gave the pair (its rules can take some or all of it), and both balls start fresh
+// paths from that instant (meetAt, src/contacts/fixedMeetAt.ts). A ball at rest has no events: it keeps its spot
+// until the instant, where the rolling ball's Meet takes both, and it wakes there as at a tick, when it leaves
+// at BALL_SETTLE_SPEED or more (a ball at rest moved or put elsewhere since is not struck). Nothing else can
+// reach either ball before the instant: no event of its own that changes its path (a near miss, the exit from a
+// locked hole or a skip-over before it are bookkeeping on the same path: the planner finds how far the path
+// holds, src/motion/rolling.ts planTracked, and gives the meeting back as the next event after them; a ball
+// reaching its meeting while its partner is still short of it, on such events of its own, waits for it in the
+// next pass), the next tick is not before it, and no third ball within the tick. A ball may have been paired
+// with others (within reach, in a burst most are), but each of those the solve left as it was, and on straight
+// lines over the tick (the solve's swept test, by a margin for the paths' deceleration and a rim's turn) it
+// touches none of them, neither on its way to the instant nor after it at the velocity the solve gave it
+// (quiet): the third ball is then no nearer the pair than the tick's solve left it. The pair's collision event
+// is given at the instant, not at the tick. Between the tick and the instant: walls or holes changed plan each
+// path again from where it is, and the meeting stays its next event unless the new path has one of its own
+// before it (keepMeet); a ball given a new path (a command's velocity, which also asks for a solve that pairs
+// the balls again) gives up its meeting, and a ball whose partner gave it up goes on as it was: neither takes
+// the impulse, and the next solve finds the pair again. So does a ball that a step out of passes holds back
+// (src/motion/pause.ts).
 import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { EventType, moveEvent } from '../events.js'
 import { changeAt, planRolling, planTracked } from '../motion/rolling.js'
+import { planRimRoll } from '../motion/rimRoll.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
@@ -133,10 +135,13 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   const B = w.Ball
   const ea = F.id[a]!
   const eb = F.id[b]!
-  // both rolling, or one rolling into one at rest (which keeps its spot until the instant)
+  // both moving (rolling, or on a rim other than a tabulated ride's), or one rolling into one at rest (which
+  // keeps its spot until the instant)
   const ma = B.mode[ea]
   const mb = B.mode[eb]
-  if (!((ma === BallMode.Rolling && (mb === BallMode.Rolling || mb === BallMode.Resting)) || (ma === BallMode.Resting && mb === BallMode.Rolling))) return false
+  const movingA = ma === BallMode.Rolling || (ma === BallMode.RimRoll && w.RimContact.ride[B.rim[ea]!] === 0)
+  const movingB = mb === BallMode.Rolling || (mb === BallMode.RimRoll && w.RimContact.ride[B.rim[eb]!] === 0)
+  if (!((movingA && movingB) || (ma === BallMode.Rolling && mb === BallMode.Resting) || (ma === BallMode.Resting && mb === BallMode.Rolling))) return false
   // momentum passed between the two alone (a ball at rest held like a wall takes none); the velocities
   // before the solve are the stores', the rest the tick's packed arrays
   const vax = B.vx[ea]!
@@ -220,14 +225,15 @@ function alone(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
  */
 function clearTo(w: BallWorld, e: number): boolean {
   const t = P0[TT]!
-  const resting = w.Ball.mode[e] === BallMode.Resting
+  const mode = w.Ball.mode[e]
   if (w.meet!.with[e] !== 0) {
     w.meet!.with[e] = 0
-    if (!resting && w.Path.nextKind[e] === PathEvent.Meet) planRolling(w, e)
+    if (mode !== BallMode.Resting && w.Path.nextKind[e] === PathEvent.Meet) planAgain(w, e)
   }
-  // (a ball at rest has no events of its own)
-  if (resting) return true
+  // (a ball at rest has no events of its own; a ball on a rim has its roll's end)
+  if (mode === BallMode.Resting) return true
   if (w.pathHot[e * HOT + H_NEXT_T]! > t) return true
+  if (mode !== BallMode.Rolling) return false
   planTracked(w, e)
   return changeAt[0]! > t
 }
@@ -237,7 +243,7 @@ function clearTo(w: BallWorld, e: number): boolean {
  * in the tick: that ball untouched by the solve, and the two not touching within the tick on straight lines,
  * a at its velocity before the tick up to the instant and at the one the solve gave it after (the solve's
  * swept test, written out: a double passed to a call V8 does not inline is boxed), by a margin for the
- * paths' deceleration over the tick.
+ * paths' deceleration over the tick, and for how far a ball on a rim turns from a straight line.
  */
 function quiet(w: BallWorld, F: FixedContactState, a: number, b: number): boolean {
   // (its one pair: the pair's own)
@@ -246,12 +252,12 @@ function quiet(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   const now = w.time
   const tau = P0[TT]! - now
   const span = P0[UNTIL]! - now
-  const margin = w.config.ROLLING_DECEL * span * span + TOUCH_GAP
+  const margin = w.config.ROLLING_DECEL * span * span + TOUCH_GAP + rimBend(w, ea, span)
   for (let k = first[a]!; k !== -1; k = after[k]!) {
     const c = (k & 1) === 0 ? F.pairB[k >> 1]! : F.pairA[k >> 1]!
     if (c === b) continue
     if (F.changed[c] !== 0 || timedAt[F.id[c]!] === STAMP[0]) return false
-    const S = F.r[a]! + F.r[c]! + margin
+    const S = F.r[a]! + F.r[c]! + margin + rimBend(w, F.id[c]!, span)
     let dx = F.x[c]! - F.x[a]!
     let dy = F.y[c]! - F.y[a]!
     let ux = F.vx[c]! - w.Ball.vx[ea]!
@@ -277,7 +283,26 @@ function quiet(w: BallWorld, F: FixedContactState, a: number, b: number): boolea
   return true
 }
 
-/** Both balls' states at time P0[TT] on their paths (both rolling), into P0: what the stores get there. */
+/**
+ * Twice how far ball e, if on a rim, turns from its tangent over `span` seconds: v²·span² / R, R the radius
+ * its centre turns on (the hole's less half the ball's, as src/motion/rimRoll.ts); 0 for any other ball.
+ */
+function rimBend(w: BallWorld, e: number, span: number): number {
+  if (w.Ball.mode[e] !== BallMode.RimRoll) return 0
+  const B = w.Ball
+  const R = w.Hole.radius[w.RimContact.hole[B.rim[e]!]!]! - B.radius[e]! / 2
+  const vx = B.vx[e]!
+  const vy = B.vy[e]!
+  return ((vx * vx + vy * vy) * span * span) / R
+}
+
+/** A ball's own next event again, from its path or its rim roll (a meeting given up). */
+export function planAgain(w: BallWorld, e: number): void {
+  if (w.Ball.mode[e] === BallMode.RimRoll) planRimRoll(w, e)
+  else planRolling(w, e)
+}
+
+/** Both balls' states at time P0[TT] on their paths (rolling, on a rim or at rest), into P0: what the stores get there. */
 export function statesAt(w: BallWorld, ea: number, eb: number): void {
   stateAt(w, ea, AXp)
   stateAt(w, eb, BXp)
@@ -302,7 +327,7 @@ function setMeet(w: BallWorld, e: number, other: number): void {
   M.with[e] = other
   M.t[e] = P0[TT]!
   M.e[e] = P0[EFF]!
-  if (w.Ball.mode[e] === BallMode.Rolling && w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetEvent(w, e)
+  if (w.Ball.mode[e] !== BallMode.Resting && w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetEvent(w, e)
 }
 
 /** Ball e's next event: its meeting (M.with, M.t), on its present path. */
@@ -314,7 +339,8 @@ function meetEvent(w: BallWorld, e: number): void {
   const decel = w.config.ROLLING_DECEL
   const tau = t - H[h + H_T0]!
   H[h + H_NEXT_T] = t
-  H[h + H_NEXT_S] = v0 * tau - 0.5 * decel * tau * tau
+  // (the distance along a straight path; a ball on a rim has none)
+  H[h + H_NEXT_S] = w.Ball.mode[e] === BallMode.Rolling ? v0 * tau - 0.5 * decel * tau * tau : 0
   w.Path.nextKind[e] = PathEvent.Meet
   w.Path.nextHole[e] = w.meet!.with[e]!
 }

@@ -4,12 +4,12 @@ import { BallMode } from '../../components/Ball.js'
 import { PathEvent } from '../../components/Path.js'
 import { appendCollision } from '../events.js'
 import { launchBall } from '../motion/ballFate.js'
-import { pathStart, planRolling, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
+import { pathStart, PS_T, PS_VX, PS_VY, PS_X, PS_Y } from '../motion/rolling.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { pushId } from '../world/idLists.js'
 import { HOT, H_NEXT_T } from '../world/pathHot.js'
 import { CI_E, CI_LIMIT, CI_MA, CI_MB, CI_NX, CI_NY, CI_VAX, CI_VAY, CI_VBX, CI_VBY, contactIn, contactOut, resolveContactIn, strikeLeavesRim } from './law.js'
-import { AVX, AVY, AXp, AYp, BVX, BVY, BXp, BYp, P0, statesAt, TT } from './fixedMeet.js'
+import { AVX, AVY, AXp, AYp, BVX, BVY, BXp, BYp, P0, planAgain, statesAt, TT } from './fixedMeet.js'
 
 /**
  * Ball eid's Meet event, at time t (the integration): with its partner's Meet still at t, the two-body law
@@ -26,13 +26,14 @@ export function meetAt(w: BallWorld, eid: number): boolean {
   const t = H[eid * HOT + H_NEXT_T]!
   const other = w.Path.nextHole[eid]!
   const rolling = w.Ball.mode[other] === BallMode.Rolling
+  const moving = rolling || w.Ball.mode[other] === BallMode.RimRoll
   if (M.with[eid] === other && M.t[eid] === t && M.with[other] === eid && M.t[other] === t && w.Ball.live[other] === 1 && rolling && H[other * HOT + H_NEXT_T]! < t) return true
   M.with[eid] = 0
   // the partner's Meet at t too, or the partner at rest with this meeting (it has no events)
-  const kept = rolling ? w.Path.nextKind[other] === PathEvent.Meet && H[other * HOT + H_NEXT_T] === t : w.Ball.mode[other] === BallMode.Resting
+  const kept = moving ? w.Path.nextKind[other] === PathEvent.Meet && H[other * HOT + H_NEXT_T] === t : w.Ball.mode[other] === BallMode.Resting
   if (M.t[eid] !== t || w.Ball.live[other] !== 1 || M.with[other] !== eid || M.t[other] !== t || !kept) {
     // the partner's path changed: this one is planned again as it was
-    planRolling(w, eid)
+    planAgain(w, eid)
     return false
   }
   M.with[other] = 0
@@ -42,9 +43,9 @@ export function meetAt(w: BallWorld, eid: number): boolean {
   const gy = P0[BYp]! - P0[AYp]!
   const dist = Math.sqrt(gx * gx + gy * gy)
   const S = w.Ball.radius[eid]! + w.Ball.radius[other]!
-  if (!rolling && !(dist - S <= 1e-6 * S && dist - S >= -1e-6 * S)) {
+  if (!moving && !(dist - S <= 1e-6 * S && dist - S >= -1e-6 * S)) {
     // a ball at rest put elsewhere since (its id taken again): this one goes on as it was
-    planRolling(w, eid)
+    planAgain(w, eid)
     return false
   }
   // the two-body law (src/contacts/law.ts), at the restitution the tick's solve gave the pair alone
@@ -68,7 +69,7 @@ export function meetAt(w: BallWorld, eid: number): boolean {
     ev.speed[i] = o.approach
     ev.impulse[i] = o.impulse
   }
-  if (rolling) restart(w, other, BXp, true)
+  if (moving) restart(w, other, BXp, true)
   else if (Math.sqrt(o.vbx * o.vbx + o.vby * o.vby) >= w.config.BALL_SETTLE_SPEED) {
     // a ball at rest wakes as at a tick (src/contacts/fixedApply.ts) and goes on from t in the next pass
     restart(w, other, BXp, true)

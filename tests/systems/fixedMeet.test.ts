@@ -385,3 +385,57 @@ describe('fixed tick: a rolling ball alone at its tick with a ball at rest meets
     expect(copy.ballState(r).mode).toBe('rolling')
   })
 })
+
+describe('fixed tick: a ball on a rim struck alone meets its striker at the instant', () => {
+  const onRim = (config: ConfigOverrides, striker = true, turn = false) => {
+    const sim = createBallPhysics(config)
+    sim.addHole({ x: 0, y: 0 })
+    const lipX = -Math.sqrt(18 * 18 - 11 * 11)
+    const b = sim.addBall({ x: lipX - 60, y: 11, vx: Math.sqrt(490 ** 2 + 2 * 300 * 60), vy: 0 })
+    for (let i = 0; i < 200 && sim.ballState(b).mode !== 'rimRoll'; i++) sim.step(1 / 500)
+    expect(sim.ballState(b).mode).toBe('rimRoll')
+    const st = sim.ballState(b)
+    const v = Math.hypot(st.vx, st.vy)
+    // a striker 4 px ahead of it along its tangent, coming back along it (it meets the ball 0.2 rad round)
+    const s = striker ? sim.addBall({ x: st.x + (26 * st.vx) / v, y: st.y + (26 * st.vy) / v, vx: (-300 * st.vx) / v, vy: (-300 * st.vy) / v }) : 0
+    const ev = run(sim, 1, 1 / 2000)
+    if (turn) {
+      // the striker sent away before the instant, once the meeting is set
+      expect(sim.world.meet!.with[b]).toBe(s)
+      sim.setBallVelocity(s, (300 * st.vx) / v, (300 * st.vy) / v)
+    }
+    ev.push(...run(sim, 30, 1 / 500))
+    return { sim, b, s, ev }
+  }
+
+  it('its striker sent away before the instant: the ball rolls on round the rim as it would alone', () => {
+    const alone = onRim(FIXED, false)
+    const turned = onRim(FIXED, true, true)
+    expect(turned.ev.filter((e) => e.type === 'collision')).toHaveLength(0)
+    const a = alone.sim.ballState(alone.b)
+    const t = turned.sim.ballState(turned.b)
+    expect(t.mode).toBe(a.mode)
+    expect(Math.abs(t.x - a.x) + Math.abs(t.y - a.y)).toBeLessThan(1e-9)
+    const end = (ev: BallEvent[]) => ev.filter((e) => e.ball === alone.b && e.type !== 'rimRoll').map((e) => `${e.type} ${e.time}`)
+    expect(end(turned.ev)).toEqual(end(alone.ev))
+  })
+
+  it('the time, the velocities and the positions of the exact method', () => {
+    const exact = onRim({ BALL_COLLISIONS: 'on' })
+    const fixed = onRim(FIXED)
+    const ee = exact.ev.filter((e) => e.type === 'collision')
+    const ef = fixed.ev.filter((e) => e.type === 'collision')
+    expect(ee).toHaveLength(1)
+    expect(ef).toHaveLength(1)
+    expect(Math.abs(ef[0]!.time - ee[0]!.time)).toBeLessThan(1e-9)
+    expect(ef[0]!.impulse).toBeCloseTo(ee[0]!.impulse, 5)
+    expect(fixed.sim.world.meet!.timed).toBe(1)
+    for (const b of [fixed.b, fixed.s]) {
+      const s = exact.sim.ballState(b)
+      const f = fixed.sim.ballState(b)
+      expect(f.mode).toBe(s.mode)
+      expect(Math.abs(f.x - s.x) + Math.abs(f.y - s.y)).toBeLessThan(1e-5)
+      expect(Math.abs(f.vx - s.vx) + Math.abs(f.vy - s.vy)).toBeLessThan(1e-5)
+    }
+  })
+})
