@@ -35,7 +35,8 @@ import { planRimRoll } from '../motion/rimRoll.js'
 import type { BallWorld } from '../world/createWorld.js'
 import { instantOut, tickInstant } from '../world/gridTime.js'
 import { grownTo, type FixedContactState } from '../world/fixedState.js'
-import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_V0 } from '../world/pathHot.js'
+import { HOT, H_NEXT_T } from '../world/pathHot.js'
+import { meetNext } from '../world/meetState.js'
 import { E, AT, VX, VY, X, Y, evalBall } from './evalMotion.js'
 import { TOUCH_GAP } from '../config/tolerances.js'
 
@@ -327,22 +328,7 @@ function setMeet(w: BallWorld, e: number, other: number): void {
   M.with[e] = other
   M.t[e] = P0[TT]!
   M.e[e] = P0[EFF]!
-  if (w.Ball.mode[e] !== BallMode.Resting && w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetEvent(w, e)
-}
-
-/** Ball e's next event: its meeting (M.with, M.t), on its present path. */
-function meetEvent(w: BallWorld, e: number): void {
-  const H = w.pathHot
-  const h = e * HOT
-  const t = w.meet!.t[e]!
-  const v0 = H[h + H_V0]!
-  const decel = w.config.ROLLING_DECEL
-  const tau = t - H[h + H_T0]!
-  H[h + H_NEXT_T] = t
-  // (the distance along a straight path; a ball on a rim has none)
-  H[h + H_NEXT_S] = w.Ball.mode[e] === BallMode.Rolling ? v0 * tau - 0.5 * decel * tau * tau : 0
-  w.Path.nextKind[e] = PathEvent.Meet
-  w.Path.nextHole[e] = w.meet!.with[e]!
+  if (w.Ball.mode[e] !== BallMode.Resting && w.pathHot[e * HOT + H_NEXT_T]! > M.t[e]!) meetNext(w, e)
 }
 
 /**
@@ -354,7 +340,7 @@ export function keepMeet(w: BallWorld, b: number, other: number): void {
   const M = w.meet!
   if (!(w.pathHot[b * HOT + H_NEXT_T]! > M.t[b]!)) return
   M.with[b] = other
-  meetEvent(w, b)
+  meetNext(w, b)
 }
 
 /** Drops the collision events the tick gave the pairs it timed (each pair's event comes at its instant). */

@@ -42,11 +42,13 @@ export function meetAt(w: BallWorld, eid: number): boolean {
   const gx = P0[BXp]! - P0[AXp]!
   const gy = P0[BYp]! - P0[AYp]!
   const dist = Math.sqrt(gx * gx + gy * gy)
-  const S = w.Ball.radius[eid]! + w.Ball.radius[other]!
-  if (!moving && !(dist - S <= 1e-6 * S && dist - S >= -1e-6 * S)) {
+  if (!moving) {
     // a ball at rest put elsewhere since (its id taken again): this one goes on as it was
-    planAgain(w, eid)
-    return false
+    const S = w.Ball.radius[eid]! + w.Ball.radius[other]!
+    if (!(dist - S <= 1e-6 * S && dist - S >= -1e-6 * S)) {
+      planAgain(w, eid)
+      return false
+    }
   }
   // the two-body law (src/contacts/law.ts), at the restitution the tick's solve gave the pair alone
   const I = contactIn

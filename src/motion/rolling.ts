@@ -15,6 +15,7 @@ import { HOT, H_NEXT_S, H_NEXT_T, H_T0, H_UX, H_UY, H_V0, H_X0, H_Y0 } from '../
 import { NEVER } from '../config/tolerances.js'
 import { capped, capVelocity } from './speedLimit.js'
 import { MAX_SPEED } from '../config/limits.js'
+import { meetNext } from '../world/meetState.js'
 
 // the samplers of a straight path, kept in their own file (this one's callers import them from here)
 export { sampleAtDistance, sampleDistance, sampleRolling, sampleRollingAt, sampleTime } from './sample.js'
@@ -347,14 +348,7 @@ export function planRolling(w: BallWorld, eid: number): void {
   // is the next event again once the path's own next event is later (a near miss, a lip exit, a skip-over
   // before it; the meeting was given only where nothing before it changes the path)
   const M = w.meet
-  if (M !== null && M.with[eid] !== 0 && H[h + H_NEXT_T]! > M.t[eid]!) {
-    const tau = M.t[eid]! - H[h + H_T0]!
-    H[h + H_NEXT_T] = M.t[eid]!
-    H[h + H_NEXT_S] = v0 * tau - 0.5 * decel * tau * tau
-    P.nextKind[eid] = PathEvent.Meet
-    P.nextHole[eid] = M.with[eid]!
-    P.nextEdge[eid] = 0
-  }
+  if (M !== null && M.with[eid] !== 0 && H[h + H_NEXT_T]! > M.t[eid]!) meetNext(w, eid)
   if (C !== null) {
     if (qTrack) {
       C.changeS[eid] = Q.change
